@@ -1,0 +1,1 @@
+"""oilgap.model: the viscous-loss physics of oil-filled joint clearances."""

@@ -1,0 +1,141 @@
+"""Evaluate a design case over its duty cycle, region by region.
+
+Thin layer over the physics functions: oil properties at the operating
+condition (:mod:`oil_properties`), Re and Ta (:mod:`taylor_couette`), C_m
+(:mod:`skin_friction`) and the power of each region (:mod:`viscous_loss`),
+averaged over the duty cycle by its exact speed distribution.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, replace
+
+import numpy as np
+
+from .case import DesignCase
+from .oil_properties import seawater_gauge_pressure
+from .oils import warn_if_untrusted_temperature
+from .skin_friction import moment_coefficient
+from .taylor_couette import couette_reynolds, flow_regime, taylor_number
+from .units import celsius_to_kelvin
+from .viscous_loss import clearance_power, viscous_torque
+
+
+@dataclass(frozen=True)
+class RegionResult:
+    """Result for one clearance region over the duty cycle."""
+
+    name: str
+    radius_m: float
+    gap_m: float
+    length_m: float
+    roughness_T: float
+    Re_peak: float
+    Ta_peak: float
+    regimes: tuple[str, ...]
+    Cm_peak: float
+    mean_power_W: float
+    torque_peak_Nm: float
+
+
+@dataclass(frozen=True)
+class CaseEvaluation:
+    """Result of :func:`evaluate_case`."""
+
+    case_name: str
+    oil: str
+    oil_temp_C: float
+    depth_m: float
+    nu_cSt: float
+    density_kg_m3: float
+    laminar_law: str
+    form: str
+    peak_speed_rpm: float
+    regions: tuple[RegionResult, ...]
+    total_mean_power_W: float
+    viscous_torque_peak_Nm: float
+    cycle_energy_J: float
+
+    def to_dict(self) -> dict:
+        """Plain-dict form (the ``--json`` output)."""
+        from dataclasses import asdict
+
+        d = asdict(self)
+        d["regions"] = [dict(asdict(r), regimes=list(r.regimes)) for r in self.regions]
+        return d
+
+
+def oil_state(case: DesignCase, oil_temp_C: float | None = None, depth_m: float | None = None):
+    """(nu [m^2/s], mu [Pa s], rho [kg/m^3]) of the case's oil at its (or the given) condition."""
+    t = case.operating.oil_temp_C if oil_temp_C is None else oil_temp_C
+    d = case.operating.depth_m if depth_m is None else depth_m
+    warn_if_untrusted_temperature(t)
+    return case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
+
+
+def region_geometries(case: DesignCase):
+    """[(name, R, delta, L, T)] of the case's regions [m, -]."""
+    r1 = case.region1
+    out = [("rotor-stator", r1.radius, r1.gap, r1.length, r1.roughness)]
+    if case.region2 is not None:
+        r2 = case.region2
+        out.append(("bearing", r2.radius, r2.gap, r2.length, 1.0))
+    return out
+
+
+def region_powers(case: DesignCase, omega_rad_s, nu_m2_s, rho_kg_m3) -> dict[str, np.ndarray]:
+    """Viscous power [W] of each region at the given speeds and oil state."""
+    return {name: clearance_power(omega_rad_s, nu_m2_s, rho_kg_m3, R, d, L, case.friction, T)
+            for name, R, d, L, T in region_geometries(case)}
+
+
+def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
+                       depth_m: float | None = None) -> float:
+    """Mean viscous power [W] of all regions over the case's duty cycle (Eq. 10)."""
+    nu, _, rho = oil_state(case, oil_temp_C, depth_m)
+    nodes, weights = case.duty_cycle.speed_distribution()
+    return float(sum(p @ weights for p in region_powers(case, nodes, nu, rho).values()))
+
+
+def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
+                  depth_m: float | None = None, laminar_law: str | None = None) -> CaseEvaluation:
+    """Evaluate a case region by region over its duty cycle.
+
+    Parameters
+    ----------
+    case : DesignCase
+    oil_temp_C, depth_m : override the case's operating condition [degC], [m]
+    laminar_law : override the friction law's laminar law ("couette" or "bilgen-boulos")
+    """
+    if laminar_law is not None:
+        case = replace(case, friction=replace(case.friction, laminar_law=laminar_law))
+    t = case.operating.oil_temp_C if oil_temp_C is None else float(oil_temp_C)
+    d = case.operating.depth_m if depth_m is None else float(depth_m)
+    with warnings.catch_warnings():
+        warnings.simplefilter("default")
+        nu, _, rho = oil_state(case, t, d)
+    cycle = case.duty_cycle
+    nodes, weights = cycle.speed_distribution()
+    w_peak = cycle.peak_omega_rad_s
+    results = []
+    total_torque = 0.0
+    for name, R, gap, L, T in region_geometries(case):
+        re_nodes = couette_reynolds(nodes, R, gap, nu)
+        p_nodes = clearance_power(nodes, nu, rho, R, gap, L, case.friction, T)
+        re_peak = float(couette_reynolds(w_peak, R, gap, nu))
+        p_peak = float(clearance_power(w_peak, nu, rho, R, gap, L, case.friction, T))
+        tq = float(viscous_torque(p_peak, w_peak))
+        total_torque += tq
+        visited = set(flow_regime(re_nodes[weights > 0]))
+        regimes = tuple(r for r in ("laminar", "laminar with vortices",
+                                    "turbulent with vortices", "turbulent") if r in visited)
+        results.append(RegionResult(
+            name, R, gap, L, float(T), re_peak, float(taylor_number(re_peak, gap, R)), regimes,
+            float(moment_coefficient(re_peak, gap / R, case.friction, T)),
+            float(p_nodes @ weights), tq))
+    total = sum(r.mean_power_W for r in results)
+    return CaseEvaluation(case.name, case.oil.name, t, d, nu * 1e6, float(rho),
+                          case.friction.laminar_law, case.friction.form,
+                          w_peak * 60 / (2 * np.pi), tuple(results), total, total_torque,
+                          total * cycle.duration_s)

@@ -1,0 +1,94 @@
+"""Surface-PM motor magnetics and rotor inertia for the magnetic-gap and inertia constraints.
+
+* Carter coefficient of the stator slot openings (Gieras A.27-A.28).
+* Air-gap flux density of a surface-PM machine, leakage neglected:
+  ``B_g = B_r h_M / (h_M + mu_rec k_C k_sat g)``.
+* Torque capability at a given electric loading: ``tau = 2 pi R^2 L sigma``,
+  shear stress ``sigma = k_w B_g A / sqrt(2)`` (so tau ∝ B_g R^2 L).
+* Rotor inertia: hollow cylinders ``J = (pi/2) rho L (R_o^4 - R_i^4)``; the
+  grooved layer counts with its solid fraction, the epoxy fill with its density.
+
+Epoxy is non-magnetic: filling grooves changes the hydraulic clearance (T), not
+the magnetic gap g = T3 - T2.
+
+All functions accept floats, numpy arrays and CasADi symbols.
+
+References
+----------
+.. [1] J. F. Gieras, *Permanent Magnet Motor Technology*, 3rd ed., CRC 2010,
+   App. A (A.27-A.28) and ch. 2 (air-gap flux density).
+.. [2] J. Pyrhönen et al., *Design of Rotating Electrical Machines*, 2nd ed.,
+   2014, sec. 1.4 (tangential stress) and sec. 3.2 (Carter coefficient).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _math as m
+
+
+def carter_coefficient(slot_pitch_m, slot_opening_m, gap_m):
+    """Carter coefficient ``k_C = t / (t - gamma g)`` [-].
+
+    ``gamma = (4/pi) [ (b/2g) atan(b/2g) - ln sqrt(1 + (b/2g)^2) ]``,
+    t slot pitch at the bore, b slot opening, g mechanical gap [m].
+
+    References
+    ----------
+    Gieras [1], Eqs. A.27-A.28.
+    """
+    u = slot_opening_m / (2.0 * gap_m)
+    gam = 4.0 / np.pi * (u * m.atan(u) - 0.5 * m.log(1.0 + u * u))
+    return slot_pitch_m / (slot_pitch_m - gam * gap_m)
+
+
+def airgap_flux_density(remanence_T, magnet_thickness_m, recoil_permeability, carter, gap_m,
+                        saturation_factor=1.0):
+    """Air-gap flux density of a surface-PM machine [T], leakage neglected.
+
+    ``B_g = B_r h_M / (h_M + mu_rec k_C k_sat g)``.
+
+    References
+    ----------
+    Gieras [1], ch. 2.
+    """
+    return remanence_T * magnet_thickness_m / (
+        magnet_thickness_m + recoil_permeability * carter * saturation_factor * gap_m)
+
+
+def torque_capability(flux_density_T, electric_loading_A_m, winding_factor, radius_m, length_m):
+    """Electromagnetic torque capability [N m] at an rms electric loading A [A/m].
+
+    ``tau = 2 pi R^2 L sigma``, ``sigma = k_w B_g A / sqrt(2)``.
+
+    References
+    ----------
+    Pyrhönen et al. [2], sec. 1.4.
+    """
+    sigma = winding_factor * flux_density_T * electric_loading_A_m / np.sqrt(2.0)
+    return 2.0 * np.pi * radius_m * radius_m * length_m * sigma
+
+
+def hollow_cylinder_inertia(density_kg_m3, length_m, outer_radius_m, inner_radius_m):
+    """Polar moment of inertia [kg m^2] of a hollow cylinder: ``(pi/2) rho L (Ro^4 - Ri^4)``."""
+    return 0.5 * np.pi * density_kg_m3 * length_m * (outer_radius_m**4 - inner_radius_m**4)
+
+
+def grooved_rotor_inertia(length_m, shaft_bore_radius_m, groove_bottom_unfilled_m,
+                          groove_bottom_m, outer_radius_m, rotor_density_kg_m3,
+                          groove_solid_fraction, epoxy_density_kg_m3):
+    """Inertia [kg m^2] of a rotor with a grooved outer layer, grooves partly filled with epoxy.
+
+    Solid core from the shaft bore to the unfilled groove bottoms; the grooved
+    layer (unfilled groove bottom to outer radius) counts with its solid
+    fraction; the epoxy fills the grooves from the unfilled bottom up to
+    ``groove_bottom_m`` (= T1 after filling).
+    """
+    core = hollow_cylinder_inertia(rotor_density_kg_m3, length_m, groove_bottom_unfilled_m,
+                                   shaft_bore_radius_m)
+    teeth = groove_solid_fraction * hollow_cylinder_inertia(
+        rotor_density_kg_m3, length_m, outer_radius_m, groove_bottom_unfilled_m)
+    fill = (1.0 - groove_solid_fraction) * hollow_cylinder_inertia(
+        epoxy_density_kg_m3, length_m, groove_bottom_m, groove_bottom_unfilled_m)
+    return core + teeth + fill

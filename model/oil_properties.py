@@ -1,0 +1,191 @@
+"""Oil properties against temperature and pressure; sea-water pressure against depth.
+
+Laws
+----
+* ASTM D341 (Walther): ``log10(log10(nu + 0.7)) = A - B log10(T)``, nu in [cSt],
+  T in [K]. Two points fix A and B.
+* Barus: ``mu(p) = mu0 exp(alpha p)`` for the dynamic viscosity, p the gauge
+  pressure above atmospheric [Pa]. The coefficient is given at 40 degC
+  (default 17 /GPa for mineral oil [3]) and follows temperature as the initial
+  slope of Roelands' equation does, ``alpha ∝ ln(mu0 / mu_inf)`` with
+  ``mu_inf = 6.31e-5 Pa s`` [4]: it grows as the oil gets colder.
+* Density: ``rho = rho15 exp(-beta (T - 288.15 K) + p / K)`` (linear thermal
+  expansion beta and bulk modulus K, written as an exponential so it stays
+  positive and smooth).
+* Hydrostatic sea-water pressure: ``p = p_atm + rho_sw g depth``.
+
+All functions accept floats, numpy arrays and CasADi symbols.
+
+References
+----------
+.. [1] ASTM D341-20, Standard Practice for Viscosity-Temperature Equations and
+   Charts for Liquid Petroleum or Hydrocarbon Products.
+.. [2] C. Barus, "Isothermals, isopiestics and isometrics relative to
+   viscosity", Am. J. Sci. 45:87-96, 1893.
+.. [3] A. Vacca, G. Franzoni, *Hydraulic Fluid Power*, Wiley 2021, sec. 2.4
+   (bulk modulus) and 2.6.2 (pressure-viscosity coefficient).
+.. [4] C. J. A. Roelands, *Correlational aspects of the viscosity-temperature-
+   pressure relationship of lubricating oils*, PhD thesis, TU Delft, 1966.
+"""
+
+from __future__ import annotations
+
+from . import _math as m
+from .units import STANDARD_ATMOSPHERE_PA, STANDARD_GRAVITY_M_S2, ZERO_CELSIUS_K
+
+WALTHER_OFFSET_CST = 0.7
+"""ASTM D341 offset added to nu [cSt] (the low-viscosity correction below ~2 cSt is omitted)."""
+
+BARUS_MINERAL_OIL_1_PA = 1.7e-8
+"""Default pressure-viscosity coefficient of mineral oil [1/Pa] (1.7e-3 /bar, 17 /GPa) [3]."""
+
+THERMAL_EXPANSION_MINERAL_OIL_1_K = 6.5e-4
+"""Volumetric thermal expansion coefficient of mineral oil [1/K]."""
+
+BULK_MODULUS_MINERAL_OIL_PA = 1.8e9
+"""Isothermal secant bulk modulus of mineral hydraulic oil [Pa] (1.5-2.0 GPa) [3]."""
+
+ROELANDS_MU_INF_PA_S = 6.31e-5
+"""Roelands' asymptotic viscosity [Pa s] [4]."""
+
+BARUS_REFERENCE_TEMPERATURE_K = ZERO_CELSIUS_K + 40.0
+"""Temperature at which a Barus coefficient is stated [K]."""
+
+SEAWATER_DENSITY_KG_M3 = 1030.0
+"""Mean density of the sea-water column [kg/m^3] (1025-1050 with depth)."""
+
+REFERENCE_TEMPERATURE_K = ZERO_CELSIUS_K + 15.0
+"""Temperature at which catalogue densities are given [K]."""
+
+WALTHER_TRUSTED_RANGE_C = (-20.0, 150.0)
+"""Oil temperatures [degC] over which oilgap trusts a Walther line fitted at 40 and 100 degC."""
+
+
+def walther_coefficients(nu1_cSt, temp1_K, nu2_cSt, temp2_K):
+    """Coefficients A, B of the ASTM D341 (Walther) line through two points.
+
+    Parameters
+    ----------
+    nu1_cSt, nu2_cSt : float
+        Kinematic viscosities [cSt] at the two temperatures.
+    temp1_K, temp2_K : float
+        The two temperatures [K], different.
+
+    Returns
+    -------
+    A, B : float
+        ``log10(log10(nu + 0.7)) = A - B log10(T)``.
+
+    References
+    ----------
+    ASTM D341 [1].
+    """
+    z1 = m.log10(m.log10(nu1_cSt + WALTHER_OFFSET_CST))
+    z2 = m.log10(m.log10(nu2_cSt + WALTHER_OFFSET_CST))
+    x1 = m.log10(temp1_K)
+    x2 = m.log10(temp2_K)
+    B = (z1 - z2) / (x2 - x1)
+    A = z1 + B * x1
+    return A, B
+
+
+def walther_viscosity_cSt(temp_K, A, B):
+    """Kinematic viscosity [cSt] at ``temp_K`` [K] on the Walther line (A, B).
+
+    References
+    ----------
+    ASTM D341 [1].
+    """
+    return 10.0 ** (10.0 ** (A - B * m.log10(temp_K))) - WALTHER_OFFSET_CST
+
+
+def walther_temperature_K(nu_cSt, A, B):
+    """Inverse of :func:`walther_viscosity_cSt`: temperature [K] at which nu [cSt] is reached."""
+    return 10.0 ** ((A - m.log10(m.log10(nu_cSt + WALTHER_OFFSET_CST))) / B)
+
+
+def barus_factor(pressure_gauge_Pa, alpha_1_Pa=BARUS_MINERAL_OIL_1_PA):
+    """Barus pressure-viscosity factor ``mu(p)/mu(0) = exp(alpha p)`` [-].
+
+    Parameters
+    ----------
+    pressure_gauge_Pa : float or array
+        Pressure above atmospheric [Pa].
+    alpha_1_Pa : float
+        Pressure-viscosity coefficient [1/Pa].
+
+    References
+    ----------
+    Barus [2]; default coefficient from Vacca [3].
+    """
+    return m.exp(alpha_1_Pa * pressure_gauge_Pa)
+
+
+def barus_coefficient(alpha_ref_1_Pa, mu0_Pa_s, mu_ref_Pa_s):
+    """Pressure-viscosity coefficient [1/Pa] at a temperature where mu(p=0) = mu0.
+
+    ``alpha = alpha_ref ln(mu0 / mu_inf) / ln(mu_ref / mu_inf)``: the temperature
+    dependence of the initial slope of Roelands' equation, scaled so that
+    ``alpha = alpha_ref`` where the oil has its reference viscosity ``mu_ref``.
+
+    References
+    ----------
+    Roelands [4]; Vacca & Franzoni [3] for alpha_ref.
+    """
+    return alpha_ref_1_Pa * m.log(mu0_Pa_s / ROELANDS_MU_INF_PA_S) / m.log(
+        mu_ref_Pa_s / ROELANDS_MU_INF_PA_S)
+
+
+def oil_density(density15_kg_m3, temp_K, pressure_gauge_Pa=0.0,
+                expansion_1_K=THERMAL_EXPANSION_MINERAL_OIL_1_K,
+                bulk_modulus_Pa=BULK_MODULUS_MINERAL_OIL_PA):
+    """Oil density [kg/m^3] at temperature and gauge pressure.
+
+    ``rho = rho15 exp(-beta (T - 288.15) + p / K)``.
+
+    References
+    ----------
+    Vacca & Franzoni [3], sec. 2.3-2.4.
+    """
+    return density15_kg_m3 * m.exp(
+        -expansion_1_K * (temp_K - REFERENCE_TEMPERATURE_K) + pressure_gauge_Pa / bulk_modulus_Pa
+    )
+
+
+def seawater_gauge_pressure(depth_m, seawater_density_kg_m3=SEAWATER_DENSITY_KG_M3):
+    """Hydrostatic gauge pressure [Pa] at ``depth_m`` [m] of sea water: ``rho_sw g depth``."""
+    return seawater_density_kg_m3 * STANDARD_GRAVITY_M_S2 * depth_m
+
+
+def seawater_absolute_pressure(depth_m, seawater_density_kg_m3=SEAWATER_DENSITY_KG_M3):
+    """Absolute pressure [Pa] at ``depth_m`` [m]: atmosphere plus the water column."""
+    return STANDARD_ATMOSPHERE_PA + seawater_gauge_pressure(depth_m, seawater_density_kg_m3)
+
+
+def oil_viscosities(walther_A, walther_B, density15_kg_m3, temp_K, pressure_gauge_Pa,
+                    alpha_1_Pa=BARUS_MINERAL_OIL_1_PA,
+                    expansion_1_K=THERMAL_EXPANSION_MINERAL_OIL_1_K,
+                    bulk_modulus_Pa=BULK_MODULUS_MINERAL_OIL_PA):
+    """Kinematic viscosity, dynamic viscosity and density of an oil at (T, p).
+
+    The Walther line gives nu at atmospheric pressure; rho(T, 0) * nu gives the
+    dynamic viscosity, Barus raises it with pressure, and the kinematic
+    viscosity at pressure is mu(T, p) / rho(T, p). ``alpha_1_Pa`` is the Barus
+    coefficient at 40 degC; :func:`barus_coefficient` carries it to ``temp_K``.
+
+    Returns
+    -------
+    nu_m2_s : kinematic viscosity [m^2/s]
+    mu_Pa_s : dynamic viscosity [Pa s]
+    rho_kg_m3 : density [kg/m^3]
+    """
+    nu0_m2_s = walther_viscosity_cSt(temp_K, walther_A, walther_B) * 1.0e-6
+    rho0 = oil_density(density15_kg_m3, temp_K, 0.0, expansion_1_K, bulk_modulus_Pa)
+    rho = oil_density(density15_kg_m3, temp_K, pressure_gauge_Pa, expansion_1_K, bulk_modulus_Pa)
+    mu0 = nu0_m2_s * rho0
+    t_ref = BARUS_REFERENCE_TEMPERATURE_K
+    mu_ref = walther_viscosity_cSt(t_ref, walther_A, walther_B) * 1.0e-6 * oil_density(
+        density15_kg_m3, t_ref, 0.0, expansion_1_K, bulk_modulus_Pa)
+    alpha = barus_coefficient(alpha_1_Pa, mu0, mu_ref)
+    mu = mu0 * barus_factor(pressure_gauge_Pa, alpha)
+    return mu / rho, mu, rho

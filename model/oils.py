@@ -1,0 +1,194 @@
+"""The oil catalogue: ISO VG grades and user oils read from CSV.
+
+An :class:`Oil` carries the two Walther points (nu at 40 and 100 degC), the
+density at 15 degC and its pressure and temperature coefficients. Its methods
+wrap the pure functions of :mod:`oilgap.model.oil_properties`.
+
+The built-in catalogue holds ISO VG 10 to 1000 (ISO 3448: nu at 40 degC is the
+grade number) with typical nu at 100 degC of VI ~ 100 mineral oils and typical
+densities (850-910 kg/m^3). A user CSV has the columns
+``oil,nu40_cSt,nu100_cSt,density_kg_m3`` and optionally
+``barus_1_GPa`` (pressure-viscosity coefficient, default 17 /GPa).
+"""
+
+from __future__ import annotations
+
+import csv
+import math
+import warnings
+from dataclasses import dataclass
+from importlib import resources
+from pathlib import Path
+
+import numpy as np
+
+from . import oil_properties as op
+from .errors import InputError, OilgapWarning, check_positive
+from .units import ZERO_CELSIUS_K, celsius_to_kelvin, per_gpa_to_per_pa
+
+OIL_COLUMNS = ("oil", "nu40_cSt", "nu100_cSt", "density_kg_m3")
+OPTIONAL_OIL_COLUMNS = ("barus_1_GPa",)
+
+
+@dataclass(frozen=True)
+class Oil:
+    """A compensating oil.
+
+    Attributes
+    ----------
+    name : str
+    nu40_cSt, nu100_cSt : float
+        Kinematic viscosity at 40 and 100 degC, atmospheric pressure [cSt].
+    density_kg_m3 : float
+        Density at 15 degC, atmospheric pressure [kg/m^3].
+    barus_1_Pa : float
+        Pressure-viscosity coefficient [1/Pa].
+    """
+
+    name: str
+    nu40_cSt: float
+    nu100_cSt: float
+    density_kg_m3: float
+    barus_1_Pa: float = op.BARUS_MINERAL_OIL_1_PA
+
+    def __post_init__(self):
+        where = f"oil {self.name!r}"
+        for f in ("nu40_cSt", "nu100_cSt", "density_kg_m3"):
+            check_positive(f, getattr(self, f), where)
+        if not self.barus_1_Pa >= 0 or not math.isfinite(self.barus_1_Pa):
+            raise InputError("barus_1_GPa", self.barus_1_Pa * 1e9, "must be >= 0 and finite",
+                             where)
+        if self.nu100_cSt >= self.nu40_cSt:
+            raise InputError("nu100_cSt", self.nu100_cSt,
+                             f"must be below nu40_cSt = {self.nu40_cSt:g}", where)
+
+    @property
+    def walther(self) -> tuple[float, float]:
+        """ASTM D341 coefficients (A, B) through the 40 and 100 degC points."""
+        return op.walther_coefficients(self.nu40_cSt, ZERO_CELSIUS_K + 40.0,
+                                       self.nu100_cSt, ZERO_CELSIUS_K + 100.0)
+
+    def properties(self, temp_K, pressure_gauge_Pa=0.0):
+        """(nu [m^2/s], mu [Pa s], rho [kg/m^3]) at temperature [K] and gauge pressure [Pa]."""
+        A, B = self.walther
+        return op.oil_viscosities(A, B, self.density_kg_m3, temp_K, pressure_gauge_Pa,
+                                  self.barus_1_Pa)
+
+    def kinematic_viscosity_cSt(self, temp_C, depth_m=0.0) -> float:
+        """Kinematic viscosity [cSt] at oil temperature [degC] and sea depth [m]."""
+        nu, _, _ = self.properties(celsius_to_kelvin(temp_C),
+                                   op.seawater_gauge_pressure(depth_m))
+        return nu * 1.0e6
+
+
+def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C") -> None:
+    """Warn (OilgapWarning) if a temperature lies outside the trusted Walther range."""
+    lo, hi = op.WALTHER_TRUSTED_RANGE_C
+    t = np.asarray(temp_C, dtype=float)
+    if t.size and (np.nanmin(t) < lo or np.nanmax(t) > hi):
+        lo_t, hi_t = float(np.nanmin(t)), float(np.nanmax(t))
+        shown = f"{lo_t:g}" if lo_t == hi_t else f"{lo_t:g}..{hi_t:g}"
+        warnings.warn(
+            f"{field} = {shown} degC lies outside "
+            f"[{lo:g}, {hi:g}] degC, where the Walther line through the 40 and 100 degC points "
+            "is trusted; the viscosity there is an extrapolation",
+            OilgapWarning, stacklevel=2)
+
+
+def normalize_oil_name(name: str) -> str:
+    """Canonical key of an oil name: 'ISO VG 22', 'vg22', 'VG 22' -> 'VG22'."""
+    key = str(name).strip().upper().replace(" ", "").replace("-", "").replace("_", "")
+    if key.startswith("ISOVG"):
+        key = key[3:]
+    return key
+
+
+def read_oils_csv(path: str | Path) -> dict[str, Oil]:
+    """Read an oils table ``oil,nu40_cSt,nu100_cSt,density_kg_m3[,barus_1_GPa]``.
+
+    Raises
+    ------
+    InputError
+        Missing or unknown columns, non-numeric or non-positive values,
+        duplicate names.
+    """
+    path = Path(path)
+    where = str(path)
+    if not path.is_file():
+        raise InputError("oils file", str(path), "must be an existing CSV file")
+    with path.open(newline="", encoding="utf-8") as fh:
+        reader = csv.DictReader(fh)
+        cols = reader.fieldnames or []
+        missing = [c for c in OIL_COLUMNS if c not in cols]
+        if missing:
+            raise InputError("columns", cols, f"missing {missing}; required {list(OIL_COLUMNS)}",
+                             where)
+        unknown = [c for c in cols if c not in OIL_COLUMNS + OPTIONAL_OIL_COLUMNS]
+        if unknown:
+            raise InputError("columns", unknown, f"unknown; allowed "
+                             f"{list(OIL_COLUMNS + OPTIONAL_OIL_COLUMNS)}", where)
+        oils: dict[str, Oil] = {}
+        for i, row in enumerate(reader, start=2):
+            rwhere = f"{where} line {i}"
+            name = (row["oil"] or "").strip()
+            if not name:
+                raise InputError("oil", name, "a non-empty name is required", rwhere)
+            vals = {}
+            for c in OIL_COLUMNS[1:] + OPTIONAL_OIL_COLUMNS:
+                if c not in cols:
+                    continue
+                raw = row[c]
+                if c in OPTIONAL_OIL_COLUMNS and (raw is None or raw.strip() == ""):
+                    continue
+                vals[c] = check_positive(c, _num(raw), rwhere) if c != "barus_1_GPa" else \
+                    _nonneg(c, raw, rwhere)
+            key = normalize_oil_name(name)
+            if key in oils:
+                raise InputError("oil", name, "names must be unique", rwhere)
+            barus = per_gpa_to_per_pa(vals["barus_1_GPa"]) if "barus_1_GPa" in vals \
+                else op.BARUS_MINERAL_OIL_1_PA
+            oils[key] = Oil(name, vals["nu40_cSt"], vals["nu100_cSt"], vals["density_kg_m3"],
+                            barus)
+    if not oils:
+        raise InputError("oils file", str(path), "must hold at least one oil", where)
+    return oils
+
+
+def _num(raw):
+    try:
+        return float(raw)
+    except (TypeError, ValueError):
+        return raw
+
+
+def _nonneg(field, raw, where):
+    from .errors import check_range
+
+    return check_range(field, _num(raw), 0.0, None, where)
+
+
+_BUILTIN: dict[str, Oil] | None = None
+
+
+def builtin_oils() -> dict[str, Oil]:
+    """The built-in ISO VG catalogue, keyed by canonical name ('VG10' ... 'VG1000')."""
+    global _BUILTIN
+    if _BUILTIN is None:
+        with resources.as_file(resources.files(__package__) / "data" / "iso_vg_oils.csv") as p:
+            _BUILTIN = read_oils_csv(p)
+    return dict(_BUILTIN)
+
+
+def get_oil(name: str, catalogue: dict[str, Oil] | None = None) -> Oil:
+    """Look an oil up by name (case- and space-insensitive: 'VG22', 'ISO VG 22').
+
+    Raises
+    ------
+    InputError
+        Unknown oil; the message lists the known names.
+    """
+    cat = builtin_oils() if catalogue is None else catalogue
+    key = normalize_oil_name(name)
+    if key not in cat:
+        raise InputError("oil", name, f"known oils are {', '.join(o.name for o in cat.values())}")
+    return cat[key]

@@ -1,0 +1,205 @@
+"""Skin-friction (moment) coefficient C_m of a rotating clearance.
+
+Three forms of the Bilgen-Boulos correlation (seed Eq. 6), the general power
+law (Eq. 7) and the groove-roughness law (Eq. 8):
+
+* ``bilgen_boulos_cm``: Eq. 6 exactly, piecewise in Re (breaks at 64, 500, 1e4).
+* ``bilgen_boulos_cm_smooth``: the same branches blended with logistic weights
+  in ln Re (width :data:`SMOOTH_WIDTH`), twice differentiable everywhere, for
+  the optimizer. Outside a +-10 % band of Re around each break it is within
+  3 % of the exact form (tested; the bound actually reached is in the README).
+* laminar law ``"couette"``: below the critical Taylor number the exact
+  circular-Couette coefficient ``8 (1+x)^2 / ((2+x) Re)``; above it
+  ``max(Couette, Eq. 6)``, since no flow between the cylinders dissipates less
+  than the laminar Couette flow (Helmholtz's minimum-dissipation theorem: the
+  circular Couette field is also the Stokes flow for these boundary values).
+  Laminar law ``"bilgen-boulos"`` uses Eq. 6 as it stands.
+
+All functions accept floats, numpy arrays and CasADi symbols.
+
+References
+----------
+.. [1] E. Bilgen, R. Boulos, ASME J. Fluids Eng. 95(1):122-126, 1973.
+.. [2] J. Pyrhönen, T. Jokinen, V. Hrabovcová, *Design of Rotating Electrical
+   Machines*, 2nd ed., Wiley 2014, p. 528.
+.. [3] Seed paper, Eqs. 5-9.
+.. [4] H. Helmholtz (1868); D. J. Korteweg, Phil. Mag. 16:112-118, 1883
+   (minimum dissipation of Stokes flow).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, replace
+from typing import Literal
+
+from . import _math as m
+from .errors import InputError, check_finite, check_positive
+from .taylor_couette import (
+    CRITICAL_TAYLOR_NUMBER,
+    REGIME_BOUNDARIES_RE,
+    couette_moment_coefficient,
+    taylor_number,
+)
+
+BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))
+"""(C, beta) of the four branches of seed Eq. 6; each is multiplied by (delta/R)^0.3 [1]."""
+
+BILGEN_BOULOS_ALPHA = 0.3
+"""Gap-ratio exponent alpha of every branch of Eq. 6 [1]."""
+
+SMOOTH_WIDTH = 0.025
+"""Width in ln Re (and ln Ta) of the logistic blends of the smooth form [-]."""
+
+SMOOTH_MAX_WIDTH = 0.02
+"""Width in ln C_m of the smooth max between Couette and Eq. 6 [-]."""
+
+RE_FLOOR = 1.0e-12
+"""Reynolds numbers below this are evaluated at it (power there is ~0 anyway)."""
+
+FORMS = ("bilgen-boulos", "smooth", "power-law")
+LAMINAR_LAWS = ("couette", "bilgen-boulos")
+
+
+def power_law_cm(reynolds, gap_ratio, C, alpha, beta):
+    """General power law ``Cm = C (delta/R)^alpha Re^beta`` (seed Eq. 7) [-]."""
+    return C * gap_ratio**alpha * reynolds**beta
+
+
+def groove_roughness_factor(roughness_T, gamma):
+    """Groove-roughness factor ``T^gamma`` of seed Eq. 8 [-]."""
+    return roughness_T**gamma
+
+
+def groove_roughness(T1_m, T2_m, T3_m, T4_m):
+    """Clearance roughness ``T = (T4 - T1) / (T3 - T2)`` (seed Eq. 9) [-].
+
+    T1 rotor groove-bottom radius, T2 rotor outer radius, T3 stator bore radius,
+    T4 stator groove-bottom radius [m]; T3 - T2 is the clearance.
+    """
+    return (T4_m - T1_m) / (T3_m - T2_m)
+
+
+def bilgen_boulos_cm(reynolds, gap_ratio):
+    """Seed Eq. 6 exactly: the piecewise Bilgen-Boulos moment coefficient [-].
+
+    References
+    ----------
+    Bilgen & Boulos [1]; seed Eq. 6 [3].
+    """
+    b = [power_law_cm(reynolds, gap_ratio, C, BILGEN_BOULOS_ALPHA, beta)
+         for C, beta in BILGEN_BOULOS_BRANCHES]
+    r1, r2, r3 = REGIME_BOUNDARIES_RE
+    return m.where(reynolds < r1, b[0], m.where(reynolds < r2, b[1],
+                                                m.where(reynolds < r3, b[2], b[3])))
+
+
+def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
+    """Smooth form of Eq. 6: branches blended in log space with logistic weights.
+
+    ``ln Cm = ln Cm_1 + sum_k s_k (ln Cm_{k+1} - ln Cm_k)``,
+    ``s_k = sigmoid((ln Re - ln Re_k) / width)`` at the breaks Re_k = 64, 500,
+    1e4. Every branch is an instance of Eq. 7, so the blend is Eq. 7 with a
+    Reynolds-dependent C and beta.
+
+    References
+    ----------
+    Bilgen & Boulos [1]; seed Eqs. 6-7 [3].
+    """
+    ln_re = m.log(reynolds)
+    ln_x = m.log(gap_ratio)
+    lnc = [math.log(C) + BILGEN_BOULOS_ALPHA * ln_x + beta * ln_re
+           for C, beta in BILGEN_BOULOS_BRANCHES]
+    out = lnc[0]
+    for k, re_k in enumerate(REGIME_BOUNDARIES_RE):
+        out = out + m.sigmoid((ln_re - math.log(re_k)) / width) * (lnc[k + 1] - lnc[k])
+    return m.exp(out)
+
+
+def couette_law_cm(reynolds, gap_ratio):
+    """Eq. 6 with the exact laminar law: Couette below Ta_c, max(Couette, Eq. 6) above."""
+    cc = couette_moment_coefficient(reynolds, gap_ratio)
+    ta = taylor_number(reynolds, gap_ratio, 1.0)
+    return m.where(ta < CRITICAL_TAYLOR_NUMBER, cc, m.fmax(cc, bilgen_boulos_cm(reynolds,
+                                                                              gap_ratio)))
+
+
+def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
+                          max_width=SMOOTH_MAX_WIDTH):
+    """Smooth form of :func:`couette_law_cm` (logistic switch in ln Ta, smooth max)."""
+    ln_cc = m.log(couette_moment_coefficient(reynolds, gap_ratio))
+    ln_bb = m.log(bilgen_boulos_cm_smooth(reynolds, gap_ratio, width))
+    ta = taylor_number(reynolds, gap_ratio, 1.0)
+    s = m.sigmoid(m.log(ta / CRITICAL_TAYLOR_NUMBER) / width)
+    return m.exp(ln_cc + s * m.smooth_relu(ln_bb - ln_cc, max_width))
+
+
+@dataclass(frozen=True)
+class FrictionLaw:
+    """How C_m is computed.
+
+    Attributes
+    ----------
+    form : {"bilgen-boulos", "smooth", "power-law"}
+        Eq. 6 exactly, its smooth form, or one power law (Eq. 7) with C, alpha, beta.
+    laminar_law : {"couette", "bilgen-boulos"}
+        Law below the critical Taylor number for the two Eq. 6 forms.
+    gamma : float
+        Groove-roughness exponent of Eq. 8 (applies to region 1 only, via T).
+    scale : float
+        Multiplier on the Eq. 6 forms (a calibration constant; 1 = as published).
+    C, alpha, beta : float
+        Coefficients of the power-law form (default: the Eq. 6 laminar branch).
+    """
+
+    form: Literal["bilgen-boulos", "smooth", "power-law"] = "bilgen-boulos"
+    laminar_law: Literal["couette", "bilgen-boulos"] = "couette"
+    gamma: float = 0.0
+    scale: float = 1.0
+    C: float = 10.0
+    alpha: float = 0.3
+    beta: float = -1.0
+
+    def __post_init__(self):
+        where = "friction"
+        if self.form not in FORMS:
+            raise InputError("form", self.form, f"allowed: {', '.join(FORMS)}", where)
+        if self.laminar_law not in LAMINAR_LAWS:
+            raise InputError("laminar_law", self.laminar_law,
+                             f"allowed: {', '.join(LAMINAR_LAWS)}", where)
+        for f in ("gamma", "alpha", "beta"):
+            check_finite(f, getattr(self, f), where)
+        check_positive("scale", self.scale, where)
+        check_positive("C", self.C, where)
+
+    def smooth(self) -> FrictionLaw:
+        """The same law with the smooth form of Eq. 6 (power law stays as it is)."""
+        return self if self.form == "power-law" else replace(self, form="smooth")
+
+
+def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
+    """Moment coefficient C_m [-] of a clearance under ``law`` (seed Eqs. 6-8).
+
+    Parameters
+    ----------
+    reynolds : Couette Reynolds number [-] (floored at :data:`RE_FLOOR`)
+    gap_ratio : delta / R [-]
+    law : FrictionLaw
+    roughness_T : clearance roughness T [-] (1 = smooth; Eq. 9)
+
+    References
+    ----------
+    Seed Eqs. 6-8 [3]; Bilgen & Boulos [1].
+    """
+    re = m.fmax(reynolds, RE_FLOOR)
+    if law.form == "power-law":
+        base = power_law_cm(re, gap_ratio, law.C, law.alpha, law.beta)
+    elif law.laminar_law == "couette":
+        base = law.scale * (couette_law_cm_smooth(re, gap_ratio) if law.form == "smooth"
+                            else couette_law_cm(re, gap_ratio))
+    else:
+        base = law.scale * (bilgen_boulos_cm_smooth(re, gap_ratio) if law.form == "smooth"
+                            else bilgen_boulos_cm(re, gap_ratio))
+    if isinstance(law.gamma, (int, float)) and law.gamma == 0.0:
+        return base
+    return base * groove_roughness_factor(roughness_T, law.gamma)

@@ -1,0 +1,101 @@
+"""Taylor-Couette flow in a clearance: Reynolds and Taylor numbers, flow regime,
+exact laminar (circular Couette) torque.
+
+Geometry: an inner cylinder of radius R [m] turning at omega [rad/s] inside a
+fixed outer cylinder of radius R + delta; x = delta / R.
+
+References
+----------
+.. [1] Seed paper, Eqs. 2-4 (``../shared/reference/seed-paper.md``).
+.. [2] G. I. Taylor, "Stability of a viscous liquid contained between two
+   rotating cylinders", Phil. Trans. R. Soc. A 223:289-343, 1923.
+.. [3] F. M. White, *Viscous Fluid Flow*, 3rd ed., McGraw-Hill 2006, sec. 3-2.3
+   (flow between rotating concentric cylinders).
+.. [4] E. Bilgen, R. Boulos, "Functional dependence of torque coefficient of
+   coaxial cylinders on gap width and Reynolds numbers", ASME J. Fluids Eng.
+   95(1):122-126, 1973.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from . import _math as m
+
+CRITICAL_TAYLOR_NUMBER = 41.3
+"""Critical Taylor number Ta = Re (delta/R)^0.5 for the onset of Taylor vortices [1], [2]."""
+
+REGIME_BOUNDARIES_RE = (64.0, 500.0, 1.0e4)
+"""Couette Reynolds numbers at which Eq. 6 changes branch [4]."""
+
+REGIME_NAMES = ("laminar", "laminar with vortices", "turbulent with vortices", "turbulent")
+"""Bilgen-Boulos flow regimes, in the order of the Eq. 6 branches [4]."""
+
+
+def couette_reynolds(omega_rad_s, radius_m, gap_m, nu_m2_s):
+    """Couette Reynolds number ``Re = |omega| R delta / nu`` [-] (seed Eq. 4).
+
+    Parameters
+    ----------
+    omega_rad_s : angular speed of the inner cylinder [rad/s] (sign ignored)
+    radius_m : inner-cylinder radius R [m]
+    gap_m : radial clearance delta [m]
+    nu_m2_s : kinematic viscosity [m^2/s]
+
+    References
+    ----------
+    Seed paper Eq. 4 [1].
+    """
+    return m.fabs(omega_rad_s) * radius_m * gap_m / nu_m2_s
+
+
+def taylor_number(reynolds, gap_m, radius_m):
+    """Taylor number ``Ta = Re (delta / R)^0.5`` [-] (seed Eq. 3).
+
+    References
+    ----------
+    Seed paper Eq. 3 [1]; Taylor [2].
+    """
+    return reynolds * m.sqrt(gap_m / radius_m)
+
+
+def flow_regime(reynolds) -> np.ndarray:
+    """Bilgen-Boulos regime name for each Reynolds number (numpy only).
+
+    Returns an array of strings from :data:`REGIME_NAMES`: Re < 64 laminar,
+    64-500 laminar with vortices, 500-1e4 turbulent with vortices, >= 1e4
+    turbulent [4].
+    """
+    idx = np.searchsorted(np.asarray(REGIME_BOUNDARIES_RE), np.asarray(reynolds, dtype=float),
+                          side="right")
+    return np.asarray(REGIME_NAMES, dtype=object)[idx]
+
+
+def couette_torque(omega_rad_s, mu_Pa_s, inner_radius_m, outer_radius_m, length_m):
+    """Exact laminar torque [N m] on the inner cylinder of circular Couette flow.
+
+    ``tau = 4 pi mu L R1^2 R2^2 / (R2^2 - R1^2) * omega`` with the outer cylinder
+    at rest (seed Eq. 2 with the dynamic viscosity and times the length).
+    Valid below the critical Taylor number.
+
+    References
+    ----------
+    White [3], Eq. 3-49; seed paper Eq. 2 [1].
+    """
+    r1s = inner_radius_m * inner_radius_m
+    r2s = outer_radius_m * outer_radius_m
+    return 4.0 * np.pi * mu_Pa_s * length_m * r1s * r2s / (r2s - r1s) * omega_rad_s
+
+
+def couette_moment_coefficient(reynolds, gap_ratio):
+    """Moment coefficient of laminar circular Couette flow in the form of seed Eq. 5.
+
+    ``Cm = 8 (1 + x)^2 / ((2 + x) Re)``, x = delta/R: :func:`couette_torque`
+    written as ``P = 0.5 pi Cm rho omega^3 R^4 L``.
+
+    References
+    ----------
+    White [3]; derivation in the README, "Model".
+    """
+    x = gap_ratio
+    return 8.0 * (1.0 + x) ** 2 / ((2.0 + x) * reynolds)

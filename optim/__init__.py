@@ -1,0 +1,1 @@
+"""oilgap.optim: the clearance geometry as a CasADi/IPOPT design NLP."""

@@ -1,0 +1,1 @@
+"""oilgap.studies: smoothing, Pareto, oil-grade and trade studies; the command line."""

@@ -47,7 +47,7 @@ class OilgapWarning(UserWarning):
 
 def check_finite(field: str, value: Any, where: str | None = None) -> float:
     """Return ``value`` as float, or raise InputError if it is not a finite number."""
-    if isinstance(value, bool):
+    if isinstance(value, (bool, str, bytes)):
         raise InputError(field, value, "a finite number is required", where)
     try:
         x = float(value)

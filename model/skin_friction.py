@@ -8,13 +8,16 @@ law (Eq. 7) and the groove-roughness law (Eq. 8):
   in ln Re (width :data:`SMOOTH_WIDTH`), twice differentiable everywhere, for
   the optimizer. Outside a +-10 % band of Re around each break it is within
   3 % of the exact form (tested; the bound actually reached is in the README).
-* laminar law ``"couette"``: below the critical Taylor number the exact
-  circular-Couette coefficient ``8 (1+x)^2 / ((2+x) Re)``; above it
-  ``max(Couette, Eq. 6)``, since no flow between the cylinders dissipates less
-  than the laminar Couette flow (Helmholtz's minimum-dissipation theorem: the
-  circular Couette field is also the Stokes flow for these boundary values).
+* laminar law ``"couette"`` (default): ``C_m = max(C_m,Couette, C_m,Eq.6)`` with
+  the exact circular-Couette coefficient ``8 (1+x)^2 / ((2+x) Re)``. No flow
+  between the cylinders dissipates less than laminar Couette flow (Helmholtz's
+  minimum-dissipation theorem: the circular Couette field is also the Stokes
+  flow for these boundary values), so Eq. 6 values below it are unphysical.
+  Below the critical Taylor number at narrow gaps (x < ~0.05) this is the
+  exact Couette torque throughout the Eq. 6 laminar range. Unlike a hard
+  switch at Ta = 41.3 (where Eq. 6 jumps up to 50 % above Couette), the max
+  is continuous wherever Eq. 6 is and keeps the loss rising with viscosity.
   Laminar law ``"bilgen-boulos"`` uses Eq. 6 as it stands.
-
 All functions accept floats, numpy arrays and CasADi symbols.
 
 References
@@ -35,12 +38,7 @@ from typing import Literal
 
 from . import _math as m
 from .errors import InputError, check_finite, check_positive
-from .taylor_couette import (
-    CRITICAL_TAYLOR_NUMBER,
-    REGIME_BOUNDARIES_RE,
-    couette_moment_coefficient,
-    taylor_number,
-)
+from .taylor_couette import REGIME_BOUNDARIES_RE, couette_moment_coefficient
 
 BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))
 """(C, beta) of the four branches of seed Eq. 6; each is multiplied by (delta/R)^0.3 [1]."""
@@ -49,7 +47,7 @@ BILGEN_BOULOS_ALPHA = 0.3
 """Gap-ratio exponent alpha of every branch of Eq. 6 [1]."""
 
 SMOOTH_WIDTH = 0.025
-"""Width in ln Re (and ln Ta) of the logistic blends of the smooth form [-]."""
+"""Width in ln Re of the logistic blends of the smooth form [-]."""
 
 SMOOTH_MAX_WIDTH = 0.02
 """Width in ln C_m of the smooth max between Couette and Eq. 6 [-]."""
@@ -117,21 +115,23 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
 
 
 def couette_law_cm(reynolds, gap_ratio):
-    """Eq. 6 with the exact laminar law: Couette below Ta_c, max(Couette, Eq. 6) above."""
-    cc = couette_moment_coefficient(reynolds, gap_ratio)
-    ta = taylor_number(reynolds, gap_ratio, 1.0)
-    return m.where(ta < CRITICAL_TAYLOR_NUMBER, cc, m.fmax(cc, bilgen_boulos_cm(reynolds,
-                                                                              gap_ratio)))
+    """Eq. 6 bounded below by the exact laminar law: ``max(Couette, Eq. 6)`` [-].
+
+    References
+    ----------
+    White (circular Couette flow); Helmholtz/Korteweg [4]; Bilgen & Boulos [1].
+    """
+    return m.fmax(couette_moment_coefficient(reynolds, gap_ratio),
+                  bilgen_boulos_cm(reynolds, gap_ratio))
 
 
 def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
                           max_width=SMOOTH_MAX_WIDTH):
-    """Smooth form of :func:`couette_law_cm` (logistic switch in ln Ta, smooth max)."""
+    """Smooth form of :func:`couette_law_cm`: a smooth max in log space of the
+    Couette coefficient and :func:`bilgen_boulos_cm_smooth` [-]."""
     ln_cc = m.log(couette_moment_coefficient(reynolds, gap_ratio))
     ln_bb = m.log(bilgen_boulos_cm_smooth(reynolds, gap_ratio, width))
-    ta = taylor_number(reynolds, gap_ratio, 1.0)
-    s = m.sigmoid(m.log(ta / CRITICAL_TAYLOR_NUMBER) / width)
-    return m.exp(ln_cc + s * m.smooth_relu(ln_bb - ln_cc, max_width))
+    return m.exp(ln_cc + m.smooth_relu(ln_bb - ln_cc, max_width))
 
 
 @dataclass(frozen=True)
@@ -143,7 +143,8 @@ class FrictionLaw:
     form : {"bilgen-boulos", "smooth", "power-law"}
         Eq. 6 exactly, its smooth form, or one power law (Eq. 7) with C, alpha, beta.
     laminar_law : {"couette", "bilgen-boulos"}
-        Law below the critical Taylor number for the two Eq. 6 forms.
+        ``"couette"``: Eq. 6 bounded below by the exact laminar Couette law;
+        ``"bilgen-boulos"``: Eq. 6 as published (both Eq. 6 forms).
     gamma : float
         Groove-roughness exponent of Eq. 8 (applies to region 1 only, via T).
     scale : float

@@ -76,7 +76,7 @@ def joint_output_torque(motor_torque_Nm, viscous_torque_Nm, gear_ratio, gear_eff
 
 
 def weighted_mean(values, weights):
-    """Mean of ``values`` with weights summing to 1 (duty-cycle quadrature)."""
+    """Mean of ``values`` [any unit] with weights [-] summing to 1 (duty-cycle quadrature)."""
     if m.is_symbolic(values, weights):
         import casadi as ca
 

@@ -233,3 +233,20 @@ def test_cli_bad_input_subprocess_no_traceback(tmp_path):
     r = subprocess.run([sys.executable, "-m", "oilgap.studies.cli", "evaluate", "--temp-c",
                         "nan"], capture_output=True, text=True)
     assert r.returncode == 2 and "--temp-c" in r.stderr and "Traceback" not in r.stderr
+
+
+def test_rig_without_region2(tmp_path):
+    toml = SEED_TOML.replace("[region2]\nradius_mm = 22.0\nlength_mm = 14.24\ngap_mm = 5.0\n",
+                             "")
+    case = read_case_toml(write(tmp_path, toml))
+    assert case.region2 is None
+    ev = evaluate_case(case)
+    full = evaluate_case(read_case_toml(write(tmp_path, SEED_TOML, "full.toml")))
+    assert len(ev.regions) == 1
+    assert ev.total_mean_power_W == pytest.approx(full.regions[0].mean_power_W, rel=1e-14)
+
+
+def test_cli_oils_csv(tmp_path, capsys):
+    p = write(tmp_path, "oil,nu40_cSt,nu100_cSt,density_kg_m3\nRigOil,46,7,870\n", "oils.csv")
+    assert main(["evaluate", "--oils", str(p), "--oil", "rigoil", "--json"]) == 0
+    assert '"oil": "RigOil"' in capsys.readouterr().out

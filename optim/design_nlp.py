@@ -1,0 +1,815 @@
+"""The clearance geometry of region 1 as a CasADi/IPOPT nonlinear program.
+
+Decision variables (non-redundant, in millimetres inside the NLP)::
+
+    x = (R, delta, d_r, d_s, L)
+    R      = T2        rotor outer radius (region 1 radius)
+    delta  = T3 - T2   clearance, also the magnetic gap g
+    d_r    = T2 - T1   rotor groove depth left open by the epoxy fill
+    d_s    = T4 - T3   stator groove depth left open by the epoxy fill
+    L                  clearance (stack) length
+
+so that T1 = R - d_r, T3 = R + delta, T4 = R + delta + d_s and
+T = (T4 - T1)/(T3 - T2) = 1 + (d_r + d_s)/delta >= 1 by construction (Eq. 9).
+
+Problem::
+
+    min   P1(x; nu, rho) + P2(nu, rho)          mean viscous power over the duty cycle [W]
+    s.t.  tau(R, delta, L)      >= tau_min      torque capability [N m]
+          J(R, d_r, L)          <= J_max        rotor inertia with the epoxy fill [kg m^2]
+          R_min <= R <= R_max,  delta_min <= delta <= delta_max,  L_min <= L <= L_max
+          0 <= d_r <= d_r0,     0 <= d_s <= d_s0  (filling only makes grooves shallower)
+
+with ``P1 = sum_i w_i clearance_power(omega_i, nu, rho, R, delta, L, law_smooth, T)``
+over the exact speed distribution (omega_i, w_i) of the duty cycle
+(:meth:`DutyCycle.speed_distribution`), the smooth C_m (no ``if_else`` in the
+NLP), and P2 the (constant) bearing-annulus power. The torque capability and
+inertia are :mod:`oilgap.model.magnetics` (Carter coefficient with slot pitch
+2 pi T3 / Q_s, B_g, tau = 2 pi R^2 L k_w B_g A / sqrt 2, grooved rotor with
+T1_unfilled = R - d_r0).
+
+The NLP is built once per case (:class:`DesignProblem`); the oil state
+(nu, rho), the objective scale, tau_min, J_max and every bound are parameters
+of each :meth:`DesignProblem.solve`, so studies re-solve it without rebuilding.
+
+References
+----------
+.. [1] Seed paper, Eqs. 4-10 (``../shared/reference/seed-paper.md``).
+.. [2] J. F. Gieras, *Permanent Magnet Motor Technology*, 3rd ed., 2010, A.27-A.28.
+.. [3] A. Wächter, L. T. Biegler, "On the implementation of an interior-point
+   filter line-search algorithm for large-scale nonlinear programming",
+   Math. Program. 106:25-57, 2006 (IPOPT).
+.. [4] J. Nocedal, S. J. Wright, *Numerical Optimization*, 2nd ed., Springer
+   2006, sec. 12.8 (multipliers as sensitivities of the optimal value).
+"""
+
+from __future__ import annotations
+
+import time
+import warnings
+from collections.abc import Mapping, Sequence
+from dataclasses import asdict, dataclass, field, replace
+from typing import Any
+
+import casadi as ca
+import numpy as np
+
+from oilgap.model.case import (
+    DesignBounds,
+    DesignCase,
+    OperatingPoint,
+    RotorStatorClearance,
+)
+from oilgap.model.errors import (
+    InfeasibleError,
+    InputError,
+    OilgapWarning,
+    SolverError,
+    check_finite,
+    check_positive,
+)
+from oilgap.model.evaluation import oil_state
+from oilgap.model.magnetics import (
+    airgap_flux_density,
+    carter_coefficient,
+    grooved_rotor_inertia,
+    torque_capability,
+)
+from oilgap.model.oils import Oil
+from oilgap.model.skin_friction import FrictionLaw, groove_roughness
+from oilgap.model.units import MM_TO_M
+from oilgap.model.viscous_loss import clearance_power, weighted_mean
+
+VARIABLES = ("R", "delta", "d_r", "d_s", "L")
+"""Decision variables, in the order of the NLP vector."""
+
+VARIABLE_LABELS = {
+    "R": ("R_mm", "radius", "rotor outer radius R = T2"),
+    "delta": ("delta_mm", "gap", "clearance delta = T3 - T2 (= magnetic gap)"),
+    "d_r": ("rotor_groove_depth_mm", "rotor_groove_depth", "rotor groove depth T2 - T1"),
+    "d_s": ("stator_groove_depth_mm", "stator_groove_depth", "stator groove depth T4 - T3"),
+    "L": ("L_mm", "length", "clearance length L"),
+}
+"""variable -> (JSON key, bound name stem, description)."""
+
+SUCCESS_STATUSES = ("Solve_Succeeded", "Solved_To_Acceptable_Level")
+"""IPOPT return statuses accepted as an optimum."""
+
+IPOPT_TOL = 1e-9
+"""IPOPT convergence tolerance on the scaled NLP error (objective scaled to ~1, x in mm)."""
+
+ACTIVE_RTOL = 1e-6
+"""A bound or constraint is active when its slack is below this fraction of its scale."""
+
+_QUIET = {"ipopt.print_level": 0, "ipopt.sb": "yes", "print_time": False}
+_SOLVER_OPTIONS = {"ipopt.tol": IPOPT_TOL, "ipopt.mu_init": 1e-3,
+                   "ipopt.fast_step_computation": "yes", "error_on_fail": False,
+                   "expand": True}
+_WARM_OPTIONS = {"ipopt.warm_start_init_point": "yes", "ipopt.warm_start_bound_push": 1e-9,
+                 "ipopt.warm_start_bound_frac": 1e-9, "ipopt.warm_start_slack_bound_push": 1e-9,
+                 "ipopt.warm_start_slack_bound_frac": 1e-9,
+                 "ipopt.warm_start_mult_bound_push": 1e-9, "ipopt.mu_init": 1e-6}
+
+
+# --------------------------------------------------------------------------- design functions
+# Compositions of the model's functions over the design variables. They accept
+# floats, numpy arrays and CasADi symbols (all SI), like the model itself.
+
+
+def clearance_radii(R_m, delta_m, rotor_groove_m, stator_groove_m):
+    """Radii (T1, T2, T3, T4) [m] of region 1 from the design variables.
+
+    T1 = R - d_r, T2 = R, T3 = R + delta, T4 = R + delta + d_s.
+    """
+    T3 = R_m + delta_m
+    return R_m - rotor_groove_m, R_m, T3, T3 + stator_groove_m
+
+
+def motor_torque(motor, R_m, delta_m, L_m):
+    """Torque capability [N m], air-gap flux density [T] and Carter coefficient [-].
+
+    Carter coefficient with the slot pitch at the bore ``2 pi T3 / Q_s`` and the
+    magnetic gap ``g = delta`` (epoxy is non-magnetic) [2]; ``B_g`` and
+    ``tau = 2 pi R^2 L k_w B_g A / sqrt 2`` from :mod:`oilgap.model.magnetics`.
+    """
+    pitch = 2.0 * np.pi * (R_m + delta_m) / motor.slot_count
+    kc = carter_coefficient(pitch, motor.slot_opening, delta_m)
+    bg = airgap_flux_density(motor.remanence_T, motor.magnet_thickness,
+                             motor.recoil_permeability, kc, delta_m, motor.saturation_factor)
+    tau = torque_capability(bg, motor.electric_loading_A_m, motor.winding_factor, R_m, L_m)
+    return tau, bg, kc
+
+
+def rotor_inertia(motor, R_m, rotor_groove_m, L_m, machined_groove_m):
+    """Rotor inertia [kg m^2] with grooves machined ``machined_groove_m`` deep and filled
+    with epoxy up to ``rotor_groove_m`` below the surface (T1_unfilled = R - d_r0)."""
+    return grooved_rotor_inertia(L_m, motor.shaft_bore_radius, R_m - machined_groove_m,
+                                 R_m - rotor_groove_m, R_m, motor.rotor_density_kg_m3,
+                                 motor.rotor_groove_solid_fraction, motor.epoxy_density_kg_m3)
+
+
+def region1_mean_power(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m, nu_m2_s,
+                       rho_kg_m3, nodes_rad_s, weights, law: FrictionLaw):
+    """Mean viscous power [W] of region 1 over a speed distribution (seed Eqs. 4-10).
+
+    ``sum_i w_i clearance_power(omega_i, nu, rho, R, delta, L, law, T)`` with
+    T from Eq. 9. For CasADi arguments pass ``nodes_rad_s`` as a ``casadi.DM``.
+    """
+    T = groove_roughness(*clearance_radii(R_m, delta_m, rotor_groove_m, stator_groove_m))
+    p = clearance_power(nodes_rad_s, nu_m2_s, rho_kg_m3, R_m, delta_m, L_m, law, T)
+    return weighted_mean(p, weights)
+
+
+# --------------------------------------------------------------------------- results
+
+
+@dataclass(frozen=True)
+class DesignPoint:
+    """One region-1 design with everything the optimizer reports (SI).
+
+    ``mean_power_W`` is the NLP's objective: region 1 plus region 2, both with the
+    smooth C_m (``case.friction.smooth()``); :meth:`DesignResult.evaluate` gives
+    the exact-Eq.-6 numbers of ``oilgap evaluate``.
+    """
+
+    R_m: float
+    delta_m: float
+    rotor_groove_depth_m: float
+    stator_groove_depth_m: float
+    L_m: float
+    T1_m: float
+    T2_m: float
+    T3_m: float
+    T4_m: float
+    T: float
+    region1_power_W: float
+    region2_power_W: float
+    mean_power_W: float
+    torque_capability_Nm: float
+    airgap_flux_density_T: float
+    carter_coefficient: float
+    inertia_kgm2: float
+    inertia_ratio: float
+    """Inertia over the reference (the case's unfilled rotor) [-]."""
+
+    @property
+    def x_mm(self) -> np.ndarray:
+        """The NLP vector (R, delta, d_r, d_s, L) [mm]."""
+        return np.array([self.R_m, self.delta_m, self.rotor_groove_depth_m,
+                         self.stator_groove_depth_m, self.L_m]) / MM_TO_M
+
+    def to_dict(self) -> dict[str, float]:
+        """Unit-keyed plain dict (lengths in mm) for JSON and tables."""
+        mm = 1.0 / MM_TO_M
+        return {
+            "mean_power_W": self.mean_power_W,
+            "region1_power_W": self.region1_power_W,
+            "region2_power_W": self.region2_power_W,
+            "T": self.T,
+            "delta_mm": self.delta_m * mm,
+            "R_mm": self.R_m * mm,
+            "L_mm": self.L_m * mm,
+            "T1_mm": self.T1_m * mm,
+            "T2_mm": self.T2_m * mm,
+            "T3_mm": self.T3_m * mm,
+            "T4_mm": self.T4_m * mm,
+            "rotor_groove_depth_mm": self.rotor_groove_depth_m * mm,
+            "stator_groove_depth_mm": self.stator_groove_depth_m * mm,
+            "torque_capability_Nm": self.torque_capability_Nm,
+            "airgap_flux_density_T": self.airgap_flux_density_T,
+            "carter_coefficient": self.carter_coefficient,
+            "inertia_kgm2": self.inertia_kgm2,
+            "inertia_ratio": self.inertia_ratio,
+        }
+
+
+@dataclass(frozen=True)
+class Multiplier:
+    """What a constraint costs: d(optimal mean power)/d(its bound), in physical units.
+
+    ``value`` is the derivative of the optimal mean power [W] with respect to the
+    constraint's bound in ``unit`` (e.g. W per N m of required torque, W per mm
+    of gap_max, W per % of the reference inertia); it is zero when the constraint
+    is inactive. Signs: raising a binding lower bound costs (> 0), raising a
+    binding upper bound saves (< 0) [4].
+    """
+
+    name: str
+    constraint: str
+    value: float
+    unit: str
+    active: bool
+
+    def to_dict(self) -> dict[str, Any]:
+        return asdict(self)
+
+
+@dataclass(frozen=True)
+class DesignParameters:
+    """The parameters one solve used (SI)."""
+
+    oil: str
+    oil_temp_C: float
+    depth_m: float
+    nu_m2_s: float
+    rho_kg_m3: float
+    torque_min_Nm: float
+    inertia_ref_kgm2: float
+    inertia_max_kgm2: float
+    lower_m: tuple[float, ...]
+    """Lower bounds of (R, delta, d_r, d_s, L) [m]."""
+    upper_m: tuple[float, ...]
+    """Upper bounds of (R, delta, d_r, d_s, L) [m]."""
+    raw_oil_state: bool = False
+    """True if nu/rho were given directly (not from an oil at a condition)."""
+
+    @property
+    def inertia_max_ratio(self) -> float:
+        return self.inertia_max_kgm2 / self.inertia_ref_kgm2
+
+    def to_dict(self) -> dict[str, Any]:
+        mm = 1.0 / MM_TO_M
+        d: dict[str, Any] = {"oil": self.oil, "oil_temp_C": self.oil_temp_C,
+                             "depth_m": self.depth_m, "nu_cSt": self.nu_m2_s * 1e6,
+                             "density_kg_m3": self.rho_kg_m3,
+                             "torque_min_Nm": self.torque_min_Nm,
+                             "inertia_ref_kgm2": self.inertia_ref_kgm2,
+                             "inertia_max_kgm2": self.inertia_max_kgm2,
+                             "inertia_max_ratio": self.inertia_max_ratio}
+        for v, lo, hi in zip(VARIABLES, self.lower_m, self.upper_m, strict=True):
+            stem = VARIABLE_LABELS[v][1]
+            d[f"{stem}_min_mm"] = lo * mm
+            d[f"{stem}_max_mm"] = hi * mm
+        return d
+
+
+@dataclass(frozen=True, eq=False)
+class DesignResult:
+    """An optimum of the design NLP (solver failures raise instead).
+
+    Attributes
+    ----------
+    status : IPOPT return status
+    success : True (failures raise SolverError / InfeasibleError)
+    iterations : IPOPT iterations
+    solve_time_s : wall time of the IPOPT call [s]
+    initial, optimal : DesignPoint
+        The start point (the case's design unless ``x0`` was given) and the optimum.
+    active_constraints : names of the active constraints and bounds
+    multipliers : name -> Multiplier (every constraint and bound, zero if inactive)
+    parameters : DesignParameters
+    case : the case solved (with the oil/operating overrides applied)
+    """
+
+    status: str
+    success: bool
+    iterations: int
+    solve_time_s: float
+    initial: DesignPoint
+    optimal: DesignPoint
+    active_constraints: tuple[str, ...]
+    multipliers: Mapping[str, Multiplier]
+    parameters: DesignParameters
+    case: DesignCase = field(repr=False)
+    machined_rotor_groove_m: float = field(repr=False, default=0.0)
+    machined_stator_groove_m: float = field(repr=False, default=0.0)
+    _raw: Mapping[str, Any] = field(repr=False, default_factory=dict)
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain-dict form (the ``--json`` output of ``oilgap optimize``)."""
+        return {
+            "status": self.status,
+            "success": self.success,
+            "iterations": self.iterations,
+            "solve_time_s": self.solve_time_s,
+            "case": self.case.name,
+            "parameters": self.parameters.to_dict(),
+            "initial": self.initial.to_dict(),
+            "optimal": self.optimal.to_dict(),
+            "active_constraints": list(self.active_constraints),
+            "multipliers": {k: v.to_dict() for k, v in self.multipliers.items()},
+        }
+
+    def to_case(self, name: str | None = None) -> DesignCase:
+        """The optimal design as a DesignCase (``write_case_toml`` writes it).
+
+        Region 1 takes the optimal T1..T4 and L with the machined groove bottoms
+        ``T1_unfilled = R - d_r0``, ``T4_unfilled = T3 + d_s0``; the bounds are
+        those of this solve, with ``torque_min_Nm`` the torque required here and
+        ``inertia_max_ratio`` rescaled so that it gives the same absolute inertia
+        limit for the new rotor. Re-optimizing the returned case therefore poses
+        the same problem. If nu/rho were given directly (no oil), the case keeps
+        its oil and a warning says so.
+        """
+        if self.parameters.raw_oil_state:
+            warnings.warn("the solve used nu/rho given directly; the case written keeps the "
+                          f"oil {self.case.oil.name} at its operating condition",
+                          OilgapWarning, stacklevel=2)
+        o = self.optimal
+        r1 = RotorStatorClearance(o.T1_m, o.T2_m, o.T3_m, o.T4_m, o.L_m,
+                                  T1_unfilled=o.R_m - self.machined_rotor_groove_m,
+                                  T4_unfilled=o.T3_m + self.machined_stator_groove_m)
+        motor = self.case.motor
+        j_ref_new = float(rotor_inertia(motor, o.R_m, self.machined_rotor_groove_m, o.L_m,
+                                        self.machined_rotor_groove_m))
+        lo, hi = self.parameters.lower_m, self.parameters.upper_m
+        bounds = DesignBounds(lo[1], hi[1], lo[0], hi[0], lo[4], hi[4],
+                              inertia_max_ratio=self.parameters.inertia_max_kgm2 / j_ref_new,
+                              torque_min_Nm=self.parameters.torque_min_Nm)
+        return replace(self.case, name=name or f"{self.case.name}, optimized",
+                       region1=r1, bounds=bounds)
+
+    def evaluate(self):
+        """(initial, optimal) :class:`CaseEvaluation` with the case's own (exact) C_m form,
+        i.e. what ``oilgap evaluate`` prints for the two designs."""
+        from oilgap.model.evaluation import evaluate_case
+
+        i = self.initial
+        start = self.case.with_region1(
+            T1=i.T1_m, T2=i.T2_m, T3=i.T3_m, T4=i.T4_m, length=i.L_m,
+            T1_unfilled=i.R_m - self.machined_rotor_groove_m,
+            T4_unfilled=i.T3_m + self.machined_stator_groove_m)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OilgapWarning)
+            opt = self.to_case()
+        return evaluate_case(start), evaluate_case(opt)
+
+
+# --------------------------------------------------------------------------- the problem
+
+
+def _finite_or_none(name: str, value: Any, positive: bool = True) -> float | None:
+    if value is None:
+        return None
+    return check_positive(name, value, "optimize") if positive else check_finite(
+        name, value, "optimize")
+
+
+class DesignProblem:
+    """The design NLP of a case, built once and re-solved with parameters.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The joint; its region-1 design is the default start point, its bounds
+        the default bounds, its torque capability the default ``torque_min``
+        (unless ``case.bounds.torque_min_Nm`` is set), and its unfilled rotor the
+        inertia reference.
+    verbose : bool
+        Let IPOPT print its iterations.
+
+    Examples
+    --------
+    >>> from oilgap.model.case import seed_case
+    >>> prob = DesignProblem(seed_case())
+    >>> res = prob.solve()                        # doctest: +SKIP
+    >>> res.optimal.mean_power_W, res.multipliers["torque_min"].value  # doctest: +SKIP
+    >>> res2 = prob.solve(x0=res, torque_min_Nm=0.45)  # warm start  # doctest: +SKIP
+    """
+
+    def __init__(self, case: DesignCase, verbose: bool = False):
+        t0 = time.perf_counter()
+        self.case = case
+        self.verbose = bool(verbose)
+        self.law = case.friction.smooth()
+        r1 = case.region1
+        m = case.motor
+        self.machined_rotor_groove_m = r1.T2 - r1.T1_unfilled
+        self.machined_stator_groove_m = r1.T4_unfilled - r1.T3
+        self.x_case_m = np.array([r1.T2, r1.gap, r1.T2 - r1.T1, r1.T4 - r1.T3, r1.length])
+        b = case.bounds
+        if b.radius_min - self.machined_rotor_groove_m <= m.shaft_bore_radius:
+            raise InputError("bounds.radius_min_mm", b.radius_min / MM_TO_M,
+                             "must leave the machined groove bottoms (R - "
+                             f"{self.machined_rotor_groove_m / MM_TO_M:g} mm) outside the "
+                             f"shaft bore ({m.shaft_bore_radius / MM_TO_M:g} mm)", "case")
+        nodes, weights = case.duty_cycle.speed_distribution()
+        keep = nodes > 0.0  # zero speed: |omega|^3 = 0, exactly no power (Eq. 5)
+        self.nodes_rad_s = np.ascontiguousarray(nodes[keep])
+        self.weights = np.ascontiguousarray(weights[keep])
+        self.tau_ref_Nm = float(motor_torque(m, r1.T2, r1.gap, r1.length)[0])
+        self.inertia_ref_kgm2 = float(rotor_inertia(m, r1.T2, self.machined_rotor_groove_m,
+                                                    r1.length, self.machined_rotor_groove_m))
+        self.nu_m2_s, _, self.rho_kg_m3 = (float(v) for v in oil_state(case))
+
+        x = ca.SX.sym("x", 5)  # (R, delta, d_r, d_s, L) [mm]
+        p = ca.SX.sym("p", 3)  # (nu [m^2/s], rho [kg/m^3], objective scale [W])
+        R, delta, d_r, d_s, L = (x[i] * MM_TO_M for i in range(5))
+        p1 = region1_mean_power(R, delta, d_r, d_s, L, p[0], p[1], ca.DM(self.nodes_rad_s),
+                                self.weights, self.law)
+        tau, bg, kc = motor_torque(m, R, delta, L)
+        J = rotor_inertia(m, R, d_r, L, self.machined_rotor_groove_m)
+        g = ca.vertcat(tau / self.tau_ref_Nm, J / self.inertia_ref_kgm2)
+        self._nlp = {"x": x, "p": p, "f": p1 / p[2], "g": g}
+        opts = dict(_SOLVER_OPTIONS, **_QUIET)
+        if self.verbose:
+            opts.update({"ipopt.print_level": 5, "print_time": True})
+            opts.pop("ipopt.sb")
+        self._opts = opts
+        self._solver = ca.nlpsol("oilgap_design", "ipopt", self._nlp, opts)
+        self._warm_solver = None
+        self._report = ca.Function("report", [x, p], [ca.vertcat(p1, tau, bg, kc, J)])
+        self.build_time_s = time.perf_counter() - t0
+
+    # ----------------------------------------------------------------- helpers
+
+    @property
+    def default_torque_min_Nm(self) -> float:
+        """``case.bounds.torque_min_Nm`` or, if unset, the case's own torque capability."""
+        t = self.case.bounds.torque_min_Nm
+        return self.tau_ref_Nm if t is None else float(t)
+
+    def region2_power(self, nu_m2_s: float, rho_kg_m3: float) -> float:
+        """Mean power [W] of region 2 (constant for the design), smooth C_m."""
+        r2 = self.case.region2
+        if r2 is None:
+            return 0.0
+        return float(clearance_power(self.nodes_rad_s, nu_m2_s, rho_kg_m3, r2.radius, r2.gap,
+                                     r2.length, self.law, 1.0) @ self.weights)
+
+    def point(self, x_m: Sequence[float], nu_m2_s: float | None = None,
+              rho_kg_m3: float | None = None) -> DesignPoint:
+        """The DesignPoint of a design vector (R, delta, d_r, d_s, L) [m]."""
+        nu = self.nu_m2_s if nu_m2_s is None else nu_m2_s
+        rho = self.rho_kg_m3 if rho_kg_m3 is None else rho_kg_m3
+        return self._point(np.asarray(x_m, dtype=float), nu, rho,
+                           self.region2_power(nu, rho))
+
+    def _point(self, x_m: np.ndarray, nu: float, rho: float, p2: float) -> DesignPoint:
+        p1, tau, bg, kc, J = (float(v) for v in
+                              np.asarray(self._report(x_m / MM_TO_M, [nu, rho, 1.0])).ravel())
+        R, delta, d_r, d_s, L = (float(v) for v in x_m)
+        T1, T2, T3, T4 = clearance_radii(R, delta, d_r, d_s)
+        return DesignPoint(R, delta, d_r, d_s, L, T1, T2, T3, T4,
+                           float(groove_roughness(T1, T2, T3, T4)), p1, p2, p1 + p2, tau, bg,
+                           kc, J, J / self.inertia_ref_kgm2)
+
+    def parameters(self, *, oil: Oil | None = None, oil_temp_C: float | None = None,
+                   depth_m: float | None = None, nu_m2_s: float | None = None,
+                   rho_kg_m3: float | None = None, torque_min_Nm: float | None = None,
+                   inertia_max_ratio: float | None = None, gap_min_m: float | None = None,
+                   gap_max_m: float | None = None, radius_min_m: float | None = None,
+                   radius_max_m: float | None = None, length_min_m: float | None = None,
+                   length_max_m: float | None = None,
+                   fix: Mapping[str, float] | Sequence[str] | None = None) -> DesignParameters:
+        """Resolve and validate the parameters of a solve (see :meth:`solve`)."""
+        case = self.case
+        raw = nu_m2_s is not None or rho_kg_m3 is not None
+        if raw and (oil is not None or oil_temp_C is not None or depth_m is not None):
+            raise InputError("nu_m2_s/rho_kg_m3", (nu_m2_s, rho_kg_m3),
+                             "give either nu/rho or oil/oil_temp_C/depth_m, not both",
+                             "optimize")
+        op = case.operating
+        t = op.oil_temp_C if oil_temp_C is None else check_finite("oil_temp_C", oil_temp_C,
+                                                                    "optimize")
+        d = op.depth_m if depth_m is None else check_finite("depth_m", depth_m, "optimize")
+        the_oil = case.oil if oil is None else oil
+        if oil is None and oil_temp_C is None and depth_m is None:
+            nu, rho = self.nu_m2_s, self.rho_kg_m3
+        else:
+            OperatingPoint(d, t)  # validates the ranges
+            nu, _, rho = (float(v) for v in oil_state(replace(case, oil=the_oil), t, d))
+        if nu_m2_s is not None:
+            nu = check_positive("nu_m2_s", nu_m2_s, "optimize")
+        if rho_kg_m3 is not None:
+            rho = check_positive("rho_kg_m3", rho_kg_m3, "optimize")
+        tmin = self.default_torque_min_Nm if torque_min_Nm is None else check_positive(
+            "torque_min_Nm", torque_min_Nm, "optimize")
+        ratio = case.bounds.inertia_max_ratio if inertia_max_ratio is None else check_positive(
+            "inertia_max_ratio", inertia_max_ratio, "optimize")
+        b = case.bounds
+        lo = [b.radius_min, b.gap_min, 0.0, 0.0, b.length_min]
+        hi = [b.radius_max, b.gap_max, self.machined_rotor_groove_m,
+              self.machined_stator_groove_m, b.length_max]
+        for i, (nlo, nhi) in enumerate(((radius_min_m, radius_max_m), (gap_min_m, gap_max_m),
+                                        (None, None), (None, None),
+                                        (length_min_m, length_max_m))):
+            stem = VARIABLE_LABELS[VARIABLES[i]][1]
+            v = _finite_or_none(f"{stem}_min_m", nlo)
+            lo[i] = lo[i] if v is None else v
+            v = _finite_or_none(f"{stem}_max_m", nhi)
+            hi[i] = hi[i] if v is None else v
+        if fix:
+            items = fix.items() if isinstance(fix, Mapping) else ((k, None) for k in fix)
+            for k, v in items:
+                if k not in VARIABLES:
+                    raise InputError("fix", k, f"allowed: {', '.join(VARIABLES)}", "optimize")
+                i = VARIABLES.index(k)
+                val = self.x_case_m[i] if v is None else check_finite(f"fix[{k}]", v,
+                                                                       "optimize")
+                lo[i] = hi[i] = val
+        for i, v in enumerate(VARIABLES):
+            stem = VARIABLE_LABELS[v][1]
+            if lo[i] > hi[i]:
+                raise InputError(f"{stem}_max_mm", hi[i] / MM_TO_M,
+                                 f"must be >= {stem}_min_mm = {lo[i] / MM_TO_M:g}", "optimize")
+            if v in ("d_r", "d_s"):
+                top = (self.machined_rotor_groove_m if v == "d_r"
+                       else self.machined_stator_groove_m)
+                if lo[i] < 0.0 or hi[i] > top * (1 + 1e-12) + 1e-15:
+                    raise InputError(f"fix[{v}]", hi[i] / MM_TO_M,
+                                     f"groove depth must lie in [0, {top / MM_TO_M:g}] mm "
+                                     "(filling only makes grooves shallower)", "optimize")
+            elif lo[i] <= 0.0:
+                raise InputError(f"{stem}_min_mm", lo[i] / MM_TO_M, "must be > 0", "optimize")
+        if lo[0] - self.machined_rotor_groove_m <= case.motor.shaft_bore_radius:
+            raise InputError("radius_min_mm", lo[0] / MM_TO_M, "must leave the machined groove "
+                             "bottoms outside the shaft bore", "optimize")
+        return DesignParameters(the_oil.name, t, d, nu, rho, tmin, self.inertia_ref_kgm2,
+                                ratio * self.inertia_ref_kgm2, tuple(lo), tuple(hi), raw)
+
+    # ----------------------------------------------------------------- feasibility
+
+    def check_feasible(self, params: DesignParameters, x_hint_m: np.ndarray | None = None
+                       ) -> None:
+        """Raise InfeasibleError, naming the conflicting constraints, if no design meets
+        ``torque >= torque_min`` and ``inertia <= inertia_max`` within the bounds.
+
+        The torque capability falls with delta and rises with R and L; the inertia
+        rises with R, L and the fill. So the problem is feasible iff some R admits an
+        L with ``tau(R, delta_min, L) >= tau_min`` and ``J(R, d_r,max, L) <= J_max``;
+        both are linear in L, which leaves a 1-D search over R (grid, then refined).
+        """
+        m = self.case.motor
+        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
+        tmin, jmax = params.torque_min_Nm, params.inertia_max_kgm2
+        if x_hint_m is not None:
+            x = np.clip(x_hint_m, lo, hi)
+            if (float(motor_torque(m, x[0], x[1], x[4])[0]) >= tmin and
+                    float(rotor_inertia(m, x[0], x[2], x[4], self.machined_rotor_groove_m))
+                    <= jmax):
+                return
+        d_lo, dr_hi, L_lo, L_hi = lo[1], hi[2], lo[4], hi[4]
+
+        def slack(R):
+            R = np.asarray(R, dtype=float)
+            t1 = motor_torque(m, R, d_lo, 1.0)[0]
+            j1 = rotor_inertia(m, R, dr_hi, 1.0, self.machined_rotor_groove_m)
+            need = np.maximum(L_lo, tmin / t1)
+            allow = np.minimum(L_hi, jmax / j1)
+            return (allow - need) / L_hi, need, allow
+
+        grid = np.linspace(lo[0], hi[0], 401) if hi[0] > lo[0] else np.array([lo[0]])
+        s, _, _ = slack(grid)
+        if np.max(s) >= -1e-12:
+            return
+        k = int(np.argmax(s))
+        R_best = grid[k]
+        if grid.size > 1:
+            from scipy.optimize import minimize_scalar
+
+            a, bnd = grid[max(k - 1, 0)], grid[min(k + 1, grid.size - 1)]
+            r = minimize_scalar(lambda R: -slack(R)[0], bounds=(a, bnd), method="bounded",
+                                options={"xatol": 1e-12})
+            if -r.fun >= -1e-12:
+                return
+            R_best = float(r.x)
+        raise InfeasibleError(self._infeasibility_message(params, R_best),
+                              status="infeasible (checked before solving)")
+
+    def _infeasibility_message(self, params: DesignParameters, R_best: float) -> str:
+        from scipy.optimize import brentq
+
+        m = self.case.motor
+        lo, hi = params.lower_m, params.upper_m
+        tmin, jmax = params.torque_min_Nm, params.inertia_max_kgm2
+        mm = 1.0 / MM_TO_M
+        parts = []
+        t_max = float(motor_torque(m, hi[0], lo[1], hi[4])[0])
+        if t_max < tmin:
+            where = f"R = R_max = {hi[0] * mm:.4g} mm, L = L_max = {hi[4] * mm:.4g} mm"
+            tiny = 1e-9
+            if float(motor_torque(m, hi[0], tiny, hi[4])[0]) >= tmin:
+                d_need = brentq(lambda d: float(motor_torque(m, hi[0], d, hi[4])[0]) - tmin,
+                                tiny, lo[1], xtol=1e-15)
+                parts.append(f"torque >= {tmin:.6g} N m needs delta <= {d_need * mm:.4g} mm "
+                             f"(at {where}), but delta_min = {lo[1] * mm:.4g} mm")
+            else:
+                parts.append(f"torque >= {tmin:.6g} N m exceeds the motor's capability at any "
+                             f"gap ({t_max:.4g} N m at delta_min, {where})")
+        j_min = float(rotor_inertia(m, lo[0], hi[2], lo[4], self.machined_rotor_groove_m))
+        if j_min > jmax:
+            parts.append(f"inertia <= {jmax:.4g} kg m^2 ({params.inertia_max_ratio:.4g} x the "
+                         f"reference {params.inertia_ref_kgm2:.4g}) is below the lightest "
+                         f"rotor within the bounds, {j_min:.4g} kg m^2 (R = R_min = "
+                         f"{lo[0] * mm:.4g} mm, L = L_min = {lo[4] * mm:.4g} mm, grooves "
+                         "as open as allowed)")
+        if not parts:
+            t1 = float(motor_torque(m, R_best, lo[1], 1.0)[0])
+            j1 = float(rotor_inertia(m, R_best, hi[2], 1.0, self.machined_rotor_groove_m))
+            parts.append(f"torque >= {tmin:.6g} N m and inertia <= {jmax:.4g} kg m^2 "
+                         f"({params.inertia_max_ratio:.4g} x reference) conflict: at the best "
+                         f"radius R = {R_best * mm:.4g} mm with delta = delta_min = "
+                         f"{lo[1] * mm:.4g} mm the torque needs L >= "
+                         f"{max(lo[4], tmin / t1) * mm:.4g} mm but the inertia allows L <= "
+                         f"{min(hi[4], jmax / j1) * mm:.4g} mm")
+        return "infeasible design problem: " + "; ".join(parts)
+
+    # ----------------------------------------------------------------- solve
+
+    def solve(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None, *,
+              warm_start_duals: bool = True, **overrides: Any) -> DesignResult:
+        """Solve the NLP; return the optimum or raise.
+
+        Parameters
+        ----------
+        x0 : DesignResult, DesignPoint, sequence of (R, delta, d_r, d_s, L) [m], or None
+            Start point (default: the case's design). A DesignResult (e.g. the
+            neighbour in a sweep) also warm-starts the multipliers unless
+            ``warm_start_duals`` is False.
+        **overrides
+            ``oil`` (an :class:`Oil`), ``oil_temp_C`` [degC], ``depth_m`` [m], or
+            ``nu_m2_s`` and ``rho_kg_m3`` directly; ``torque_min_Nm`` [N m];
+            ``inertia_max_ratio`` [-] (of the case's unfilled rotor);
+            ``gap_min_m``, ``gap_max_m``, ``radius_min_m``, ``radius_max_m``,
+            ``length_min_m``, ``length_max_m`` [m]; ``fix``: variables held at
+            the case's value (sequence of names) or at given values
+            (mapping name -> [m]), names from :data:`VARIABLES`.
+
+        Raises
+        ------
+        InputError
+            Bad override.
+        InfeasibleError
+            No design meets the constraints (message names them).
+        SolverError
+            IPOPT failed; ``status`` and ``last_iterate`` say how.
+        """
+        params = self.parameters(**overrides)
+        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
+        lam_x0 = lam_g0 = None
+        if x0 is None:
+            x_start = self.x_case_m.copy()
+        elif isinstance(x0, DesignResult):
+            x_start = x0.optimal.x_mm * MM_TO_M
+            if warm_start_duals and x0._raw:
+                s = x0._raw["f_scale"]
+                lam_x0, lam_g0 = x0._raw["lam_x"] * s, x0._raw["lam_g"] * s
+        elif isinstance(x0, DesignPoint):
+            x_start = x0.x_mm * MM_TO_M
+        else:
+            x_start = np.asarray(x0, dtype=float).ravel()
+            if x_start.shape != (5,) or not np.all(np.isfinite(x_start)):
+                raise InputError("x0", list(x_start), "needs 5 finite values (R, delta, d_r, "
+                                 "d_s, L) [m]", "optimize")
+        x_start = np.clip(x_start, lo, hi)
+        self.check_feasible(params, x_start)
+
+        nu, rho = params.nu_m2_s, params.rho_kg_m3
+        p2 = self.region2_power(nu, rho)
+        initial = self._point(x_start, nu, rho, p2)
+        f_scale = max(initial.region1_power_W, 1e-300)
+        if lam_x0 is not None:
+            lam_x0, lam_g0 = lam_x0 / f_scale, lam_g0 / f_scale
+        args = {"x0": x_start / MM_TO_M, "p": [nu, rho, f_scale],
+                "lbx": lo / MM_TO_M, "ubx": hi / MM_TO_M,
+                "lbg": [params.torque_min_Nm / self.tau_ref_Nm, -np.inf],
+                "ubg": [np.inf, params.inertia_max_kgm2 / self.inertia_ref_kgm2]}
+        solver = self._solver
+        if lam_x0 is not None:
+            if self._warm_solver is None:
+                self._warm_solver = ca.nlpsol("oilgap_design_warm", "ipopt", self._nlp,
+                                              dict(self._opts, **_WARM_OPTIONS))
+            solver = self._warm_solver
+            args.update(lam_x0=lam_x0, lam_g0=lam_g0)
+        t0 = time.perf_counter()
+        sol = solver(**args)
+        dt = time.perf_counter() - t0
+        stats = solver.stats()
+        status = str(stats.get("return_status", "unknown"))
+        x_mm = np.asarray(sol["x"]).ravel()
+        if status not in SUCCESS_STATUSES or not np.all(np.isfinite(x_mm)):
+            last = {VARIABLE_LABELS[v][0]: float(x_mm[i]) for i, v in enumerate(VARIABLES)}
+            gv = np.asarray(sol["g"]).ravel()
+            last["torque_capability_Nm"] = float(gv[0] * self.tau_ref_Nm)
+            last["inertia_kgm2"] = float(gv[1] * self.inertia_ref_kgm2)
+            last["mean_power_W"] = float(sol["f"]) * f_scale + p2
+            it = ", ".join(f"{k} = {v:.6g}" for k, v in last.items())
+            raise SolverError(f"IPOPT did not converge (status {status} after "
+                              f"{stats.get('iter_count', '?')} iterations); last iterate: {it}",
+                              status=status, last_iterate=last)
+        x_m = np.clip(x_mm, lo / MM_TO_M, hi / MM_TO_M) * MM_TO_M
+        optimal = self._point(x_m, nu, rho, p2)
+        lam_x = np.asarray(sol["lam_x"]).ravel()
+        lam_g = np.asarray(sol["lam_g"]).ravel()
+        mults, active = self._multipliers(params, optimal, lam_x, lam_g, f_scale)
+        return DesignResult(status, True, int(stats.get("iter_count", -1)), dt, initial,
+                            optimal, active, mults, params, self._case_for(params),
+                            self.machined_rotor_groove_m, self.machined_stator_groove_m,
+                            {"lam_x": lam_x, "lam_g": lam_g, "f_scale": f_scale})
+
+    def _case_for(self, params: DesignParameters) -> DesignCase:
+        c = self.case
+        if params.raw_oil_state:
+            return c
+        if params.oil != c.oil.name or params.oil_temp_C != c.operating.oil_temp_C or \
+                params.depth_m != c.operating.depth_m:
+            oil = c.oil
+            if params.oil != c.oil.name:
+                from oilgap.model.oils import get_oil
+
+                try:
+                    oil = get_oil(params.oil)
+                except InputError:
+                    oil = c.oil
+            c = replace(c, oil=oil, operating=OperatingPoint(params.depth_m, params.oil_temp_C))
+        return c
+
+    def _multipliers(self, params: DesignParameters, opt: DesignPoint, lam_x: np.ndarray,
+                     lam_g: np.ndarray, f_scale: float):
+        """Sensitivities d(P*)/d(bound) = -lambda, converted to physical units [4]."""
+        mm = 1.0 / MM_TO_M
+        out: dict[str, Multiplier] = {}
+        active: list[str] = []
+        x_mm = opt.x_mm
+        lo, hi = np.asarray(params.lower_m) * mm, np.asarray(params.upper_m) * mm
+        for i, v in enumerate(VARIABLES):
+            key, stem, _ = VARIABLE_LABELS[v]
+            scale = max(hi[i] - lo[i], abs(hi[i]), 1e-3)
+            sens = -lam_x[i] * f_scale  # W per mm
+            if hi[i] == lo[i]:
+                name = f"{stem}_fixed"
+                out[name] = Multiplier(name, f"{key} = {lo[i]:.6g}", float(sens), "W per mm",
+                                       True)
+                active.append(name)
+                continue
+            at_lo = abs(x_mm[i] - lo[i]) <= ACTIVE_RTOL * scale
+            at_hi = abs(x_mm[i] - hi[i]) <= ACTIVE_RTOL * scale
+            for side, bnd, is_act, rel in (("min", lo[i], at_lo, ">="), ("max", hi[i], at_hi,
+                                                                        "<=")):
+                name = f"{stem}_{side}"
+                val = float(sens) if is_act else 0.0
+                out[name] = Multiplier(name, f"{key} {rel} {bnd:.6g}", val, "W per mm",
+                                       bool(is_act))
+                if is_act:
+                    active.append(name)
+        t_act = opt.torque_capability_Nm - params.torque_min_Nm <= \
+            ACTIVE_RTOL * params.torque_min_Nm
+        out["torque_min"] = Multiplier(
+            "torque_min", f"torque_capability_Nm >= {params.torque_min_Nm:.6g}",
+            float(-lam_g[0] * f_scale / self.tau_ref_Nm) if t_act else 0.0, "W per N m",
+            bool(t_act))
+        j_act = params.inertia_max_kgm2 - opt.inertia_kgm2 <= \
+            ACTIVE_RTOL * params.inertia_max_kgm2
+        out["inertia_max"] = Multiplier(
+            "inertia_max", f"inertia_kgm2 <= {params.inertia_max_kgm2:.6g} "
+            f"({params.inertia_max_ratio:.6g} x {params.inertia_ref_kgm2:.6g})",
+            float(-lam_g[1] * f_scale * 0.01) if j_act else 0.0,
+            "W per % of the reference inertia", bool(j_act))
+        if t_act:
+            active.insert(0, "torque_min")
+        if j_act:
+            active.insert(1 if t_act else 0, "inertia_max")
+        return out, tuple(active)
+
+
+def solve_design(case: DesignCase, verbose: bool = False, **overrides: Any) -> DesignResult:
+    """One-shot: build the NLP of ``case`` and solve it (see :meth:`DesignProblem.solve`)."""
+    return DesignProblem(case, verbose=verbose).solve(**overrides)
+
+
+__all__ = [
+    "VARIABLES", "DesignPoint", "DesignParameters", "DesignProblem", "DesignResult",
+    "Multiplier", "clearance_radii", "motor_torque", "region1_mean_power", "rotor_inertia",
+    "solve_design",
+]

@@ -20,6 +20,7 @@ from oilgap.model.errors import InputError, OilgapWarning, SolverError
 SUBCOMMAND_MODULES = (
     "oilgap.studies.cmd_evaluate",
     "oilgap.studies.cmd_optimize",
+    "oilgap.studies.cmd_study",
 )
 
 

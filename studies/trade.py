@@ -98,10 +98,15 @@ EVALUATE_RESULTS = ("status", "error", "warning", "mean_power_W", "region1_power
                     "T_res", "delta_mm_res", "R_mm_res", "L_mm_res")
 """Result columns of ``mode="evaluate"``; ``*_res`` are the resolved geometry of the row."""
 
-OPTIMIZE_RESULTS = ("status", "error", "warning", "mean_power_W", "initial_mean_power_W",
-                    "delta_mm", "R_mm", "L_mm", "T1_mm", "T2_mm", "T3_mm", "T4_mm", "T",
-                    "torque_capability_Nm", "inertia_kgm2", "solve_time_s")
-"""Result columns of ``mode="optimize"``."""
+OPTIMIZE_RESULTS = ("status", "error", "warning", "mean_power_W", "mean_power_exact_W",
+                    "initial_mean_power_W", "region1_power_W", "region2_power_W", "delta_mm",
+                    "R_mm", "L_mm", "T1_mm", "T2_mm", "T3_mm", "T4_mm", "T",
+                    "torque_capability_Nm", "inertia_kgm2", "inertia_ratio",
+                    "torque_min_Nm_used", "inertia_max_kgm2_used", "active_constraints",
+                    "iterations", "solve_time_s")
+"""Result columns of ``mode="optimize"``: the optimal design; ``mean_power_W`` is the
+NLP objective (smooth C_m), ``mean_power_exact_W`` the same design with the case's
+exact C_m form."""
 
 MODES = ("evaluate", "optimize")
 
@@ -410,39 +415,48 @@ def _evaluate_chunk(base: DesignCase, rows: list[dict], catalogue) -> list[dict]
 # --------------------------------------------------------------------------- optimize mode
 
 
-_OPT_PARAM_MAP = {"torque_min_Nm": "torque_min_Nm", "delta_min_mm": "delta_min_mm",
-                  "delta_max_mm": "delta_max_mm", "inertia_max_ratio": "inertia_max_ratio"}
+OPERATING_COLUMNS = ("oil", "oil_temp_C", "depth_m")
+"""In optimize mode these are parameters of the NLP (no rebuild of the problem)."""
 
 
-def _optimize_chunk(base: DesignCase, rows: list[dict], catalogue,
-                    solve_kwargs: dict | None = None) -> list[dict]:
-    """Optimize each row (one design NLP each), warm-starting from the previous success."""
+def _optimize_chunk(base: DesignCase, rows: list[dict], catalogue) -> list[dict]:
+    """Optimize each row (one design NLP each), warm-starting from the previous success.
+
+    The rows' structural parameters give the case (one DesignProblem per distinct
+    case, built once); ``oil``, ``oil_temp_C``, ``depth_m`` and the
+    :data:`OPTIMIZE_COLUMNS` are parameters of each solve.
+    """
     from oilgap.studies.pareto import solve_design_point
 
     results: list[dict] = []
     x_prev = None
     problems: dict = {}
     for row in rows:
-        case_params = {k: v for k, v in row.items() if k not in OPTIMIZE_COLUMNS}
+        struct = {k: v for k, v in row.items()
+                  if k not in OPTIMIZE_COLUMNS and k not in OPERATING_COLUMNS}
         overrides = {k: float(v) for k, v in row.items()
                      if k in OPTIMIZE_COLUMNS and not _missing(v)}
+        operating = {k: v for k, v in row.items()
+                     if k in OPERATING_COLUMNS and not _missing(v)}
         try:
-            case = apply_params(base, case_params, catalogue)
+            case = apply_params(base, struct, catalogue)
+            if "oil" in operating:
+                operating["oil"] = get_oil(str(operating["oil"]), catalogue).name
+                case = replace(case, oil=get_oil(operating.pop("oil"), catalogue))
             rec, x_prev = solve_design_point(case, overrides, x0=x_prev, problems=problems,
-                                             **(solve_kwargs or {}))
+                                             operating=operating)
             results.append(dict(rec, status="ok", error=None, warning=None))
         except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
             results.append({"status": "error", "error": f"{type(e).__name__}: {e}"})
     return results
 
 
-def _run_chunk(mode: str, base: DesignCase, rows: list[dict], catalogue,
-               solve_kwargs: dict | None) -> list[dict]:
+def _run_chunk(mode: str, base: DesignCase, rows: list[dict], catalogue) -> list[dict]:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         if mode == "evaluate":
             return _evaluate_chunk(base, rows, catalogue)
-        return _optimize_chunk(base, rows, catalogue, solve_kwargs)
+        return _optimize_chunk(base, rows, catalogue)
 
 
 # --------------------------------------------------------------------------- keys and storage
@@ -558,7 +572,7 @@ def _chunks(items: list, size: int) -> Iterable[list]:
 def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "evaluate",
              out_dir: str | Path | None = None, workers: int | None = None,
              chunk_size: int | None = None, progress: bool | None = None,
-             catalogue: Mapping[str, Oil] | None = None, solve_kwargs: dict | None = None,
+             catalogue: Mapping[str, Oil] | None = None,
              label: str = "sweep", retry_failed: bool = False,
              on_chunk: Callable[[int], None] | None = None) -> pd.DataFrame:
     """Evaluate or optimize every row of a grid of parameter combinations.
@@ -587,8 +601,6 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
     catalogue : mapping, optional
         Oils to look ``oil`` names up in (default: the case's ``oils_csv`` or
         the built-in ISO VG catalogue).
-    solve_kwargs : dict, optional
-        Passed to the optimizer in optimize mode.
     retry_failed : bool
         Recompute points stored as errors (default: they count as finished).
 
@@ -616,7 +628,7 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
         workers = n_cpu
     if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
         raise InputError("workers", workers, "must be an integer >= 1", "trade study")
-    keys = point_keys(grid, base, mode, solve_kwargs)
+    keys = point_keys(grid, base, mode)
     points_path = None
     done: dict[str, dict] = {}
     if out_dir is not None:
@@ -661,10 +673,10 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
     if tasks:
         if workers == 1 or len(tasks) == 1:
             for ks, rows in tasks:
-                finish(ks, _run_chunk(mode, base, rows, catalogue, solve_kwargs))
+                finish(ks, _run_chunk(mode, base, rows, catalogue))
         else:
             with ProcessPoolExecutor(max_workers=min(workers, len(tasks))) as ex:
-                futs = {ex.submit(_run_chunk, mode, base, rows, catalogue, solve_kwargs): ks
+                futs = {ex.submit(_run_chunk, mode, base, rows, catalogue): ks
                         for ks, rows in tasks}
                 pending = set(futs)
                 while pending:
@@ -679,6 +691,7 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
     res = res.drop(columns=[c for c in res.columns if c in grid.columns and c != "status"])
     result = pd.concat([grid, res], axis=1)
     result["point_key"] = keys
+    result.attrs.update(computed=n, reused=len(keys) - n, elapsed_s=time.perf_counter() - bar.t0)
     if out_dir is not None:
         result.to_csv(Path(out_dir) / "results.csv", index=False)
     return result

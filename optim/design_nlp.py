@@ -1,6 +1,6 @@
 """The clearance geometry of region 1 as a CasADi/IPOPT nonlinear program.
 
-Decision variables (non-redundant, in millimetres inside the NLP)::
+Decision variables (non-redundant)::
 
     x = (R, delta, d_r, d_s, L)
     R      = T2        rotor outer radius (region 1 radius)
@@ -28,9 +28,17 @@ inertia are :mod:`oilgap.model.magnetics` (Carter coefficient with slot pitch
 2 pi T3 / Q_s, B_g, tau = 2 pi R^2 L k_w B_g A / sqrt 2, grooved rotor with
 T1_unfilled = R - d_r0).
 
+Scaling: IPOPT sees y = (ln R/mm, ln delta/mm, d_r/mm, d_s/mm, ln L/mm), the
+objective ln P1 and the constraints ln(tau/tau_ref) >= ln(tau_min/tau_ref),
+ln(J/J_ref) <= ln(J_max/J_ref) (tau_ref, J_ref: the case's motor and unfilled
+rotor). All are O(1), and the laminar loss, a near-monomial in R, delta, L, is
+near-linear in the logarithms, which saves IPOPT iterations. The same optimum,
+the multipliers are converted back to d(P*)/d(bound) in physical units.
+
 The NLP is built once per case (:class:`DesignProblem`); the oil state
-(nu, rho), the objective scale, tau_min, J_max and every bound are parameters
-of each :meth:`DesignProblem.solve`, so studies re-solve it without rebuilding.
+(nu, rho), tau_min, J_max and every bound are parameters of each
+:meth:`DesignProblem.solve` (``p`` and the bound vectors of ``nlpsol``), so
+studies re-solve it without rebuilding.
 
 References
 ----------
@@ -102,13 +110,27 @@ ACTIVE_RTOL = 1e-6
 """A bound or constraint is active when its slack is below this fraction of its scale."""
 
 _QUIET = {"ipopt.print_level": 0, "ipopt.sb": "yes", "print_time": False}
-_SOLVER_OPTIONS = {"ipopt.tol": IPOPT_TOL, "ipopt.mu_init": 1e-3,
-                   "ipopt.fast_step_computation": "yes", "error_on_fail": False,
-                   "expand": True}
+_SOLVER_OPTIONS = {"ipopt.tol": IPOPT_TOL, "ipopt.mu_init": 1e-3, "calc_lam_p": False,
+                   "error_on_fail": False, "expand": True}
 _WARM_OPTIONS = {"ipopt.warm_start_init_point": "yes", "ipopt.warm_start_bound_push": 1e-9,
                  "ipopt.warm_start_bound_frac": 1e-9, "ipopt.warm_start_slack_bound_push": 1e-9,
                  "ipopt.warm_start_slack_bound_frac": 1e-9,
                  "ipopt.warm_start_mult_bound_push": 1e-9, "ipopt.mu_init": 1e-6}
+_LOG = np.array([True, True, False, False, True])
+"""Which NLP variables are logarithms of the length in mm."""
+
+
+def _to_nlp(x_m: np.ndarray) -> np.ndarray:
+    """Design vector [m] -> NLP vector y (ln mm for R, delta, L; mm for d_r, d_s)."""
+    y = np.asarray(x_m, dtype=float) / MM_TO_M
+    with np.errstate(divide="ignore"):
+        return np.where(_LOG, np.log(np.where(_LOG, y, 1.0)), y)
+
+
+def _from_nlp(y: np.ndarray) -> np.ndarray:
+    """NLP vector y -> design vector [m]."""
+    y = np.asarray(y, dtype=float)
+    return np.where(_LOG, np.exp(np.where(_LOG, y, 0.0)), y) * MM_TO_M
 
 
 # --------------------------------------------------------------------------- design functions
@@ -239,6 +261,8 @@ class Multiplier:
     value: float
     unit: str
     active: bool
+    value_si: float = 0.0
+    """The same in SI: W per m (bounds), W per N m (torque), W per kg m^2 (inertia)."""
 
     def to_dict(self) -> dict[str, Any]:
         return asdict(self)
@@ -262,6 +286,8 @@ class DesignParameters:
     """Upper bounds of (R, delta, d_r, d_s, L) [m]."""
     raw_oil_state: bool = False
     """True if nu/rho were given directly (not from an oil at a condition)."""
+    oil_obj: Oil | None = field(default=None, repr=False, compare=False)
+    """The oil given as an override (None: the case's)."""
 
     @property
     def inertia_max_ratio(self) -> float:
@@ -432,15 +458,16 @@ class DesignProblem:
                                                     r1.length, self.machined_rotor_groove_m))
         self.nu_m2_s, _, self.rho_kg_m3 = (float(v) for v in oil_state(case))
 
-        x = ca.SX.sym("x", 5)  # (R, delta, d_r, d_s, L) [mm]
-        p = ca.SX.sym("p", 3)  # (nu [m^2/s], rho [kg/m^3], objective scale [W])
-        R, delta, d_r, d_s, L = (x[i] * MM_TO_M for i in range(5))
+        y = ca.SX.sym("y", 5)  # (ln R/mm, ln delta/mm, d_r/mm, d_s/mm, ln L/mm)
+        p = ca.SX.sym("p", 2)  # (nu [m^2/s], rho [kg/m^3])
+        R, delta, d_r, d_s, L = ((ca.exp(y[i]) if _LOG[i] else y[i]) * MM_TO_M
+                                 for i in range(5))
         p1 = region1_mean_power(R, delta, d_r, d_s, L, p[0], p[1], ca.DM(self.nodes_rad_s),
                                 self.weights, self.law)
-        tau, bg, kc = motor_torque(m, R, delta, L)
+        tau = motor_torque(m, R, delta, L)[0]
         J = rotor_inertia(m, R, d_r, L, self.machined_rotor_groove_m)
-        g = ca.vertcat(tau / self.tau_ref_Nm, J / self.inertia_ref_kgm2)
-        self._nlp = {"x": x, "p": p, "f": p1 / p[2], "g": g}
+        g = ca.vertcat(ca.log(tau / self.tau_ref_Nm), ca.log(J / self.inertia_ref_kgm2))
+        self._nlp = {"x": y, "p": p, "f": ca.log(p1), "g": g}
         opts = dict(_SOLVER_OPTIONS, **_QUIET)
         if self.verbose:
             opts.update({"ipopt.print_level": 5, "print_time": True})
@@ -448,7 +475,9 @@ class DesignProblem:
         self._opts = opts
         self._solver = ca.nlpsol("oilgap_design", "ipopt", self._nlp, opts)
         self._warm_solver = None
-        self._report = ca.Function("report", [x, p], [ca.vertcat(p1, tau, bg, kc, J)])
+        self._report = ca.Function("report", [y, p], [ca.vertcat(p1, tau, J)])
+        self._p2_cache: dict[tuple[float, float], float] = {}
+        self._point_cache: dict[tuple, DesignPoint] = {}
         self.build_time_s = time.perf_counter() - t0
 
     # ----------------------------------------------------------------- helpers
@@ -464,8 +493,14 @@ class DesignProblem:
         r2 = self.case.region2
         if r2 is None:
             return 0.0
-        return float(clearance_power(self.nodes_rad_s, nu_m2_s, rho_kg_m3, r2.radius, r2.gap,
-                                     r2.length, self.law, 1.0) @ self.weights)
+        key = (float(nu_m2_s), float(rho_kg_m3))
+        if key not in self._p2_cache:
+            if len(self._p2_cache) > 4096:
+                self._p2_cache.clear()
+            self._p2_cache[key] = float(clearance_power(
+                self.nodes_rad_s, nu_m2_s, rho_kg_m3, r2.radius, r2.gap, r2.length, self.law,
+                1.0) @ self.weights)
+        return self._p2_cache[key]
 
     def point(self, x_m: Sequence[float], nu_m2_s: float | None = None,
               rho_kg_m3: float | None = None) -> DesignPoint:
@@ -475,14 +510,30 @@ class DesignProblem:
         return self._point(np.asarray(x_m, dtype=float), nu, rho,
                            self.region2_power(nu, rho))
 
-    def _point(self, x_m: np.ndarray, nu: float, rho: float, p2: float) -> DesignPoint:
-        p1, tau, bg, kc, J = (float(v) for v in
-                              np.asarray(self._report(x_m / MM_TO_M, [nu, rho, 1.0])).ravel())
+    def _point(self, x_m: np.ndarray, nu: float, rho: float, p2: float,
+               values: tuple[float, float, float] | None = None) -> DesignPoint:
+        """DesignPoint of x [m]; ``values`` = (P1, tau, J) if already known (from IPOPT)."""
+        key = None
+        if values is None:
+            key = (x_m.tobytes(), nu, rho, p2)
+            hit = self._point_cache.get(key)
+            if hit is not None:
+                return hit
+            values = tuple(float(v) for v in
+                           np.asarray(self._report(ca.DM(_to_nlp(x_m)),
+                                                   ca.DM([nu, rho]))).ravel())
+        p1, tau, J = values
         R, delta, d_r, d_s, L = (float(v) for v in x_m)
+        _, bg, kc = motor_torque(self.case.motor, R, delta, L)
         T1, T2, T3, T4 = clearance_radii(R, delta, d_r, d_s)
-        return DesignPoint(R, delta, d_r, d_s, L, T1, T2, T3, T4,
-                           float(groove_roughness(T1, T2, T3, T4)), p1, p2, p1 + p2, tau, bg,
-                           kc, J, J / self.inertia_ref_kgm2)
+        pt = DesignPoint(R, delta, d_r, d_s, L, T1, T2, T3, T4,
+                         float(groove_roughness(T1, T2, T3, T4)), p1, p2, p1 + p2, tau,
+                         float(bg), float(kc), J, J / self.inertia_ref_kgm2)
+        if key is not None:
+            if len(self._point_cache) > 1024:
+                self._point_cache.clear()
+            self._point_cache[key] = pt
+        return pt
 
     def parameters(self, *, oil: Oil | None = None, oil_temp_C: float | None = None,
                    depth_m: float | None = None, nu_m2_s: float | None = None,
@@ -556,7 +607,7 @@ class DesignProblem:
             raise InputError("radius_min_mm", lo[0] / MM_TO_M, "must leave the machined groove "
                              "bottoms outside the shaft bore", "optimize")
         return DesignParameters(the_oil.name, t, d, nu, rho, tmin, self.inertia_ref_kgm2,
-                                ratio * self.inertia_ref_kgm2, tuple(lo), tuple(hi), raw)
+                                ratio * self.inertia_ref_kgm2, tuple(lo), tuple(hi), raw, oil)
 
     # ----------------------------------------------------------------- feasibility
 
@@ -648,7 +699,8 @@ class DesignProblem:
     # ----------------------------------------------------------------- solve
 
     def solve(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None, *,
-              warm_start_duals: bool = True, **overrides: Any) -> DesignResult:
+              warm_start_duals: bool = True, starts: int = 1, seed: int = 0,
+              **overrides: Any) -> DesignResult:
         """Solve the NLP; return the optimum or raise.
 
         Parameters
@@ -657,6 +709,13 @@ class DesignProblem:
             Start point (default: the case's design). A DesignResult (e.g. the
             neighbour in a sweep) also warm-starts the multipliers unless
             ``warm_start_duals`` is False.
+        starts : int
+            Number of start points: ``x0`` and ``starts - 1`` points drawn
+            uniformly in the bounds (numpy generator ``seed``); the best optimum is
+            returned. IPOPT is
+            a local method and warm thin oils near the Re = 64 / 500 regime breaks
+            make the loss non-convex, so several starts guard against a local
+            optimum.
         **overrides
             ``oil`` (an :class:`Oil`), ``oil_temp_C`` [degC], ``depth_m`` [m], or
             ``nu_m2_s`` and ``rho_kg_m3`` directly; ``torque_min_Nm`` [N m];
@@ -677,14 +736,13 @@ class DesignProblem:
         """
         params = self.parameters(**overrides)
         lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
-        lam_x0 = lam_g0 = None
+        lam = None
         if x0 is None:
             x_start = self.x_case_m.copy()
         elif isinstance(x0, DesignResult):
             x_start = x0.optimal.x_mm * MM_TO_M
             if warm_start_duals and x0._raw:
-                s = x0._raw["f_scale"]
-                lam_x0, lam_g0 = x0._raw["lam_x"] * s, x0._raw["lam_g"] * s
+                lam = (x0._raw["lam_x"], x0._raw["lam_g"])
         elif isinstance(x0, DesignPoint):
             x_start = x0.x_mm * MM_TO_M
         else:
@@ -693,50 +751,78 @@ class DesignProblem:
                 raise InputError("x0", list(x_start), "needs 5 finite values (R, delta, d_r, "
                                  "d_s, L) [m]", "optimize")
         x_start = np.clip(x_start, lo, hi)
+        if isinstance(starts, bool) or not isinstance(starts, int) or starts < 1:
+            raise InputError("starts", starts, "must be an integer >= 1", "optimize")
         self.check_feasible(params, x_start)
+        p2 = self.region2_power(params.nu_m2_s, params.rho_kg_m3)
+        if starts == 1:
+            return self._solve_from(params, x_start, lam, p2)
+        pts = np.random.default_rng(seed).uniform(size=(starts - 1, 5))
+        best, first_error = None, None
+        for x in [x_start, *(lo + pts * (hi - lo))]:
+            try:
+                r = self._solve_from(params, x, lam if x is x_start else None, p2)
+            except SolverError as e:
+                first_error = first_error or e
+                continue
+            if best is None or r.optimal.mean_power_W < best.optimal.mean_power_W:
+                best = r
+        if best is None:
+            raise first_error
+        return replace(best, initial=self._point(x_start, params.nu_m2_s, params.rho_kg_m3,
+                                                   p2))
 
+    def _solve_from(self, params: DesignParameters, x_start: np.ndarray,
+                    lam: tuple[np.ndarray, np.ndarray] | None, p2: float) -> DesignResult:
+        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
         nu, rho = params.nu_m2_s, params.rho_kg_m3
-        p2 = self.region2_power(nu, rho)
         initial = self._point(x_start, nu, rho, p2)
-        f_scale = max(initial.region1_power_W, 1e-300)
-        if lam_x0 is not None:
-            lam_x0, lam_g0 = lam_x0 / f_scale, lam_g0 / f_scale
-        args = {"x0": x_start / MM_TO_M, "p": [nu, rho, f_scale],
-                "lbx": lo / MM_TO_M, "ubx": hi / MM_TO_M,
-                "lbg": [params.torque_min_Nm / self.tau_ref_Nm, -np.inf],
-                "ubg": [np.inf, params.inertia_max_kgm2 / self.inertia_ref_kgm2]}
+        ylo, yhi = _to_nlp(lo), _to_nlp(hi)
+        args = {"x0": _to_nlp(x_start), "p": [nu, rho], "lbx": ylo, "ubx": yhi,
+                "lbg": [np.log(params.torque_min_Nm / self.tau_ref_Nm), -np.inf],
+                "ubg": [np.inf, np.log(params.inertia_max_kgm2 / self.inertia_ref_kgm2)]}
         solver = self._solver
-        if lam_x0 is not None:
+        if lam is not None:
             if self._warm_solver is None:
                 self._warm_solver = ca.nlpsol("oilgap_design_warm", "ipopt", self._nlp,
                                               dict(self._opts, **_WARM_OPTIONS))
             solver = self._warm_solver
-            args.update(lam_x0=lam_x0, lam_g0=lam_g0)
+            args.update(lam_x0=lam[0], lam_g0=lam[1])
         t0 = time.perf_counter()
         sol = solver(**args)
         dt = time.perf_counter() - t0
         stats = solver.stats()
         status = str(stats.get("return_status", "unknown"))
-        x_mm = np.asarray(sol["x"]).ravel()
-        if status not in SUCCESS_STATUSES or not np.all(np.isfinite(x_mm)):
-            last = {VARIABLE_LABELS[v][0]: float(x_mm[i]) for i, v in enumerate(VARIABLES)}
+        y = np.asarray(sol["x"]).ravel()
+        if status not in SUCCESS_STATUSES or not np.all(np.isfinite(y)):
+            last = {VARIABLE_LABELS[v][0]: float(xv) for v, xv in
+                    zip(VARIABLES, _from_nlp(y) / MM_TO_M, strict=True)}
             gv = np.asarray(sol["g"]).ravel()
-            last["torque_capability_Nm"] = float(gv[0] * self.tau_ref_Nm)
-            last["inertia_kgm2"] = float(gv[1] * self.inertia_ref_kgm2)
-            last["mean_power_W"] = float(sol["f"]) * f_scale + p2
+            last["torque_capability_Nm"] = float(np.exp(gv[0]) * self.tau_ref_Nm)
+            last["inertia_kgm2"] = float(np.exp(gv[1]) * self.inertia_ref_kgm2)
+            last["mean_power_W"] = float(np.exp(float(sol["f"]))) + p2
             it = ", ".join(f"{k} = {v:.6g}" for k, v in last.items())
             raise SolverError(f"IPOPT did not converge (status {status} after "
                               f"{stats.get('iter_count', '?')} iterations); last iterate: {it}",
                               status=status, last_iterate=last)
-        x_m = np.clip(x_mm, lo / MM_TO_M, hi / MM_TO_M) * MM_TO_M
-        optimal = self._point(x_m, nu, rho, p2)
+        y_in = np.clip(y, ylo, yhi)
+        x_m = np.clip(_from_nlp(y_in), lo, hi)
+        # a variable IPOPT left on its bound is reported at the bound exactly (no exp/log
+        # round-off)
+        x_m = np.where(y_in == ylo, lo, np.where(y_in == yhi, hi, x_m))
+        values = None
+        if np.array_equal(y_in, y):  # IPOPT's f and g are at this very point
+            gv = np.asarray(sol["g"]).ravel()
+            values = (float(np.exp(float(sol["f"]))), float(np.exp(gv[0]) * self.tau_ref_Nm),
+                      float(np.exp(gv[1]) * self.inertia_ref_kgm2))
+        optimal = self._point(x_m, nu, rho, p2, values)
         lam_x = np.asarray(sol["lam_x"]).ravel()
         lam_g = np.asarray(sol["lam_g"]).ravel()
-        mults, active = self._multipliers(params, optimal, lam_x, lam_g, f_scale)
+        mults, active = self._multipliers(params, optimal, lam_x, lam_g)
         return DesignResult(status, True, int(stats.get("iter_count", -1)), dt, initial,
                             optimal, active, mults, params, self._case_for(params),
                             self.machined_rotor_groove_m, self.machined_stator_groove_m,
-                            {"lam_x": lam_x, "lam_g": lam_g, "f_scale": f_scale})
+                            {"lam_x": lam_x, "lam_g": lam_g})
 
     def _case_for(self, params: DesignParameters) -> DesignCase:
         c = self.case
@@ -744,63 +830,59 @@ class DesignProblem:
             return c
         if params.oil != c.oil.name or params.oil_temp_C != c.operating.oil_temp_C or \
                 params.depth_m != c.operating.depth_m:
-            oil = c.oil
-            if params.oil != c.oil.name:
-                from oilgap.model.oils import get_oil
-
-                try:
-                    oil = get_oil(params.oil)
-                except InputError:
-                    oil = c.oil
+            oil = c.oil if params.oil_obj is None else params.oil_obj
             c = replace(c, oil=oil, operating=OperatingPoint(params.depth_m, params.oil_temp_C))
         return c
 
     def _multipliers(self, params: DesignParameters, opt: DesignPoint, lam_x: np.ndarray,
-                     lam_g: np.ndarray, f_scale: float):
-        """Sensitivities d(P*)/d(bound) = -lambda, converted to physical units [4]."""
-        mm = 1.0 / MM_TO_M
+                     lam_g: np.ndarray):
+        """Sensitivities d(P*)/d(bound), converted to physical units [4].
+
+        IPOPT minimizes F = ln P1 in y; at the optimum dF*/d(bound of y_i) = -lam_x[i]
+        and dF*/d(bound of g_k) = -lam_g[k] (CasADi's sign convention). With
+        dP* = P1* dF*, y_i = ln(x_i/mm) (dy = dx/x) or x_i/mm, g_0 = ln(tau/tau_ref)
+        and g_1 = ln(J/J_ref) this gives W per m of a bound, W per N m of tau_min
+        and W per kg m^2 of J_max.
+        """
         out: dict[str, Multiplier] = {}
         active: list[str] = []
-        x_mm = opt.x_mm
-        lo, hi = np.asarray(params.lower_m) * mm, np.asarray(params.upper_m) * mm
+        x_m = opt.x_mm * MM_TO_M
+        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
+        p1 = opt.region1_power_W
         for i, v in enumerate(VARIABLES):
             key, stem, _ = VARIABLE_LABELS[v]
-            scale = max(hi[i] - lo[i], abs(hi[i]), 1e-3)
-            sens = -lam_x[i] * f_scale  # W per mm
+            scale = max(hi[i] - lo[i], abs(hi[i]), 1e-6)
+            per = x_m[i] if _LOG[i] else MM_TO_M  # dx per unit of y
+            sens_si = float(-lam_x[i] * p1 / per) if per > 0 else 0.0  # W per m
             if hi[i] == lo[i]:
                 name = f"{stem}_fixed"
-                out[name] = Multiplier(name, f"{key} = {lo[i]:.6g}", float(sens), "W per mm",
-                                       True)
+                out[name] = Multiplier(name, f"{key} = {lo[i] / MM_TO_M:.6g}",
+                                       sens_si * MM_TO_M, "W per mm", True, sens_si)
                 active.append(name)
                 continue
-            at_lo = abs(x_mm[i] - lo[i]) <= ACTIVE_RTOL * scale
-            at_hi = abs(x_mm[i] - hi[i]) <= ACTIVE_RTOL * scale
-            for side, bnd, is_act, rel in (("min", lo[i], at_lo, ">="), ("max", hi[i], at_hi,
-                                                                        "<=")):
+            at_lo = abs(x_m[i] - lo[i]) <= ACTIVE_RTOL * scale
+            at_hi = abs(x_m[i] - hi[i]) <= ACTIVE_RTOL * scale
+            for side, bnd, is_act, rel in (("min", lo[i], at_lo, ">="),
+                                           ("max", hi[i], at_hi, "<=")):
                 name = f"{stem}_{side}"
-                val = float(sens) if is_act else 0.0
-                out[name] = Multiplier(name, f"{key} {rel} {bnd:.6g}", val, "W per mm",
-                                       bool(is_act))
+                val = sens_si if is_act else 0.0
+                out[name] = Multiplier(name, f"{key} {rel} {bnd / MM_TO_M:.6g}",
+                                       val * MM_TO_M, "W per mm", bool(is_act), val)
                 if is_act:
                     active.append(name)
-        t_act = opt.torque_capability_Nm - params.torque_min_Nm <= \
-            ACTIVE_RTOL * params.torque_min_Nm
-        out["torque_min"] = Multiplier(
-            "torque_min", f"torque_capability_Nm >= {params.torque_min_Nm:.6g}",
-            float(-lam_g[0] * f_scale / self.tau_ref_Nm) if t_act else 0.0, "W per N m",
-            bool(t_act))
-        j_act = params.inertia_max_kgm2 - opt.inertia_kgm2 <= \
-            ACTIVE_RTOL * params.inertia_max_kgm2
+        tmin, jmax = params.torque_min_Nm, params.inertia_max_kgm2
+        t_act = opt.torque_capability_Nm - tmin <= ACTIVE_RTOL * tmin
+        t_si = float(-lam_g[0] * p1 / tmin) if t_act else 0.0
+        out["torque_min"] = Multiplier("torque_min", f"torque_capability_Nm >= {tmin:.6g}",
+                                       t_si, "W per N m", bool(t_act), t_si)
+        j_act = jmax - opt.inertia_kgm2 <= ACTIVE_RTOL * jmax
+        j_si = float(-lam_g[1] * p1 / jmax) if j_act else 0.0
         out["inertia_max"] = Multiplier(
-            "inertia_max", f"inertia_kgm2 <= {params.inertia_max_kgm2:.6g} "
-            f"({params.inertia_max_ratio:.6g} x {params.inertia_ref_kgm2:.6g})",
-            float(-lam_g[1] * f_scale * 0.01) if j_act else 0.0,
-            "W per % of the reference inertia", bool(j_act))
-        if t_act:
-            active.insert(0, "torque_min")
-        if j_act:
-            active.insert(1 if t_act else 0, "inertia_max")
-        return out, tuple(active)
+            "inertia_max", f"inertia_kgm2 <= {jmax:.6g} ({params.inertia_max_ratio:.6g} x "
+            f"{params.inertia_ref_kgm2:.6g})", j_si * 0.01 * params.inertia_ref_kgm2,
+            "W per % of the reference inertia", bool(j_act), j_si)
+        head = [n for n, a in (("torque_min", t_act), ("inertia_max", j_act)) if a]
+        return out, tuple(head + active)
 
 
 def solve_design(case: DesignCase, verbose: bool = False, **overrides: Any) -> DesignResult:

@@ -339,6 +339,8 @@ class DesignResult:
     case: DesignCase = field(repr=False)
     machined_rotor_groove_m: float = field(repr=False, default=0.0)
     machined_stator_groove_m: float = field(repr=False, default=0.0)
+    starts: int = 1
+    """Number of start points tried (the best optimum is returned)."""
     _raw: Mapping[str, Any] = field(repr=False, default_factory=dict)
 
     def to_dict(self) -> dict[str, Any]:
@@ -347,6 +349,7 @@ class DesignResult:
             "status": self.status,
             "success": self.success,
             "iterations": self.iterations,
+            "starts": self.starts,
             "solve_time_s": self.solve_time_s,
             "case": self.case.name,
             "parameters": self.parameters.to_dict(),
@@ -769,8 +772,8 @@ class DesignProblem:
                 best = r
         if best is None:
             raise first_error
-        return replace(best, initial=self._point(x_start, params.nu_m2_s, params.rho_kg_m3,
-                                                   p2))
+        return replace(best, starts=starts,
+                       initial=self._point(x_start, params.nu_m2_s, params.rho_kg_m3, p2))
 
     def _solve_from(self, params: DesignParameters, x_start: np.ndarray,
                     lam: tuple[np.ndarray, np.ndarray] | None, p2: float) -> DesignResult:
@@ -821,7 +824,7 @@ class DesignProblem:
         mults, active = self._multipliers(params, optimal, lam_x, lam_g)
         return DesignResult(status, True, int(stats.get("iter_count", -1)), dt, initial,
                             optimal, active, mults, params, self._case_for(params),
-                            self.machined_rotor_groove_m, self.machined_stator_groove_m,
+                            self.machined_rotor_groove_m, self.machined_stator_groove_m, 1,
                             {"lam_x": lam_x, "lam_g": lam_g})
 
     def _case_for(self, params: DesignParameters) -> DesignCase:

@@ -47,6 +47,7 @@ def _positive_int(text: str) -> int:
 
 
 def add_parser(sub) -> None:
+    """Register ``oilgap study`` and its four subcommands."""
     from .cli import finite_float
 
     p = sub.add_parser("study", help="trade studies: smoothing, pareto, oil-grade, sweep",
@@ -148,6 +149,7 @@ def _files(files) -> str:
 
 
 def run_smoothing(args: argparse.Namespace) -> int:
+    """``oilgap study smoothing``: fit, Table 4, loss vs T; returns the exit code."""
     from .smoothing import run
 
     if args.t_step <= 0:
@@ -197,6 +199,7 @@ def run_smoothing(args: argparse.Namespace) -> int:
 
 
 def run_pareto(args: argparse.Namespace) -> int:
+    """``oilgap study pareto``: the two fronts; returns the exit code."""
     from .pareto import run
 
     case = _case(args.case)
@@ -229,6 +232,7 @@ def run_pareto(args: argparse.Namespace) -> int:
 
 
 def run_oil_grade(args: argparse.Namespace) -> int:
+    """``oilgap study oil-grade``: grade table and recommendation; exit 3 if none passes."""
     from oilgap.model.errors import InfeasibleError
 
     from .oil_grade import read_mission_csv, run
@@ -242,6 +246,8 @@ def run_oil_grade(args: argparse.Namespace) -> int:
             temp_range_C=(args.temp_min_c, args.temp_max_c), mission_hours=args.mission_hours,
             workers=args.workers, progress=args.progress)
     t = r.table
+    if r.recommended is not None:
+        print(f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}\n")
     print(f"{'oil':<8}{'nu min':>9}{'nu max':>10}{'mission W':>11}{'energy Wh':>11}  verdict")
     for _, row in t.iterrows():
         print(f"{row['oil']:<8}{row['nu_min_envelope_cSt']:>9.1f}"
@@ -255,7 +261,6 @@ def run_oil_grade(args: argparse.Namespace) -> int:
                               f"({args.nu_min_cst:g} cSt) and the cold-start limit "
                               f"({args.nu_max_cst:g} cSt) over the envelope",
                               "no feasible grade")
-    print(f"\nrecommended: {r.recommended}   runner-up: {r.runner_up or 'none'}")
     return 0
 
 
@@ -274,10 +279,10 @@ def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Pa
         x = num[0]
         if len(num) > 1:
             sc = ax.scatter(ok[x], ok["mean_power_W"], c=ok[num[1]], s=14, cmap="viridis")
-            fig.colorbar(sc, ax=ax, label=num[1])
+            fig.colorbar(sc, ax=ax, label=_axis_label(num[1]))
         else:
             ax.plot(ok[x], ok["mean_power_W"], "o", ms=4)
-        ax.set_xlabel(x)
+        ax.set_xlabel(_axis_label(x))
     else:
         ax.plot(np.arange(len(ok)), ok["mean_power_W"], "o", ms=4)
         ax.set_xlabel("grid row [-]")
@@ -290,6 +295,14 @@ def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Pa
     return save_figure(fig, path)
 
 
+def _axis_label(col: str) -> str:
+    """Axis label with units from the column's description: "oil temperature [degC]"."""
+    from .trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
+
+    desc = {**PARAM_COLUMNS, **OPTIMIZE_COLUMNS}.get(col, col)
+    return desc[:desc.index("]") + 1] if "]" in desc else col
+
+
 def _param_names() -> set[str]:
     from .trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
@@ -297,6 +310,7 @@ def _param_names() -> set[str]:
 
 
 def run_sweep(args: argparse.Namespace) -> int:
+    """``oilgap study sweep GRID.csv``: run a grid (resumable); returns the exit code."""
     from oilgap.model.evaluation import mean_viscous_power
     from oilgap.model.oils import read_oils_csv
 

@@ -48,7 +48,7 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase, case_to_dict, seed_case
 from oilgap.model.duty_cycle import DutyCycle
-from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.errors import InputError, OilgapWarning, check_positive
 from oilgap.model.evaluation import oil_state, region_geometries
 from oilgap.model.oils import Oil, get_oil, read_oils_csv, warn_if_untrusted_temperature
 from oilgap.model.taylor_couette import couette_reynolds
@@ -234,6 +234,10 @@ def apply_params(case: DesignCase, params: Mapping[str, Any],
         A value the case refuses (the message names the field).
     """
     p = {k: v for k, v in params.items() if not _missing(v) and k != "label"}
+    for k in ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm", "R_mm", "gap_mm",
+              "region2_radius_mm", "region2_length_mm", "region2_gap_mm", "peak_speed_rpm"):
+        if k in p:
+            check_positive(k, p[k], "grid row")
     mm = MM_TO_M
     if "oil" in p:
         case = replace(case, oil=get_oil(str(p["oil"]), catalogue))

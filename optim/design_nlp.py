@@ -110,7 +110,8 @@ ACTIVE_RTOL = 1e-6
 """A bound or constraint is active when its slack is below this fraction of its scale."""
 
 _QUIET = {"ipopt.print_level": 0, "ipopt.sb": "yes", "print_time": False}
-_SOLVER_OPTIONS = {"ipopt.tol": IPOPT_TOL, "ipopt.mu_init": 1e-3, "calc_lam_p": False,
+_SOLVER_OPTIONS = {"ipopt.tol": IPOPT_TOL, "ipopt.mu_init": 1e-3, "ipopt.barrier_tol_factor": 100,
+                   "calc_lam_p": False,
                    "error_on_fail": False, "expand": True}
 _WARM_OPTIONS = {"ipopt.warm_start_init_point": "yes", "ipopt.warm_start_bound_push": 1e-9,
                  "ipopt.warm_start_bound_frac": 1e-9, "ipopt.warm_start_slack_bound_push": 1e-9,
@@ -711,7 +712,8 @@ class DesignProblem:
         x0 : DesignResult, DesignPoint, sequence of (R, delta, d_r, d_s, L) [m], or None
             Start point (default: the case's design). A DesignResult (e.g. the
             neighbour in a sweep) also warm-starts the multipliers unless
-            ``warm_start_duals`` is False.
+            ``warm_start_duals`` is False; should that warm-started solve fail,
+            it is retried from the primal point alone before anything is raised.
         starts : int
             Number of start points: ``x0`` and ``starts - 1`` points drawn
             uniformly in the bounds (numpy generator ``seed``); the best optimum is
@@ -759,7 +761,12 @@ class DesignProblem:
         self.check_feasible(params, x_start)
         p2 = self.region2_power(params.nu_m2_s, params.rho_kg_m3)
         if starts == 1:
-            return self._solve_from(params, x_start, lam, p2)
+            if lam is None:
+                return self._solve_from(params, x_start, None, p2)
+            try:
+                return self._solve_from(params, x_start, lam, p2)
+            except SolverError:  # a stale dual warm start: retry from x0 alone
+                return self._solve_from(params, x_start, None, p2)
         pts = np.random.default_rng(seed).uniform(size=(starts - 1, 5))
         best, first_error = None, None
         for x in [x_start, *(lo + pts * (hi - lo))]:

@@ -231,6 +231,28 @@ def test_warm_start_reaches_the_cold_optimum(prob, seed_opt):
     assert warm.iterations <= cold.iterations
 
 
+def test_failed_dual_warm_start_falls_back_to_a_primal_start(monkeypatch, seed_opt):
+    monkeypatch.setitem(dn._WARM_OPTIONS, "ipopt.max_iter", 1)
+    p = DesignProblem(seed_case())
+    r = p.solve(x0=seed_opt, torque_min_Nm=0.47)
+    assert r.optimal.mean_power_W == pytest.approx(
+        p.solve(torque_min_Nm=0.47).optimal.mean_power_W, rel=1e-9)
+
+
+def test_feasibility_check_premises(prob):
+    """check_feasible assumes: torque falls with delta and rises with R (and is linear in
+    L); inertia rises with R and L and falls as the rotor grooves open (less epoxy)."""
+    m, b = prob.case.motor, prob.case.bounds
+    d = np.linspace(1e-5, 3 * b.gap_max, 400)
+    R = np.linspace(0.8 * b.radius_min, 1.2 * b.radius_max, 400)
+    assert np.all(np.diff(motor_torque(m, b.radius_min, d, b.length_min)[0]) < 0)
+    assert np.all(np.diff(motor_torque(m, R, b.gap_max, b.length_min)[0]) > 0)
+    d0 = prob.machined_rotor_groove_m
+    assert np.all(np.diff(rotor_inertia(m, R, 0.0, b.length_min, d0)) > 0)
+    assert np.all(np.diff(rotor_inertia(m, b.radius_min, np.linspace(0, d0, 50),
+                                        b.length_min, d0)) < 0)
+
+
 def test_duty_cycle_reduction_is_exact(prob, seed_opt):
     """26 weighted nodes against the plain mean over the 1500 samples."""
     c = prob.case

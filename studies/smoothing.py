@@ -71,6 +71,9 @@ RIG_DEPTH_M = 0.0
 T_GROOVED = 4.0
 T_SMOOTHED = 2.0
 HEATING_METHODS = ("shared", "per-oil")
+MAX_OIL_TEMP_C = 250.0
+"""Cap of the heat balance [degC]: a run whose balance has no root below it is held
+there (far beyond where mineral oil and the Walther line are meaningful)."""
 PLATEAU_TOL = 0.05
 """Default criterion: the loss has stopped falling once it is within this fraction of
 its value at T = 1 (the smooth-wall floor)."""
@@ -100,7 +103,8 @@ def steady_temperatures(cases: list[DesignCase], base_temp_C, resistance_K_W: fl
     ``g(T) = T - T_base - R_th P(T)`` rises strictly (P falls as the oil warms),
     with ``g(T_base) <= 0 <= g(T_base + R_th P(T_base))``: exactly one root in
     that bracket. Vectorised safeguarded Newton (forward-difference slope; a
-    step that leaves the bracket is replaced by bisection).
+    step that leaves the bracket is replaced by bisection). A case whose root
+    lies above :data:`MAX_OIL_TEMP_C` is returned at that cap.
 
     Parameters
     ----------
@@ -131,19 +135,22 @@ def steady_temperatures(cases: list[DesignCase], base_temp_C, resistance_K_W: fl
     p_lo = _at_temperatures(cases, tb)
     if rth == 0.0:
         return tb, p_lo
-    lo, hi = tb.copy(), tb + rth * p_lo
-    t = 0.5 * (lo + hi)
+    lo = tb.copy()
+    hi = np.minimum(tb + rth * p_lo, MAX_OIL_TEMP_C)
+    capped = (hi >= MAX_OIL_TEMP_C) & (
+        MAX_OIL_TEMP_C - tb - rth * _at_temperatures(cases, hi) <= 0)
+    t = np.where(capped, MAX_OIL_TEMP_C, 0.5 * (lo + hi))
     h = 1e-4
     for _ in range(max_iter):
         p = _at_temperatures(cases + cases, np.concatenate([t, t + h]))
         p0, p1 = p[:n], p[n:]
-        g = t - tb - rth * p0
+        g = np.where(capped, 0.0, t - tb - rth * p0)
         if np.all(np.abs(g) < tol_K):
             return t, p0
         lo = np.where(g < 0, t, lo)
         hi = np.where(g > 0, t, hi)
         t_new = t - g / (1.0 - rth * (p1 - p0) / h)
-        t = np.where((t_new > lo) & (t_new < hi), t_new, 0.5 * (lo + hi))
+        t = np.where(capped, t, np.where((t_new > lo) & (t_new < hi), t_new, 0.5 * (lo + hi)))
     raise SolverError(f"steady oil temperature did not converge to {tol_K:g} K "
                       f"in {max_iter} iterations", "max_iter")
 

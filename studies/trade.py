@@ -185,8 +185,7 @@ def read_grid_csv(path: str | Path) -> pd.DataFrame:
     if not p.is_file():
         raise InputError("grid", str(p), "must be an existing CSV file", "trade study")
     try:
-        df = pd.read_csv(p, dtype={c: str for c in STRING_COLUMNS},
-                         float_precision="round_trip", skipinitialspace=True)
+        df = pd.read_csv(p, dtype={c: str for c in STRING_COLUMNS}, skipinitialspace=True)
     except pd.errors.EmptyDataError:
         raise InputError("grid", str(p), "is empty; it must hold a header and at least one "
                          "row", "trade study") from None
@@ -504,7 +503,7 @@ def _load_points(path: Path, mode: str) -> pd.DataFrame:
         return pd.DataFrame(columns=["point_key", *_result_columns(mode)])
     try:
         df = pd.read_csv(path, dtype={"point_key": str, "status": str, "error": str,
-                                      "warning": str}, float_precision="round_trip")
+                                      "warning": str})
     except pd.errors.EmptyDataError:
         return pd.DataFrame(columns=["point_key", *_result_columns(mode)])
     if "point_key" not in df.columns:
@@ -542,7 +541,7 @@ class Progress:
     def line(self) -> str:
         """The current progress line (without carriage return)."""
         frac = 1.0 if self.total == 0 else self.done / self.total
-        filled = int(round(frac * self.width))
+        filled = int(frac * self.width)
         el = time.perf_counter() - self.t0
         eta = el / frac - el if 0 < frac < 1 else 0.0
         return (f"oilgap {self.label} [{'#' * filled}{'-' * (self.width - filled)}] "

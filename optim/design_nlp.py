@@ -65,6 +65,7 @@ import numpy as np
 from oilgap.model.case import (
     DesignBounds,
     DesignCase,
+    Motor,
     OperatingPoint,
     RotorStatorClearance,
 )
@@ -76,7 +77,7 @@ from oilgap.model.errors import (
     check_finite,
     check_positive,
 )
-from oilgap.model.evaluation import oil_state
+from oilgap.model.evaluation import CaseEvaluation, oil_state
 from oilgap.model.magnetics import (
     airgap_flux_density,
     carter_coefficient,
@@ -141,7 +142,7 @@ def _from_nlp(y: np.ndarray) -> np.ndarray:
 # floats, numpy arrays and CasADi symbols (all SI), like the model itself.
 
 
-def clearance_radii(R_m, delta_m, rotor_groove_m, stator_groove_m):
+def clearance_radii(R_m, delta_m, rotor_groove_m, stator_groove_m) -> tuple[Any, Any, Any, Any]:
     """Radii (T1, T2, T3, T4) [m] of region 1 from the design variables.
 
     T1 = R - d_r, T2 = R, T3 = R + delta, T4 = R + delta + d_s.
@@ -150,7 +151,7 @@ def clearance_radii(R_m, delta_m, rotor_groove_m, stator_groove_m):
     return R_m - rotor_groove_m, R_m, T3, T3 + stator_groove_m
 
 
-def motor_torque(motor, R_m, delta_m, L_m):
+def motor_torque(motor: Motor, R_m, delta_m, L_m) -> tuple[Any, Any, Any]:
     """Torque capability [N m], air-gap flux density [T] and Carter coefficient [-].
 
     Carter coefficient with the slot pitch at the bore ``2 pi T3 / Q_s`` and the
@@ -165,7 +166,7 @@ def motor_torque(motor, R_m, delta_m, L_m):
     return tau, bg, kc
 
 
-def rotor_inertia(motor, R_m, rotor_groove_m, L_m, machined_groove_m):
+def rotor_inertia(motor: Motor, R_m, rotor_groove_m, L_m, machined_groove_m) -> Any:
     """Rotor inertia [kg m^2] with grooves machined ``machined_groove_m`` deep and filled
     with epoxy up to ``rotor_groove_m`` below the surface (T1_unfilled = R - d_r0)."""
     return grooved_rotor_inertia(L_m, motor.shaft_bore_radius, R_m - machined_groove_m,
@@ -174,7 +175,7 @@ def rotor_inertia(motor, R_m, rotor_groove_m, L_m, machined_groove_m):
 
 
 def region1_mean_power(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m, nu_m2_s,
-                       rho_kg_m3, nodes_rad_s, weights, law: FrictionLaw):
+                       rho_kg_m3, nodes_rad_s, weights, law: FrictionLaw) -> Any:
     """Mean viscous power [W] of region 1 over a speed distribution (seed Eqs. 4-10).
 
     ``sum_i w_i clearance_power(omega_i, nu, rho, R, delta, L, law, T)`` with
@@ -268,6 +269,7 @@ class Multiplier:
     """The same in SI: W per m (bounds), W per N m (torque), W per kg m^2 (inertia)."""
 
     def to_dict(self) -> dict[str, Any]:
+        """Plain dict (JSON)."""
         return asdict(self)
 
 
@@ -294,9 +296,11 @@ class DesignParameters:
 
     @property
     def inertia_max_ratio(self) -> float:
+        """Inertia limit over the reference inertia [-]."""
         return self.inertia_max_kgm2 / self.inertia_ref_kgm2
 
     def to_dict(self) -> dict[str, Any]:
+        """Unit-keyed plain dict (bounds in mm) for JSON."""
         mm = 1.0 / MM_TO_M
         d: dict[str, Any] = {"oil": self.oil, "oil_temp_C": self.oil_temp_C,
                              "depth_m": self.depth_m, "nu_cSt": self.nu_m2_s * 1e6,
@@ -391,7 +395,7 @@ class DesignResult:
         return replace(self.case, name=name or f"{self.case.name}, optimized",
                        region1=r1, bounds=bounds)
 
-    def evaluate(self):
+    def evaluate(self) -> tuple[CaseEvaluation, CaseEvaluation]:
         """(initial, optimal) :class:`CaseEvaluation` with the case's own (exact) C_m form,
         i.e. what ``oilgap evaluate`` prints for the two designs."""
         from oilgap.model.evaluation import evaluate_case

@@ -13,11 +13,15 @@ import argparse
 import json
 import warnings
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from oilgap.model.errors import InputError, OilgapWarning, check_finite, check_positive
 
+if TYPE_CHECKING:
+    from oilgap.optim.design_nlp import DesignResult
 
-def add_parser(sub) -> None:
+
+def add_parser(sub: argparse._SubParsersAction) -> None:
     p = sub.add_parser(
         "optimize", help="optimize the rotor-stator clearance geometry (CasADi/IPOPT)",
         description="Minimize the mean viscous power over the duty cycle by the region-1 "
@@ -48,7 +52,8 @@ def add_parser(sub) -> None:
     p.set_defaults(func=run)
 
 
-def _number(args: argparse.Namespace, attr: str, field: str, positive: bool = False):
+def _number(args: argparse.Namespace, attr: str, field: str,
+            positive: bool = False) -> float | None:
     raw = getattr(args, attr)
     if raw is None:
         return None
@@ -66,7 +71,7 @@ def _fmt(v: float) -> str:
     return f"{v:.4e}"
 
 
-def format_result(res, exact=None) -> str:
+def format_result(res: DesignResult, exact: tuple | None = None) -> str:
     """Side-by-side table of the initial and optimal designs, with the multipliers."""
     prm = res.parameters
     i, o = res.initial.to_dict(), res.optimal.to_dict()

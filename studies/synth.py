@@ -1,0 +1,393 @@
+"""A synthetic rig: the seed's viscous-power experiment, simulated.
+
+The oil-free group and four oils (ISO VG 150, 320, 680, 1000: 150 ... 1000 cSt
+at 40 degC), each with the grooved (T = 4) and the smoothed (T = 2) rotor;
+1500 samples every 0.2 s of ``3000 rpm sin(0.1 pi t)`` per run. What it
+simulates, per run:
+
+* Viscous power from the physics core: ``clearance_power`` per region (region 1
+  with the run's T, region 2 with T = 1) under a *truth* friction law, the
+  power law of Eq. 8 with the Eq. 6 laminar branch (C = 10, alpha = 0.3,
+  beta = -1) and the seed case's gamma, and the oil's nu, rho from its Walther
+  line and density law at the oil temperature (atmospheric pressure: the seed's
+  rig stands in a tank).
+* A lumped thermal model heated by the losses, integrated with
+  ``scipy.integrate.solve_ivp`` (all runs at once):
+  ``C_th dT/dt = P_heat - (T - T_amb)/R_th``, P_heat = viscous power +
+  dissipative effect + motor heat (iron, copper, a share of the gear loss).
+* The electrical input power: a baseline of load and motor losses
+  (:class:`BaselineTruth`, the same for oil-free and oil runs of one T) plus the
+  viscous power and, optionally, one library effect at a given strength
+  (:mod:`oilgap.model.effects`; thermal lag acts through the oil temperature,
+  sensor delay by shifting the power record in time, shear thinning with the
+  full Cross law, the others as their library terms).
+* Measurement noise on power, speed and temperature (seeded).
+
+The output is a data frame in the loop's data format and carries no trace of
+the effect (no column, no metadata). The noise-free simulation is cached, so
+seeds of one configuration cost only the noise.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+from scipy.integrate import solve_ivp
+
+from oilgap.model.case import DesignCase, case_to_dict, seed_case
+from oilgap.model.effects import (
+    EFFECTS,
+    EffectContext,
+    RegionState,
+    couette_shear_rate,
+    cross_viscosity_ratio,
+    get_effect,
+)
+from oilgap.model.errors import InputError, check_finite
+from oilgap.model.oil_properties import oil_viscosities
+from oilgap.model.oils import get_oil
+from oilgap.model.skin_friction import FrictionLaw
+from oilgap.model.taylor_couette import couette_reynolds, taylor_number
+from oilgap.model.units import ZERO_CELSIUS_K, rpm_to_rad_s
+from oilgap.model.viscous_loss import clearance_power
+
+DEFAULT_STRENGTH = {
+    "end_face_disc": 1.0,
+    "bearing_ball_churning": 1.0,
+    "seal_coulomb_friction": 0.03,
+    "oil_inertia": 5.0e-7,
+    "thermal_lag": 4.0,
+    "taylor_vortex_onset": 0.5,
+    "shear_thinning": 5.0e-5,
+    "sensor_delay": 0.2,
+}
+"""Strength of each effect when ``--strength`` is not given (unit: Effect.strength_unit)."""
+
+
+@dataclass(frozen=True)
+class BaselineTruth:
+    """Load and motor losses of the simulated joint (electrical input without oil).
+
+    ``P = P_0 + p_T T + tau_L |w| + b w^2 + J w dw/dt + k_cu (1 + a (T_c - 20)) tau_m^2``
+    with the motor torque ``tau_m = tau_L sign(w) + J dw/dt``: electronics, the
+    load (a constant torque at the motor), iron loss, rotor inertia and copper
+    loss. Heat into the joint: iron + copper + ``gear_heat_share`` of the load.
+    """
+
+    electronics_W: float = 3.5
+    per_roughness_W: float = 0.25
+    load_torque_Nm: float = 0.09
+    iron_W_s2: float = 1.5e-5
+    rotor_inertia_kg_m2: float = 2.0e-4
+    copper_W_Nm2: float = 50.0
+    copper_tempco_1_K: float = 0.00393
+    gear_heat_share: float = 0.3
+
+    def power(self, omega, domega_dt, coil_temp_C, roughness_T):
+        """Electrical input power [W] without oil."""
+        tau_m = self.load_torque_Nm * np.sign(omega) + self.rotor_inertia_kg_m2 * domega_dt
+        copper = self.copper_W_Nm2 * (1.0 + self.copper_tempco_1_K * (coil_temp_C - 20.0)) \
+            * tau_m * tau_m
+        return (self.electronics_W + self.per_roughness_W * roughness_T
+                + self.load_torque_Nm * np.abs(omega) + self.iron_W_s2 * omega * omega
+                + self.rotor_inertia_kg_m2 * omega * domega_dt + copper)
+
+    def heat(self, omega, domega_dt, coil_temp_C):
+        """Heat released inside the joint [W] (iron, copper, share of the load)."""
+        tau_m = self.load_torque_Nm * np.sign(omega) + self.rotor_inertia_kg_m2 * domega_dt
+        copper = self.copper_W_Nm2 * (1.0 + self.copper_tempco_1_K * (coil_temp_C - 20.0)) \
+            * tau_m * tau_m
+        return (self.iron_W_s2 * omega * omega + copper
+                + self.gear_heat_share * self.load_torque_Nm * np.abs(omega))
+
+
+def seed_truth_law(case: DesignCase | None = None) -> FrictionLaw:
+    """The synthetic rig's true friction law: Eq. 8 with the Eq. 6 laminar branch.
+
+    C = 10, alpha = 0.3, beta = -1 and the case's gamma (the seed's, by default).
+    """
+    case = case or seed_case()
+    return FrictionLaw(form="power-law", C=10.0, alpha=0.3, beta=-1.0, gamma=case.friction.gamma)
+
+
+@dataclass(frozen=True)
+class SynthConfig:
+    """What the synthetic rig simulates (SI unless the name says otherwise).
+
+    ``case`` gives the geometry (region 1 radius, gap, length; region 2 if any;
+    the rotor end-face radii); its own T is replaced by each run's
+    ``roughness``. ``truth`` None means :func:`seed_truth_law` of the case.
+    ``kind`` "power_W" writes the electrical input (with oil-free runs);
+    "viscous_power_W" writes the viscous loss directly (no oil-free runs).
+    """
+
+    case: DesignCase | None = None
+    oils: tuple[str, ...] = ("VG150", "VG320", "VG680", "VG1000")
+    roughness: tuple[float, ...] = (4.0, 2.0)
+    n_samples: int = 1500
+    sample_interval_s: float = 0.2
+    peak_speed_rpm: float = 3000.0
+    frequency_hz: float = 0.05
+    ambient_C: float = 25.0
+    thermal_resistance_K_W: float = 0.25
+    heat_capacity_J_K: float = 240.0
+    truth: FrictionLaw | None = None
+    baseline: BaselineTruth = field(default_factory=BaselineTruth)
+    noise_power_W: float = 1.0
+    noise_speed_rpm: float = 2.0
+    noise_temp_K: float = 0.05
+    kind: str = "power_W"
+    effect: str | None = None
+    strength: float | None = None
+    extra_power: str | None = None
+
+    def resolved(self) -> SynthConfig:
+        """The same configuration with defaults filled in and checked."""
+        case = self.case or seed_case()
+        truth = self.truth or seed_truth_law(case)
+        if self.kind not in ("power_W", "viscous_power_W"):
+            raise InputError("kind", self.kind, "allowed: power_W, viscous_power_W", "synth")
+        if self.n_samples < 20:
+            raise InputError("n_samples", self.n_samples, "must be >= 20", "synth")
+        for r in self.roughness:
+            if not r >= 1.0:
+                raise InputError("roughness_T", r, "must be >= 1", "synth")
+        for o in self.oils:
+            get_oil(o)
+        strength = self.strength
+        if self.effect is not None:
+            get_effect(self.effect)
+            strength = DEFAULT_STRENGTH[self.effect] if strength is None else \
+                check_finite("strength", strength, "synth")
+        elif strength is not None:
+            raise InputError("strength", strength, "only together with an effect", "synth")
+        if self.extra_power not in (None, *OUTSIDE_LIBRARY):
+            raise InputError("extra_power", self.extra_power,
+                             f"allowed: {', '.join(OUTSIDE_LIBRARY)}", "synth")
+        return replace(self, case=case, truth=truth, strength=strength)
+
+
+OUTSIDE_LIBRARY = {
+    "direction_dependent": "0.15 * P_visc * sign(w): a loss that depends on the direction of "
+                           "rotation (e.g. a helical groove pumping one way)",
+    "power_meter_drift": "0.02 W/s * t: a slow drift of the power reading within each run",
+}
+"""Effects the library does not hold, for testing that the loop does not misname them."""
+
+
+# --------------------------------------------------------------------------- simulation
+
+
+@dataclass(frozen=True)
+class _Run:
+    name: str
+    oil: str | None
+    roughness: float
+
+
+def _runs(cfg: SynthConfig) -> list[_Run]:
+    out = []
+    for T in cfg.roughness:
+        if cfg.kind == "power_W":
+            out.append(_Run(f"oilfree-T{T:g}", None, T))
+        for o in cfg.oils:
+            out.append(_Run(f"{o}-T{T:g}", o, T))
+    return out
+
+
+def _regions(case: DesignCase, roughness: np.ndarray):
+    """[(name, R, gap, L, T array)] of the rig for runs of the given roughness."""
+    r1 = case.region1
+    out = [("rotor-stator", r1.radius, r1.gap, r1.length, roughness)]
+    if case.region2 is not None:
+        r2 = case.region2
+        out.append(("bearing", r2.radius, r2.gap, r2.length, np.ones_like(roughness)))
+    return out
+
+
+def _context(cfg: SynthConfig, omega, domega_dt, nu, rho, roughness, dpower_dt=None,
+             dpower_dtemp=None, dtemp_dt=None) -> EffectContext:
+    case = cfg.case
+    omega = np.asarray(omega, dtype=float) * np.ones_like(nu)
+    regions = []
+    for name, R, gap, L, T in _regions(case, roughness):
+        p = clearance_power(omega, nu, rho, R, gap, L, cfg.truth, T)
+        re = couette_reynolds(omega, R, gap, nu)
+        regions.append(RegionState(name, R, gap * np.ones_like(nu), L, p, re,
+                                   taylor_number(re, gap, R)))
+    zeros = np.zeros_like(nu)
+    r2 = case.region2
+    dm = None if r2 is None else 2.0 * r2.radius + r2.gap
+    return EffectContext(omega, np.asarray(domega_dt, dtype=float) * np.ones_like(nu), nu, rho,
+                         zeros if dtemp_dt is None else dtemp_dt,
+                         zeros if dpower_dt is None else dpower_dt,
+                         zeros if dpower_dtemp is None else dpower_dtemp,
+                         tuple(regions), (case.region1.radius, case.motor.shaft_bore_radius), dm)
+
+
+def _effect_power(cfg: SynthConfig, ctx: EffectContext) -> np.ndarray:
+    """Injected power of the configured effect [W] (static effects only)."""
+    name = cfg.effect
+    if name is None or name in ("thermal_lag", "sensor_delay"):
+        return np.zeros_like(ctx.nu_m2_s)
+    eff = EFFECTS[name]
+    if name == "shear_thinning":  # the full Cross law, not its first-order term
+        lam = cfg.strength
+        return sum(r.power_W * (cross_viscosity_ratio(
+            couette_shear_rate(ctx.omega_rad_s, r.radius_m, r.gap_m), lam) - 1.0)
+            for r in ctx.regions)
+    f = eff.feature_values(ctx)
+    if f is None:
+        return np.zeros_like(ctx.nu_m2_s)
+    return eff.coefficient_from_strength(cfg.strength) * f
+
+
+def _oil_state(oils, has_oil, temp_C):
+    temp_C = np.asarray(temp_C, dtype=float)
+    shape = (-1,) + (1,) * (temp_C.ndim - 1)
+    A = np.array([o.walther[0] for o in oils]).reshape(shape)
+    B = np.array([o.walther[1] for o in oils]).reshape(shape)
+    rho15 = np.array([o.density_kg_m3 for o in oils]).reshape(shape)
+    barus = np.array([o.barus_1_Pa for o in oils]).reshape(shape)
+    nu, _, rho = oil_viscosities(A, B, rho15, np.asarray(temp_C) + ZERO_CELSIUS_K, 0.0, barus)
+    return np.where(has_oil, nu, 1.0), np.where(has_oil, rho, 0.0)
+
+
+_CACHE: dict[str, dict] = {}
+
+
+def _key(cfg: SynthConfig) -> str:
+    d = {k: getattr(cfg, k) for k in cfg.__dataclass_fields__ if k != "case"}
+    return repr(d) + repr(case_to_dict(cfg.case))
+
+
+def simulate_truth(config: SynthConfig | None = None) -> dict:
+    """Noise-free simulation of every run (cached).
+
+    Returns
+    -------
+    dict with ``runs`` (list of (name, oil or None, T)), ``time_s`` [s],
+    ``omega`` [rad/s] (n_runs x n), ``temp_meas_C``, ``temp_oil_C`` [degC],
+    ``viscous_W`` (clearance model, truth law), ``effect_W`` (injected effect),
+    ``measured_W`` (what the sensor reads: power_W or viscous_power_W, noise-free).
+    """
+    cfg = (config or SynthConfig()).resolved()
+    key = _key(cfg)
+    if key in _CACHE:
+        return _CACHE[key]
+    runs = _runs(cfg)
+    n_r = len(runs)
+    has_oil = np.array([r.oil is not None for r in runs])
+    oils = [get_oil(r.oil or cfg.oils[0]) for r in runs]
+    rough = np.array([r.roughness for r in runs])
+    w0 = rpm_to_rad_s(cfg.peak_speed_rpm)
+    two_pi_f = 2.0 * np.pi * cfg.frequency_hz
+    bl = cfg.baseline
+    lag = cfg.strength if cfg.effect == "thermal_lag" else 0.0
+
+    def speed(t):
+        return w0 * np.sin(two_pi_f * t), w0 * two_pi_f * np.cos(two_pi_f * t)
+
+    def split(y):
+        """(heated node, measured, oil) temperatures [degC]."""
+        th = y[:n_r]
+        if lag > 0:
+            return th, th, y[n_r:]
+        if lag < 0:
+            return th, y[n_r:], th
+        return th, th, th
+
+    def heat(t, y):
+        w, a = speed(t)
+        th, _, toil = split(y)
+        nu, rho = _oil_state(oils, has_oil, toil)
+        ctx = _context(cfg, w, a, nu, rho, rough)
+        p = (ctx.power_W + _effect_power(cfg, ctx)) * has_oil
+        if cfg.effect == "oil_inertia":  # stored, not dissipated
+            p = ctx.power_W * has_oil
+        return p + bl.heat(w, a, th)
+
+    def rhs(t, y):
+        th = y[:n_r]
+        dth = (heat(t, y) - (th - cfg.ambient_C) / cfg.thermal_resistance_K_W) \
+            / cfg.heat_capacity_J_K
+        if lag == 0.0:
+            return dth
+        other = y[n_r:]
+        return np.concatenate([dth, (th - other) / abs(lag)])
+
+    t = np.arange(cfg.n_samples) * cfg.sample_interval_s
+    y0 = np.full(n_r * (2 if lag else 1), cfg.ambient_C)
+    sol = solve_ivp(rhs, (0.0, t[-1]), y0, method="RK45", t_eval=t, dense_output=True,
+                    rtol=1e-7, atol=1e-6, max_step=1.0)
+    if not sol.success:  # pragma: no cover - a smooth, stable ODE
+        from oilgap.model.errors import SolverError
+
+        raise SolverError(f"thermal model: {sol.message}")
+    delay = cfg.strength if cfg.effect == "sensor_delay" else 0.0
+
+    def record(tt):
+        """Everything the sensors see at times tt (n_runs x n arrays)."""
+        yy = sol.sol(np.clip(tt, 0.0, None)) if np.ndim(tt) else sol.sol(max(tt, 0.0))
+        w, a = speed(tt)
+        th, tmeas, toil = split(yy)
+        nu, rho = _oil_state(oils, has_oil[:, None], toil)
+        ctx = _context(cfg, w[None, :], a[None, :], nu, rho, rough[:, None])
+        visc = ctx.power_W * has_oil[:, None]
+        eff = _effect_power(cfg, ctx) * has_oil[:, None]
+        extra = np.zeros_like(visc)
+        if cfg.extra_power == "direction_dependent":
+            extra = 0.15 * visc * np.sign(w)[None, :]
+        elif cfg.extra_power == "power_meter_drift":
+            extra = 0.02 * np.broadcast_to(tt, visc.shape) * has_oil[:, None]
+        base = bl.power(w[None, :], a[None, :], th, rough[:, None])
+        return w, th, tmeas, toil, visc, eff, extra, base
+
+    w, th, tmeas, toil, visc, eff, extra, base = record(t)
+    if delay:
+        _, _, _, _, visc_d, eff_d, extra_d, base_d = record(t - delay)
+    else:
+        visc_d, eff_d, extra_d, base_d = visc, eff, extra, base
+    oil_part = visc_d + eff_d + extra_d
+    measured = oil_part + base_d if cfg.kind == "power_W" else oil_part
+    out = {"config": cfg, "runs": [(r.name, r.oil, r.roughness) for r in runs], "time_s": t,
+           "omega": np.broadcast_to(w, visc.shape).copy(), "temp_meas_C": tmeas,
+           "temp_oil_C": toil, "viscous_W": visc, "effect_W": eff_d + extra_d,
+           "measured_W": measured}
+    if len(_CACHE) > 64:
+        _CACHE.clear()
+    _CACHE[key] = out
+    return out
+
+
+def synthesize(config: SynthConfig | None = None, seed: int = 0) -> pd.DataFrame:
+    """Synthetic rig data in the loop's format (one row per sample), with noise.
+
+    Columns ``run, time_s, speed_rpm, temp_C, oil, roughness_T`` and
+    ``power_W`` or ``viscous_power_W``. ``seed`` draws the measurement noise.
+    """
+    tr = simulate_truth(config)
+    cfg = tr["config"]
+    rng = np.random.default_rng(seed)
+    frames = []
+    t = tr["time_s"]
+    for i, (name, oil, T) in enumerate(tr["runs"]):
+        n = len(t)
+        speed = tr["omega"][i] * 60.0 / (2.0 * np.pi) + rng.normal(0.0, cfg.noise_speed_rpm, n)
+        temp = tr["temp_meas_C"][i] + rng.normal(0.0, cfg.noise_temp_K, n)
+        p = tr["measured_W"][i] + rng.normal(0.0, cfg.noise_power_W, n)
+        frames.append(pd.DataFrame({
+            "run": name, "time_s": np.round(t, 6), "speed_rpm": speed, "temp_C": temp,
+            "oil": oil or "none", "roughness_T": T, cfg.kind: p}))
+    return pd.concat(frames, ignore_index=True)
+
+
+def write_synth_csv(df: pd.DataFrame, path: str | Path) -> Path:
+    """Write synthetic data as CSV (6 significant digits is far below the noise)."""
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    df.to_csv(path, index=False, float_format="%.7g")
+    return path

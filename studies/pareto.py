@@ -11,9 +11,10 @@ the grid is one warm-started chain):
   minimised): ``min P  s.t.  delta <= eps``, torque capability >= the case's
   (or ``torque_min_Nm``), rotor inertia <= its limit, all bounds. A larger gap
   lowers the oil shear but weakens the motor, which the torque constraint makes
-  the design pay for with radius and length. ``eps`` runs from the case's
-  ``gap_min`` up to the gap of the unconstrained optimum (beyond it the
-  epsilon constraint is inactive and the front ends).
+  the design pay for with radius and length. ``eps`` runs from the gap of the
+  unconstrained optimum (beyond it the epsilon constraint is inactive and the
+  front ends) down to the case's ``gap_min``, spread evenly along the front's
+  arc length.
 * **Inertia front** (objectives: rotor inertia, mean viscous power): ``min P
   s.t.  J <= eps`` with the same torque constraint; ``eps`` runs from the
   lightest feasible rotor (found by bisection on the NLP's exact feasibility
@@ -50,11 +51,18 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase, seed_case
-from oilgap.model.errors import InfeasibleError, InputError, OilgapWarning, check_positive
+from oilgap.model.errors import (
+    InfeasibleError,
+    InputError,
+    OilgapWarning,
+    SolverError,
+    check_positive,
+)
 from oilgap.model.oils import get_oil
 from oilgap.model.units import MM_TO_M
 from oilgap.studies.trade import (
     case_fingerprint,
+    evaluate_arrays,
     evaluate_cases,
     markdown_table,
     new_figure,
@@ -70,15 +78,21 @@ DEFAULT_POINTS = 60
 # --------------------------------------------------------------------------- one solve
 
 
-def _problem(case: DesignCase, problems: dict | None):
+_PROBLEMS: dict[str, Any] = {}
+"""DesignProblems built in this process, by case fingerprint (the NLP is built once)."""
+_MAX_PROBLEMS = 16
+
+
+def _problem(case: DesignCase, problems: dict | None = None) -> tuple[str, Any]:
     from oilgap.optim.design_nlp import DesignProblem
 
-    if problems is None:
-        return DesignProblem(case)
+    cache = _PROBLEMS if problems is None else problems
     key = case_fingerprint(case)
-    if key not in problems:
-        problems[key] = DesignProblem(case)
-    return problems[key]
+    if key not in cache:
+        if len(cache) >= _MAX_PROBLEMS:
+            cache.pop(next(iter(cache)))
+        cache[key] = DesignProblem(case)
+    return key, cache[key]
 
 
 _OVERRIDE_MAP = {"torque_min_Nm": ("torque_min_Nm", 1.0),
@@ -90,18 +104,20 @@ _OVERRIDE_MAP = {"torque_min_Nm": ("torque_min_Nm", 1.0),
 def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None,
                        problems: dict | None = None, operating: Mapping[str, Any] | None = None
                        ) -> tuple[dict, Any]:
-    """Solve the design NLP of ``case`` with grid overrides; return (record, result).
+    """Solve the design NLP of ``case`` with grid overrides; return (record, warm start).
 
     Parameters
     ----------
     case : DesignCase
         The structure (geometry, friction, duty cycle, motor, bounds); its
-        DesignProblem is built once per distinct case (cached in ``problems``).
+        DesignProblem is built once per distinct case (cached in ``problems``,
+        default a per-process cache).
     overrides : mapping
         Grid columns ``torque_min_Nm`` [N m], ``delta_min_mm``, ``delta_max_mm``
         [mm], ``inertia_max_ratio`` [-].
-    x0 : DesignResult, optional
-        Warm start (primal and dual if it comes from the same problem).
+    x0 : optional
+        The warm start returned by a previous call (primal and dual if it came
+        from the same problem, primal only otherwise).
     operating : mapping, optional
         ``oil`` (name), ``oil_temp_C``, ``depth_m``: NLP parameters, no rebuild.
 
@@ -109,41 +125,38 @@ def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None
     -------
     record : dict
         The result columns of :data:`oilgap.studies.trade.OPTIMIZE_RESULTS`.
-    result : DesignResult
-        For the next warm start.
+    warm : tuple
+        (problem key, DesignResult), to pass as the next ``x0``.
 
     Raises
     ------
     InputError, InfeasibleError, SolverError
         As :meth:`DesignProblem.solve`.
     """
-    from oilgap.optim.design_nlp import DesignResult
-
-    prob = _problem(case, problems)
+    key, prob = _problem(case, problems)
     kw: dict[str, Any] = {}
     for k, v in overrides.items():
         name, f = _OVERRIDE_MAP[k]
         kw[name] = float(v) * f
     for k, v in (operating or {}).items():
         kw[k] = get_oil(str(v)) if k == "oil" else float(v)
-    start = x0
-    if isinstance(x0, DesignResult) and x0.case is not None and \
-            case_fingerprint(replace(x0.case, oil=case.oil, operating=case.operating)) != \
-            case_fingerprint(case):
-        start = x0.optimal
+    start = None
+    if x0 is not None:
+        k0, r0 = x0
+        start = r0 if k0 == key else r0.optimal
     t0 = time.perf_counter()
     res = prob.solve(x0=start, **kw)
     dt = time.perf_counter() - t0
     o = res.optimal
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
-        exact = float(evaluate_cases([res.to_case()])["mean_power_W"].iloc[0])
+        exact = float(evaluate_arrays([res.to_case()])[0]["mean_power_W"][0])
     rec = dict(o.to_dict(), initial_mean_power_W=res.initial.mean_power_W,
                mean_power_exact_W=exact, solve_time_s=dt, iterations=res.iterations,
                active_constraints=" ".join(res.active_constraints),
                torque_min_Nm_used=res.parameters.torque_min_Nm,
                inertia_max_kgm2_used=res.parameters.inertia_max_kgm2)
-    return rec, res
+    return rec, (key, res)
 
 
 # --------------------------------------------------------------------------- fronts
@@ -225,13 +238,40 @@ def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
     return res
 
 
+def arc_length_epsilons(x_top: float, y_top: float, x_bot: float, y_bot: float,
+                        points: int) -> np.ndarray:
+    """Epsilon values from ``x_top`` down to ``x_bot``, equally spaced along the front's
+    normalised arc length, the front modelled as ``y = a + b / x`` through its two ends.
+
+    Equal steps in delta crowd the flat part of a front shaped like 1/delta and
+    leave big steps on the steep part; equal arc length in normalised objective
+    space spreads the points evenly along the curve (a larger hypervolume for
+    the same number of solves). Falls back to equal steps in x if the ends do
+    not describe a falling front.
+    """
+    if not (x_top > x_bot > 0 and y_bot > y_top):
+        return np.linspace(x_top, x_bot, points)
+    b = (y_bot - y_top) / (1.0 / x_bot - 1.0 / x_top)
+    x = np.linspace(x_bot, x_top, 4001)
+    y = y_top + b * (1.0 / x - 1.0 / x_top)
+    xn = (x - x_bot) / (x_top - x_bot)
+    yn = (y - y_top) / (y_bot - y_top)
+    s = np.r_[0.0, np.cumsum(np.hypot(np.diff(xn), np.diff(yn)))]
+    eps = np.interp(np.linspace(0.0, s[-1], points), s, x)[::-1]
+    eps[0], eps[-1] = x_top, x_bot
+    return eps
+
+
 def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
               torque_min_Nm: float | None = None, out_dir: str | Path | None = None,
-              progress: bool | None = False) -> pd.DataFrame:
+              progress: bool | None = False, spacing: str = "arc") -> pd.DataFrame:
     """The gap-loss front: ``min P s.t. delta <= eps`` for ``points`` values of eps.
 
-    eps runs from the case's ``gap_min`` to the gap of the unconstrained optimum,
-    solved from the top down, each solve warm-started from the previous one.
+    eps runs from the gap of the unconstrained optimum down to the case's
+    ``gap_min``, each solve warm-started from the previous one; ``spacing``
+    ``"arc"`` (default) spreads eps evenly along the front's arc length
+    (:func:`arc_length_epsilons`, from the two end solves), ``"linear"`` uses
+    equal steps in delta.
 
     Returns
     -------
@@ -244,14 +284,23 @@ def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
     """
     base = case if case is not None else seed_case()
     points = _check_points(points)
+    if spacing not in ("arc", "linear"):
+        raise InputError("spacing", spacing, "allowed: arc, linear", "pareto study")
     extra = {}
     if torque_min_Nm is not None:
         extra["torque_min_Nm"] = check_positive("torque_min_Nm", torque_min_Nm,
                                                 "pareto study")
-    rec, _ = solve_design_point(base, extra)
+    top, warm = solve_design_point(base, extra)
     lo = base.bounds.gap_min / MM_TO_M
-    hi = max(rec["delta_mm"], lo)
+    hi = max(top["delta_mm"], lo)
     eps = np.linspace(hi, lo, points)
+    if spacing == "arc" and hi > lo:
+        try:
+            bot, _ = solve_design_point(base, dict(extra, delta_max_mm=lo), x0=warm)
+            eps = arc_length_epsilons(hi, top["mean_power_W"], lo, bot["mean_power_W"],
+                                      points)
+        except (InfeasibleError, SolverError):
+            pass  # the sweep reports the failing end as a row; keep equal steps
     return _sweep(base, "delta_max_mm", eps, extra, out_dir, progress, "pareto gap")
 
 

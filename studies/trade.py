@@ -433,7 +433,6 @@ def _optimize_chunk(base: DesignCase, rows: list[dict], catalogue) -> list[dict]
 
     results: list[dict] = []
     x_prev = None
-    problems: dict = {}
     for row in rows:
         struct = {k: v for k, v in row.items()
                   if k not in OPTIMIZE_COLUMNS and k not in OPERATING_COLUMNS}
@@ -446,8 +445,7 @@ def _optimize_chunk(base: DesignCase, rows: list[dict], catalogue) -> list[dict]
             if "oil" in operating:
                 operating["oil"] = get_oil(str(operating["oil"]), catalogue).name
                 case = replace(case, oil=get_oil(operating.pop("oil"), catalogue))
-            rec, x_prev = solve_design_point(case, overrides, x0=x_prev, problems=problems,
-                                             operating=operating)
+            rec, x_prev = solve_design_point(case, overrides, x0=x_prev, operating=operating)
             results.append(dict(rec, status="ok", error=None, warning=None))
         except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
             results.append({"status": "error", "error": f"{type(e).__name__}: {e}"})
@@ -465,11 +463,25 @@ def _run_chunk(mode: str, base: DesignCase, rows: list[dict], catalogue) -> list
 # --------------------------------------------------------------------------- keys and storage
 
 
+_FINGERPRINTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+
+
 def case_fingerprint(case: DesignCase) -> str:
-    """Short hash of everything in a case (its TOML document)."""
+    """Short hash of everything in a case but its name (its TOML document); cached per
+    (immutable) case object."""
+    try:
+        return _FINGERPRINTS[case]
+    except KeyError:
+        pass
     doc = case_to_dict(case)
     doc.pop("name", None)
-    return hashlib.sha1(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
+    duty = case.duty_cycle  # the samples themselves (a cycle made in Python has no spec)
+    doc["duty_cycle_samples"] = hashlib.sha1(np.ascontiguousarray(duty.time_s).tobytes()
+                                             + np.ascontiguousarray(duty.omega_rad_s)
+                                             .tobytes()).hexdigest()
+    fp = hashlib.sha1(json.dumps(doc, sort_keys=True, default=str).encode()).hexdigest()[:16]
+    _FINGERPRINTS[case] = fp
+    return fp
 
 
 def _canon(v: Any) -> Any:

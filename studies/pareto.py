@@ -374,9 +374,12 @@ class ParetoResult:
 
 def default_reference_point(case: DesignCase, seeds: pd.DataFrame) -> tuple[float, float]:
     """Reference point of the gap front's hypervolume: (the case's gap_max [mm], the
-    seed's mean power [W], NLP objective): the region better than the seed on both."""
-    return (case.bounds.gap_max / MM_TO_M,
-            float(seeds.loc[seeds["design"] == "seed (T = 4)", "mean_power_W"].iloc[0]))
+    mean power [W] of the case's own design, NLP objective): the region better than
+    the design on both. For the seed case that is the seed's power."""
+    own = seeds[seeds["design"] == "case"]
+    if own.empty:
+        own = seeds[seeds["design"] == "seed (T = 4)"]
+    return case.bounds.gap_max / MM_TO_M, float(own["mean_power_W"].iloc[0])
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
@@ -497,7 +500,7 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
         "",
         f"Hypervolume {result.hypervolume:.4f} mm W with reference point "
         f"(delta = {result.reference_point[0]:g} mm, P = {result.reference_point[1]:.3f} W: "
-        "the case's gap_max and the seed's mean power).",
+        "the case's gap_max and its own design's mean power).",
         "",
         "Seed designs in the same objective (smooth C_m; exact Eq. 6 in brackets):",
         "",

@@ -502,7 +502,8 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
         f"(delta = {result.reference_point[0]:g} mm, P = {result.reference_point[1]:.3f} W: "
         "the case's gap_max and its own design's mean power).",
         "",
-        "Seed designs in the same objective (smooth C_m; exact Eq. 6 in brackets):",
+        "Seed designs in the same objective (`mean_power_W`: the NLP's smooth C_m; "
+        "`mean_power_exact_W`: the exact Eq. 6 form, as `oilgap evaluate` prints it):",
         "",
         markdown_table(s.assign(inertia_kgmm2=s["inertia_kgm2"] * 1e6)[
             ["design", "delta_mm", "T", "mean_power_W", "mean_power_exact_W",

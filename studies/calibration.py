@@ -686,11 +686,12 @@ class _Selector:
         lo, hi = self._bounds(frozenset(range(self.k)))
         lasso = _Lasso(L.T, solve_triangular(L, h, lower=True), lo, hi)
         path = []
+        # a coefficient counts as non-zero above 1e-4 of the residual's RMS (the columns
+        # are scaled to unit RMS, so coefficients are in W)
+        tol = 1e-4 * math.sqrt(sum(self.s.values()) / self.nt)
         for lam in lam_max * np.logspace(0, -3, n_lambda):
             x = lasso.solve(np.concatenate([np.zeros(self.q), np.full(self.k, lam)]))
-            xe = np.abs(x[self.q:])
-            sup = tuple(int(j) for j in np.nonzero(xe > 1e-6 * xe.max())[0]) \
-                if xe.max() > 1e-9 else ()
+            sup = tuple(int(j) for j in np.nonzero(np.abs(x[self.q:]) > tol)[0])
             path.append((float(lam / lam_max), sup))
         return path
 
@@ -732,11 +733,16 @@ class EffectResult:
     heldout_gain_pct: float
     rms_power_W: float
 
+    def coefficient_label(self) -> str:
+        """Symbol of the coefficient (e.g. ``tau_c``)."""
+        return EFFECTS[self.name].coefficient.split(" (")[0]
+
     def to_dict(self) -> dict:
         """JSON form (the issue's keys first)."""
         return {"name": self.name, "formula": self.formula, "coefficient": self.coefficient,
                 "ci_low": self.ci_low, "ci_high": self.ci_high,
                 "heldout_gain_pct": self.heldout_gain_pct, "title": self.title,
+                "symbol": self.coefficient_label(),
                 "reference": self.reference, "unit": self.unit, "strength": self.strength,
                 "strength_unit": self.strength_unit, "rms_power_W": self.rms_power_W}
 
@@ -976,6 +982,9 @@ class LoopEstimator:
                 best = min(js, key=lambda j: sel.cv((j,)))
                 info["heldout_rmse_alone_W"] = sel.cv((best,))
                 info["heldout_gain_alone_pct"] = 100.0 * (1.0 - sel.cv((best,)) / e0)
+                st0 = e0 * e0 - sigma * sigma
+                info["explained_structure_alone"] = (
+                    (e0 * e0 - sel.cv((best,)) ** 2) / st0 if st0 > 0 else 0.0)
                 info["best_column"] = label(best)
                 info["lasso_entry_lambda_rel"] = entry.get(info["name"])
 
@@ -1120,13 +1129,26 @@ class LoopEstimator:
                 n, eff.title, eff.formula, eff.reference, c, float(lo_t[i]), float(hi_t[i]),
                 eff.unit, float(eff.strength_from_coefficient(c)), eff.strength_unit, gains[n],
                 _rmse(only)))
+        e_acc = sel.cv(chosen)
         for info in cand_info:
             if info["name"] in accepted:
                 info["status"] = "accepted"
-            elif info["status"] == "candidate":
-                info["status"] = "rejected: " + (
-                    "no structure above the noise" if structure(e0) <= 0 else
-                    f"held-out gain {info['heldout_gain_alone_pct']:.1f} % alone")
+            elif info["status"] != "candidate":
+                continue
+            elif structure(e0) <= 0:
+                info["status"] = "rejected: no structure above the noise"
+            elif accepted:
+                js = [j for j in range(len(cols)) if col_name[j] == info["name"]]
+                add = min(sel.cv(chosen + (j,)) for j in js)
+                info["heldout_gain_added_pct"] = 100.0 * (1.0 - add / e_acc)
+                info["status"] = (f"rejected: adds {info['heldout_gain_added_pct']:.1f} % to "
+                                  f"{', '.join(accepted)} (margin {100 * self.margin:.0f} %)")
+            else:
+                g, x = info["heldout_gain_alone_pct"], info["explained_structure_alone"]
+                info["status"] = (f"rejected: held-out gain {g:.1f} % " + (
+                    f"< margin {100 * self.margin:.0f} %" if g < 100 * self.margin else
+                    f"but explains only {100 * x:.0f} % of the structure "
+                    f"(< {100 * self.min_explained:.0f} %)"))
         self.candidates_ = cand_info
         self.confounded_forms_ = dict(CONFOUNDED_FORMS)
 
@@ -1164,7 +1186,10 @@ class LoopEstimator:
             t3.append({"oil": oil, "roughness_T": float(T), "rmse_without_T_W": wo,
                        "rmse_with_T_W": wt, "reduction_pct": 100.0 * (1.0 - wt / wo)
                        if wo > 0 else float("nan")})
-        self.table3_ = t3
+        order = {o: float(np.median(s.nu_m2_s[s.oil == o])) for o in set(s.oil)}
+        self.table3_ = sorted(t3, key=lambda r: (order[r["oil"]], r["roughness_T"]))
+        rank = {(r["oil"], r["roughness_T"]): i for i, r in enumerate(self.table3_)}
+        self.per_run_.sort(key=lambda r: (rank[(r["oil"], r["roughness_T"])], r["run"]))
         return self
 
     # ------------------------------------------------------------------ predict

@@ -21,6 +21,8 @@ SUBCOMMAND_MODULES = (
     "oilgap.studies.cmd_evaluate",
     "oilgap.studies.cmd_optimize",
     "oilgap.studies.cmd_study",
+    "oilgap.studies.cmd_loop",
+    "oilgap.studies.cmd_synth",
 )
 
 

@@ -151,8 +151,12 @@ def _check_columns(cols: list[str], where: str) -> tuple[str, tuple[str, ...]]:
     present = [c for c in POWER_COLUMNS if c in cols]
     if len(present) != 1:
         what = "both" if present else "neither"
+        lower = {c.lower(): c for c in cols}
+        hints = [f"{lower[m.lower()]!r} -> {m!r}" for m in POWER_COLUMNS
+                 if not present and m.lower() in lower]
+        hint = f"; column names are case-sensitive: {', '.join(hints)}" if hints else ""
         raise InputError("columns", cols, f"exactly one of {list(POWER_COLUMNS)} is required "
-                         f"({what} given)", where)
+                         f"({what} given{hint})", where)
     dup = sorted({c for c in cols if cols.count(c) > 1})
     if dup:
         raise InputError("columns", dup, "column names must be unique", where)
@@ -275,8 +279,9 @@ def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
                     "oil-free run (not needed: viscous_power_W is measured directly)")
 
     if not (~df["oil_free"]).any():
-        summary = "; ".join(f"{r.count} x {r.reason}" for r in d.result()) or "none dropped"
-        raise InputError("data", source, f"no usable oil run remains (dropped: {summary})")
+        summary = "; ".join(f"{r.count} x {r.reason}" for r in d.result())
+        raise InputError("data", source, f"no usable oil run remains (dropped: {summary})"
+                         if summary else "holds no oil run (every row has oil = none)")
     df = df.sort_values(["run", "time_s"], kind="stable").reset_index(drop=True)
     return MeasuredData(df, kind, d.result(), n_read, source, ignored, catalogue)
 

@@ -55,13 +55,13 @@ from oilgap.model.units import ZERO_CELSIUS_K, rpm_to_rad_s
 from oilgap.model.viscous_loss import clearance_power
 
 DEFAULT_STRENGTH = {
-    "end_face_disc": 1.0,
+    "end_face_disc": 4.0,
     "bearing_ball_churning": 1.0,
-    "seal_coulomb_friction": 0.03,
+    "seal_coulomb_friction": 0.04,
     "oil_inertia": 5.0e-7,
     "thermal_lag": 4.0,
-    "taylor_vortex_onset": 0.5,
-    "shear_thinning": 5.0e-5,
+    "taylor_vortex_onset": 1.0,
+    "shear_thinning": 7.5e-5,
     "sensor_delay": 0.2,
 }
 """Strength of each effect when ``--strength`` is not given (unit: Effect.strength_unit)."""
@@ -388,6 +388,45 @@ def synthesize(config: SynthConfig | None = None, seed: int = 0) -> pd.DataFrame
 def write_synth_csv(df: pd.DataFrame, path: str | Path) -> Path:
     """Write synthetic data as CSV (6 significant digits is far below the noise)."""
     path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
+    if not path.parent.is_dir():
+        raise InputError("--out", str(path), f"directory {str(path.parent)!r} does not exist")
     df.to_csv(path, index=False, float_format="%.7g")
     return path
+
+
+def weakest_strength(effect: str, config: SynthConfig | None = None,
+                     seeds: tuple[int, ...] = (0, 1, 2), step: float = 2.0 ** -0.5,
+                     max_steps: int = 20, **loop_options) -> dict:
+    """Weakest strength at which the loop, not told which, still names ``effect``.
+
+    Starting at :data:`DEFAULT_STRENGTH`, the strength is multiplied by ``step``
+    until, on some seed, the loop does not accept exactly ``effect``. Returns
+    the last strength found on every seed (``weakest_found``), the first one
+    missed (``first_missed``) and each step's held-out cuts.
+    """
+    from .calibration import LoopEstimator
+
+    cfg = config or SynthConfig()
+    get_effect(effect)
+    s = DEFAULT_STRENGTH[effect]
+    found = None
+    steps = []
+    for _ in range(max_steps):
+        named, cuts = [], []
+        for seed in seeds:
+            est = LoopEstimator(case=cfg.case, **loop_options).fit(
+                synthesize(replace(cfg, effect=effect, strength=s), seed))
+            named.append([e.name for e in est.effects_])
+            h = est.heldout_rmse_
+            cuts.append(100.0 * (1.0 - h["after"] / h["before"]))
+        ok = all(n == [effect] for n in named)
+        steps.append({"strength": s, "found_on_all_seeds": ok, "named": named,
+                      "heldout_cut_pct": cuts})
+        if not ok:
+            break
+        found = s
+        s *= step
+    return {"effect": effect, "unit": EFFECTS[effect].strength_unit, "seeds": list(seeds),
+            "default": DEFAULT_STRENGTH[effect], "weakest_found": found,
+            "first_missed": s if steps and not steps[-1]["found_on_all_seeds"] else None,
+            "steps": steps}

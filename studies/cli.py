@@ -15,7 +15,7 @@ import sys
 import warnings
 from collections.abc import Sequence
 
-from oilgap.model.errors import InputError, OilgapWarning, SolverError
+from oilgap.model.errors import InfeasibleError, InputError, OilgapWarning, SolverError
 
 SUBCOMMAND_MODULES = (
     "oilgap.studies.cmd_evaluate",
@@ -70,6 +70,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     except InputError as e:
         print(f"oilgap: error: {e}", file=sys.stderr)
         return 2
+    except InfeasibleError as e:
+        print(f"oilgap: infeasible: {e}", file=sys.stderr)
+        return e.exit_code
     except SolverError as e:
         print(f"oilgap: solver failure: {e}", file=sys.stderr)
         return e.exit_code

@@ -668,7 +668,7 @@ class _Selector:
         x = _box_lstsq(self.Gt / self.nt, self.ht / self.nt, lo, hi)
         return (x / self.scale)[self.q:]
 
-    def lasso_path(self, n_lambda: int = 20) -> list[tuple[float, tuple[int, ...]]]:
+    def lasso_path(self, n_lambda: int = 12) -> list[tuple[float, tuple[int, ...]]]:
         """Supports along the sign-constrained lasso path (lambda relative to lambda_max)."""
         if self.k == 0:
             return []
@@ -879,12 +879,13 @@ class LoopEstimator:
                 raise InputError("effect", n, f"library effects are {', '.join(EFFECTS)}")
         self.geometry_ = geom = RigGeometry.from_case(case)
         self.data_ = data = self._as_data(data)
+        from .measured_data import add_kinematics
+
+        kin = add_kinematics(data.frame)
         self.baselines_: dict[float, BaselineFit] = {}
         if data.kind == "power_W":
-            from .measured_data import add_kinematics
-
-            self.baselines_ = fit_baselines(add_kinematics(data.frame))
-        s = oil_samples(data, geom.gap1_m, self.baselines_ or None)
+            self.baselines_ = fit_baselines(kin)
+        s = oil_samples(data, geom.gap1_m, self.baselines_ or None, frame=kin)
         self.samples_ = s
         bad = ~(np.isfinite(s.nu_m2_s) & np.isfinite(s.density_kg_m3))
         if bad.any():  # pragma: no cover - validation guarantees properties

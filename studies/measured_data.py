@@ -480,15 +480,16 @@ class Samples:
 
 def oil_samples(data: MeasuredData, region1_gap_m: float,
                 baselines: dict[float, BaselineFit] | None = None,
-                pressure_gauge_Pa: float = 0.0) -> Samples:
+                pressure_gauge_Pa: float = 0.0, frame: pd.DataFrame | None = None) -> Samples:
     """The oil-run samples of validated data, with nu, rho and the viscous power.
 
     nu and rho come from each oil's Walther line and density law at ``temp_C``
     (``pressure_gauge_Pa``, default atmospheric) unless the row gives
     ``nu_cSt``/``density_kg_m3``. With ``power_W`` the baseline of the run's T is
-    subtracted (``baselines`` default: :func:`fit_baselines` of the data).
+    subtracted (``baselines`` default: :func:`fit_baselines` of the data). ``frame``: the
+    data's frame with kinematics already added (:func:`add_kinematics`), if at hand.
     """
-    f = add_kinematics(data.frame)
+    f = add_kinematics(data.frame) if frame is None else frame
     if data.kind == "power_W" and baselines is None:
         baselines = fit_baselines(f)
     o = f[~f["oil_free"]]

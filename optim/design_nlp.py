@@ -707,7 +707,7 @@ class DesignProblem:
                          f"{lo[1] * mm:.4g} mm the torque needs L >= "
                          f"{max(lo[4], tmin / t1) * mm:.4g} mm but the inertia allows L <= "
                          f"{min(hi[4], jmax / j1) * mm:.4g} mm")
-        return "infeasible design problem: " + "; ".join(parts)
+        return "; ".join(parts)
 
     # ----------------------------------------------------------------- solve
 

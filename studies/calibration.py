@@ -887,6 +887,9 @@ class LoopEstimator:
             self.baselines_ = fit_baselines(kin)
         s = oil_samples(data, geom.gap1_m, self.baselines_ or None, frame=kin)
         self.samples_ = s
+        if len(s.run_names) < 2:
+            raise InputError("oil runs", len(s.run_names), "the loop needs at least 2 oil runs "
+                             "(it validates on whole runs left out)", data.source)
         bad = ~(np.isfinite(s.nu_m2_s) & np.isfinite(s.density_kg_m3))
         if bad.any():  # pragma: no cover - validation guarantees properties
             raise InputError("oil", s.oil[bad][0], "no viscosity or density for this row")

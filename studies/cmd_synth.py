@@ -70,7 +70,8 @@ def run(args: argparse.Namespace) -> int:
     print(f"wrote {path}: {len(df)} rows, {runs} runs, columns {', '.join(df.columns)}")
     if args.effect:
         s = cfg.resolved().strength
-        print(f"injected {args.effect} at strength {s:g} {EFFECTS[args.effect].strength_unit}"
+        unit = EFFECTS[args.effect].strength_unit
+        print(f"injected {args.effect} at strength {s:g}{'' if unit == '-' else ' ' + unit}"
               f" (not recorded in the file); {col} noise {cfg.noise_power_W:g} W",
               file=sys.stderr)
     return 0

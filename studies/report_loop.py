@@ -63,8 +63,11 @@ def format_summary(est: LoopEstimator) -> str:
         lines.append("effects found (accepted by leave-one-run-out cross-validation)")
         for e in est.effects_:
             lines.append(f"  {e.name}: {e.formula}")
-            lines.append(f"    {e.coefficient_label()} = {_num(e.coefficient)} {e.unit} "
-                         f"[{_num(e.ci_low)}, {_num(e.ci_high)}] (95 %), held-out gain "
+            unit = "" if e.unit == "-" else f" {e.unit}"
+            ci_txt = (f"[{_num(e.ci_low)}, {_num(e.ci_high)}] (95 %)" if math.isfinite(e.ci_low)
+                      else "(no interval: fewer than 3 runs)")
+            lines.append(f"    {e.coefficient_label()} = {_num(e.coefficient)}{unit} "
+                         f"{ci_txt}, held-out gain "
                          f"{e.heldout_gain_pct:.1f} %, RMS {e.rms_power_W:.3g} W")
     else:
         best = max((x for x in est.candidates_ if "heldout_gain_alone_pct" in x),
@@ -132,7 +135,9 @@ def _figures(est: LoopEstimator, out: Path) -> list[Path]:
             if fname == FIGURES[2]:
                 for i in range(len(runs)):
                     m = s.run_code == i
-                    ax.plot(xv[m], res[m], lw=0.4, alpha=0.7)
+                    ax.plot(xv[m], res[m], lw=0.4, alpha=0.7, label=runs[i])
+                if res is y - before:
+                    ax.legend(fontsize=6, ncol=2, loc="lower right")
             else:
                 ax.plot(xv, res, ".", ms=1, alpha=0.3, color="0.4")
                 edges = np.quantile(xv, np.linspace(0, 1, 25))

@@ -66,6 +66,8 @@ def format_summary(est: LoopEstimator) -> str:
             unit = "" if e.unit == "-" else f" {e.unit}"
             ci_txt = (f"[{_num(e.ci_low)}, {_num(e.ci_high)}] (95 %)" if math.isfinite(e.ci_low)
                       else "(no interval: fewer than 3 runs)")
+            if e.strength_unit != e.unit:  # e.g. lambda^2 fitted, lambda reported too
+                unit += f" (strength {_num(e.strength)} {e.strength_unit})"
             lines.append(f"    {e.coefficient_label()} = {_num(e.coefficient)}{unit} "
                          f"{ci_txt}, held-out gain "
                          f"{e.heldout_gain_pct:.1f} %, RMS {e.rms_power_W:.3g} W")

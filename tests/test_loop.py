@@ -172,3 +172,24 @@ def test_predict_reproduces_the_fit_and_takes_new_data():
     md = est._as_data(new)
     s = est._samples(md, est.baselines_)
     assert np.sqrt(np.mean((s.viscous_W - est_new.to_numpy()) ** 2)) < 1.2 * cfg.noise_power_W
+
+
+def test_box_least_squares_agrees_with_cvxpy():
+    # the inner leave-one-run-out solver (active set + BVLS) against cvxpy on the same problem
+    import cvxpy as cp
+
+    from oilgap.studies.calibration import _box_lstsq
+
+    rng = np.random.default_rng(3)
+    X = rng.normal(size=(200, 7))
+    r = X @ np.array([1.0, -2.0, 0.5, -0.7, 0.0, 0.3, -1.5]) + rng.normal(size=200)
+    G, h = X.T @ X / 200, X.T @ r / 200
+    lo = np.array([-np.inf, -np.inf, -np.inf, 0.0, 0.0, 0.0, 0.0])  # sign-constrained tail
+    hi = np.full(7, np.inf)
+    lo[5] = hi[5] = 0.0  # one column left out of the support
+    x = cp.Variable(7)
+    cp.Problem(cp.Minimize(cp.sum_squares(X @ x - r)),
+               [x[3:5] >= 0, x[5] == 0, x[6] >= 0]).solve(solver=cp.CLARABEL)
+    got = _box_lstsq(G, h, lo, hi)
+    assert np.allclose(got, x.value, atol=1e-6)
+    assert got[3] == 0.0 and got[6] == 0.0  # the negative-truth coefficients sit on the bound

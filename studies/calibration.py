@@ -149,14 +149,7 @@ def region_powers(s: Samples, geom: RigGeometry, law: FrictionLaw, nu=None, rho=
 def effect_context(s: Samples, geom: RigGeometry, law: FrictionLaw) -> EffectContext:
     """Per-sample context of the effect features under the friction law ``law``."""
     pw = region_powers(s, geom, law)
-    regs = [("rotor-stator", geom.radius1_m, s.gap1_m, geom.length1_m)]
-    if geom.region2 is not None:
-        R, gap, L = geom.region2
-        regs.append(("bearing", R, np.full(s.n, gap), L))
-    states = []
-    for (name, R, gap, L), p in zip(regs, pw, strict=True):
-        re = couette_reynolds(s.omega, R, gap, s.nu_m2_s)
-        states.append(RegionState(name, R, gap, L, p, re, taylor_number(re, gap, R)))
+    states = _region_states(s, geom, pw)
     # dP/domega by central difference of the model; dP/dT through nu(T), rho(T)
     h = 1e-4
     sp = replace(s, omega=s.omega * (1 + h))
@@ -311,7 +304,8 @@ class _Evaluator:
         return np.asarray(total, dtype=float) * np.ones(s.n)
 
 
-def _light_context(s: Samples, geom: RigGeometry, pw: list[np.ndarray]) -> EffectContext:
+def _region_states(s: Samples, geom: RigGeometry, pw: list[np.ndarray]) -> list[RegionState]:
+    """Per-region state (geometry, power, Re, Ta) of the samples, powers ``pw`` given."""
     regs = [("rotor-stator", geom.radius1_m, s.gap1_m, geom.length1_m)]
     if geom.region2 is not None:
         R, gap, L = geom.region2
@@ -320,6 +314,11 @@ def _light_context(s: Samples, geom: RigGeometry, pw: list[np.ndarray]) -> Effec
     for (name, R, gap, L), p in zip(regs, pw, strict=True):
         re = couette_reynolds(s.omega, R, gap, s.nu_m2_s)
         states.append(RegionState(name, R, gap, L, p, re, taylor_number(re, gap, R)))
+    return states
+
+
+def _light_context(s: Samples, geom: RigGeometry, pw: list[np.ndarray]) -> EffectContext:
+    states = _region_states(s, geom, pw)
     z = np.zeros(s.n)
     return EffectContext(s.omega, s.domega_dt, s.nu_m2_s, s.density_kg_m3, s.dtemp_dt, z, z,
                          tuple(states), geom.disc_radii_m, geom.bearing_pitch_diameter_m)

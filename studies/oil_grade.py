@@ -46,7 +46,7 @@ from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint, seed_c
 from oilgap.model.errors import InputError, check_finite, check_positive, check_range
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
-from oilgap.studies.trade import markdown_table, new_figure, run_grid, save_figure
+from oilgap.studies.trade import markdown_table, new_figure, run_grid, save_figure, write_tables
 
 ISO_GRADES = ("VG10", "VG15", "VG22", "VG32", "VG46", "VG68", "VG100", "VG150", "VG220",
               "VG320", "VG460", "VG680", "VG1000")
@@ -449,13 +449,11 @@ def summary_markdown(result: OilGradeResult, base: DesignCase) -> str:
 def write_outputs(out: Path, result: OilGradeResult, base: DesignCase) -> tuple[Path, ...]:
     """Write ``oil_grade_table.csv``, ``oil_grade_envelope.csv``, ``oil_grade_rated.csv``,
     the two PNG figures and ``summary.md`` into ``out``."""
-    out.mkdir(parents=True, exist_ok=True)
-    files = []
-    for name, df in (("oil_grade_table.csv", result.table),
-                     ("oil_grade_envelope.csv", result.envelope),
-                     ("oil_grade_rated.csv", result.rated)):
-        df.to_csv(out / name, index=False)
-        files.append(out / name)
+    files = write_tables(out, {
+        "oil_grade_table.csv": result.table,
+        "oil_grade_envelope.csv": result.envelope,
+        "oil_grade_rated.csv": result.rated,
+    })
     files.append(_figure_heatmap(result, base, out / "oil_grade_heatmap.png"))
     files.append(_figure_vs_grade(result, base, out / "oil_grade_loss_vs_grade.png"))
     md = out / "summary.md"

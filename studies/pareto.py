@@ -68,6 +68,7 @@ from oilgap.studies.trade import (
     new_figure,
     run_grid,
     save_figure,
+    write_tables,
 )
 
 MIN_POINTS = 50
@@ -531,13 +532,11 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
 def write_outputs(out: Path, result: ParetoResult, base: DesignCase) -> tuple[Path, ...]:
     """Write ``pareto_gap.csv``, ``pareto_inertia.csv``, ``pareto_seeds.csv``, the two
     PNG figures and ``summary.md`` into ``out``."""
-    out.mkdir(parents=True, exist_ok=True)
-    files = []
-    for name, df in (("pareto_gap.csv", result.gap_front),
-                     ("pareto_inertia.csv", result.inertia_front),
-                     ("pareto_seeds.csv", result.seeds)):
-        df.to_csv(out / name, index=False)
-        files.append(out / name)
+    files = write_tables(out, {
+        "pareto_gap.csv": result.gap_front,
+        "pareto_inertia.csv": result.inertia_front,
+        "pareto_seeds.csv": result.seeds,
+    })
     files.append(_figure_gap(result, out / "pareto_gap.png"))
     files.append(_figure_inertia(result, out / "pareto_inertia.png"))
     md = out / "summary.md"

@@ -60,6 +60,7 @@ from oilgap.studies.trade import (
     new_figure,
     run_grid,
     save_figure,
+    write_tables,
 )
 
 EXPERIMENT_OILS = ("VG150", "VG320", "VG680", "VG1000")
@@ -675,13 +676,12 @@ def write_outputs(out: Path, table: pd.DataFrame, fit: SmoothingFit, checks: pd.
                   curves: pd.DataFrame, plateau: pd.DataFrame, base: DesignCase
                   ) -> tuple[Path, ...]:
     """Write the study's CSVs, PNG figures and ``summary.md`` into ``out``."""
-    out.mkdir(parents=True, exist_ok=True)
-    files = []
-    for name, df in (("smoothing_table4.csv", table), ("smoothing_fits.csv", checks),
-                     ("smoothing_loss_vs_T.csv", curves),
-                     ("smoothing_plateau.csv", plateau)):
-        df.to_csv(out / name, index=False)
-        files.append(out / name)
+    files = write_tables(out, {
+        "smoothing_table4.csv": table,
+        "smoothing_fits.csv": checks,
+        "smoothing_loss_vs_T.csv": curves,
+        "smoothing_plateau.csv": plateau,
+    })
     files.append(_figure_table4(table, out / "smoothing_table4.png"))
     files.append(_figure_loss_vs_T(curves, plateau, fit, out / "smoothing_loss_vs_T.png"))
     md = out / "summary.md"

@@ -732,6 +732,16 @@ def markdown_table(df: pd.DataFrame, digits: int = 2) -> str:
     return "\n".join([head, sep, *body])
 
 
+def write_tables(out: Path, tables: dict[str, pd.DataFrame]) -> list[Path]:
+    """Write each named DataFrame as ``out/<name>`` CSV (no index); return the paths."""
+    out.mkdir(parents=True, exist_ok=True)
+    paths = []
+    for name, df in tables.items():
+        df.to_csv(out / name, index=False)
+        paths.append(out / name)
+    return paths
+
+
 def save_figure(fig, path: Path) -> Path:
     """Save a figure made by :func:`new_figure` as PNG."""
     path.parent.mkdir(parents=True, exist_ok=True)

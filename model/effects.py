@@ -72,6 +72,7 @@ import numpy as np
 
 from . import _math as m
 from .taylor_couette import CRITICAL_TAYLOR_NUMBER
+from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
 
 FREE_DISC_TRANSITION_RE = 3.0e5
 """Disc Reynolds number of the laminar-turbulent change of the free-disc law [1]."""
@@ -141,10 +142,9 @@ def ball_churning_power(omega_rad_s, nu_m2_s, pitch_diameter_m, f0=1.0):
     :func:`palmgren_viscous_moment` converted to SI; ``∝ nu^(2/3) |omega|^(5/3)``.
     """
     w = m.fabs(omega_rad_s)
-    speed_rpm = w * 60.0 / (2.0 * np.pi)
-    moment_Nmm = palmgren_viscous_moment(nu_m2_s * 1.0e6, speed_rpm, pitch_diameter_m * 1.0e3,
-                                         f0)
-    return moment_Nmm * 1.0e-3 * w
+    moment_Nmm = palmgren_viscous_moment(m2_s_to_cst(nu_m2_s), rad_s_to_rpm(w),
+                                         m_to_mm(pitch_diameter_m), f0)
+    return mm_to_m(moment_Nmm) * w
 
 
 def coulomb_friction_power(omega_rad_s, torque_Nm):

@@ -18,7 +18,7 @@ from .oil_properties import seawater_gauge_pressure
 from .oils import warn_if_untrusted_temperature
 from .skin_friction import moment_coefficient
 from .taylor_couette import couette_reynolds, flow_regime, taylor_number
-from .units import celsius_to_kelvin
+from .units import celsius_to_kelvin, m2_s_to_cst, rad_s_to_rpm
 from .viscous_loss import clearance_power, viscous_torque
 
 
@@ -135,7 +135,7 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
             float(moment_coefficient(re_peak, gap / R, case.friction, T)),
             float(p_nodes @ weights), tq))
     total = sum(r.mean_power_W for r in results)
-    return CaseEvaluation(case.name, case.oil.name, t, d, nu * 1e6, float(rho),
+    return CaseEvaluation(case.name, case.oil.name, t, d, m2_s_to_cst(nu), float(rho),
                           case.friction.laminar_law, case.friction.form,
-                          w_peak * 60 / (2 * np.pi), tuple(results), total, total_torque,
+                          rad_s_to_rpm(w_peak), tuple(results), total, total_torque,
                           total * cycle.duration_s)

@@ -31,7 +31,12 @@ References
 from __future__ import annotations
 
 from . import _math as m
-from .units import STANDARD_ATMOSPHERE_PA, STANDARD_GRAVITY_M_S2, ZERO_CELSIUS_K
+from .units import (
+    STANDARD_ATMOSPHERE_PA,
+    STANDARD_GRAVITY_M_S2,
+    ZERO_CELSIUS_K,
+    cst_to_m2_s,
+)
 
 WALTHER_OFFSET_CST = 0.7
 """ASTM D341 offset added to nu [cSt] (the low-viscosity correction below ~2 cSt is omitted)."""
@@ -179,12 +184,12 @@ def oil_viscosities(walther_A, walther_B, density15_kg_m3, temp_K, pressure_gaug
     mu_Pa_s : dynamic viscosity [Pa s]
     rho_kg_m3 : density [kg/m^3]
     """
-    nu0_m2_s = walther_viscosity_cSt(temp_K, walther_A, walther_B) * 1.0e-6
+    nu0_m2_s = cst_to_m2_s(walther_viscosity_cSt(temp_K, walther_A, walther_B))
     rho0 = oil_density(density15_kg_m3, temp_K, 0.0, expansion_1_K, bulk_modulus_Pa)
     rho = oil_density(density15_kg_m3, temp_K, pressure_gauge_Pa, expansion_1_K, bulk_modulus_Pa)
     mu0 = nu0_m2_s * rho0
     t_ref = BARUS_REFERENCE_TEMPERATURE_K
-    mu_ref = walther_viscosity_cSt(t_ref, walther_A, walther_B) * 1.0e-6 * oil_density(
+    mu_ref = cst_to_m2_s(walther_viscosity_cSt(t_ref, walther_A, walther_B)) * oil_density(
         density15_kg_m3, t_ref, 0.0, expansion_1_K, bulk_modulus_Pa)
     alpha = barus_coefficient(alpha_1_Pa, mu0, mu_ref)
     mu = mu0 * barus_factor(pressure_gauge_Pa, alpha)

@@ -24,7 +24,7 @@ import numpy as np
 
 from . import oil_properties as op
 from .errors import InputError, OilgapWarning, check_positive
-from .units import ZERO_CELSIUS_K, celsius_to_kelvin, per_gpa_to_per_pa
+from .units import ZERO_CELSIUS_K, celsius_to_kelvin, m2_s_to_cst, per_gpa_to_per_pa
 
 OIL_COLUMNS = ("oil", "nu40_cSt", "nu100_cSt", "density_kg_m3")
 OPTIONAL_OIL_COLUMNS = ("barus_1_GPa",)
@@ -78,7 +78,7 @@ class Oil:
         """Kinematic viscosity [cSt] at oil temperature [degC] and sea depth [m]."""
         nu, _, _ = self.properties(celsius_to_kelvin(temp_C),
                                    op.seawater_gauge_pressure(depth_m))
-        return nu * 1.0e6
+        return m2_s_to_cst(nu)
 
 
 def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C") -> None:

@@ -86,7 +86,7 @@ from oilgap.model.magnetics import (
 )
 from oilgap.model.oils import Oil
 from oilgap.model.skin_friction import FrictionLaw, groove_roughness
-from oilgap.model.units import MM_TO_M
+from oilgap.model.units import MM_TO_M, m2_s_to_cst
 from oilgap.model.viscous_loss import clearance_power, weighted_mean
 
 VARIABLES = ("R", "delta", "d_r", "d_s", "L")
@@ -306,7 +306,7 @@ class DesignParameters:
         """Unit-keyed plain dict (bounds in mm) for JSON."""
         mm = 1.0 / MM_TO_M
         d: dict[str, Any] = {"oil": self.oil, "oil_temp_C": self.oil_temp_C,
-                             "depth_m": self.depth_m, "nu_cSt": self.nu_m2_s * 1e6,
+                             "depth_m": self.depth_m, "nu_cSt": m2_s_to_cst(self.nu_m2_s),
                              "density_kg_m3": self.rho_kg_m3,
                              "torque_min_Nm": self.torque_min_Nm,
                              "inertia_ref_kgm2": self.inertia_ref_kgm2,

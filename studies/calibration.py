@@ -75,6 +75,7 @@ from oilgap.model.errors import InputError, SolverError
 from oilgap.model.oils import Oil
 from oilgap.model.skin_friction import BILGEN_BOULOS_ALPHA, FrictionLaw
 from oilgap.model.taylor_couette import couette_reynolds, taylor_number
+from oilgap.model.units import m2_s_to_cst
 from oilgap.model.viscous_loss import clearance_power
 
 from .measured_data import (
@@ -504,7 +505,7 @@ def residual_structure(res: np.ndarray, s: Samples, bins: int = 12) -> dict:
     mse = float(np.mean(res * res))
     sig = noise_estimate(res, s.run_code)
     var = {"speed_rpm": s.speed_rpm, "abs_speed_rpm": np.abs(s.speed_rpm),
-           "accel_rad_s2": s.domega_dt, "temp_C": s.temp_C, "nu_cSt": s.nu_m2_s * 1e6,
+           "accel_rad_s2": s.domega_dt, "temp_C": s.temp_C, "nu_cSt": m2_s_to_cst(s.nu_m2_s),
            "time_s": s.time_s}
     out_vars = {}
     vres = float(np.var(res))

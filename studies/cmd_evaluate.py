@@ -8,6 +8,7 @@ import json
 from oilgap.model.case import DesignCase, read_case_toml, seed_case
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
 from oilgap.model.oils import get_oil, read_oils_csv
+from oilgap.model.units import m_to_mm
 
 
 def add_parser(sub) -> None:
@@ -63,7 +64,7 @@ def format_evaluation(ev: CaseEvaluation) -> str:
     ]
     for r in ev.regions:
         lines.append(
-            f"{r.name:<14}{r.radius_m * 1e3:>7.2f}{r.gap_m * 1e3:>8.3f}{r.length_m * 1e3:>7.2f}"
+            f"{r.name:<14}{m_to_mm(r.radius_m):>7.2f}{m_to_mm(r.gap_m):>8.3f}{m_to_mm(r.length_m):>7.2f}"
             f"{r.roughness_T:>6.2f}{r.Re_peak:>10.4g}{r.Ta_peak:>10.4g}{r.Cm_peak:>11.4g}"
             f"{r.mean_power_W:>9.3f}  {', '.join(r.regimes)}")
     share = ", ".join(f"{r.name} {100 * r.mean_power_W / ev.total_mean_power_W:.0f} %"

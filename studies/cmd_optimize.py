@@ -16,6 +16,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from oilgap.model.errors import InputError, OilgapWarning, check_finite, check_positive
+from oilgap.model.units import m2_s_to_cst
 
 if TYPE_CHECKING:
     from oilgap.optim.design_nlp import DesignResult
@@ -97,7 +98,7 @@ def format_result(res: DesignResult, exact: tuple | None = None) -> str:
     lines = [
         f"case        {res.case.name}",
         f"oil         {prm.oil} at {prm.oil_temp_C:g} degC, {prm.depth_m:g} m: "
-        f"nu = {prm.nu_m2_s * 1e6:.4g} cSt, rho = {prm.rho_kg_m3:.1f} kg/m^3",
+        f"nu = {m2_s_to_cst(prm.nu_m2_s):.4g} cSt, rho = {prm.rho_kg_m3:.1f} kg/m^3",
         f"solver      IPOPT {res.status} in {res.iterations} iterations, "
         f"{res.solve_time_s * 1e3:.1f} ms" + (f" (best of {res.starts} starts)"
                                                if res.starts > 1 else ""),

@@ -51,7 +51,7 @@ from oilgap.model.oil_properties import oil_viscosities
 from oilgap.model.oils import get_oil
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.taylor_couette import couette_reynolds, taylor_number
-from oilgap.model.units import ZERO_CELSIUS_K, rpm_to_rad_s
+from oilgap.model.units import ZERO_CELSIUS_K, rad_s_to_rpm, rpm_to_rad_s
 from oilgap.model.viscous_loss import clearance_power
 
 DEFAULT_STRENGTH = {
@@ -376,7 +376,7 @@ def synthesize(config: SynthConfig | None = None, seed: int = 0) -> pd.DataFrame
     t = tr["time_s"]
     for i, (name, oil, T) in enumerate(tr["runs"]):
         n = len(t)
-        speed = tr["omega"][i] * 60.0 / (2.0 * np.pi) + rng.normal(0.0, cfg.noise_speed_rpm, n)
+        speed = rad_s_to_rpm(tr["omega"][i]) + rng.normal(0.0, cfg.noise_speed_rpm, n)
         temp = tr["temp_meas_C"][i] + rng.normal(0.0, cfg.noise_temp_K, n)
         p = tr["measured_W"][i] + rng.normal(0.0, cfg.noise_power_W, n)
         frames.append(pd.DataFrame({

@@ -52,7 +52,7 @@ from oilgap.model.errors import InputError, OilgapWarning, check_positive
 from oilgap.model.evaluation import oil_state, region_geometries
 from oilgap.model.oils import Oil, get_oil, read_oils_csv, warn_if_untrusted_temperature
 from oilgap.model.taylor_couette import couette_reynolds
-from oilgap.model.units import MM_TO_M
+from oilgap.model.units import MM_TO_M, m2_s_to_cst
 from oilgap.model.viscous_loss import clearance_power
 
 ENGINE_VERSION = "1"
@@ -353,7 +353,7 @@ def evaluate_arrays(cases: list[DesignCase]) -> tuple[dict[str, np.ndarray], lis
                 out["R_mm_res"][ii] = R / MM_TO_M
                 out["L_mm_res"][ii] = L / MM_TO_M
         out["mean_power_W"][ii] = total
-        out["nu_cSt"][ii] = nu * 1e6
+        out["nu_cSt"][ii] = m2_s_to_cst(nu)
         out["density_kg_m3"][ii] = rho
     return out, warn_col
 

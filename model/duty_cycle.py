@@ -114,14 +114,20 @@ class DutyCycle:
 
         For any f, ``f(nodes) @ weights`` equals the time-weighted mean of
         ``f(|omega|)`` over the samples up to rounding (samples closer than
-        :data:`NODE_MERGE_RTOL` of the peak share a node).
+        :data:`NODE_MERGE_RTOL` of the peak share a node). Computed once per
+        cycle and cached (the cycle is immutable); the arrays must not be modified.
         """
+        cached = self.__dict__.get("_speed_distribution")
+        if cached is not None:
+            return cached
         a = np.abs(self.omega_rad_s)
         peak = a.max() if a.max() > 0 else 1.0
         keys = np.round(a / peak / NODE_MERGE_RTOL).astype(np.int64)
         _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
         weights = np.bincount(inverse, weights=self.sample_weights())
-        return a[first], weights
+        dist = (a[first], weights)
+        object.__setattr__(self, "_speed_distribution", dist)
+        return dist
 
 
 def _num(raw):

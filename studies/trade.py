@@ -292,18 +292,6 @@ def apply_params(case: DesignCase, params: Mapping[str, Any],
 # --------------------------------------------------------------------------- vectorised evaluation
 
 
-_SPEED_DIST: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-
-
-def _speed_distribution(duty: DutyCycle) -> tuple[np.ndarray, np.ndarray]:
-    """:meth:`DutyCycle.speed_distribution`, cached per (immutable) duty-cycle object."""
-    try:
-        return _SPEED_DIST[duty]
-    except KeyError:
-        _SPEED_DIST[duty] = duty.speed_distribution()
-        return _SPEED_DIST[duty]
-
-
 EVALUATE_NUMBERS = ("mean_power_W", "region1_power_W", "region2_power_W", "nu_cSt",
                     "density_kg_m3", "Re1_peak", "Re2_peak", "T_res", "delta_mm_res",
                     "R_mm_res", "L_mm_res")
@@ -335,7 +323,7 @@ def evaluate_arrays(cases: list[DesignCase]) -> tuple[dict[str, np.ndarray], lis
                     warn_col[i] = str(r1[0].message)
         nu = np.broadcast_to(np.asarray(nu, dtype=float), temps.shape)
         rho = np.broadcast_to(np.asarray(rho, dtype=float), temps.shape)
-        nodes, weights = _speed_distribution(c0.duty_cycle)
+        nodes, weights = c0.duty_cycle.speed_distribution()
         w_peak = float(nodes.max())
         geos = [region_geometries(cases[i]) for i in idx]
         total = np.zeros(len(idx))

@@ -1,0 +1,165 @@
+"""Golden outputs of every command: produce them, and compare two sets of them.
+
+``python tests/golden/golden.py regenerate`` rewrites ``tests/golden/data`` from the
+current code (do this only when a change of output is intended, and say so in the
+commit); ``tests/golden/test_golden.py`` runs the same commands and compares.
+
+Numbers are compared with a relative tolerance of 1e-12 (float noise); wall-clock
+timings (``solve_time_s``, ``... s``/``ms`` in Markdown) and figures are not compared.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import os
+import re
+import shutil
+import sys
+from contextlib import redirect_stdout
+from io import StringIO
+from pathlib import Path
+
+import pandas as pd
+
+HERE = Path(__file__).resolve().parent
+DATA = HERE / "data"
+RTOL = 1e-12
+ATOL = 1e-12
+TIMING_KEYS = {"solve_time_s"}
+_TIMING_MD = re.compile(r"\d+(?:\.\d+)?\s?(?:s|ms)\b")
+
+GRID_EVAL = "oil,oil_temp_C,depth_m,gap_mm,T\nVG22,2,3000,1.0,4\nVG32,10,1000,0.8,2\nVG15,,,1.2,\n"
+GRID_OPT = "oil,oil_temp_C,torque_min_Nm\nVG22,2,0.5\nVG46,20,0.45\n"
+
+COMMANDS: list[tuple[str, list[str]]] = [
+    ("evaluate.json", ["evaluate", "--json"]),
+    ("evaluate_smoothed_bb.json", ["evaluate", "--smoothed", "--laminar-law", "bilgen-boulos",
+                                   "--json"]),
+    ("optimize.json", ["optimize", "--json"]),
+    ("smoothing.txt", ["study", "smoothing", "--out", "smoothing"]),
+    ("pareto.txt", ["study", "pareto", "--out", "pareto"]),
+    ("oil-grade.txt", ["study", "oil-grade", "--out", "oil-grade"]),
+    ("sweep_eval.txt", ["study", "sweep", "grid.csv", "--out", "sweep_eval", "--workers", "1",
+                        "--no-progress"]),
+    ("sweep_opt.txt", ["study", "sweep", "grid_opt.csv", "--mode", "optimize", "--out",
+                       "sweep_opt", "--workers", "1", "--no-progress"]),
+    ("synth_clean.txt", ["synth", "--out", "synth_clean.csv"]),
+    ("synth_seal.txt", ["synth", "--effect", "seal_coulomb_friction", "--seed", "3", "--out",
+                        "synth_seal.csv"]),
+    ("loop_clean.json", ["loop", "synth_clean.csv", "--out", "loop_clean", "--json",
+                         "--no-figures"]),
+    ("loop_seal.json", ["loop", "synth_seal.csv", "--out", "loop_seal", "--json",
+                        "--no-figures"]),
+]
+
+
+def produce(out: Path) -> None:
+    """Run every golden command in ``out`` (in-process), writing stdout to files."""
+    from oilgap.studies.cli import main
+
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "grid.csv").write_text(GRID_EVAL)
+    (out / "grid_opt.csv").write_text(GRID_OPT)
+    cwd = os.getcwd()
+    os.chdir(out)
+    try:
+        for name, argv in COMMANDS:
+            buf = StringIO()
+            with redirect_stdout(buf):
+                code = main(argv)
+            if code != 0:
+                raise RuntimeError(f"oilgap {' '.join(argv)} exited {code}")
+            (out / name).write_text(buf.getvalue())
+    finally:
+        os.chdir(cwd)
+
+
+def _close(a: float, b: float) -> bool:
+    if isinstance(a, bool) or isinstance(b, bool):
+        return a == b
+    if math.isnan(a) and math.isnan(b):
+        return True
+    return abs(a - b) <= ATOL + RTOL * max(abs(a), abs(b))
+
+
+def compare_json(a, b, path: str = "") -> list[str]:
+    """Differences between two JSON documents (numbers to RTOL)."""
+    if isinstance(a, dict) and isinstance(b, dict):
+        out = []
+        if set(a) != set(b):
+            out.append(f"{path}: keys differ {sorted(set(a) ^ set(b))}")
+        for k in set(a) & set(b):
+            if k not in TIMING_KEYS:
+                out += compare_json(a[k], b[k], f"{path}.{k}")
+        return out
+    if isinstance(a, list) and isinstance(b, list):
+        if len(a) != len(b):
+            return [f"{path}: lengths {len(a)} != {len(b)}"]
+        return [d for i, (x, y) in enumerate(zip(a, b, strict=True))
+                for d in compare_json(x, y, f"{path}[{i}]")]
+    if isinstance(a, (int, float)) and isinstance(b, (int, float)):
+        return [] if _close(float(a), float(b)) else [f"{path}: {a!r} != {b!r}"]
+    return [] if a == b else [f"{path}: {a!r} != {b!r}"]
+
+
+def compare_csv(a: Path, b: Path) -> list[str]:
+    """Differences between two CSV files (numeric columns to RTOL, timings skipped)."""
+    x, y = pd.read_csv(a), pd.read_csv(b)
+    if a.name.startswith("points_") and "point_key" in x.columns:  # the store's row order
+        x = x.sort_values("point_key", ignore_index=True)  # is the order chunks finished in
+        y = y.sort_values("point_key", ignore_index=True)
+    if list(x.columns) != list(y.columns) or len(x) != len(y):
+        return [f"{a.name}: shape/columns differ"]
+    out = []
+    for c in x.columns:
+        if c in TIMING_KEYS:
+            continue
+        for i, (u, v) in enumerate(zip(x[c], y[c], strict=True)):
+            num = isinstance(u, (int, float)) and isinstance(v, (int, float))
+            if (num and not _close(float(u), float(v))) or (not num and not (
+                    u == v or (pd.isna(u) and pd.isna(v)))):
+                out.append(f"{a.name}[{i}, {c}]: {u!r} != {v!r}")
+    return out
+
+
+def _text(p: Path) -> str:
+    return _TIMING_MD.sub("<t>", p.read_text())
+
+
+def compare_dirs(golden: Path, fresh: Path) -> list[str]:
+    """Every difference between a golden folder and a fresh run (figures: presence only)."""
+    out = []
+    for g in sorted(golden.rglob("*")):
+        if g.is_dir():
+            continue
+        rel = g.relative_to(golden)
+        f = fresh / rel
+        if not f.exists():
+            out.append(f"{rel}: missing")
+        elif g.suffix == ".json" or (g.suffix == ".txt" and g.read_text().lstrip()[:1] == "{"):
+            out += compare_json(json.loads(g.read_text()), json.loads(f.read_text()), str(rel))
+        elif g.suffix == ".csv":
+            out += compare_csv(g, f)
+        elif g.suffix in (".md", ".txt"):
+            if _text(g) != _text(f):
+                out.append(f"{rel}: text differs")
+    return out
+
+
+def regenerate() -> None:
+    """Rewrite the golden folder from the current code (figures left out)."""
+    if DATA.exists():
+        shutil.rmtree(DATA)
+    produce(DATA)
+    for p in list(DATA.rglob("*.png")):
+        p.unlink()
+    for p in (DATA / "synth_clean.csv", DATA / "synth_seal.csv"):
+        p.unlink()  # regenerated from the seed by the synth commands; compared via the loop
+
+
+if __name__ == "__main__":
+    if sys.argv[1:] == ["regenerate"]:
+        regenerate()
+    else:
+        print(__doc__)

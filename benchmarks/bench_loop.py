@@ -17,8 +17,8 @@ import tempfile
 import time
 from pathlib import Path
 
-from oilgap.studies.calibration import LoopEstimator
-from oilgap.studies.measured_data import load_measured
+from oilgap.model.measured_data import load_measured
+from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.studies.report_loop import write_report
 from oilgap.studies.synth import SynthConfig, synthesize, write_synth_csv
 

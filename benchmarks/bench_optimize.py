@@ -26,7 +26,7 @@ import warnings
 
 import numpy as np
 
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, OilgapWarning, SolverError
 from oilgap.model.evaluation import oil_state
 from oilgap.model.oils import builtin_oils

@@ -31,7 +31,7 @@ import time
 import numpy as np
 
 import oilgap.studies.pareto as pareto
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.studies.pareto import (
     default_reference_point,
     gap_front,

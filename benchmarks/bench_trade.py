@@ -27,7 +27,7 @@ import numpy as np
 import pandas as pd
 
 import oilgap.studies.pareto as pareto
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.units import MM_TO_M
 from oilgap.studies.trade import apply_params, run_grid

@@ -14,16 +14,12 @@ T = (T4 - T1)/(T3 - T2) (Eq. 9); region 1's R is T2.
 
 from __future__ import annotations
 
-import math
-import tomllib
 from dataclasses import dataclass, field, fields, replace
-from importlib import resources
-from pathlib import Path
 from typing import Any
 
 from .duty_cycle import DutyCycle
-from .errors import InputError, check_finite, check_positive, check_range
-from .oils import Oil, get_oil, read_oils_csv
+from .errors import InputError, check_positive, check_range
+from .oils import Oil
 from .skin_friction import FrictionLaw, groove_roughness
 from .units import MM_TO_M
 
@@ -133,7 +129,8 @@ class Motor:
             elif f.name in ("rotor_groove_solid_fraction", "gear_efficiency"):
                 check_range(f.name, v, 0.0, 1.0, where)
             else:
-                check_positive(_MOTOR_KEYS_INV.get(f.name, f.name), _motor_out(f.name, v), where)
+                check_positive(MOTOR_FIELD_TO_KEY.get(f.name, f.name),
+                               motor_value_in_toml_units(f.name, v), where)
 
 
 @dataclass(frozen=True)
@@ -232,324 +229,26 @@ class DesignCase:
         return replace(self, region1=replace(self.region1, **radii_m))
 
 
-# --------------------------------------------------------------------------- TOML schema
+# --------------------------------------------------------------------------- TOML key names
+# (the motor's SI fields and the TOML keys that carry their units)
 
-_MM = "mm"
-_TOP_KEYS = {"name"}
-_TABLES = {
-    "region1": {"T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm", "T1_unfilled_mm",
-                "T4_unfilled_mm"},
-    "region2": {"radius_mm", "length_mm", "gap_mm"},
-    "oil": {"name", "oils_csv", "nu40_cSt", "nu100_cSt", "density_kg_m3", "barus_1_GPa"},
-    "operating": {"depth_m", "oil_temp_C"},
-    "duty_cycle": {"kind", "peak_speed_rpm", "frequency_hz", "duration_s", "sample_interval_s",
-                   "csv"},
-    "friction": {"form", "laminar_law", "gamma", "scale", "C", "alpha", "beta"},
-    "motor": {"remanence_T", "magnet_thickness_mm", "recoil_permeability", "slot_count",
-              "slot_opening_mm", "saturation_factor", "electric_loading_A_per_m",
-              "winding_factor", "shaft_bore_radius_mm", "rotor_density_kg_m3",
-              "epoxy_density_kg_m3", "rotor_groove_solid_fraction", "gear_ratio",
-              "gear_efficiency"},
-    "bounds": {"gap_min_mm", "gap_max_mm", "radius_min_mm", "radius_max_mm", "length_min_mm",
-               "length_max_mm", "inertia_max_ratio", "torque_min_Nm"},
-}
-_ARRAY_TABLES = {"mission": {"depth_m", "oil_temp_C", "fraction"}}
-_MOTOR_KEYS = {  # TOML key -> (field, factor to SI)
+MOTOR_TOML_KEYS = {  # TOML key -> (field, factor to SI)
     "magnet_thickness_mm": ("magnet_thickness", MM_TO_M),
     "slot_opening_mm": ("slot_opening", MM_TO_M),
     "shaft_bore_radius_mm": ("shaft_bore_radius", MM_TO_M),
     "electric_loading_A_per_m": ("electric_loading_A_m", 1.0),
 }
-_MOTOR_KEYS_INV = {v[0]: k for k, v in _MOTOR_KEYS.items()}
+MOTOR_FIELD_TO_KEY = {v[0]: k for k, v in MOTOR_TOML_KEYS.items()}
+"""Motor field -> TOML key, for the fields whose key carries a unit."""
 
 
-def _motor_out(name: str, value: float) -> float:
-    key = _MOTOR_KEYS_INV.get(name)
-    return value / _MOTOR_KEYS[key][1] if key else value
+def motor_value_in_toml_units(name: str, value: float) -> float:
+    """The value of Motor field ``name`` [SI] in the unit of its TOML key."""
+    key = MOTOR_FIELD_TO_KEY.get(name)
+    return value / MOTOR_TOML_KEYS[key][1] if key else value
 
 
 def _key(attr: str) -> str:
     return attr + "_mm"
 
 
-def _check_keys(table: dict, allowed: set[str], where: str) -> None:
-    for k in table:
-        if k not in allowed:
-            raise InputError(f"{where}.{k}" if where else k, table[k],
-                             f"unknown key; allowed keys: {', '.join(sorted(allowed))}",
-                             "case TOML")
-
-
-def _mm(table: dict, key: str, where: str, default: float | None = None) -> float | None:
-    if key not in table:
-        if default is None:
-            return None
-        return default
-    return check_finite(key, table[key], where) * MM_TO_M
-
-
-def _require(table: dict, key: str, where: str) -> Any:
-    if key not in table:
-        raise InputError(f"{where}.{key}", None, "is required", "case TOML")
-    return table[key]
-
-
-def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
-    """Build and validate a DesignCase from a parsed TOML document.
-
-    Unknown tables or keys, missing required keys and non-finite numbers raise
-    InputError naming the key.
-    """
-    base_dir = base_dir or Path.cwd()
-    if not isinstance(doc, dict):
-        raise InputError("case", doc, "must be a TOML table")
-    allowed_top = _TOP_KEYS | set(_TABLES) | set(_ARRAY_TABLES)
-    _check_keys(doc, allowed_top, "")
-    for t in _TABLES:
-        if t in doc and not isinstance(doc[t], dict):
-            raise InputError(t, doc[t], "must be a table [" + t + "]", "case TOML")
-        _check_keys(doc.get(t, {}), _TABLES[t], t)
-
-    r1d = doc.get("region1")
-    if r1d is None:
-        raise InputError("region1", None, "a [region1] table with T1_mm..T4_mm and length_mm "
-                         "is required", "case TOML")
-    for k in ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm"):
-        _require(r1d, k, "region1")
-    region1 = RotorStatorClearance(
-        *(_mm(r1d, k, "region1") for k in ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm")),
-        T1_unfilled=_mm(r1d, "T1_unfilled_mm", "region1"),
-        T4_unfilled=_mm(r1d, "T4_unfilled_mm", "region1"))
-
-    region2 = None
-    if "region2" in doc:
-        r2d = doc["region2"]
-        for k in ("radius_mm", "length_mm", "gap_mm"):
-            _require(r2d, k, "region2")
-        region2 = BearingClearance(*(_mm(r2d, k, "region2")
-                                     for k in ("radius_mm", "length_mm", "gap_mm")))
-
-    od = doc.get("oil", {})
-    oils_csv = None
-    catalogue = None
-    if "oils_csv" in od:
-        p = Path(str(od["oils_csv"]))
-        p = p if p.is_absolute() else base_dir / p
-        catalogue = read_oils_csv(p)
-        oils_csv = str(p)
-    oil_name = str(od.get("name", "VG22"))
-    own = [k for k in ("nu40_cSt", "nu100_cSt", "density_kg_m3") if k in od]
-    if own:
-        missing = [k for k in ("nu40_cSt", "nu100_cSt", "density_kg_m3") if k not in od]
-        if missing:
-            raise InputError("oil." + missing[0], None, "a custom oil needs nu40_cSt, "
-                             "nu100_cSt and density_kg_m3", "case TOML")
-        kw = {}
-        if "barus_1_GPa" in od:
-            kw["barus_1_Pa"] = check_range("barus_1_GPa", od["barus_1_GPa"], 0.0, None,
-                                           "oil") * 1e-9
-        oil = Oil(oil_name, check_finite("nu40_cSt", od["nu40_cSt"], "oil"),
-                  check_finite("nu100_cSt", od["nu100_cSt"], "oil"),
-                  check_finite("density_kg_m3", od["density_kg_m3"], "oil"), **kw)
-    else:
-        if "barus_1_GPa" in od:
-            raise InputError("oil.barus_1_GPa", od["barus_1_GPa"], "only with a custom oil "
-                             "(nu40_cSt, nu100_cSt, density_kg_m3)", "case TOML")
-        oil = get_oil(oil_name, catalogue)
-
-    opd = doc.get("operating", {})
-    operating = OperatingPoint(**{k: check_finite(k, v, "operating") for k, v in opd.items()})
-
-    dcd = dict(doc.get("duty_cycle", {}))
-    kind = dcd.pop("kind", "csv" if "csv" in dcd else "sine")
-    if kind == "sine":
-        if "csv" in dcd:
-            raise InputError("duty_cycle.csv", dcd["csv"], "only with kind = \"csv\"",
-                             "case TOML")
-        duty = DutyCycle.sine(**{k: check_finite(k, v, "duty_cycle") for k, v in dcd.items()})
-    elif kind == "csv":
-        extra = [k for k in dcd if k != "csv"]
-        if extra:
-            raise InputError("duty_cycle." + extra[0], dcd[extra[0]],
-                             "a csv duty cycle takes only csv = \"path\"", "case TOML")
-        p = Path(str(_require(dcd, "csv", "duty_cycle")))
-        duty = DutyCycle.from_csv(p if p.is_absolute() else base_dir / p)
-    else:
-        raise InputError("duty_cycle.kind", kind, "allowed: sine, csv", "case TOML")
-
-    fd = doc.get("friction", {})
-    friction = FrictionLaw(**{k: (str(v) if k in ("form", "laminar_law")
-                                  else check_finite(k, v, "friction")) for k, v in fd.items()})
-
-    md = doc.get("motor", {})
-    mkw = {}
-    for k, v in md.items():
-        if k == "slot_count":
-            mkw[k] = v
-        elif k in _MOTOR_KEYS:
-            attr, factor = _MOTOR_KEYS[k]
-            mkw[attr] = check_finite(k, v, "motor") * factor
-        else:
-            mkw[k] = check_finite(k, v, "motor")
-    motor = Motor(**mkw)
-
-    bounds = None
-    if "bounds" in doc:
-        bd = doc["bounds"]
-        dflt = DesignBounds.around(region1)
-        bkw = {}
-        for f in ("gap_min", "gap_max", "radius_min", "radius_max", "length_min", "length_max"):
-            bkw[f] = _mm(bd, f + "_mm", "bounds", getattr(dflt, f))
-        if "inertia_max_ratio" in bd:
-            bkw["inertia_max_ratio"] = check_finite("inertia_max_ratio",
-                                                    bd["inertia_max_ratio"], "bounds")
-        if "torque_min_Nm" in bd:
-            bkw["torque_min_Nm"] = check_finite("torque_min_Nm", bd["torque_min_Nm"], "bounds")
-        bounds = DesignBounds(**bkw)
-
-    mission = []
-    ms = doc.get("mission", [])
-    if not isinstance(ms, list):
-        raise InputError("mission", ms, "must be an array of tables [[mission]]", "case TOML")
-    for i, seg in enumerate(ms):
-        if not isinstance(seg, dict):
-            raise InputError(f"mission[{i}]", seg, "must be a table", "case TOML")
-        _check_keys(seg, _ARRAY_TABLES["mission"], f"mission[{i}]")
-        for k in _ARRAY_TABLES["mission"]:
-            _require(seg, k, f"mission[{i}]")
-        mission.append(MissionSegment(**{k: check_finite(k, v, f"mission[{i}]")
-                                         for k, v in seg.items()}))
-
-    name = str(doc.get("name", "unnamed case"))
-    return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
-                      tuple(mission), oils_csv)
-
-
-def read_case_toml(path: str | Path) -> DesignCase:
-    """Read and validate a case TOML file.
-
-    Raises
-    ------
-    InputError
-        Missing file, malformed TOML, unknown keys, bad values.
-    """
-    path = Path(path)
-    if not path.is_file():
-        raise InputError("case", str(path), "must be an existing TOML file")
-    try:
-        doc = tomllib.loads(path.read_text(encoding="utf-8"))
-    except tomllib.TOMLDecodeError as e:
-        raise InputError("case TOML", str(path), f"is malformed: {e}") from None
-    except UnicodeDecodeError:
-        raise InputError("case TOML", str(path), "must be UTF-8 text") from None
-    return case_from_dict(doc, path.parent)
-
-
-# --------------------------------------------------------------------------- TOML writer
-
-
-def case_to_dict(case: DesignCase) -> dict:
-    """The TOML document (units in key names) of a case; inverse of :func:`case_from_dict`."""
-    mm = 1.0 / MM_TO_M
-    r1 = case.region1
-    doc: dict[str, Any] = {"name": case.name}
-    doc["region1"] = {"T1_mm": r1.T1 * mm, "T2_mm": r1.T2 * mm, "T3_mm": r1.T3 * mm,
-                      "T4_mm": r1.T4 * mm, "length_mm": r1.length * mm,
-                      "T1_unfilled_mm": r1.T1_unfilled * mm,
-                      "T4_unfilled_mm": r1.T4_unfilled * mm}
-    if case.region2 is not None:
-        r2 = case.region2
-        doc["region2"] = {"radius_mm": r2.radius * mm, "length_mm": r2.length * mm,
-                          "gap_mm": r2.gap * mm}
-    o = case.oil
-    from .oils import builtin_oils, normalize_oil_name
-
-    od: dict[str, Any] = {"name": o.name}
-    if case.oils_csv:
-        od["oils_csv"] = case.oils_csv
-    elif builtin_oils().get(normalize_oil_name(o.name)) != o:
-        od.update(nu40_cSt=o.nu40_cSt, nu100_cSt=o.nu100_cSt, density_kg_m3=o.density_kg_m3,
-                  barus_1_GPa=o.barus_1_Pa * 1e9)
-    doc["oil"] = od
-    doc["operating"] = {"depth_m": case.operating.depth_m,
-                        "oil_temp_C": case.operating.oil_temp_C}
-    doc["duty_cycle"] = dict(case.duty_cycle.spec)
-    f = case.friction
-    doc["friction"] = {"form": f.form, "laminar_law": f.laminar_law, "gamma": f.gamma,
-                       "scale": f.scale, "C": f.C, "alpha": f.alpha, "beta": f.beta}
-    md = {}
-    for fl in fields(case.motor):
-        key = _MOTOR_KEYS_INV.get(fl.name, fl.name)
-        md[key] = _motor_out(fl.name, getattr(case.motor, fl.name))
-    doc["motor"] = md
-    b = case.bounds
-    bd = {k + "_mm": getattr(b, k) * mm for k in ("gap_min", "gap_max", "radius_min",
-                                                  "radius_max", "length_min", "length_max")}
-    bd["inertia_max_ratio"] = b.inertia_max_ratio
-    if b.torque_min_Nm is not None:
-        bd["torque_min_Nm"] = b.torque_min_Nm
-    doc["bounds"] = bd
-    if case.mission:
-        doc["mission"] = [{"depth_m": s.depth_m, "oil_temp_C": s.oil_temp_C,
-                           "fraction": s.fraction} for s in case.mission]
-    return doc
-
-
-def _toml_value(v: Any) -> str:
-    import json
-
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        if not math.isfinite(v):
-            raise ValueError(f"cannot write non-finite {v} to TOML")
-        return repr(float(v))
-    return json.dumps(str(v))
-
-
-def dumps_toml(doc: dict) -> str:
-    """Serialise a two-level document (scalars, tables, arrays of tables) as TOML."""
-    lines = []
-    for k, v in doc.items():
-        if not isinstance(v, (dict, list)):
-            lines.append(f"{k} = {_toml_value(v)}")
-    for k, v in doc.items():
-        if isinstance(v, dict):
-            lines.append(f"\n[{k}]")
-            lines.extend(f"{kk} = {_toml_value(vv)}" for kk, vv in v.items())
-        elif isinstance(v, list):
-            for item in v:
-                lines.append(f"\n[[{k}]]")
-                lines.extend(f"{kk} = {_toml_value(vv)}" for kk, vv in item.items())
-    return "\n".join(lines) + "\n"
-
-
-def write_case_toml(case: DesignCase, path: str | Path) -> Path:
-    """Write a case as TOML that :func:`read_case_toml` reads back to the same case."""
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(dumps_toml(case_to_dict(case)), encoding="utf-8")
-    return path
-
-
-# --------------------------------------------------------------------------- the seed joint
-
-
-def seed_case(smoothed: bool = False) -> DesignCase:
-    """The seed paper's joint (Table 1), grooved (T = 4) or smoothed with epoxy (T = 2).
-
-    Geometry: R1 = T2 = 25.4 mm, L1 = 14.76 mm, delta1 = 1 mm; R2 = 22 mm,
-    L2 = 14.24 mm, delta2 = 5 mm. The seed gives only T; oilgap assumes the
-    groove depth is split evenly between rotor and stator (1.5 mm each when
-    grooved, T = 4; the epoxy fill takes 1 mm off each, leaving 0.5 mm, T = 2).
-    """
-    name = "seed_joint.toml"
-    with resources.as_file(resources.files(__package__) / "data" / name) as p:
-        case = read_case_toml(p)
-    if smoothed:
-        r1 = case.region1
-        case = replace(case, name="seed joint, smoothed with epoxy (T = 2)",
-                       region1=replace(r1, T1=r1.T1 + 1.0e-3, T4=r1.T4 - 1.0e-3))
-    return case

@@ -62,13 +62,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from oilgap.model.case import (
-    DesignBounds,
-    DesignCase,
-    Motor,
-    OperatingPoint,
-    RotorStatorClearance,
-)
+from oilgap.model.case import DesignBounds, DesignCase, Motor, OperatingPoint, RotorStatorClearance
 from oilgap.model.errors import (
     InfeasibleError,
     InputError,
@@ -78,7 +72,7 @@ from oilgap.model.errors import (
     check_positive,
 )
 from oilgap.model.evaluation import CaseEvaluation, oil_state
-from oilgap.model.magnetics import (
+from oilgap.model.motor import (
     airgap_flux_density,
     carter_coefficient,
     grooved_rotor_inertia,

@@ -42,7 +42,8 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint, seed_case
+from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, check_finite, check_positive, check_range
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv

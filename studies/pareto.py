@@ -50,7 +50,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from oilgap.model.case import DesignCase, seed_case
+from oilgap.model.case import DesignCase
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import (
     InfeasibleError,
     InputError,

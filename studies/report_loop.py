@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .calibration import LoopEstimator
+from oilgap.optim.calibration.estimator import LoopEstimator
 
 FIGURES = ("measured_vs_model.png", "residual_vs_speed.png", "residual_vs_time.png")
 

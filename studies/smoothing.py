@@ -51,7 +51,8 @@ import numpy as np
 import pandas as pd
 from scipy.optimize import least_squares
 
-from oilgap.model.case import DesignCase, OperatingPoint, seed_case
+from oilgap.model.case import DesignCase, OperatingPoint
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, SolverError, check_finite
 from oilgap.studies.trade import (
     apply_params,

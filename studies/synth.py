@@ -37,7 +37,8 @@ import numpy as np
 import pandas as pd
 from scipy.integrate import solve_ivp
 
-from oilgap.model.case import DesignCase, case_to_dict, seed_case
+from oilgap.model.case import DesignCase
+from oilgap.model.case_io import case_to_dict, seed_case
 from oilgap.model.effects import (
     EFFECTS,
     EffectContext,
@@ -404,7 +405,7 @@ def weakest_strength(effect: str, config: SynthConfig | None = None,
     the last strength found on every seed (``weakest_found``), the first one
     missed (``first_missed``) and each step's held-out cuts.
     """
-    from .calibration import LoopEstimator
+    from oilgap.optim.calibration.estimator import LoopEstimator
 
     cfg = config or SynthConfig()
     get_effect(effect)

@@ -46,7 +46,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from oilgap.model.case import DesignCase, case_to_dict, seed_case
+from oilgap.model.case import DesignCase
+from oilgap.model.case_io import case_to_dict, seed_case
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError, OilgapWarning, check_positive
 from oilgap.model.evaluation import oil_state, region_geometries

@@ -8,7 +8,7 @@ import warnings
 import numpy as np
 import pytest
 
-from oilgap.model.case import read_case_toml, seed_case, write_case_toml
+from oilgap.model.case_io import read_case_toml, seed_case, write_case_toml
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import evaluate_case, mean_viscous_power

@@ -10,7 +10,7 @@ import pytest
 import oilgap.model
 
 LAW_MODULES = ["oil_properties", "taylor_couette", "skin_friction", "viscous_loss",
-               "magnetics"]
+               "motor"]
 
 
 def public_functions(mod):

@@ -8,10 +8,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case import read_case_toml, seed_case
+from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.effects import EFFECTS
 from oilgap.model.viscous_loss import clearance_power
-from oilgap.studies.calibration import LoopEstimator
+from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, seed_truth_law, synthesize
 
 DATA = Path(__file__).parent / "data"
@@ -178,7 +178,7 @@ def test_box_least_squares_agrees_with_cvxpy():
     # the inner leave-one-run-out solver (active set + BVLS) against cvxpy on the same problem
     import cvxpy as cp
 
-    from oilgap.studies.calibration import _box_lstsq
+    from oilgap.optim.calibration.estimator import _box_lstsq
 
     rng = np.random.default_rng(3)
     X = rng.normal(size=(200, 7))

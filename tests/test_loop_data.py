@@ -5,17 +5,16 @@ import pandas as pd
 import pytest
 
 from oilgap.model.errors import InputError
-from oilgap.studies.cli import main
-from oilgap.studies.measured_data import (
-    BASELINE_TERMS,
+from oilgap.model.measured_data import (
     add_kinematics,
-    fit_baselines,
     load_measured,
     oil_samples,
     read_table,
     time_derivative,
     validate,
 )
+from oilgap.optim.calibration.baseline import BASELINE_TERMS, fit_baselines
+from oilgap.studies.cli import main
 
 
 def _run(name, oil, T, n=40, dt=0.2, power="power_W", **extra):

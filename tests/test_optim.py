@@ -15,7 +15,7 @@ import pytest
 from scipy.optimize import brentq
 
 import oilgap.optim.design_nlp as dn
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError, SolverError
 from oilgap.model.evaluation import oil_state
 from oilgap.model.oils import get_oil

@@ -7,7 +7,7 @@ import sys
 import pytest
 
 import oilgap.optim.design_nlp as dn
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.optim.design_nlp import DesignProblem
 from oilgap.studies.cli import main
 
@@ -121,7 +121,7 @@ def test_bad_out_path_exits_2(tmp_path, capsys):
 
 def test_bad_case_bounds_exit_2(tmp_path, capsys):
     """radius_min 11 mm leaves the 1.5 mm deep rotor grooves inside the 10 mm shaft bore."""
-    from oilgap.model.case import case_to_dict, dumps_toml
+    from oilgap.model.case_io import case_to_dict, dumps_toml
 
     doc = case_to_dict(seed_case())
     doc["bounds"]["radius_min_mm"] = 11.0

@@ -6,7 +6,8 @@ from dataclasses import replace
 import pandas as pd
 import pytest
 
-from oilgap.model.case import MissionSegment, OperatingPoint, seed_case
+from oilgap.model.case import MissionSegment, OperatingPoint
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.oils import get_oil

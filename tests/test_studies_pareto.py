@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design_nlp import DesignProblem

@@ -9,7 +9,8 @@ import pandas as pd
 import pytest
 from scipy.optimize import brentq
 
-from oilgap.model.case import OperatingPoint, seed_case
+from oilgap.model.case import OperatingPoint
+from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.oils import get_oil

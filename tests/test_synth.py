@@ -4,12 +4,12 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.model.effects import first_order_lag
 from oilgap.model.errors import InputError
+from oilgap.model.measured_data import REQUIRED_COLUMNS
 from oilgap.model.oils import get_oil
 from oilgap.model.viscous_loss import clearance_power
-from oilgap.studies.measured_data import REQUIRED_COLUMNS
 from oilgap.studies.synth import (
     BaselineTruth,
     SynthConfig,

@@ -10,7 +10,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case import seed_case
+from oilgap.model.case_io import seed_case
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power, oil_state

@@ -5,14 +5,15 @@ from __future__ import annotations
 import argparse
 import json
 
-from oilgap.model.case import DesignCase, read_case_toml, seed_case
+from oilgap.model.case import DesignCase
+from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
 from oilgap.model.oils import get_oil, read_oils_csv
 from oilgap.model.units import m_to_mm
 
 
 def add_parser(sub) -> None:
-    from .cli import finite_float
+    from oilgap.studies.cli import finite_float
 
     p = sub.add_parser("evaluate", help="viscous loss of a joint over its duty cycle",
                        description="Evaluate a joint's viscous loss over its duty cycle, region "

@@ -61,7 +61,8 @@ from scipy import stats
 from scipy.linalg import solve_triangular
 from scipy.optimize import least_squares
 
-from oilgap.model.case import DesignCase, seed_case
+from oilgap.model.case import DesignCase
+from oilgap.model.case_io import seed_case
 from oilgap.model.effects import (
     CONFOUNDED_FORMS,
     EFFECTS,
@@ -72,22 +73,21 @@ from oilgap.model.effects import (
     first_order_lag,
 )
 from oilgap.model.errors import InputError, SolverError
+from oilgap.model.measured_data import (
+    TEMP_STEP_K,
+    MeasuredData,
+    Samples,
+    load_measured,
+    oil_samples,
+    validate,
+)
 from oilgap.model.oils import Oil
 from oilgap.model.skin_friction import BILGEN_BOULOS_ALPHA, FrictionLaw
 from oilgap.model.taylor_couette import couette_reynolds, taylor_number
 from oilgap.model.units import m2_s_to_cst
 from oilgap.model.viscous_loss import clearance_power
 
-from .measured_data import (
-    TEMP_STEP_K,
-    BaselineFit,
-    MeasuredData,
-    Samples,
-    fit_baselines,
-    load_measured,
-    oil_samples,
-    validate,
-)
+from .baseline import BaselineFit, fit_baselines
 
 BASE_PARAMS = ("C", "alpha", "beta", "gamma")
 DEFAULT_MARGIN = 0.10
@@ -858,7 +858,7 @@ class LoopEstimator:
     def _samples(self, data: MeasuredData, baselines=None) -> Samples:
         geom = self.geometry_
         if data.kind == "power_W":
-            from .measured_data import add_kinematics
+            from oilgap.model.measured_data import add_kinematics
 
             own = fit_baselines(add_kinematics(data.frame))
             baselines = {**own, **(baselines or {})}
@@ -879,7 +879,7 @@ class LoopEstimator:
                 raise InputError("effect", n, f"library effects are {', '.join(EFFECTS)}")
         self.geometry_ = geom = RigGeometry.from_case(case)
         self.data_ = data = self._as_data(data)
-        from .measured_data import add_kinematics
+        from oilgap.model.measured_data import add_kinematics
 
         kin = add_kinematics(data.frame)
         self.baselines_: dict[float, BaselineFit] = {}

@@ -131,10 +131,9 @@ def format_result(res: DesignResult, exact: tuple | None = None) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    from oilgap.model.case import write_case_toml
+    from oilgap.model.case_io import write_case_toml
     from oilgap.optim.design_nlp import DesignProblem
-
-    from .cmd_evaluate import load_case
+    from oilgap.studies.cli.evaluate import load_case
 
     args.temp_c = _number(args, "temp_c", "--temp-c")
     args.depth_m = _number(args, "depth_m", "--depth-m")

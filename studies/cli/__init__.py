@@ -18,11 +18,11 @@ from collections.abc import Sequence
 from oilgap.model.errors import InfeasibleError, InputError, OilgapWarning, SolverError
 
 SUBCOMMAND_MODULES = (
-    "oilgap.studies.cmd_evaluate",
-    "oilgap.studies.cmd_optimize",
-    "oilgap.studies.cmd_study",
-    "oilgap.studies.cmd_loop",
-    "oilgap.studies.cmd_synth",
+    "oilgap.studies.cli.evaluate",
+    "oilgap.studies.cli.optimize",
+    "oilgap.studies.cli.study",
+    "oilgap.studies.cli.loop",
+    "oilgap.studies.cli.synth",
 )
 
 

@@ -22,7 +22,7 @@ def add_parser(sub) -> None:
     p.add_argument("--out", metavar="DIR", default="loop_out",
                    help="output directory (default: loop_out)")
     p.add_argument("--json", action="store_true", help="print loop.json instead of the tables")
-    from .cli import finite_float
+    from oilgap.studies.cli import finite_float
 
     p.add_argument("--margin", type=finite_float, default=0.10,
                    help="held-out RMSE fall an effect must bring (default 0.10)")
@@ -33,12 +33,11 @@ def add_parser(sub) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run the loop and write the report; returns the exit code."""
-    from oilgap.model.case import read_case_toml
+    from oilgap.model.case_io import read_case_toml
+    from oilgap.model.measured_data import load_measured
     from oilgap.model.oils import read_oils_csv
-
-    from .calibration import LoopEstimator
-    from .measured_data import load_measured
-    from .report_loop import format_summary, loop_json, write_report
+    from oilgap.optim.calibration.estimator import LoopEstimator
+    from oilgap.studies.report_loop import format_summary, loop_json, write_report
 
     case = read_case_toml(args.case) if args.case else None
     oils = read_oils_csv(args.oils) if args.oils else None

@@ -30,7 +30,7 @@ def _out(args: argparse.Namespace, study: str) -> Path:
 
 
 def _case(path: str | None):
-    from oilgap.model.case import read_case_toml, seed_case
+    from oilgap.model.case_io import read_case_toml, seed_case
 
     return read_case_toml(path) if path else seed_case()
 
@@ -48,7 +48,7 @@ def _positive_int(text: str) -> int:
 
 def add_parser(sub) -> None:
     """Register ``oilgap study`` and its four subcommands."""
-    from .cli import finite_float
+    from oilgap.studies.cli import finite_float
 
     p = sub.add_parser("study", help="trade studies: smoothing, pareto, oil-grade, sweep",
                        description="Trade studies. Each writes CSV, PNG figures and "
@@ -136,7 +136,7 @@ def add_parser(sub) -> None:
 
 
 def _columns() -> list[str]:
-    from .trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
+    from oilgap.studies.trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
     return list(PARAM_COLUMNS) + [f"{c} (optimize)" for c in OPTIMIZE_COLUMNS]
 
@@ -150,7 +150,7 @@ def _files(files) -> str:
 
 def run_smoothing(args: argparse.Namespace) -> int:
     """``oilgap study smoothing``: fit, Table 4, loss vs T; returns the exit code."""
-    from .smoothing import run
+    from oilgap.studies.smoothing import run
 
     if args.t_step <= 0:
         raise InputError("--t-step", args.t_step, "must be > 0", "smoothing study")
@@ -200,7 +200,7 @@ def run_smoothing(args: argparse.Namespace) -> int:
 
 def run_pareto(args: argparse.Namespace) -> int:
     """``oilgap study pareto``: the two fronts; returns the exit code."""
-    from .pareto import run
+    from oilgap.studies.pareto import run
 
     case = _case(args.case)
     out = _out(args, "pareto")
@@ -234,8 +234,7 @@ def run_pareto(args: argparse.Namespace) -> int:
 def run_oil_grade(args: argparse.Namespace) -> int:
     """``oilgap study oil-grade``: grade table and recommendation; exit 3 if none passes."""
     from oilgap.model.errors import InfeasibleError
-
-    from .oil_grade import read_mission_csv, run
+    from oilgap.studies.oil_grade import read_mission_csv, run
 
     case = _case(args.case)
     mission = read_mission_csv(args.mission) if args.mission else None
@@ -268,7 +267,7 @@ def run_oil_grade(args: argparse.Namespace) -> int:
 
 
 def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Path):
-    from .trade import new_figure, save_figure
+    from oilgap.studies.trade import new_figure, save_figure
 
     ok = res[res["status"] == "ok"]
     params = [c for c in res.columns if c in _param_names() and c != "label"]
@@ -297,14 +296,14 @@ def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Pa
 
 def _axis_label(col: str) -> str:
     """Axis label with units from the column's description: "oil temperature [degC]"."""
-    from .trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
+    from oilgap.studies.trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
     desc = {**PARAM_COLUMNS, **OPTIMIZE_COLUMNS}.get(col, col)
     return desc[:desc.index("]") + 1] if "]" in desc else col
 
 
 def _param_names() -> set[str]:
-    from .trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
+    from oilgap.studies.trade import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
     return set(PARAM_COLUMNS) | set(OPTIMIZE_COLUMNS)
 
@@ -313,8 +312,7 @@ def run_sweep(args: argparse.Namespace) -> int:
     """``oilgap study sweep GRID.csv``: run a grid (resumable); returns the exit code."""
     from oilgap.model.evaluation import mean_viscous_power
     from oilgap.model.oils import read_oils_csv
-
-    from .trade import markdown_table, read_grid_csv, run_grid
+    from oilgap.studies.trade import markdown_table, read_grid_csv, run_grid
 
     grid = read_grid_csv(args.grid)
     case = _case(args.case)

@@ -9,8 +9,7 @@ import sys
 def add_parser(sub) -> None:
     """Register ``oilgap synth``."""
     from oilgap.model.effects import EFFECTS
-
-    from .cli import finite_float
+    from oilgap.studies.cli import finite_float
 
     p = sub.add_parser(
         "synth", help="simulate the seed's viscous-power experiment (test data for loop)",
@@ -39,11 +38,10 @@ def add_parser(sub) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Write the synthetic data; returns the exit code."""
-    from oilgap.model.case import read_case_toml
+    from oilgap.model.case_io import read_case_toml
     from oilgap.model.effects import EFFECTS
     from oilgap.model.errors import InputError
-
-    from .synth import DEFAULT_STRENGTH, SynthConfig, synthesize, write_synth_csv
+    from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize, write_synth_csv
 
     if args.list_effects:
         print(f"{'effect':<24}{'strength unit':<15}{'default':>10}  formula")

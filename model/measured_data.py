@@ -18,24 +18,25 @@ Every row that is dropped is counted under the first reason that applies
 (:class:`DropRecord`); a file that cannot be used at all raises
 :class:`~oilgap.model.errors.InputError` with one message.
 
-The baseline (:func:`fit_baselines`) is a linear least-squares model of the
-oil-free runs of each T in speed, acceleration and (if the oil-free runs span
-enough of it) temperature; the runs are not synchronised sample by sample, so
-the model, not the samples, is subtracted.
+The oil-free baseline that turns ``power_W`` into the viscous power is fitted
+by the calibration (:mod:`oilgap.optim.calibration.baseline`) and handed to
+:func:`oil_samples`.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pandas as pd
 from scipy.signal import savgol_filter
 
-from oilgap.model.errors import InputError
-from oilgap.model.oils import Oil, builtin_oils, normalize_oil_name, read_oils_csv
-from oilgap.model.units import (
+from .errors import InputError
+from .oils import Oil, builtin_oils, normalize_oil_name, read_oils_csv
+from .units import (
     ZERO_CELSIUS_K,
     cst_to_m2_s,
     mm_to_m,
@@ -53,8 +54,6 @@ SPEED_DERIVATIVE_WINDOW_S = 1.0
 """Savitzky-Golay window [s] for d(omega)/dt (quadratic, at least 5 samples)."""
 TEMP_DERIVATIVE_WINDOW_S = 3.0
 """Savitzky-Golay window [s] for dT/dt."""
-BASELINE_TEMP_SPAN_K = 5.0
-"""Oil-free runs must span this many kelvin for the baseline to carry temperature terms."""
 TEMP_STEP_K = 0.5
 """Half-step [K] of the central difference for dP/dT."""
 
@@ -317,58 +316,6 @@ def time_derivative(time_s: np.ndarray, x: np.ndarray, window_s: float) -> np.nd
     return np.gradient(x, t)
 
 
-# --------------------------------------------------------------------------- baseline
-
-BASELINE_TERMS = ("1", "|w|", "w^2", "w dw/dt", "sign(w) dw/dt", "(dw/dt)^2")
-BASELINE_TEMP_TERMS = ("dT", "dT |w|", "dT w^2")
-
-
-def _baseline_matrix(omega, alpha, dtemp, with_temp: bool) -> np.ndarray:
-    cols = [np.ones_like(omega), np.abs(omega), omega * omega, omega * alpha,
-            np.sign(omega) * alpha, alpha * alpha]
-    if with_temp:
-        cols += [dtemp, dtemp * np.abs(omega), dtemp * omega * omega]
-    return np.column_stack(cols)
-
-
-@dataclass(frozen=True)
-class BaselineFit:
-    """Oil-free baseline of one roughness T: ``P = sum_j c_j f_j(w, dw/dt, T)`` [W].
-
-    ``terms`` names the basis functions f_j (w [rad/s], dw/dt [rad/s^2], dT =
-    temp - ``temp_ref_C`` [K]); ``coef`` their least-squares coefficients.
-    """
-
-    roughness_T: float
-    terms: tuple[str, ...]
-    coef: np.ndarray
-    temp_ref_C: float
-    rmse_W: float
-    n_samples: int
-    temp_range_C: tuple[float, float]
-    speed_max_rpm: float
-    notes: tuple[str, ...]
-    cov: np.ndarray | None = None
-
-    def design(self, omega, domega_dt, temp_C) -> np.ndarray:
-        """Basis matrix f_j at the samples [W per unit coefficient]."""
-        return _baseline_matrix(np.asarray(omega, float), np.asarray(domega_dt, float),
-                                np.asarray(temp_C, float) - self.temp_ref_C,
-                                len(self.terms) > len(BASELINE_TERMS))
-
-    def predict(self, omega, domega_dt, temp_C) -> np.ndarray:
-        """Baseline power [W] at speed [rad/s], acceleration [rad/s^2], temperature [degC]."""
-        return self.design(omega, domega_dt, temp_C) @ self.coef
-
-    def to_dict(self) -> dict:
-        """JSON form."""
-        return {"roughness_T": self.roughness_T,
-                "terms": dict(zip(self.terms, map(float, self.coef), strict=True)),
-                "temp_ref_C": self.temp_ref_C, "rmse_W": self.rmse_W,
-                "n_samples": self.n_samples, "temp_range_C": list(self.temp_range_C),
-                "speed_max_rpm": self.speed_max_rpm, "notes": list(self.notes)}
-
-
 def add_kinematics(frame: pd.DataFrame) -> pd.DataFrame:
     """Columns ``omega`` [rad/s], ``domega_dt`` [rad/s^2], ``dtemp_dt`` [K/s] per run."""
     f = frame.copy()
@@ -382,48 +329,6 @@ def add_kinematics(frame: pd.DataFrame) -> pd.DataFrame:
     f["domega_dt"] = a
     f["dtemp_dt"] = dT
     return f
-
-
-def fit_baselines(frame: pd.DataFrame) -> dict[float, BaselineFit]:
-    """Least-squares baseline per roughness T from the oil-free runs (frame with kinematics).
-
-    Temperature terms are used only if the oil-free runs of that T span at least
-    :data:`BASELINE_TEMP_SPAN_K`; otherwise the baseline is taken as independent
-    of temperature and a note says so.
-    """
-    out = {}
-    free = frame[frame["oil_free"]]
-    oil = frame[~frame["oil_free"]]
-    for T, g in free.groupby("roughness_T"):
-        w, a, temp = (g[c].to_numpy() for c in ("omega", "domega_dt", "temp_C"))
-        span = float(temp.max() - temp.min())
-        with_temp = span >= BASELINE_TEMP_SPAN_K
-        tref = float(temp.mean())
-        X = _baseline_matrix(w, a, temp - tref, with_temp)
-        coef, _, rank, _ = np.linalg.lstsq(X, g["power_W"].to_numpy(), rcond=None)
-        rmse = float(np.sqrt(np.mean((X @ coef - g["power_W"].to_numpy()) ** 2)))
-        # coefficient covariance (pseudo-inverse: the basis can be degenerate on one profile)
-        dof = max(1, len(g) - int(rank))
-        s2 = rmse * rmse * len(g) / dof
-        cov = s2 * np.linalg.pinv(X.T @ X)
-        notes = []
-        o = oil[oil["roughness_T"] == T]
-        if not with_temp:
-            notes.append(f"oil-free runs span {span:.1f} K (< {BASELINE_TEMP_SPAN_K:g} K): "
-                         "baseline taken as independent of temperature")
-        elif len(o) and (o["temp_C"].max() > temp.max() + 1 or o["temp_C"].min() < temp.min() - 1):
-            notes.append(f"oil runs reach {o['temp_C'].min():.1f}..{o['temp_C'].max():.1f} degC, "
-                         f"the baseline is fitted on {temp.min():.1f}..{temp.max():.1f} degC: "
-                         "its temperature terms are extrapolated")
-        smax = float(np.abs(g["speed_rpm"]).max())
-        if len(o) and np.abs(o["speed_rpm"]).max() > 1.05 * smax:
-            notes.append(f"oil runs reach {np.abs(o['speed_rpm']).max():.0f} rpm, beyond the "
-                         f"oil-free runs' {smax:.0f} rpm: baseline extrapolated in speed")
-        terms = BASELINE_TERMS + (BASELINE_TEMP_TERMS if with_temp else ())
-        out[float(T)] = BaselineFit(float(T), terms, coef, tref, rmse, len(g),
-                                    (float(temp.min()), float(temp.max())), smax, tuple(notes),
-                                    cov)
-    return out
 
 
 # --------------------------------------------------------------------------- samples
@@ -479,19 +384,21 @@ class Samples:
 
 
 def oil_samples(data: MeasuredData, region1_gap_m: float,
-                baselines: dict[float, BaselineFit] | None = None,
+                baselines: Mapping[float, Any] | None = None,
                 pressure_gauge_Pa: float = 0.0, frame: pd.DataFrame | None = None) -> Samples:
     """The oil-run samples of validated data, with nu, rho and the viscous power.
 
     nu and rho come from each oil's Walther line and density law at ``temp_C``
     (``pressure_gauge_Pa``, default atmospheric) unless the row gives
     ``nu_cSt``/``density_kg_m3``. With ``power_W`` the baseline of the run's T is
-    subtracted (``baselines`` default: :func:`fit_baselines` of the data). ``frame``: the
+    subtracted (``baselines``: T -> an object with ``predict(omega, domega_dt, temp_C)``
+    [W], e.g. :func:`oilgap.optim.calibration.baseline.fit_baselines`). ``frame``: the
     data's frame with kinematics already added (:func:`add_kinematics`), if at hand.
     """
     f = add_kinematics(data.frame) if frame is None else frame
     if data.kind == "power_W" and baselines is None:
-        baselines = fit_baselines(f)
+        raise InputError("baselines", None, "power_W data need the oil-free baseline of each "
+                         "roughness T", data.source)
     o = f[~f["oil_free"]]
     n = len(o)
     tK = o["temp_C"].to_numpy() + ZERO_CELSIUS_K

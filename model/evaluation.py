@@ -16,10 +16,11 @@ import numpy as np
 from .case import DesignCase
 from .oil_properties import seawater_gauge_pressure
 from .oils import warn_if_untrusted_temperature
+from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
 from .taylor_couette import couette_reynolds, flow_regime, taylor_number
 from .units import celsius_to_kelvin, m2_s_to_cst, rad_s_to_rpm
-from .viscous_loss import clearance_power, viscous_torque
+from .viscous_loss import viscous_torque
 
 
 @dataclass(frozen=True)
@@ -74,20 +75,22 @@ def oil_state(case: DesignCase, oil_temp_C: float | None = None, depth_m: float 
     return case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
 
 
-def region_geometries(case: DesignCase):
-    """[(name, R, delta, L, T)] of the case's regions [m, -]."""
-    r1 = case.region1
-    out = [("rotor-stator", r1.radius, r1.gap, r1.length, r1.roughness)]
-    if case.region2 is not None:
-        r2 = case.region2
-        out.append(("bearing", r2.radius, r2.gap, r2.length, 1.0))
-    return out
-
-
 def region_powers(case: DesignCase, omega_rad_s, nu_m2_s, rho_kg_m3) -> dict[str, np.ndarray]:
-    """Viscous power [W] of each region at the given speeds and oil state."""
-    return {name: clearance_power(omega_rad_s, nu_m2_s, rho_kg_m3, R, d, L, case.friction, T)
-            for name, R, d, L, T in region_geometries(case)}
+    """Viscous power [W] of each region of the case at the given speeds and oil state.
+
+    Parameters
+    ----------
+    case : DesignCase
+    omega_rad_s : rotor speed(s) [rad/s]
+    nu_m2_s, rho_kg_m3 : oil state [m^2/s], [kg/m^3]
+
+    Returns
+    -------
+    dict
+        Region name -> power [W].
+    """
+    return {r.name: region_power(r, omega_rad_s, nu_m2_s, rho_kg_m3, case.friction)
+            for r in joint_regions(case)}
 
 
 def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
@@ -95,7 +98,8 @@ def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
     """Mean viscous power [W] of all regions over the case's duty cycle (Eq. 10)."""
     nu, _, rho = oil_state(case, oil_temp_C, depth_m)
     nodes, weights = case.duty_cycle.speed_distribution()
-    return float(sum(p @ weights for p in region_powers(case, nodes, nu, rho).values()))
+    return float(sum(region_mean_power(r, nodes, weights, nu, rho, case.friction)
+                     for r in joint_regions(case)))
 
 
 def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
@@ -120,11 +124,13 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     w_peak = cycle.peak_omega_rad_s
     results = []
     total_torque = 0.0
-    for name, R, gap, L, T in region_geometries(case):
+    for region in joint_regions(case):
+        name, R, gap, L, T = (region.name, region.radius_m, region.gap_m, region.length_m,
+                              region.roughness_T)
         re_nodes = couette_reynolds(nodes, R, gap, nu)
-        p_nodes = clearance_power(nodes, nu, rho, R, gap, L, case.friction, T)
+        p_mean = region_mean_power(region, nodes, weights, nu, rho, case.friction)
         re_peak = float(couette_reynolds(w_peak, R, gap, nu))
-        p_peak = float(clearance_power(w_peak, nu, rho, R, gap, L, case.friction, T))
+        p_peak = float(region_power(region, w_peak, nu, rho, case.friction))
         tq = float(viscous_torque(p_peak, w_peak))
         total_torque += tq
         visited = set(flow_regime(re_nodes[weights > 0]))
@@ -133,7 +139,7 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
         results.append(RegionResult(
             name, R, gap, L, float(T), re_peak, float(taylor_number(re_peak, gap, R)), regimes,
             float(moment_coefficient(re_peak, gap / R, case.friction, T)),
-            float(p_nodes @ weights), tq))
+            float(p_mean), tq))
     total = sum(r.mean_power_W for r in results)
     return CaseEvaluation(case.name, case.oil.name, t, d, m2_s_to_cst(nu), float(rho),
                           case.friction.laminar_law, case.friction.form,

@@ -1,4 +1,4 @@
-"""Surface-PM motor magnetics and rotor inertia for the magnetic-gap and inertia constraints.
+"""The motor: surface-PM magnetics and rotor inertia (the magnetic-gap and inertia limits).
 
 * Carter coefficient of the stator slot openings (Gieras A.27-A.28).
 * Air-gap flux density of a surface-PM machine, leakage neglected:
@@ -23,9 +23,14 @@ References
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
 
 from . import _math as m
+
+if TYPE_CHECKING:  # pragma: no cover - typing only
+    from .case import Motor
 
 
 def carter_coefficient(slot_pitch_m, slot_opening_m, gap_m):
@@ -92,3 +97,53 @@ def grooved_rotor_inertia(length_m, shaft_bore_radius_m, groove_bottom_unfilled_
     fill = (1.0 - groove_solid_fraction) * hollow_cylinder_inertia(
         epoxy_density_kg_m3, length_m, groove_bottom_m, groove_bottom_unfilled_m)
     return core + teeth + fill
+
+
+def motor_torque(motor: Motor, R_m, delta_m, L_m) -> tuple[Any, Any, Any]:
+    """Torque capability [N m], air-gap flux density [T] and Carter coefficient [-].
+
+    Carter coefficient with the slot pitch at the bore ``2 pi T3 / Q_s`` and the
+    magnetic gap ``g = delta`` (epoxy is non-magnetic) [1]; ``B_g`` and
+    ``tau = 2 pi R^2 L k_w B_g A / sqrt 2`` [2].
+
+    Parameters
+    ----------
+    motor : Motor
+        Magnet, slot and winding data of the case.
+    R_m : rotor outer radius T2 [m]
+    delta_m : clearance T3 - T2, the magnetic gap [m]
+    L_m : stack length [m]
+
+    Returns
+    -------
+    torque_Nm, flux_density_T, carter : float, array or CasADi expression
+    """
+    pitch = 2.0 * np.pi * (R_m + delta_m) / motor.slot_count
+    kc = carter_coefficient(pitch, motor.slot_opening, delta_m)
+    bg = airgap_flux_density(motor.remanence_T, motor.magnet_thickness,
+                             motor.recoil_permeability, kc, delta_m, motor.saturation_factor)
+    tau = torque_capability(bg, motor.electric_loading_A_m, motor.winding_factor, R_m, L_m)
+    return tau, bg, kc
+
+
+def rotor_inertia(motor: Motor, R_m, rotor_groove_m, L_m, machined_groove_m) -> Any:
+    """Rotor inertia [kg m^2] with grooves machined ``machined_groove_m`` deep and filled
+    with epoxy up to ``rotor_groove_m`` below the surface (``T1_unfilled = R - d_r0``).
+
+    Parameters
+    ----------
+    motor : Motor
+        Shaft bore, densities and groove solid fraction of the case.
+    R_m : rotor outer radius [m]
+    rotor_groove_m : groove depth left open by the fill, d_r [m]
+    L_m : stack length [m]
+    machined_groove_m : groove depth as machined, d_r0 [m]
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Polar moment of inertia [kg m^2] (:func:`grooved_rotor_inertia`).
+    """
+    return grooved_rotor_inertia(L_m, motor.shaft_bore_radius, R_m - machined_groove_m,
+                                 R_m - rotor_groove_m, R_m, motor.rotor_density_kg_m3,
+                                 motor.rotor_groove_solid_fraction, motor.epoxy_density_kg_m3)

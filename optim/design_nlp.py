@@ -24,7 +24,7 @@ with ``P1 = sum_i w_i clearance_power(omega_i, nu, rho, R, delta, L, law_smooth,
 over the exact speed distribution (omega_i, w_i) of the duty cycle
 (:meth:`DutyCycle.speed_distribution`), the smooth C_m (no ``if_else`` in the
 NLP), and P2 the (constant) bearing-annulus power. The torque capability and
-inertia are :mod:`oilgap.model.magnetics` (Carter coefficient with slot pitch
+inertia are :mod:`oilgap.model.motor` (Carter coefficient with slot pitch
 2 pi T3 / Q_s, B_g, tau = 2 pi R^2 L k_w B_g A / sqrt 2, grooved rotor with
 T1_unfilled = R - d_r0).
 
@@ -62,7 +62,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
-from oilgap.model.case import DesignBounds, DesignCase, Motor, OperatingPoint, RotorStatorClearance
+from oilgap.model.case import DesignBounds, DesignCase, OperatingPoint, RotorStatorClearance
 from oilgap.model.errors import (
     InfeasibleError,
     InputError,
@@ -72,16 +72,16 @@ from oilgap.model.errors import (
     check_positive,
 )
 from oilgap.model.evaluation import CaseEvaluation, oil_state
-from oilgap.model.motor import (
-    airgap_flux_density,
-    carter_coefficient,
-    grooved_rotor_inertia,
-    torque_capability,
-)
+from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.oils import Oil
+from oilgap.model.regions import (
+    Region,
+    region_mean_power,
+    rotor_stator_radii,
+    rotor_stator_region,
+)
 from oilgap.model.skin_friction import FrictionLaw, groove_roughness
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
-from oilgap.model.viscous_loss import clearance_power, weighted_mean
 
 VARIABLES = ("R", "delta", "d_r", "d_s", "L")
 """Decision variables, in the order of the NLP vector."""
@@ -135,52 +135,18 @@ def _from_nlp(y: np.ndarray) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- design functions
-# Compositions of the model's functions over the design variables. They accept
-# floats, numpy arrays and CasADi symbols (all SI), like the model itself.
-
-
-def clearance_radii(R_m, delta_m, rotor_groove_m, stator_groove_m) -> tuple[Any, Any, Any, Any]:
-    """Radii (T1, T2, T3, T4) [m] of region 1 from the design variables.
-
-    T1 = R - d_r, T2 = R, T3 = R + delta, T4 = R + delta + d_s.
-    """
-    T3 = R_m + delta_m
-    return R_m - rotor_groove_m, R_m, T3, T3 + stator_groove_m
-
-
-def motor_torque(motor: Motor, R_m, delta_m, L_m) -> tuple[Any, Any, Any]:
-    """Torque capability [N m], air-gap flux density [T] and Carter coefficient [-].
-
-    Carter coefficient with the slot pitch at the bore ``2 pi T3 / Q_s`` and the
-    magnetic gap ``g = delta`` (epoxy is non-magnetic) [2]; ``B_g`` and
-    ``tau = 2 pi R^2 L k_w B_g A / sqrt 2`` from :mod:`oilgap.model.magnetics`.
-    """
-    pitch = 2.0 * np.pi * (R_m + delta_m) / motor.slot_count
-    kc = carter_coefficient(pitch, motor.slot_opening, delta_m)
-    bg = airgap_flux_density(motor.remanence_T, motor.magnet_thickness,
-                             motor.recoil_permeability, kc, delta_m, motor.saturation_factor)
-    tau = torque_capability(bg, motor.electric_loading_A_m, motor.winding_factor, R_m, L_m)
-    return tau, bg, kc
-
-
-def rotor_inertia(motor: Motor, R_m, rotor_groove_m, L_m, machined_groove_m) -> Any:
-    """Rotor inertia [kg m^2] with grooves machined ``machined_groove_m`` deep and filled
-    with epoxy up to ``rotor_groove_m`` below the surface (T1_unfilled = R - d_r0)."""
-    return grooved_rotor_inertia(L_m, motor.shaft_bore_radius, R_m - machined_groove_m,
-                                 R_m - rotor_groove_m, R_m, motor.rotor_density_kg_m3,
-                                 motor.rotor_groove_solid_fraction, motor.epoxy_density_kg_m3)
 
 
 def region1_mean_power(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m, nu_m2_s,
                        rho_kg_m3, nodes_rad_s, weights, law: FrictionLaw) -> Any:
     """Mean viscous power [W] of region 1 over a speed distribution (seed Eqs. 4-10).
 
-    ``sum_i w_i clearance_power(omega_i, nu, rho, R, delta, L, law, T)`` with
-    T from Eq. 9. For CasADi arguments pass ``nodes_rad_s`` as a ``casadi.DM``.
+    :func:`~oilgap.model.regions.region_mean_power` of the region built from the
+    design variables (T from Eq. 9). For CasADi arguments pass ``nodes_rad_s``
+    as a ``casadi.DM``.
     """
-    T = groove_roughness(*clearance_radii(R_m, delta_m, rotor_groove_m, stator_groove_m))
-    p = clearance_power(nodes_rad_s, nu_m2_s, rho_kg_m3, R_m, delta_m, L_m, law, T)
-    return weighted_mean(p, weights)
+    region = rotor_stator_region(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m)
+    return region_mean_power(region, nodes_rad_s, weights, nu_m2_s, rho_kg_m3, law)
 
 
 # --------------------------------------------------------------------------- results
@@ -504,9 +470,9 @@ class DesignProblem:
         if key not in self._p2_cache:
             if len(self._p2_cache) > 4096:
                 self._p2_cache.clear()
-            self._p2_cache[key] = float(clearance_power(
-                self.nodes_rad_s, nu_m2_s, rho_kg_m3, r2.radius, r2.gap, r2.length, self.law,
-                1.0) @ self.weights)
+            self._p2_cache[key] = float(region_mean_power(
+                Region("bearing", r2.radius, r2.gap, r2.length, 1.0), self.nodes_rad_s,
+                self.weights, nu_m2_s, rho_kg_m3, self.law))
         return self._p2_cache[key]
 
     def point(self, x_m: Sequence[float], nu_m2_s: float | None = None,
@@ -532,7 +498,7 @@ class DesignProblem:
         p1, tau, J = values
         R, delta, d_r, d_s, L = (float(v) for v in x_m)
         _, bg, kc = motor_torque(self.case.motor, R, delta, L)
-        T1, T2, T3, T4 = clearance_radii(R, delta, d_r, d_s)
+        T1, T2, T3, T4 = rotor_stator_radii(R, delta, d_r, d_s)
         pt = DesignPoint(R, delta, d_r, d_s, L, T1, T2, T3, T4,
                          float(groove_roughness(T1, T2, T3, T4)), p1, p2, p1 + p2, tau,
                          float(bg), float(kc), J, J / self.inertia_ref_kgm2)
@@ -907,6 +873,6 @@ def solve_design(case: DesignCase, verbose: bool = False, **overrides: Any) -> D
 
 __all__ = [
     "VARIABLES", "DesignPoint", "DesignParameters", "DesignProblem", "DesignResult",
-    "Multiplier", "clearance_radii", "motor_torque", "region1_mean_power", "rotor_inertia",
+    "Multiplier", "region1_mean_power",
     "solve_design",
 ]

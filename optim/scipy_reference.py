@@ -23,15 +23,10 @@ from typing import Any
 import numpy as np
 from scipy.optimize import Bounds, minimize
 
+from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.units import MM_TO_M
 
-from .design_nlp import (
-    DesignParameters,
-    DesignProblem,
-    motor_torque,
-    region1_mean_power,
-    rotor_inertia,
-)
+from .design_nlp import DesignParameters, DesignProblem, region1_mean_power
 
 
 @dataclass(frozen=True)

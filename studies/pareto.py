@@ -559,12 +559,8 @@ def gap_problem_numpy(case: DesignCase | None = None, torque_min_Nm: float | Non
     the NLP (:func:`oilgap.optim.design_nlp.region1_mean_power`, ``motor_torque``,
     ``rotor_inertia``, smooth C_m, the case's speed distribution).
     """
-    from oilgap.optim.design_nlp import (
-        DesignProblem,
-        motor_torque,
-        region1_mean_power,
-        rotor_inertia,
-    )
+    from oilgap.model.motor import motor_torque, rotor_inertia
+    from oilgap.optim.design_nlp import DesignProblem, region1_mean_power
 
     base = case if case is not None else seed_case()
     prob = DesignProblem(base)

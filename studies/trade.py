@@ -23,7 +23,7 @@ the previous row of the same chunk) and returns one result row per grid row.
 Grid columns (units in their names; an empty cell keeps the base case's value)
 are listed in :data:`PARAM_COLUMNS`. Physics is never re-written here: oil
 state, geometry and power come from :func:`oilgap.model.evaluation.oil_state`,
-:func:`~oilgap.model.evaluation.region_geometries` and
+:func:`~oilgap.model.regions.joint_regions` and
 :func:`~oilgap.model.viscous_loss.clearance_power`.
 """
 
@@ -50,11 +50,11 @@ from oilgap.model.case import DesignCase
 from oilgap.model.case_io import case_to_dict, seed_case
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError, OilgapWarning, check_positive
-from oilgap.model.evaluation import oil_state, region_geometries
+from oilgap.model.evaluation import oil_state
 from oilgap.model.oils import Oil, get_oil, read_oils_csv, warn_if_untrusted_temperature
+from oilgap.model.regions import Region, joint_regions, region_mean_power
 from oilgap.model.taylor_couette import couette_reynolds
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
-from oilgap.model.viscous_loss import clearance_power
 
 ENGINE_VERSION = "1"
 """Part of every point key: bump it when a result column changes meaning."""
@@ -326,13 +326,14 @@ def evaluate_arrays(cases: list[DesignCase]) -> tuple[dict[str, np.ndarray], lis
         rho = np.broadcast_to(np.asarray(rho, dtype=float), temps.shape)
         nodes, weights = c0.duty_cycle.speed_distribution()
         w_peak = float(nodes.max())
-        geos = [region_geometries(cases[i]) for i in idx]
+        geos = [joint_regions(cases[i]) for i in idx]
         total = np.zeros(len(idx))
         for r in range(len(geos[0])):
-            R, d, L, T = (np.array([g[r][k] for g in geos]) for k in (1, 2, 3, 4))
-            p = clearance_power(nodes[None, :], nu[:, None], rho[:, None], R[:, None],
-                                d[:, None], L[:, None], c0.friction, T[:, None])
-            mean = np.asarray(p) @ weights
+            R, d, L, T = (np.array([getattr(g[r], k) for g in geos])
+                          for k in ("radius_m", "gap_m", "length_m", "roughness_T"))
+            stacked = Region(geos[0][r].name, R[:, None], d[:, None], L[:, None], T[:, None])
+            mean = region_mean_power(stacked, nodes[None, :], weights, nu[:, None],
+                                     rho[:, None], c0.friction)
             total += mean
             out[f"region{r + 1}_power_W"][ii] = mean
             out[f"Re{r + 1}_peak"][ii] = couette_reynolds(w_peak, R, d, nu)

@@ -88,7 +88,7 @@ def main() -> int:
         pareto.gap_front(case, N_FRONT)
         warm.append(time.perf_counter() - t0)
     ok = front[front["status"] == "ok"]
-    from oilgap.optim.design_nlp import DesignProblem
+    from oilgap.optim.design import DesignProblem
 
     prob = DesignProblem(case)
     t0 = time.perf_counter()

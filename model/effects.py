@@ -71,7 +71,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import _math as m
-from .taylor_couette import CRITICAL_TAYLOR_NUMBER
+from .errors import InputError
+from .regions import JointGeometry, region_power
+from .skin_friction import FrictionLaw
+from .taylor_couette import CRITICAL_TAYLOR_NUMBER, couette_reynolds, taylor_number
 from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
 
 FREE_DISC_TRANSITION_RE = 3.0e5
@@ -304,6 +307,81 @@ class EffectContext:
         return sum(r.power_W for r in self.regions)
 
 
+def region_states(geometry: JointGeometry, omega_rad_s, nu_m2_s, powers_W
+                  ) -> tuple[RegionState, ...]:
+    """Per-region state (geometry, power, Re of Eq. 4, Ta of Eq. 3) over the samples.
+
+    Parameters
+    ----------
+    geometry : JointGeometry
+        The joint's regions (:func:`oilgap.model.regions.joint_geometry`).
+    omega_rad_s : rotor speed per sample [rad/s]
+    nu_m2_s : kinematic viscosity per sample [m^2/s]
+    powers_W : sequence of arrays
+        Viscous power of each region per sample [W].
+
+    Returns
+    -------
+    tuple of RegionState
+    """
+    ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
+    out = []
+    for region, p in zip(geometry.regions, powers_W, strict=True):
+        R, gap = region.radius_m, region.gap_m
+        re = couette_reynolds(omega_rad_s, R, gap, nu_m2_s)
+        out.append(RegionState(region.name, R, gap * ones, region.length_m, p, re,
+                               taylor_number(re, gap, R)))
+    return tuple(out)
+
+
+def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2_s,
+                   density_kg_m3, law: FrictionLaw, *, powers_W=None, dtemp_dt_K_s=None,
+                   dpower_dt_W_s=None, dpower_dtemp_W_K=None) -> EffectContext:
+    """The one builder of an :class:`EffectContext` (rig simulator and calibration alike).
+
+    Parameters
+    ----------
+    geometry : JointGeometry
+        Regions, end-face radii and bearing pitch diameter of the joint.
+    omega_rad_s, domega_dt_rad_s2 : speed [rad/s] and acceleration [rad/s^2] per sample
+    nu_m2_s, density_kg_m3 : oil state per sample [m^2/s], [kg/m^3]
+    law : FrictionLaw
+        Friction law of the clearance model (used unless ``powers_W`` is given).
+    powers_W : sequence of arrays, optional
+        Region powers already computed [W].
+    dtemp_dt_K_s, dpower_dt_W_s, dpower_dtemp_W_K : arrays, optional
+        Derivatives along the record (zero where not given).
+
+    Returns
+    -------
+    EffectContext
+    """
+    ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
+    omega = np.asarray(omega_rad_s, dtype=float) * ones
+    if powers_W is None:
+        powers_W = [region_power(r, omega, nu_m2_s, density_kg_m3, law)
+                    for r in geometry.regions]
+    zeros = np.zeros_like(ones)
+    return EffectContext(
+        omega, np.asarray(domega_dt_rad_s2, dtype=float) * ones, nu_m2_s, density_kg_m3,
+        zeros if dtemp_dt_K_s is None else dtemp_dt_K_s,
+        zeros if dpower_dt_W_s is None else dpower_dt_W_s,
+        zeros if dpower_dtemp_W_K is None else dpower_dtemp_W_K,
+        region_states(geometry, omega, nu_m2_s, powers_W), geometry.disc_radii_m,
+        geometry.bearing_pitch_diameter_m)
+
+
+def cross_region_ratios(ctx: EffectContext, lam_s: float) -> list[np.ndarray]:
+    """Cross viscosity ratio ``mu/mu_0`` of each region at its nominal shear rate [-] [11].
+
+    ``1 / (1 + (lambda |omega| R_i / delta_i)^2)``: the full (not first-order)
+    shear-thinning law, applied to each region's power by the rig simulator and
+    by the calibration's exact form.
+    """
+    return [cross_viscosity_ratio(couette_shear_rate(ctx.omega_rad_s, r.radius_m, r.gap_m),
+                                  lam_s) for r in ctx.regions]
+
+
 def _f_disc(c: EffectContext):
     r_o, r_i = c.disc_radii_m
     return end_face_disc_power(c.omega_rad_s, c.nu_m2_s, c.density_kg_m3, r_o, r_i)
@@ -442,8 +520,6 @@ def get_effect(name: str) -> Effect:
     InputError
         Unknown name; the message lists the library.
     """
-    from .errors import InputError
-
     if name not in EFFECTS:
         raise InputError("effect", name, f"library effects are {', '.join(EFFECTS)}")
     return EFFECTS[name]

@@ -1,6 +1,6 @@
 """Independent solve of the design NLP with SciPy SLSQP on the numpy path of the model.
 
-Same problem as :class:`oilgap.optim.design_nlp.DesignProblem` (same variables in
+Same problem as :class:`oilgap.optim.design.DesignProblem` (same variables in
 mm, same scaling, same bounds and parameters, same model functions), but the
 objective and constraints are evaluated with numpy (vectorised over the
 duty-cycle nodes) and SLSQP differentiates them by finite differences. No
@@ -26,7 +26,7 @@ from scipy.optimize import Bounds, minimize
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.units import MM_TO_M
 
-from .design_nlp import DesignParameters, DesignProblem, region1_mean_power
+from .design import DesignParameters, DesignProblem, region1_mean_power
 
 
 @dataclass(frozen=True)

@@ -1,7 +1,7 @@
 """Pareto sweeps of the clearance design: magnetic gap against loss, loss against inertia.
 
 Both fronts are epsilon-constraint sweeps of the design NLP of issue 3
-(:class:`oilgap.optim.design_nlp.DesignProblem`, built once and re-solved with
+(:class:`oilgap.optim.design.DesignProblem`, built once and re-solved with
 parameters), each point one IPOPT solve warm-started (primal and dual) from its
 neighbour, run through the trade-study engine
 (:func:`oilgap.studies.trade.run_grid` in ``mode="optimize"``, one chunk, so
@@ -86,7 +86,7 @@ _MAX_PROBLEMS = 16
 
 
 def _problem(case: DesignCase, problems: dict | None = None) -> tuple[str, Any]:
-    from oilgap.optim.design_nlp import DesignProblem
+    from oilgap.optim.design import DesignProblem
 
     cache = _PROBLEMS if problems is None else problems
     key = case_fingerprint(case)
@@ -202,7 +202,7 @@ def seed_points(case: DesignCase | None = None) -> pd.DataFrame:
     epoxy fill of the smoothed one) and with the exact C_m (``mean_power_exact_W``).
     If ``case`` is given, it is marked as ``case`` too.
     """
-    from oilgap.optim.design_nlp import DesignProblem
+    from oilgap.optim.design import DesignProblem
 
     grooved, smoothed = seed_case(False), seed_case(True)
     prob = DesignProblem(grooved)
@@ -310,7 +310,7 @@ def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = N
                                rtol: float = 1e-6) -> float:
     """Smallest ``inertia_max_ratio`` for which the design problem is feasible (bisection
     on :meth:`DesignProblem.check_feasible`, which decides feasibility exactly)."""
-    from oilgap.optim.design_nlp import DesignProblem
+    from oilgap.optim.design import DesignProblem
 
     prob = DesignProblem(case)
     kw = {} if torque_min_Nm is None else {"torque_min_Nm": torque_min_Nm}
@@ -556,11 +556,11 @@ def gap_problem_numpy(case: DesignCase | None = None, torque_min_Nm: float | Non
     (n, 5) array of (R, delta, d_r, d_s, L) [m] and returns ``F`` (n, 2) =
     (delta [mm], mean power [W]) and ``G`` (n, 2) <= 0 for feasibility
     (torque_min - torque, J - J_max, scaled). Same functions and parameters as
-    the NLP (:func:`oilgap.optim.design_nlp.region1_mean_power`, ``motor_torque``,
+    the NLP (:func:`oilgap.optim.design.region1_mean_power`, ``motor_torque``,
     ``rotor_inertia``, smooth C_m, the case's speed distribution).
     """
     from oilgap.model.motor import motor_torque, rotor_inertia
-    from oilgap.optim.design_nlp import DesignProblem, region1_mean_power
+    from oilgap.optim.design import DesignProblem, region1_mean_power
 
     base = case if case is not None else seed_case()
     prob = DesignProblem(base)

@@ -54,6 +54,7 @@ from scipy.optimize import least_squares
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, SolverError, check_finite
+from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
 from oilgap.studies.trade import (
     apply_params,
     evaluate_arrays,
@@ -73,9 +74,6 @@ RIG_DEPTH_M = 0.0
 T_GROOVED = 4.0
 T_SMOOTHED = 2.0
 HEATING_METHODS = ("shared", "per-oil")
-MAX_OIL_TEMP_C = 250.0
-"""Cap of the heat balance [degC]: a run whose balance has no root below it is held
-there (far beyond where mineral oil and the Walther line are meaningful)."""
 PLATEAU_TOL = 0.05
 """Default criterion: the loss has stopped falling once it is within this fraction of
 its value at T = 1 (the smooth-wall floor)."""
@@ -92,69 +90,25 @@ def load_table4() -> pd.DataFrame:
 
 
 def _at_temperatures(cases: list[DesignCase], temps_C: np.ndarray) -> np.ndarray:
+    """Mean viscous power [W] of the cases at the temperatures (k per case, case fastest)."""
+    k = len(temps_C) // len(cases)
     cs = [replace(c, operating=OperatingPoint(c.operating.depth_m, float(t)))
-          for c, t in zip(cases, temps_C, strict=True)]
+          for c, t in zip(cases * k, temps_C, strict=True)]
     return evaluate_arrays(cs)[0]["mean_power_W"]
 
 
 def steady_temperatures(cases: list[DesignCase], base_temp_C, resistance_K_W: float,
                         tol_K: float = 1e-9, max_iter: int = 60
                         ) -> tuple[np.ndarray, np.ndarray]:
-    """Solve the steady heat balance ``T = T_base + R_th P(T)`` of every case.
+    """Steady oil temperature [degC] and mean viscous power [W] of every case on the rig.
 
-    ``g(T) = T - T_base - R_th P(T)`` rises strictly (P falls as the oil warms),
-    with ``g(T_base) <= 0 <= g(T_base + R_th P(T_base))``: exactly one root in
-    that bracket. Vectorised safeguarded Newton (forward-difference slope; a
-    step that leaves the bracket is replaced by bisection). A case whose root
-    lies above :data:`MAX_OIL_TEMP_C` is returned at that cap.
-
-    Parameters
-    ----------
-    cases : list of DesignCase
-        Their oil, geometry and depth are used; their temperature is replaced.
-    base_temp_C : float or array
-        ``T_base`` [degC], one for all cases or one per case.
-    resistance_K_W : float
-        ``R_th`` [K/W], >= 0 (0: the oil is at ``T_base``).
-
-    Returns
-    -------
-    temps_C : ndarray
-        Steady oil temperature of each case [degC].
-    power_W : ndarray
-        Mean viscous power there [W].
-
-    Raises
-    ------
-    SolverError
-        No convergence to ``tol_K`` in ``max_iter`` iterations.
+    The lumped balance ``T = T_base + R_th P(T)`` of
+    :func:`oilgap.model.thermal.steady_temperature`, with P the case's mean
+    viscous power over its duty cycle at oil temperature T; ``T_base`` [degC]
+    one for all cases or one per case, ``R_th`` [K/W] >= 0.
     """
-    n = len(cases)
-    tb = np.broadcast_to(np.asarray(base_temp_C, dtype=float), (n,)).copy()
-    rth = float(resistance_K_W)
-    if not rth >= 0:
-        raise InputError("resistance_K_W", rth, "must be >= 0", "heat balance")
-    p_lo = _at_temperatures(cases, tb)
-    if rth == 0.0:
-        return tb, p_lo
-    lo = tb.copy()
-    hi = np.minimum(tb + rth * p_lo, MAX_OIL_TEMP_C)
-    capped = (hi >= MAX_OIL_TEMP_C) & (
-        MAX_OIL_TEMP_C - tb - rth * _at_temperatures(cases, hi) <= 0)
-    t = np.where(capped, MAX_OIL_TEMP_C, 0.5 * (lo + hi))
-    h = 1e-4
-    for _ in range(max_iter):
-        p = _at_temperatures(cases + cases, np.concatenate([t, t + h]))
-        p0, p1 = p[:n], p[n:]
-        g = np.where(capped, 0.0, t - tb - rth * p0)
-        if np.all(np.abs(g) < tol_K):
-            return t, p0
-        lo = np.where(g < 0, t, lo)
-        hi = np.where(g > 0, t, hi)
-        t_new = t - g / (1.0 - rth * (p1 - p0) / h)
-        t = np.where(capped, t, np.where((t_new > lo) & (t_new < hi), t_new, 0.5 * (lo + hi)))
-    raise SolverError(f"steady oil temperature did not converge to {tol_K:g} K "
-                      f"in {max_iter} iterations", "max_iter")
+    return steady_temperature(lambda t: _at_temperatures(cases, t), base_temp_C,
+                              resistance_K_W, len(cases), tol_K, max_iter, MAX_OIL_TEMP_C)
 
 
 # --------------------------------------------------------------------------- the fit

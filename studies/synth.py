@@ -42,18 +42,17 @@ from oilgap.model.case_io import case_to_dict, seed_case
 from oilgap.model.effects import (
     EFFECTS,
     EffectContext,
-    RegionState,
-    couette_shear_rate,
-    cross_viscosity_ratio,
+    cross_region_ratios,
+    effect_context,
     get_effect,
 )
-from oilgap.model.errors import InputError, check_finite
+from oilgap.model.errors import InputError, SolverError, check_finite
 from oilgap.model.oil_properties import oil_viscosities
 from oilgap.model.oils import get_oil
+from oilgap.model.regions import joint_geometry
 from oilgap.model.skin_friction import FrictionLaw
-from oilgap.model.taylor_couette import couette_reynolds, taylor_number
+from oilgap.model.thermal import lumped_temperature_rate
 from oilgap.model.units import ZERO_CELSIUS_K, rad_s_to_rpm, rpm_to_rad_s
-from oilgap.model.viscous_loss import clearance_power
 
 DEFAULT_STRENGTH = {
     "end_face_disc": 4.0,
@@ -199,34 +198,10 @@ def _runs(cfg: SynthConfig) -> list[_Run]:
     return out
 
 
-def _regions(case: DesignCase, roughness: np.ndarray):
-    """[(name, R, gap, L, T array)] of the rig for runs of the given roughness."""
-    r1 = case.region1
-    out = [("rotor-stator", r1.radius, r1.gap, r1.length, roughness)]
-    if case.region2 is not None:
-        r2 = case.region2
-        out.append(("bearing", r2.radius, r2.gap, r2.length, np.ones_like(roughness)))
-    return out
-
-
-def _context(cfg: SynthConfig, omega, domega_dt, nu, rho, roughness, dpower_dt=None,
-             dpower_dtemp=None, dtemp_dt=None) -> EffectContext:
-    case = cfg.case
-    omega = np.asarray(omega, dtype=float) * np.ones_like(nu)
-    regions = []
-    for name, R, gap, L, T in _regions(case, roughness):
-        p = clearance_power(omega, nu, rho, R, gap, L, cfg.truth, T)
-        re = couette_reynolds(omega, R, gap, nu)
-        regions.append(RegionState(name, R, gap * np.ones_like(nu), L, p, re,
-                                   taylor_number(re, gap, R)))
-    zeros = np.zeros_like(nu)
-    r2 = case.region2
-    dm = None if r2 is None else 2.0 * r2.radius + r2.gap
-    return EffectContext(omega, np.asarray(domega_dt, dtype=float) * np.ones_like(nu), nu, rho,
-                         zeros if dtemp_dt is None else dtemp_dt,
-                         zeros if dpower_dt is None else dpower_dt,
-                         zeros if dpower_dtemp is None else dpower_dtemp,
-                         tuple(regions), (case.region1.radius, case.motor.shaft_bore_radius), dm)
+def _context(cfg: SynthConfig, omega, domega_dt, nu, rho, roughness) -> EffectContext:
+    """Effect context of the rig's runs of the given roughness under the truth law."""
+    geometry = joint_geometry(cfg.case, roughness_T=roughness)
+    return effect_context(geometry, omega, domega_dt, nu, rho, cfg.truth)
 
 
 def _effect_power(cfg: SynthConfig, ctx: EffectContext) -> np.ndarray:
@@ -236,10 +211,9 @@ def _effect_power(cfg: SynthConfig, ctx: EffectContext) -> np.ndarray:
         return np.zeros_like(ctx.nu_m2_s)
     eff = EFFECTS[name]
     if name == "shear_thinning":  # the full Cross law, not its first-order term
-        lam = cfg.strength
-        return sum(r.power_W * (cross_viscosity_ratio(
-            couette_shear_rate(ctx.omega_rad_s, r.radius_m, r.gap_m), lam) - 1.0)
-            for r in ctx.regions)
+        return sum(r.power_W * (q - 1.0)
+                   for r, q in zip(ctx.regions, cross_region_ratios(ctx, cfg.strength),
+                                   strict=True))
     f = eff.feature_values(ctx)
     if f is None:
         return np.zeros_like(ctx.nu_m2_s)
@@ -313,8 +287,8 @@ def simulate_truth(config: SynthConfig | None = None) -> dict:
 
     def rhs(t, y):
         th = y[:n_r]
-        dth = (heat(t, y) - (th - cfg.ambient_C) / cfg.thermal_resistance_K_W) \
-            / cfg.heat_capacity_J_K
+        dth = lumped_temperature_rate(th, heat(t, y), cfg.ambient_C,
+                                      cfg.thermal_resistance_K_W, cfg.heat_capacity_J_K)
         if lag == 0.0:
             return dth
         other = y[n_r:]
@@ -325,8 +299,6 @@ def simulate_truth(config: SynthConfig | None = None) -> dict:
     sol = solve_ivp(rhs, (0.0, t[-1]), y0, method="RK45", t_eval=t, dense_output=True,
                     rtol=1e-7, atol=1e-6, max_step=1.0)
     if not sol.success:  # pragma: no cover - a smooth, stable ODE
-        from oilgap.model.errors import SolverError
-
         raise SolverError(f"thermal model: {sol.message}")
     delay = cfg.strength if cfg.effect == "sensor_delay" else 0.0
 

@@ -14,13 +14,13 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-import oilgap.optim.design_nlp as dn
+import oilgap.optim.design.problem as dn
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError, SolverError
 from oilgap.model.evaluation import oil_state
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.oils import get_oil
-from oilgap.optim.design_nlp import VARIABLES, DesignProblem, region1_mean_power
+from oilgap.optim.design import VARIABLES, DesignProblem, region1_mean_power
 from oilgap.optim.scipy_reference import solve_slsqp
 
 KKT_RTOL = 1e-6

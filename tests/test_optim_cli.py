@@ -6,9 +6,9 @@ import sys
 
 import pytest
 
-import oilgap.optim.design_nlp as dn
+import oilgap.optim.design.problem as dn
 from oilgap.model.case_io import seed_case
-from oilgap.optim.design_nlp import DesignProblem
+from oilgap.optim.design import DesignProblem
 from oilgap.studies.cli import main
 
 POINT_KEYS = {"mean_power_W", "T", "delta_mm", "R_mm", "L_mm", "T1_mm", "T2_mm", "T3_mm",

@@ -10,7 +10,7 @@ import pytest
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError
 from oilgap.model.units import MM_TO_M
-from oilgap.optim.design_nlp import DesignProblem
+from oilgap.optim.design import DesignProblem
 from oilgap.studies.pareto import (
     gap_front,
     gap_problem_numpy,

@@ -1,6 +1,6 @@
 """``oilgap optimize``: the region-1 clearance geometry of least mean viscous power.
 
-Thin layer over :class:`oilgap.optim.design_nlp.DesignProblem`: loads the case
+Thin layer over :class:`oilgap.optim.design.DesignProblem`: loads the case
 (or the seed joint), applies the oil/operating overrides, solves the design NLP
 and prints the initial and optimal designs side by side, the active constraints
 and what each constraint costs (its multiplier in physical units). Exit codes:
@@ -19,7 +19,7 @@ from oilgap.model.errors import InputError, OilgapWarning, check_finite, check_p
 from oilgap.model.units import m2_s_to_cst
 
 if TYPE_CHECKING:
-    from oilgap.optim.design_nlp import DesignResult
+    from oilgap.optim.design import DesignResult
 
 
 def add_parser(sub: argparse._SubParsersAction) -> None:
@@ -132,7 +132,7 @@ def format_result(res: DesignResult, exact: tuple | None = None) -> str:
 
 def run(args: argparse.Namespace) -> int:
     from oilgap.model.case_io import write_case_toml
-    from oilgap.optim.design_nlp import DesignProblem
+    from oilgap.optim.design import DesignProblem
     from oilgap.studies.cli.evaluate import load_case
 
     args.temp_c = _number(args, "temp_c", "--temp-c")

@@ -1,0 +1,115 @@
+"""The lumped heat balance of the oil in a joint (or on a rig).
+
+One law, written once: the oil (with what it is in contact with) is one lumped
+heat capacity C_th [J/K] heated by the losses P [W] and cooled through one
+thermal resistance R_th [K/W] to its surroundings at T_amb::
+
+    C_th dT/dt = P(T, t) - (T - T_amb) / R_th              (transient)
+    T = T_amb + R_th P(T)                                  (steady state)
+
+The rig simulator integrates the transient form; the studies solve the steady
+form. Because the viscous loss falls as the oil warms (dP/dT < 0), the steady
+residual ``g(T) = T - T_amb - R_th P(T)`` rises strictly and has exactly one
+root between ``T_amb`` and ``T_amb + R_th P(T_amb)``.
+
+References
+----------
+.. [1] T. L. Bergman, A. S. Lavine, F. P. Incropera, D. P. DeWitt, *Fundamentals
+   of Heat and Mass Transfer*, 7th ed., Wiley 2011, sec. 5.2 (lumped capacitance)
+   and sec. 3.1 (thermal resistance).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from .errors import InputError, SolverError
+
+MAX_OIL_TEMP_C = 250.0
+"""Cap of the steady balance [degC]: a case whose balance has no root below it is held
+there (far beyond where mineral oil and the Walther line are meaningful)."""
+
+
+def lumped_temperature_rate(temp_C, heat_W, ambient_C, resistance_K_W, heat_capacity_J_K):
+    """dT/dt [K/s] of a lumped heat capacity: ``(P - (T - T_amb)/R_th) / C_th`` [1].
+
+    Parameters
+    ----------
+    temp_C : temperature of the lump [degC]
+    heat_W : heat released in it [W]
+    ambient_C : temperature of the surroundings [degC]
+    resistance_K_W : thermal resistance to the surroundings [K/W], > 0
+    heat_capacity_J_K : heat capacity of the lump [J/K], > 0
+
+    Returns
+    -------
+    float or array
+        Rate of change of the temperature [K/s].
+    """
+    return (heat_W - (temp_C - ambient_C) / resistance_K_W) / heat_capacity_J_K
+
+
+def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C,
+                       resistance_K_W: float, n: int, tol_K: float = 1e-9,
+                       max_iter: int = 60, max_temp_C: float = MAX_OIL_TEMP_C
+                       ) -> tuple[np.ndarray, np.ndarray]:
+    """Solve the steady balance ``T = T_base + R_th P(T)`` of ``n`` cases at once [1].
+
+    ``g(T) = T - T_base - R_th P(T)`` rises strictly (P falls as the oil warms),
+    with ``g(T_base) <= 0 <= g(T_base + R_th P(T_base))``: exactly one root in
+    that bracket. Vectorised safeguarded Newton (forward-difference slope; a step
+    that leaves the bracket is replaced by bisection). A case whose root lies
+    above ``max_temp_C`` is returned at that cap.
+
+    Parameters
+    ----------
+    power_at : callable
+        Loss of the cases [W] at temperatures [degC]: an array of length ``k n``
+        (k = 1 or 2) holds k temperatures of every case, case index fastest.
+    base_temp_C : float or array
+        ``T_base`` [degC], one for all cases or one per case.
+    resistance_K_W : float
+        ``R_th`` [K/W], >= 0 (0: the oil is at ``T_base``).
+    n : int
+        Number of cases.
+
+    Returns
+    -------
+    temps_C : ndarray
+        Steady temperature of each case [degC].
+    power_W : ndarray
+        Loss there [W].
+
+    Raises
+    ------
+    InputError
+        ``resistance_K_W`` < 0.
+    SolverError
+        No convergence to ``tol_K`` in ``max_iter`` iterations.
+    """
+    tb = np.broadcast_to(np.asarray(base_temp_C, dtype=float), (n,)).copy()
+    rth = float(resistance_K_W)
+    if not rth >= 0:
+        raise InputError("resistance_K_W", rth, "must be >= 0", "heat balance")
+    p_lo = power_at(tb)
+    if rth == 0.0:
+        return tb, p_lo
+    lo = tb.copy()
+    hi = np.minimum(tb + rth * p_lo, max_temp_C)
+    capped = (hi >= max_temp_C) & (max_temp_C - tb - rth * power_at(hi) <= 0)
+    t = np.where(capped, max_temp_C, 0.5 * (lo + hi))
+    h = 1e-4
+    for _ in range(max_iter):
+        p = power_at(np.concatenate([t, t + h]))
+        p0, p1 = p[:n], p[n:]
+        g = np.where(capped, 0.0, t - tb - rth * p0)
+        if np.all(np.abs(g) < tol_K):
+            return t, p0
+        lo = np.where(g < 0, t, lo)
+        hi = np.where(g > 0, t, hi)
+        t_new = t - g / (1.0 - rth * (p1 - p0) / h)
+        t = np.where(capped, t, np.where((t_new > lo) & (t_new < hi), t_new, 0.5 * (lo + hi)))
+    raise SolverError(f"steady oil temperature did not converge to {tol_K:g} K "
+                      f"in {max_iter} iterations", "max_iter")

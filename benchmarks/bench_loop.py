@@ -18,8 +18,8 @@ import time
 from pathlib import Path
 
 from oilgap.model.measured_data import load_measured
-from oilgap.optim.calibration.estimator import LoopEstimator
-from oilgap.studies.report_loop import write_report
+from oilgap.optim.calibration import LoopEstimator
+from oilgap.studies.loop_report import write_report
 from oilgap.studies.synth import SynthConfig, synthesize, write_synth_csv
 
 TARGET_S = 15.0

@@ -9,7 +9,7 @@ evaluates the numpy path of the same functions, vectorised over its population
 
 Front quality: hypervolume (HV) with the reference point (delta = 2 mm = the
 case's gap_max, P = the seed's mean power), computed by
-:func:`oilgap.studies.pareto.hypervolume_2d` and cross-checked with pymoo's HV.
+:func:`oilgap.optim.multiobjective.hypervolume_2d` and cross-checked with pymoo's HV.
 
 Comparison (time to target, at equal front size): for N = 50 and 100 points, the
 sweep's wall time ``t_eps`` (the first call in the process, including building the
@@ -30,14 +30,13 @@ import time
 
 import numpy as np
 
-import oilgap.studies.pareto as pareto
 from oilgap.model.case_io import seed_case
+from oilgap.optim.multiobjective import hypervolume_2d, nondominated
+from oilgap.studies.grid.optimize import clear_problems
 from oilgap.studies.pareto import (
     default_reference_point,
     gap_front,
     gap_problem_numpy,
-    hypervolume_2d,
-    nondominated,
     seed_points,
 )
 
@@ -66,7 +65,7 @@ def main() -> int:
     lo, hi, evaluate = gap_problem_numpy(case)
     sweeps = {}
     for n in SIZES:
-        pareto._PROBLEMS.clear()  # cold: the first call builds the NLP
+        clear_problems()  # cold: the first call builds the NLP
         t0 = time.perf_counter()
         front = gap_front(case, n)
         t_first = time.perf_counter() - t0

@@ -1,9 +1,9 @@
-"""Trade-study engine speed: a 10,000-point evaluation grid and a 50-point Pareto sweep.
+"""Grid engine speed: a 10,000-point evaluation grid and a 50-point Pareto sweep.
 
 Side by side in one run:
 
 * the 10,000-point evaluation grid (oil, oil temperature, depth, roughness T, gap)
-  through :func:`oilgap.studies.trade.run_grid` on 1 and on 2 worker processes,
+  through :func:`oilgap.studies.grid.runner.run_grid` on 1 and on 2 worker processes,
   against the plain loop over the same points (``apply_params`` then
   :func:`oilgap.model.evaluation.mean_viscous_power`, one case at a time), with
   the largest relative difference; then the rerun with the same output folder
@@ -26,11 +26,14 @@ import time
 import numpy as np
 import pandas as pd
 
-import oilgap.studies.pareto as pareto
 from oilgap.model.case_io import seed_case
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.units import MM_TO_M
-from oilgap.studies.trade import apply_params, run_grid
+from oilgap.optim.design import DesignProblem
+from oilgap.studies.grid.optimize import clear_problems
+from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.grid.schema import apply_params
+from oilgap.studies.pareto import gap_front
 
 N_GRID = 10_000
 N_FRONT = 50
@@ -78,18 +81,16 @@ def main() -> int:
     print(f"  target < 10 s on 2 cores: {'PASS' if t_two < 10.0 else 'FAIL'} ({t_two:.2f} s)")
 
     case = seed_case()
-    pareto._PROBLEMS.clear()
+    clear_problems()
     t0 = time.perf_counter()
-    front = pareto.gap_front(case, N_FRONT)
+    front = gap_front(case, N_FRONT)
     t_cold = time.perf_counter() - t0
     warm = []
     for _ in range(5):
         t0 = time.perf_counter()
-        pareto.gap_front(case, N_FRONT)
+        gap_front(case, N_FRONT)
         warm.append(time.perf_counter() - t0)
     ok = front[front["status"] == "ok"]
-    from oilgap.optim.design import DesignProblem
-
     prob = DesignProblem(case)
     t0 = time.perf_counter()
     cold = [prob.solve(gap_max_m=e * MM_TO_M).optimal.mean_power_W for e in front["epsilon"]]

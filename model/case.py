@@ -10,6 +10,11 @@ Radii of Fig. 5 of the seed paper (not defined in its text), as oilgap reads
 them: T1 rotor groove-bottom radius, T2 rotor outer radius, T3 stator bore
 radius, T4 stator groove-bottom radius; delta1 = T3 - T2 and
 T = (T4 - T1)/(T3 - T2) (Eq. 9); region 1's R is T2.
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for a
+   Deep-Sea Electric Manipulator*, Eqs. 1 and 9, Table 1, Figs. 4-5.
 """
 
 from __future__ import annotations
@@ -30,8 +35,25 @@ from .units import MM_TO_M
 class RotorStatorClearance:
     """Region 1: the rotor-stator clearance [m].
 
-    ``T1_unfilled``/``T4_unfilled`` are the groove bottoms before any epoxy
-    fill (default: T1, T4, i.e. unfilled).
+    Attributes
+    ----------
+    T1 : float
+        Rotor groove-bottom radius [m] (after any epoxy fill).
+    T2 : float
+        Rotor outer radius, the rotation radius R1 [m].
+    T3 : float
+        Stator bore radius [m]; the clearance is T3 - T2.
+    T4 : float
+        Stator groove-bottom radius [m] (after any epoxy fill).
+    length : float
+        Length L1 [m].
+    T1_unfilled, T4_unfilled : float, optional
+        Groove bottoms before any epoxy fill [m] (default: T1, T4, i.e. unfilled).
+
+    Raises
+    ------
+    InputError
+        Non-positive radii, T3 <= T2, T1 > T2, T4 < T3, a fill that deepens a groove.
     """
 
     T1: float
@@ -83,13 +105,23 @@ class RotorStatorClearance:
 
     @property
     def roughness(self) -> float:
-        """Clearance roughness T (Eq. 9) [-]."""
+        """Clearance roughness T = (T4 - T1)/(T3 - T2) (Eq. 9 of the seed paper [1]) [-]."""
         return float(groove_roughness(self.T1, self.T2, self.T3, self.T4))
 
 
 @dataclass(frozen=True)
 class BearingClearance:
-    """Region 2: the bearing annulus [m]."""
+    """Region 2: the bearing annulus [m].
+
+    Attributes
+    ----------
+    radius : float
+        Rotation radius R2 [m].
+    length : float
+        Length L2 [m].
+    gap : float
+        Radial clearance delta2 [m].
+    """
 
     radius: float
     length: float
@@ -102,7 +134,37 @@ class BearingClearance:
 
 @dataclass(frozen=True)
 class Motor:
-    """Surface-PM motor data the optimizer needs (SI). Seed defaults are stated in the README."""
+    """Surface-PM motor data the optimizer needs (SI); the defaults stand for the seed's motor.
+
+    Attributes
+    ----------
+    remanence_T : float
+        Magnet remanence B_r [T].
+    magnet_thickness : float
+        Radial magnet thickness h_M [m].
+    recoil_permeability : float
+        Relative recoil permeability mu_rec [-].
+    slot_count : int
+        Number of stator slots Q_s [-].
+    slot_opening : float
+        Slot opening b [m].
+    saturation_factor : float
+        Saturation factor k_sat [-].
+    electric_loading_A_m : float
+        Rms electric loading A [A/m].
+    winding_factor : float
+        Winding factor k_w [-].
+    shaft_bore_radius : float
+        Inner radius of the rotor [m].
+    rotor_density_kg_m3, epoxy_density_kg_m3 : float
+        Densities of the rotor iron and the epoxy fill [kg/m^3].
+    rotor_groove_solid_fraction : float
+        Share of the grooved layer that is iron [-], in [0, 1].
+    gear_ratio : float
+        Reduction ratio i of Eq. 1 [-].
+    gear_efficiency : float
+        Gear efficiency eta of Eq. 1 [-], in [0, 1].
+    """
 
     remanence_T: float = 1.2
     magnet_thickness: float = 2.5e-3
@@ -135,7 +197,15 @@ class Motor:
 
 @dataclass(frozen=True)
 class OperatingPoint:
-    """Steady operating condition: sea depth [m] and oil temperature [degC]."""
+    """Steady operating condition: sea depth [m] and oil temperature [degC].
+
+    Attributes
+    ----------
+    depth_m : float
+        Sea depth [m], in [0, 11000]; the oil carries the water column's pressure.
+    oil_temp_C : float
+        Oil temperature [degC], in [-60, 300].
+    """
 
     depth_m: float = 3000.0
     oil_temp_C: float = 2.0
@@ -149,8 +219,18 @@ class OperatingPoint:
 class DesignBounds:
     """Bounds of the design NLP [m]; ``torque_min_Nm``/``inertia_max_ratio`` of its constraints.
 
-    ``torque_min_Nm = None`` means "the torque capability of the case as given";
-    the inertia limit is ``inertia_max_ratio`` times the case's unfilled rotor.
+    Attributes
+    ----------
+    gap_min, gap_max : float
+        Bounds of the clearance delta1 [m].
+    radius_min, radius_max : float
+        Bounds of the rotor radius R1 [m].
+    length_min, length_max : float
+        Bounds of the length L1 [m].
+    inertia_max_ratio : float
+        Largest rotor inertia as a multiple of the case's unfilled rotor [-].
+    torque_min_Nm : float or None
+        Smallest torque capability [N m]; None: the capability of the case as given.
     """
 
     gap_min: float
@@ -177,14 +257,35 @@ class DesignBounds:
 
     @classmethod
     def around(cls, region1: RotorStatorClearance) -> DesignBounds:
-        """Default bounds: gap x[0.5, 2], radius x[0.9, 1.1], length x[0.8, 1.2] of the given."""
+        """Default bounds: gap x[0.5, 2], radius x[0.9, 1.1], length x[0.8, 1.2] of the given.
+
+        Parameters
+        ----------
+        region1 : RotorStatorClearance
+            The clearance as given (SI: [m]).
+
+        Returns
+        -------
+        DesignBounds
+            Bounds [m], inertia ratio 1.05 [-], no torque bound.
+        """
         return cls(0.5 * region1.gap, 2.0 * region1.gap, 0.9 * region1.radius,
                    1.1 * region1.radius, 0.8 * region1.length, 1.2 * region1.length)
 
 
 @dataclass(frozen=True)
 class MissionSegment:
-    """One row of a mission profile: a steady condition held for a fraction of the time."""
+    """One row of a mission profile: a steady condition held for a fraction of the time.
+
+    Attributes
+    ----------
+    depth_m : float
+        Sea depth [m].
+    oil_temp_C : float
+        Oil temperature [degC].
+    fraction : float
+        Share of the mission time [-]; the fractions of a mission sum to 1.
+    """
 
     depth_m: float
     oil_temp_C: float
@@ -198,7 +299,33 @@ class MissionSegment:
 
 @dataclass(frozen=True, eq=False)
 class DesignCase:
-    """A joint to evaluate or optimize (all SI inside)."""
+    """A joint to evaluate or optimize (all SI inside).
+
+    Attributes
+    ----------
+    name : str
+        Name in reports.
+    region1 : RotorStatorClearance
+        The rotor-stator clearance (radii and length [m]).
+    region2 : BearingClearance or None
+        The bearing annulus [m], if the joint has one.
+    oil : Oil
+        The compensating oil (nu [cSt] at 40 and 100 degC, density [kg/m^3]).
+    operating : OperatingPoint
+        Depth [m] and oil temperature [degC].
+    duty_cycle : DutyCycle
+        Speed [rad/s] against time [s] (default: the seed's sine).
+    friction : FrictionLaw
+        How C_m [-] is computed.
+    motor : Motor
+        Motor and gear data (SI).
+    bounds : DesignBounds
+        Bounds of the design NLP [m] (default: :meth:`DesignBounds.around`).
+    mission : tuple of MissionSegment
+        Mission profile (depth [m], temperature [degC], fraction [-]); may be empty.
+    oils_csv : str or None
+        Path of the oils table the oil came from, if any.
+    """
 
     name: str
     region1: RotorStatorClearance
@@ -221,11 +348,33 @@ class DesignCase:
                 raise InputError("mission fractions", round(total, 9), "must sum to 1", "mission")
 
     def with_changes(self, **changes: Any) -> DesignCase:
-        """A copy with fields replaced (dataclasses.replace)."""
+        """A copy with fields replaced (dataclasses.replace).
+
+        Parameters
+        ----------
+        **changes : Any
+            Field name -> new value [SI].
+
+        Returns
+        -------
+        DesignCase
+            The copy, validated again.
+        """
         return replace(self, **changes)
 
     def with_region1(self, **radii_m: float) -> DesignCase:
-        """A copy with region-1 radii/length replaced [m]."""
+        """A copy with region-1 radii/length replaced [m].
+
+        Parameters
+        ----------
+        **radii_m : float
+            ``T1``, ``T2``, ``T3``, ``T4``, ``length`` ... -> new value [m].
+
+        Returns
+        -------
+        DesignCase
+            The copy, validated again.
+        """
         return replace(self, region1=replace(self.region1, **radii_m))
 
 
@@ -243,7 +392,20 @@ MOTOR_FIELD_TO_KEY = {v[0]: k for k, v in MOTOR_TOML_KEYS.items()}
 
 
 def motor_value_in_toml_units(name: str, value: float) -> float:
-    """The value of Motor field ``name`` [SI] in the unit of its TOML key."""
+    """The value of Motor field ``name`` [SI] in the unit of its TOML key.
+
+    Parameters
+    ----------
+    name : str
+        Field of :class:`Motor` (``"magnet_thickness"``, ``"gear_ratio"``).
+    value : float
+        Its value [SI].
+
+    Returns
+    -------
+    float
+        The value in the unit of the TOML key (``magnet_thickness_mm``: [mm]).
+    """
     key = MOTOR_FIELD_TO_KEY.get(name)
     return value / MOTOR_TOML_KEYS[key][1] if key else value
 

@@ -4,6 +4,11 @@ The TOML file carries units in its key names (``T1_mm``, ``depth_m``,
 ``peak_speed_rpm``); :func:`case_from_dict` converts them to the SI dataclasses
 of :mod:`oilgap.model.case` and :func:`case_to_dict` back. Every key is listed
 with its unit and default in ``docs/case-file.md``.
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for a
+   Deep-Sea Electric Manipulator*, Table 1 (the joint's geometry) and Eq. 9.
 """
 
 from __future__ import annotations
@@ -81,8 +86,25 @@ def _require(table: dict, key: str, where: str) -> Any:
 def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     """Build and validate a DesignCase from a parsed TOML document.
 
-    Unknown tables or keys, missing required keys and non-finite numbers raise
-    InputError naming the key.
+    Parameters
+    ----------
+    doc : dict
+        The parsed TOML, units in the key names (``T1_mm`` [mm], ``depth_m`` [m],
+        ``oil_temp_C`` [degC], ``peak_speed_rpm`` [rpm]).
+    base_dir : Path, optional
+        Directory that relative paths (``oils_csv``, ``duty_cycle.csv``) are read
+        from (default: the working directory).
+
+    Returns
+    -------
+    DesignCase
+        The case, SI inside.
+
+    Raises
+    ------
+    InputError
+        Unknown tables or keys, missing required keys, non-finite numbers or values
+        a dataclass refuses; the message names the key.
     """
     base_dir = base_dir or Path.cwd()
     if not isinstance(doc, dict):
@@ -94,6 +116,27 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
             raise InputError(t, doc[t], "must be a table [" + t + "]", "case TOML")
         _check_keys(doc.get(t, {}), _TABLES[t], t)
 
+    region1 = _region1_from(doc)
+    region2 = _region2_from(doc)
+    oil, oils_csv = _oil_from(doc.get("oil", {}), base_dir)
+
+    opd = doc.get("operating", {})
+    operating = OperatingPoint(**{k: check_finite(k, v, "operating") for k, v in opd.items()})
+    duty = _duty_cycle_from(dict(doc.get("duty_cycle", {})), base_dir)
+
+    fd = doc.get("friction", {})
+    friction = FrictionLaw(**{k: (str(v) if k in ("form", "laminar_law")
+                                  else check_finite(k, v, "friction")) for k, v in fd.items()})
+    motor = _motor_from(doc.get("motor", {}))
+    bounds = _bounds_from(doc, region1)
+    mission = _mission_from(doc.get("mission", []))
+
+    name = str(doc.get("name", "unnamed case"))
+    return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
+                      tuple(mission), oils_csv)
+
+
+def _region1_from(doc: dict) -> RotorStatorClearance:
     r1d = doc.get("region1")
     if r1d is None:
         raise InputError("region1", None, "a [region1] table with T1_mm..T4_mm and length_mm "
@@ -104,7 +147,10 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         *(_mm(r1d, k, "region1") for k in ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm")),
         T1_unfilled=_mm(r1d, "T1_unfilled_mm", "region1"),
         T4_unfilled=_mm(r1d, "T4_unfilled_mm", "region1"))
+    return region1
 
+
+def _region2_from(doc: dict) -> BearingClearance | None:
     region2 = None
     if "region2" in doc:
         r2d = doc["region2"]
@@ -112,8 +158,10 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
             _require(r2d, k, "region2")
         region2 = BearingClearance(*(_mm(r2d, k, "region2")
                                      for k in ("radius_mm", "length_mm", "gap_mm")))
+    return region2
 
-    od = doc.get("oil", {})
+
+def _oil_from(od: dict, base_dir: Path) -> tuple[Oil, str | None]:
     oils_csv = None
     catalogue = None
     if "oils_csv" in od:
@@ -140,11 +188,10 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
             raise InputError("oil.barus_1_GPa", od["barus_1_GPa"], "only with a custom oil "
                              "(nu40_cSt, nu100_cSt, density_kg_m3)", "case TOML")
         oil = get_oil(oil_name, catalogue)
+    return oil, oils_csv
 
-    opd = doc.get("operating", {})
-    operating = OperatingPoint(**{k: check_finite(k, v, "operating") for k, v in opd.items()})
 
-    dcd = dict(doc.get("duty_cycle", {}))
+def _duty_cycle_from(dcd: dict, base_dir: Path) -> DutyCycle:
     kind = dcd.pop("kind", "csv" if "csv" in dcd else "sine")
     if kind == "sine":
         if "csv" in dcd:
@@ -160,12 +207,10 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         duty = DutyCycle.from_csv(p if p.is_absolute() else base_dir / p)
     else:
         raise InputError("duty_cycle.kind", kind, "allowed: sine, csv", "case TOML")
+    return duty
 
-    fd = doc.get("friction", {})
-    friction = FrictionLaw(**{k: (str(v) if k in ("form", "laminar_law")
-                                  else check_finite(k, v, "friction")) for k, v in fd.items()})
 
-    md = doc.get("motor", {})
+def _motor_from(md: dict) -> Motor:
     mkw = {}
     for k, v in md.items():
         if k == "slot_count":
@@ -175,8 +220,10 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
             mkw[attr] = check_finite(k, v, "motor") * factor
         else:
             mkw[k] = check_finite(k, v, "motor")
-    motor = Motor(**mkw)
+    return Motor(**mkw)
 
+
+def _bounds_from(doc: dict, region1: RotorStatorClearance) -> DesignBounds | None:
     bounds = None
     if "bounds" in doc:
         bd = doc["bounds"]
@@ -190,9 +237,11 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         if "torque_min_Nm" in bd:
             bkw["torque_min_Nm"] = check_finite("torque_min_Nm", bd["torque_min_Nm"], "bounds")
         bounds = DesignBounds(**bkw)
+    return bounds
 
+
+def _mission_from(ms: Any) -> list[MissionSegment]:
     mission = []
-    ms = doc.get("mission", [])
     if not isinstance(ms, list):
         raise InputError("mission", ms, "must be an array of tables [[mission]]", "case TOML")
     for i, seg in enumerate(ms):
@@ -203,14 +252,21 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
             _require(seg, k, f"mission[{i}]")
         mission.append(MissionSegment(**{k: check_finite(k, v, f"mission[{i}]")
                                          for k, v in seg.items()}))
-
-    name = str(doc.get("name", "unnamed case"))
-    return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
-                      tuple(mission), oils_csv)
+    return mission
 
 
 def read_case_toml(path: str | Path) -> DesignCase:
     """Read and validate a case TOML file.
+
+    Parameters
+    ----------
+    path : str or Path
+        UTF-8 TOML file; units in the key names (``T1_mm`` [mm], ``depth_m`` [m]).
+
+    Returns
+    -------
+    DesignCase
+        The case, SI inside (:func:`case_from_dict`).
 
     Raises
     ------
@@ -233,7 +289,19 @@ def read_case_toml(path: str | Path) -> DesignCase:
 
 
 def case_to_dict(case: DesignCase) -> dict:
-    """The TOML document (units in key names) of a case; inverse of :func:`case_from_dict`."""
+    """The TOML document (units in key names) of a case; inverse of :func:`case_from_dict`.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (SI inside).
+
+    Returns
+    -------
+    dict
+        Tables and keys of the case file, values in the unit of each key (``T1_mm``
+        [mm], ``depth_m`` [m]); a custom oil is written out in full.
+    """
     mm = 1.0 / MM_TO_M
     r1 = case.region1
     doc: dict[str, Any] = {"name": case.name}
@@ -290,7 +358,19 @@ def _toml_value(v: Any) -> str:
 
 
 def dumps_toml(doc: dict) -> str:
-    """Serialise a two-level document (scalars, tables, arrays of tables) as TOML."""
+    """Serialise a two-level document (scalars, tables, arrays of tables) as TOML.
+
+    Parameters
+    ----------
+    doc : dict
+        Scalars, tables (dicts) and arrays of tables (lists of dicts), values in
+        the units of their keys (``T1_mm`` [mm]).
+
+    Returns
+    -------
+    str
+        TOML text; floats written with ``repr`` so they read back exactly.
+    """
     lines = []
     for k, v in doc.items():
         if not isinstance(v, (dict, list)):
@@ -307,7 +387,20 @@ def dumps_toml(doc: dict) -> str:
 
 
 def write_case_toml(case: DesignCase, path: str | Path) -> Path:
-    """Write a case as TOML that :func:`read_case_toml` reads back to the same case."""
+    """Write a case as TOML that :func:`read_case_toml` reads back to the same case.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (SI inside; written with units in the key names, e.g. [mm]).
+    path : str or Path
+        Output file; parent directories are created.
+
+    Returns
+    -------
+    Path
+        The file written.
+    """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(dumps_toml(case_to_dict(case)), encoding="utf-8")
@@ -324,6 +417,21 @@ def seed_case(smoothed: bool = False) -> DesignCase:
     L2 = 14.24 mm, delta2 = 5 mm. The seed gives only T; oilgap assumes the
     groove depth is split evenly between rotor and stator (1.5 mm each when
     grooved, T = 4; the epoxy fill takes 1 mm off each, leaving 0.5 mm, T = 2).
+
+    Parameters
+    ----------
+    smoothed : bool
+        False: grooved (T = 4 [-]); True: smoothed with epoxy (T = 2 [-]).
+
+    Returns
+    -------
+    DesignCase
+        The seed joint (``model/data/seed_joint.toml``), SI inside.
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Table 1 and Eq. 9) [1].
     """
     name = "seed_joint.toml"
     with resources.as_file(resources.files(__package__) / "data" / name) as p:

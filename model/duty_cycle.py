@@ -8,6 +8,12 @@ cycle, the viscous power depends only on |omega|, so the sample mean of any
 loss equals a weighted sum over the distinct |omega| values: for the seed's
 cycle 1500 samples reduce to 26 nodes (periodicity, sign symmetry and the
 mirror symmetry of the sine), with the same mean to rounding error.
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for a
+   Deep-Sea Electric Manipulator*, Sec. IV.B (the cycle ``3000 sin(0.1 pi t)`` rpm,
+   5 min sampled every 200 ms, 1500 samples).
 """
 
 from __future__ import annotations
@@ -36,6 +42,11 @@ class DutyCycle:
     omega_rad_s : ndarray
         Signed rotor speed at each sample [rad/s].
     description : str
+        One line for reports ("3000 rpm * sin(...), 1500 samples every 0.2 s").
+    spec : dict
+        How the cycle was made, in the units of the case file (``kind``,
+        ``peak_speed_rpm`` [rpm], ``frequency_hz`` [Hz], ``duration_s`` [s],
+        ``sample_interval_s`` [s], or ``csv``); written back by the TOML writer.
     """
 
     time_s: np.ndarray
@@ -46,7 +57,31 @@ class DutyCycle:
     @classmethod
     def sine(cls, peak_speed_rpm: float = 3000.0, frequency_hz: float = 0.05,
              duration_s: float = 300.0, sample_interval_s: float = 0.2) -> DutyCycle:
-        """``peak * sin(2 pi f t)`` sampled at ``t = k dt``, ``k = 0 .. duration/dt - 1``."""
+        """``peak * sin(2 pi f t)`` sampled at ``t = k dt``, ``k = 0 .. duration/dt - 1``.
+
+        The defaults are the seed's cycle [1].
+
+        Parameters
+        ----------
+        peak_speed_rpm : float
+            Peak speed [rpm], > 0.
+        frequency_hz : float
+            Frequency of the sine [Hz], > 0.
+        duration_s : float
+            Duration [s], > 0.
+        sample_interval_s : float
+            Sample interval dt [s], > 0; at least two samples.
+
+        Returns
+        -------
+        DutyCycle
+            Times [s] and speeds [rad/s].
+
+        Raises
+        ------
+        InputError
+            A non-positive value or fewer than two samples.
+        """
         where = "duty_cycle"
         peak = check_positive("peak_speed_rpm", peak_speed_rpm, where)
         f = check_positive("frequency_hz", frequency_hz, where)
@@ -64,7 +99,24 @@ class DutyCycle:
 
     @classmethod
     def from_csv(cls, path: str | Path) -> DutyCycle:
-        """Read a ``time_s,speed_rpm`` CSV (time strictly increasing, all values finite)."""
+        """Read a ``time_s,speed_rpm`` CSV (time strictly increasing, all values finite).
+
+        Parameters
+        ----------
+        path : str or Path
+            CSV with columns ``time_s`` [s] and ``speed_rpm`` [rpm] (signed).
+
+        Returns
+        -------
+        DutyCycle
+            Times [s] and speeds [rad/s].
+
+        Raises
+        ------
+        InputError
+            Missing file or column, non-finite values, time not strictly increasing,
+            fewer than two rows.
+        """
         path = Path(path)
         where = str(path)
         if not path.is_file():
@@ -104,7 +156,13 @@ class DutyCycle:
 
     def sample_weights(self) -> np.ndarray:
         """Time weight of each sample (sum 1): its interval to the next sample, the last
-        sample taking the one before it. Uniform sampling gives equal weights."""
+        sample taking the one before it. Uniform sampling gives equal weights.
+
+        Returns
+        -------
+        ndarray
+            Weights [-], one per sample.
+        """
         dt = np.diff(self.time_s)
         w = np.append(dt, dt[-1])
         return w / w.sum()
@@ -116,6 +174,13 @@ class DutyCycle:
         ``f(|omega|)`` over the samples up to rounding (samples closer than
         :data:`NODE_MERGE_RTOL` of the peak share a node). Computed once per
         cycle and cached (the cycle is immutable); the arrays must not be modified.
+
+        Returns
+        -------
+        nodes_rad_s : ndarray
+            Distinct |omega| [rad/s].
+        weights : ndarray
+            Time fraction of each node [-] (sum 1).
         """
         cached = self.__dict__.get("_speed_distribution")
         if cached is not None:

@@ -1,33 +1,14 @@
-"""Candidate effects the seed's viscous-loss model leaves out.
+"""Candidate effects the seed's viscous-loss model leaves out: the library.
 
 Each effect is a physically named term with a formula, a reference, a stable
 name and the sign its coefficient must have. The measured-data loop
-(:mod:`oilgap.studies.calibration`) uses them as regression features: the
+(:mod:`oilgap.optim.calibration`) uses them as regression features: the
 effect's power is ``coefficient * feature`` per sample; the synthetic rig
 (:mod:`oilgap.studies.synth`) injects them into simulated data.
 
-Physics functions (pure; floats, numpy arrays and, where they are closed-form,
-CasADi symbols):
-
-* :func:`disc_reynolds`, :func:`free_disc_moment_coefficient`,
-  :func:`end_face_disc_power`: rotor end faces as free discs (laminar boundary
-  layer ``C_m = 3.87 Re_r^-0.5``, turbulent ``0.146 Re_r^-0.2`` above 3e5) [1], [2].
-* :func:`enclosed_disc_couette_power`: end faces in a narrow axial clearance s
-  (laminar Couette disc, torque ``pi mu omega (r_o^4 - r_i^4) / (2 s)`` per face) [1], [3].
-  Not a candidate of the loop: it scales as ``mu omega^2`` and does not depend
-  on T, exactly like the bearing region's laminar loss, so on any data it is
-  absorbed into the fitted C (see :data:`CONFOUNDED_FORMS`).
-* :func:`palmgren_viscous_moment`, :func:`ball_churning_power`: load-independent
-  (viscous) friction moment of a rolling bearing in oil [4], [5].
-* :func:`coulomb_friction_power`: seal (lip or face) Coulomb friction [6].
-* :func:`oil_inertia_power`: kinetic-energy rate of entrained oil.
-* :func:`first_order_lag`, :func:`thermal_lag_power`: gap oil temperature as a
-  first-order lag of the measured temperature [7].
-* :func:`taylor_excess_factor`, :func:`taylor_vortex_power`: torque excess above
-  the critical Taylor number [8], [9], [10].
-* :func:`couette_shear_rate`, :func:`cross_viscosity_ratio`,
-  :func:`shear_thinning_power`: Cross/Carreau shear thinning [11], [12].
-* :func:`sensor_delay_power`: a power reading that lags the speed reading.
+The physical laws live in :mod:`oilgap.model.effect_laws` (end-face discs,
+bearing churning, seal friction, oil inertia, first-order lags, Taylor
+vortices, shear thinning, sensor delay) and are re-exported here.
 
 The library (:data:`EFFECTS`) maps each stable name to an :class:`Effect`
 carrying its formula, reference, coefficient unit, sign constraint and the
@@ -36,31 +17,11 @@ into the regression feature.
 
 References
 ----------
-.. [1] J. Pyrhönen, T. Jokinen, V. Hrabovcová, *Design of Rotating Electrical
-   Machines*, 2nd ed., Wiley 2014, sec. 9.5 (rotor end-face friction loss,
-   ``P = C_M rho Omega^3 (D^5 - D_i^5) / 64``).
-.. [2] H. Schlichting, K. Gersten, *Boundary-Layer Theory*, 9th ed., Springer
-   2017, sec. 5.3.3 (rotating disc, ``C_M = 3.87 / Re^0.5`` both sides).
-.. [3] J. W. Daily, R. E. Nece, "Chamber dimension effects on induced flow and
-   frictional resistance of enclosed rotating disks", ASME J. Basic Eng. 82:217,
-   1960 (regime I, merged boundary layers: Couette disc).
-.. [4] A. Palmgren, *Ball and Roller Bearing Engineering*, 3rd ed., Burbank 1959.
-.. [5] T. A. Harris, M. N. Kotzalas, *Essential Concepts of Bearing Technology*,
-   5th ed., CRC 2006, ch. 9 (``M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3`` [N mm]).
-.. [6] H. K. Müller, B. S. Nau, *Fluid Sealing Technology*, Marcel Dekker 1998,
-   ch. 5 (lip-seal friction torque, nearly speed-independent).
-.. [7] T. L. Bergman, A. S. Lavine, F. P. Incropera, D. P. DeWitt, *Fundamentals
-   of Heat and Mass Transfer*, 7th ed., Wiley 2011, sec. 5.2 (lumped capacitance).
-.. [8] G. I. Taylor, Phil. Trans. R. Soc. A 223:289-343, 1923.
-.. [9] J. T. Stuart, "On the non-linear mechanics of hydrodynamic stability",
-   J. Fluid Mech. 4:1-21, 1958 (torque excess proportional to Ta^2 - Ta_c^2
-   near onset, Ta^2 being the classical Taylor number).
-.. [10] R. J. Donnelly, "Experiments on the stability of viscous flow between
-   rotating cylinders I. Torque measurements", Proc. R. Soc. A 246:312, 1958.
-.. [11] M. M. Cross, "Rheology of non-Newtonian fluids: a new flow equation for
+.. [1] M. M. Cross, "Rheology of non-Newtonian fluids: a new flow equation for
    pseudoplastic systems", J. Colloid Sci. 20:417-437, 1965.
-.. [12] R. B. Bird, R. C. Armstrong, O. Hassager, *Dynamics of Polymeric
-   Liquids*, vol. 1, 2nd ed., Wiley 1987, sec. 4.4 (Carreau model).
+.. [2] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for
+   a Deep-Sea Electric Manipulator*, Eqs. 3 and 4.
+.. [3] The laws' own references: :mod:`oilgap.model.effect_laws`.
 """
 
 from __future__ import annotations
@@ -70,204 +31,66 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _math as m
+from .effect_laws import (
+    CRITICAL_TAYLOR_NUMBER,
+    FREE_DISC_TRANSITION_RE,
+    PALMGREN_MIN_NU_N,
+    ball_churning_power,
+    carreau_viscosity_ratio,
+    couette_shear_rate,
+    coulomb_friction_power,
+    cross_viscosity_ratio,
+    disc_reynolds,
+    enclosed_disc_couette_power,
+    end_face_disc_power,
+    first_order_lag,
+    free_disc_moment_coefficient,
+    oil_inertia_power,
+    palmgren_viscous_moment,
+    sensor_delay_power,
+    shear_thinning_power,
+    taylor_excess_factor,
+    taylor_vortex_power,
+    thermal_lag_power,
+)
 from .errors import InputError
 from .regions import JointGeometry, region_power
 from .skin_friction import FrictionLaw
-from .taylor_couette import CRITICAL_TAYLOR_NUMBER, couette_reynolds, taylor_number
-from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
+from .taylor_couette import couette_reynolds, taylor_number
 
-FREE_DISC_TRANSITION_RE = 3.0e5
-"""Disc Reynolds number of the laminar-turbulent change of the free-disc law [1]."""
-
-PALMGREN_MIN_NU_N = 2000.0
-"""Below ``nu n = 2000`` [cSt rpm] Palmgren's viscous moment is constant [5]."""
-
-
-# --------------------------------------------------------------------------- physics
-
-
-def disc_reynolds(omega_rad_s, radius_m, nu_m2_s):
-    """Disc Reynolds number ``Re_r = |omega| r^2 / nu`` [-] [1]."""
-    return m.fabs(omega_rad_s) * radius_m * radius_m / nu_m2_s
-
-
-def free_disc_moment_coefficient(disc_re):
-    """Moment coefficient of a free disc, both faces [-] [1], [2].
-
-    ``C_M = 3.87 Re_r^-0.5`` (laminar boundary layer, Re_r < 3e5),
-    ``0.146 Re_r^-0.2`` above. Re_r is floored at 1e-12.
-    """
-    re = m.fmax(disc_re, 1.0e-12)
-    return m.where(re < FREE_DISC_TRANSITION_RE, 3.87 * re**-0.5, 0.146 * re**-0.2)
-
-
-def end_face_disc_power(omega_rad_s, nu_m2_s, density_kg_m3, r_outer_m, r_inner_m):
-    """Friction power [W] of both rotor end faces turning as free discs in oil.
-
-    ``P = C_M rho |omega|^3 (D^5 - D_i^5) / 64`` with ``C_M`` from
-    :func:`free_disc_moment_coefficient` at ``Re_r = |omega| r_o^2 / nu`` [1], [2].
-    In the laminar range ``P ∝ rho nu^0.5 |omega|^2.5``.
-    """
-    cm = free_disc_moment_coefficient(disc_reynolds(omega_rad_s, r_outer_m, nu_m2_s))
-    w = m.fabs(omega_rad_s)
-    d5 = (2.0 * r_outer_m) ** 5 - (2.0 * r_inner_m) ** 5
-    return cm * density_kg_m3 * w * w * w * d5 / 64.0
-
-
-def enclosed_disc_couette_power(omega_rad_s, mu_Pa_s, r_outer_m, r_inner_m, axial_gap_m,
-                                faces=2):
-    """Friction power [W] of end faces in a narrow axial clearance (laminar Couette disc).
-
-    Torque per face ``pi mu omega (r_o^4 - r_i^4) / (2 s)`` [3]; power = torque x omega
-    x faces, i.e. ``∝ mu omega^2``. Confounded with the laminar clearance law
-    (see the module docstring), so not a candidate effect.
-    """
-    w = m.fabs(omega_rad_s)
-    return faces * np.pi * mu_Pa_s * w * w * (r_outer_m**4 - r_inner_m**4) / (2.0 * axial_gap_m)
-
-
-def palmgren_viscous_moment(nu_cSt, speed_rpm, pitch_diameter_mm, f0=1.0):
-    """Palmgren's load-independent bearing friction moment [N mm] [4], [5].
-
-    ``M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3`` for ``nu n >= 2000``; below, the value at
-    ``nu n = 2000`` (Palmgren writes 160e-7 f_0 d_m^3; 2000^(2/3) = 158.7 keeps it
-    continuous). nu [cSt], n [rpm], d_m [mm]; f_0 the bearing-type and
-    lubrication factor (deep-groove ball bearing in an oil bath: about 2).
-    """
-    nn = m.fmax(nu_cSt * m.fabs(speed_rpm), PALMGREN_MIN_NU_N)
-    return 1.0e-7 * f0 * nn ** (2.0 / 3.0) * pitch_diameter_mm**3
-
-
-def ball_churning_power(omega_rad_s, nu_m2_s, pitch_diameter_m, f0=1.0):
-    """Viscous (churning) loss [W] of a rolling bearing in oil: ``M_0 |omega|`` [4], [5].
-
-    :func:`palmgren_viscous_moment` converted to SI; ``∝ nu^(2/3) |omega|^(5/3)``.
-    """
-    w = m.fabs(omega_rad_s)
-    moment_Nmm = palmgren_viscous_moment(m2_s_to_cst(nu_m2_s), rad_s_to_rpm(w),
-                                         m_to_mm(pitch_diameter_m), f0)
-    return mm_to_m(moment_Nmm) * w
-
-
-def coulomb_friction_power(omega_rad_s, torque_Nm):
-    """Coulomb (seal) friction loss [W]: ``tau_c |omega|`` [6]."""
-    return torque_Nm * m.fabs(omega_rad_s)
-
-
-def oil_inertia_power(omega_rad_s, domega_dt_rad_s2, density_kg_m3, volume_inertia_m5):
-    """Power [W] to accelerate entrained oil: ``rho I_V omega domega/dt``.
-
-    ``I_V = ∫ r^2 dV`` [m^5] of the oil that turns with the rotor, so the
-    entrained inertia is ``J = rho I_V`` [kg m^2]; the power is the rate of
-    change of its kinetic energy ``J omega^2 / 2`` (zero mean over a cycle).
-    """
-    return density_kg_m3 * volume_inertia_m5 * omega_rad_s * domega_dt_rad_s2
-
-
-def first_order_lag(time_s, signal, tau_s, initial=None):
-    """Exact response [same unit as signal] of a first-order lag ``tau dy/dt = x - y``.
-
-    The input is taken as piecewise linear between samples, for which the
-    discrete update is exact [7]:
-    ``y_k+1 = x_k+1 + (y_k - x_k) e^(-h/tau) - s tau (1 - e^(-h/tau))`` with
-    ``s = (x_k+1 - x_k)/h``; on a uniform record this is an IIR filter
-    (``scipy.signal.lfilter``). Starts from ``initial`` (default: the first
-    input, i.e. in equilibrium). numpy only; ``tau_s = 0`` returns the input.
-    """
-    from scipy.signal import lfilter
-
-    t = np.asarray(time_s, dtype=float)
-    x = np.asarray(signal, dtype=float)
-    if tau_s == 0.0 or len(x) < 2:
-        return x.copy()
-    y0 = x[0] if initial is None else float(initial)
-    dt = np.diff(t)
-    h = float(np.median(dt))
-    if np.all(np.abs(dt - h) <= 1e-9 * max(1.0, h)):
-        e = np.exp(-h / tau_s)
-        g = tau_s / h * (1.0 - e)
-        b = np.array([1.0 - g, g - e])
-        a = np.array([1.0, -e])
-        # state so that y_0 = y0 given x_0: y_1 = e y_0 + b0 x_1 + b1 x_0
-        y = np.empty_like(x)
-        y[0] = y0
-        y[1:], _ = lfilter(b, a, x[1:], zi=np.array([e * y0 + b[1] * x[0]]))
-        return y
-    y = np.empty_like(x)
-    y[0] = y0
-    for k in range(len(x) - 1):
-        e = np.exp(-dt[k] / tau_s)
-        s = (x[k + 1] - x[k]) / dt[k]
-        y[k + 1] = x[k + 1] + (y[k] - x[k]) * e - s * tau_s * (1.0 - e)
-    return y
-
-
-def thermal_lag_power(dpower_dtemp_W_K, dtemp_dt_K_s, tau_s):
-    """Power change [W] when the gap oil lags the measured temperature by ``tau`` [s].
-
-    ``T_oil ≈ T_meas - tau dT_meas/dt`` (first term of the first-order lag [7]), so
-    ``dP ≈ -tau (dP/dT) dT/dt``. tau < 0: the measured temperature lags the oil.
-    """
-    return -tau_s * dpower_dtemp_W_K * dtemp_dt_K_s
-
-
-def taylor_excess_factor(taylor, critical=CRITICAL_TAYLOR_NUMBER):
-    """Supercriticality ``max(0, (Ta/Ta_c)^2 - 1)`` [-] of Taylor-vortex flow [8], [9].
-
-    Ta is the seed's Eq. 3 (``∝ omega``); its square is the classical Taylor
-    number, in which the torque excess grows linearly near onset [9], [10].
-    """
-    r = taylor / critical
-    return m.fmax(r * r - 1.0, 0.0)
-
-
-def taylor_vortex_power(power_laminar_W, taylor, k, critical=CRITICAL_TAYLOR_NUMBER):
-    """Extra loss [W] of Taylor vortices: ``k P_lam max(0, (Ta/Ta_c)^2 - 1)`` [8]-[10].
-
-    k [-] is the torque excess per unit supercriticality.
-    """
-    return k * power_laminar_W * taylor_excess_factor(taylor, critical)
-
-
-def couette_shear_rate(omega_rad_s, radius_m, gap_m):
-    """Nominal shear rate ``|omega| R / delta`` [1/s] of a narrow clearance [12]."""
-    return m.fabs(omega_rad_s) * radius_m / gap_m
-
-
-def cross_viscosity_ratio(shear_rate_1_s, lam_s, exponent=2.0):
-    """Cross model ``mu/mu_0 = 1 / (1 + (lambda gamma_dot)^m)`` [-] (mu_inf = 0) [11]."""
-    return 1.0 / (1.0 + (lam_s * shear_rate_1_s) ** exponent)
-
-
-def carreau_viscosity_ratio(shear_rate_1_s, lam_s, n):
-    """Carreau model ``mu/mu_0 = (1 + (lambda gamma_dot)^2)^((n-1)/2)`` [-] [12]."""
-    return (1.0 + (lam_s * shear_rate_1_s) ** 2) ** ((n - 1.0) / 2.0)
-
-
-def shear_thinning_power(power_laminar_W, shear_rate_1_s, lam2_s2):
-    """Power change [W] of a shear-thinning oil at low Weissenberg number [11], [12].
-
-    ``dP ≈ -lambda^2 gamma_dot^2 P_lam``: the first term of the Cross model with
-    m = 2 (Carreau: lambda^2 stands for (1-n) lambda^2 / 2). ``lam2_s2`` [s^2] >= 0.
-    """
-    return -lam2_s2 * shear_rate_1_s * shear_rate_1_s * power_laminar_W
-
-
-def sensor_delay_power(dpower_dt_W_s, delay_s):
-    """Power change [W] when the power reading lags the speed reading by ``d`` [s].
-
-    ``P(t - d) ≈ P(t) - d dP/dt`` (first-order Taylor expansion of the time shift).
-    """
-    return -delay_s * dpower_dt_W_s
-
-
-# --------------------------------------------------------------------------- library
+__all__ = [
+    "RegionState", "EffectContext", "region_states", "effect_context", "cross_region_ratios",
+    "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect", "FREE_DISC_TRANSITION_RE",
+    "PALMGREN_MIN_NU_N", "CRITICAL_TAYLOR_NUMBER", "disc_reynolds",
+    "free_disc_moment_coefficient", "end_face_disc_power", "enclosed_disc_couette_power",
+    "palmgren_viscous_moment", "ball_churning_power", "coulomb_friction_power",
+    "oil_inertia_power", "first_order_lag", "thermal_lag_power", "taylor_excess_factor",
+    "taylor_vortex_power", "couette_shear_rate", "cross_viscosity_ratio",
+    "carreau_viscosity_ratio", "shear_thinning_power", "sensor_delay_power",
+]
 
 
 @dataclass(frozen=True)
 class RegionState:
-    """One clearance region over the samples (arrays of length n, or floats) [SI]."""
+    """One clearance region over the samples (arrays of length n, or floats).
+
+    Attributes
+    ----------
+    name : str
+        ``"rotor-stator"`` or ``"bearing"``.
+    radius_m : float
+        Rotation radius R [m].
+    gap_m : ndarray
+        Radial clearance per sample [m].
+    length_m : float
+        Length L [m].
+    power_W : ndarray
+        Viscous power of the region per sample [W].
+    reynolds : ndarray
+        Couette Reynolds number per sample [-] (seed Eq. 4).
+    taylor : ndarray
+        Taylor number per sample [-] (seed Eq. 3).
+    """
 
     name: str
     radius_m: float
@@ -282,12 +105,32 @@ class RegionState:
 class EffectContext:
     """Per-sample quantities the effect features need (SI arrays of length n).
 
-    ``power_W`` is the clearance model's viscous power (sum of ``regions``);
-    ``dpower_dt_W_s`` its time derivative along the record and
-    ``dpower_dtemp_W_K`` its derivative with respect to the oil temperature
-    (NaN where the viscosity does not follow a temperature law).
-    ``disc_radii_m`` are the rotor end-face outer and inner radii;
-    ``bearing_pitch_diameter_m`` is None for a rig without a bearing region.
+    Build it with :func:`effect_context`. ``power_W`` is the clearance model's
+    viscous power (the sum over ``regions``).
+
+    Attributes
+    ----------
+    omega_rad_s : ndarray
+        Rotor speed [rad/s].
+    domega_dt_rad_s2 : ndarray
+        Angular acceleration [rad/s^2].
+    nu_m2_s : ndarray
+        Kinematic viscosity [m^2/s].
+    density_kg_m3 : ndarray
+        Oil density [kg/m^3].
+    dtemp_dt_K_s : ndarray
+        Rate of change of the oil temperature [K/s].
+    dpower_dt_W_s : ndarray
+        Time derivative of the viscous power along the record [W/s].
+    dpower_dtemp_W_K : ndarray
+        Derivative of the viscous power with respect to the oil temperature [W/K]
+        (NaN where the viscosity does not follow a temperature law).
+    regions : tuple of RegionState
+        The clearance regions over the samples.
+    disc_radii_m : (float, float)
+        Rotor end-face outer and inner radius [m].
+    bearing_pitch_diameter_m : float or None
+        Pitch diameter of the bearing [m]; None for a rig without a bearing region.
     """
 
     omega_rad_s: np.ndarray
@@ -303,7 +146,7 @@ class EffectContext:
 
     @property
     def power_W(self) -> np.ndarray:
-        """Viscous power of all regions [W]."""
+        """Viscous power of all regions [W] (sum over ``regions``)."""
         return sum(r.power_W for r in self.regions)
 
 
@@ -315,14 +158,22 @@ def region_states(geometry: JointGeometry, omega_rad_s, nu_m2_s, powers_W
     ----------
     geometry : JointGeometry
         The joint's regions (:func:`oilgap.model.regions.joint_geometry`).
-    omega_rad_s : rotor speed per sample [rad/s]
-    nu_m2_s : kinematic viscosity per sample [m^2/s]
+    omega_rad_s : float or array
+        Rotor speed per sample [rad/s].
+    nu_m2_s : float or array
+        Kinematic viscosity per sample [m^2/s].
     powers_W : sequence of arrays
         Viscous power of each region per sample [W].
 
     Returns
     -------
     tuple of RegionState
+        One per region: R, delta, L [m], power [W], Re [-], Ta [-].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 3-4) [2].
     """
     ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
     out = []
@@ -343,18 +194,29 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
     ----------
     geometry : JointGeometry
         Regions, end-face radii and bearing pitch diameter of the joint.
-    omega_rad_s, domega_dt_rad_s2 : speed [rad/s] and acceleration [rad/s^2] per sample
-    nu_m2_s, density_kg_m3 : oil state per sample [m^2/s], [kg/m^3]
+    omega_rad_s : float or array
+        Rotor speed per sample [rad/s].
+    domega_dt_rad_s2 : float or array
+        Angular acceleration per sample [rad/s^2].
+    nu_m2_s : float or array
+        Kinematic viscosity per sample [m^2/s].
+    density_kg_m3 : float or array
+        Oil density per sample [kg/m^3].
     law : FrictionLaw
         Friction law of the clearance model (used unless ``powers_W`` is given).
     powers_W : sequence of arrays, optional
         Region powers already computed [W].
-    dtemp_dt_K_s, dpower_dt_W_s, dpower_dtemp_W_K : arrays, optional
-        Derivatives along the record (zero where not given).
+    dtemp_dt_K_s : array, optional
+        Rate of change of the oil temperature [K/s] (zero if not given).
+    dpower_dt_W_s : array, optional
+        Time derivative of the viscous power [W/s] (zero if not given).
+    dpower_dtemp_W_K : array, optional
+        Temperature derivative of the viscous power [W/K] (zero if not given).
 
     Returns
     -------
     EffectContext
+        All per-sample arrays broadcast to the samples' shape (SI).
     """
     ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
     omega = np.asarray(omega_rad_s, dtype=float) * ones
@@ -372,11 +234,27 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
 
 
 def cross_region_ratios(ctx: EffectContext, lam_s: float) -> list[np.ndarray]:
-    """Cross viscosity ratio ``mu/mu_0`` of each region at its nominal shear rate [-] [11].
+    """Cross viscosity ratio ``mu/mu_0`` of each region at its nominal shear rate [-] [1].
 
     ``1 / (1 + (lambda |omega| R_i / delta_i)^2)``: the full (not first-order)
     shear-thinning law, applied to each region's power by the rig simulator and
     by the calibration's exact form.
+
+    Parameters
+    ----------
+    ctx : EffectContext
+        Speeds [rad/s] and regions (R, delta [m]) of the samples.
+    lam_s : float
+        Cross time constant lambda [s].
+
+    Returns
+    -------
+    list of ndarray
+        ``mu / mu_0`` [-] of each region per sample, in the order of ``ctx.regions``.
+
+    References
+    ----------
+    Cross [1].
     """
     return [cross_viscosity_ratio(couette_shear_rate(ctx.omega_rad_s, r.radius_m, r.gap_m),
                                   lam_s) for r in ctx.regions]
@@ -426,19 +304,30 @@ class Effect:
 
     Attributes
     ----------
-    name : stable identifier (used in JSON, CLI and tests)
-    title : human-readable name
-    formula : the term as the loop adds it, in plain text
-    reference : source of the law
-    coefficient : symbol and meaning of the fitted coefficient
-    unit : unit of the coefficient
-    nonnegative : True if physics demands coefficient >= 0 (dissipation,
-        positive inertia, causality); False if either sign is physical
-    feature : EffectContext -> per-sample power per unit coefficient [W/unit]
-        (None if the effect cannot act on that rig, e.g. no bearing region)
-    strength_unit : unit of the synthetic rig's ``--strength``
-    coefficient_from_strength : maps the strength to the coefficient
-    strength_from_coefficient : inverse
+    name : str
+        Stable identifier (used in JSON, CLI and tests).
+    title : str
+        Human-readable name.
+    formula : str
+        The term as the loop adds it, in plain text.
+    reference : str
+        Source of the law.
+    coefficient : str
+        Symbol and meaning of the fitted coefficient.
+    unit : str
+        Unit of the coefficient ("-", "N m", "m^5", "s", "s^2").
+    nonnegative : bool
+        True if physics demands coefficient >= 0 (dissipation, positive inertia,
+        causality); False if either sign is physical.
+    feature : callable
+        EffectContext -> per-sample power per unit coefficient [W/unit] (None if
+        the effect cannot act on that rig, e.g. no bearing region).
+    strength_unit : str
+        Unit of the synthetic rig's ``--strength``.
+    coefficient_from_strength : callable
+        Maps the strength [strength_unit] to the coefficient [unit].
+    strength_from_coefficient : callable
+        The inverse.
     """
 
     name: str
@@ -454,7 +343,18 @@ class Effect:
     strength_from_coefficient: Callable[[float], float] = float
 
     def feature_values(self, ctx: EffectContext) -> np.ndarray | None:
-        """The feature column [W per unit coefficient], or None if not applicable."""
+        """The feature column [W per unit coefficient], or None if not applicable.
+
+        Parameters
+        ----------
+        ctx : EffectContext
+            Per-sample quantities (SI).
+
+        Returns
+        -------
+        ndarray or None
+            Power per unit coefficient at each sample [W/unit].
+        """
         f = self.feature(ctx)
         return None if f is None else np.asarray(f, dtype=float) * np.ones_like(ctx.omega_rad_s)
 
@@ -514,6 +414,16 @@ CONFOUNDED_FORMS = {
 
 def get_effect(name: str) -> Effect:
     """The library effect of that stable name.
+
+    Parameters
+    ----------
+    name : str
+        Stable name, e.g. ``"seal_coulomb_friction"`` [-].
+
+    Returns
+    -------
+    Effect
+        Formula, reference, coefficient unit and feature of the effect.
 
     Raises
     ------

@@ -13,7 +13,28 @@ from typing import Any
 
 
 class InputError(ValueError):
-    """Bad input: names the field, the value and what is allowed."""
+    """Bad input: names the field, the value and what is allowed.
+
+    The message reads ``"{where}: {field} = {value!r} is not allowed; {allowed}"``;
+    the command line prints it and exits 2.
+
+    Parameters
+    ----------
+    field : str
+        Name of the offending key, column or argument, with its unit as the user
+        wrote it (``"T3_mm"``, ``"depth_m"``).
+    value : Any
+        The offending value [in the unit of ``field``].
+    allowed : str
+        What would have been accepted.
+    where : str, optional
+        Where the value came from (file, table, line).
+
+    Attributes
+    ----------
+    field, value, allowed, where
+        As given.
+    """
 
     def __init__(self, field: str, value: Any, allowed: str, where: str | None = None):
         self.field = field
@@ -25,7 +46,24 @@ class InputError(ValueError):
 
 
 class SolverError(RuntimeError):
-    """A numerical solver did not deliver a trustworthy answer."""
+    """A numerical solver did not deliver a trustworthy answer.
+
+    Parameters
+    ----------
+    message : str
+        What failed.
+    status : str, optional
+        The solver's status word (e.g. IPOPT's ``return_status``).
+    last_iterate : dict, optional
+        The solver's last iterate, by variable name [SI units of each variable].
+
+    Attributes
+    ----------
+    status, last_iterate
+        As given.
+    exit_code : int
+        Exit status of the command line: 4.
+    """
 
     exit_code = 4
 
@@ -36,17 +74,54 @@ class SolverError(RuntimeError):
 
 
 class InfeasibleError(SolverError):
-    """The constraints of a design problem cannot all hold."""
+    """The constraints of a design problem cannot all hold.
+
+    Parameters
+    ----------
+    message, status, last_iterate
+        As for :class:`SolverError`.
+
+    Attributes
+    ----------
+    exit_code : int
+        Exit status of the command line: 3.
+    """
 
     exit_code = 3
 
 
 class OilgapWarning(UserWarning):
-    """A result that is computed but outside where its law is trustworthy."""
+    """A result that is computed but outside where its law is trustworthy.
+
+    Parameters
+    ----------
+    message : str
+        The quantity, its value [with its unit] and the range where the law holds.
+    """
 
 
 def check_finite(field: str, value: Any, where: str | None = None) -> float:
-    """Return ``value`` as float, or raise InputError if it is not a finite number."""
+    """Return ``value`` as float, or raise InputError if it is not a finite number.
+
+    Parameters
+    ----------
+    field : str
+        Name of the value in messages.
+    value : Any
+        The value to check [in the unit of ``field``]; bools and strings are refused.
+    where : str, optional
+        Where the value came from, for the message.
+
+    Returns
+    -------
+    float
+        ``float(value)`` [in the unit of ``field``].
+
+    Raises
+    ------
+    InputError
+        Not a number, NaN or infinite.
+    """
     if isinstance(value, (bool, str, bytes)):
         raise InputError(field, value, "a finite number is required", where)
     try:
@@ -59,7 +134,27 @@ def check_finite(field: str, value: Any, where: str | None = None) -> float:
 
 
 def check_positive(field: str, value: Any, where: str | None = None) -> float:
-    """Return ``value`` as a finite float > 0, or raise InputError."""
+    """Return ``value`` as a finite float > 0, or raise InputError.
+
+    Parameters
+    ----------
+    field : str
+        Name of the value in messages.
+    value : Any
+        The value to check [in the unit of ``field``].
+    where : str, optional
+        Where the value came from, for the message.
+
+    Returns
+    -------
+    float
+        ``float(value)`` [in the unit of ``field``].
+
+    Raises
+    ------
+    InputError
+        Not a finite number, or <= 0.
+    """
     x = check_finite(field, value, where)
     if x <= 0.0:
         raise InputError(field, value, "must be > 0", where)
@@ -68,7 +163,29 @@ def check_positive(field: str, value: Any, where: str | None = None) -> float:
 
 def check_range(field: str, value: Any, lo: float | None = None, hi: float | None = None,
                 where: str | None = None) -> float:
-    """Return ``value`` as a finite float within [lo, hi], or raise InputError."""
+    """Return ``value`` as a finite float within [lo, hi], or raise InputError.
+
+    Parameters
+    ----------
+    field : str
+        Name of the value in messages.
+    value : Any
+        The value to check [in the unit of ``field``].
+    lo, hi : float, optional
+        Inclusive bounds [in the unit of ``field``]; None: unbounded on that side.
+    where : str, optional
+        Where the value came from, for the message.
+
+    Returns
+    -------
+    float
+        ``float(value)`` [in the unit of ``field``].
+
+    Raises
+    ------
+    InputError
+        Not a finite number, or outside [lo, hi].
+    """
     x = check_finite(field, value, where)
     if (lo is not None and x < lo) or (hi is not None and x > hi):
         lo_s = "-inf" if lo is None else f"{lo:g}"

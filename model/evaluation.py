@@ -4,12 +4,17 @@ Thin layer over the physics functions: oil properties at the operating
 condition (:mod:`oil_properties`), Re and Ta (:mod:`taylor_couette`), C_m
 (:mod:`skin_friction`) and the power of each region (:mod:`viscous_loss`),
 averaged over the duty cycle by its exact speed distribution.
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for a
+   Deep-Sea Electric Manipulator*, Eqs. 3-6 and 8-10.
 """
 
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass, replace
+from dataclasses import asdict, dataclass, replace
 
 import numpy as np
 
@@ -25,7 +30,27 @@ from .viscous_loss import viscous_torque
 
 @dataclass(frozen=True)
 class RegionResult:
-    """Result for one clearance region over the duty cycle."""
+    """Result for one clearance region over the duty cycle.
+
+    Attributes
+    ----------
+    name : str
+        ``"rotor-stator"`` or ``"bearing"``.
+    radius_m, gap_m, length_m : float
+        R, delta, L [m].
+    roughness_T : float
+        Clearance roughness T [-].
+    Re_peak, Ta_peak : float
+        Couette Reynolds and Taylor numbers at the peak speed [-].
+    regimes : tuple of str
+        Flow regimes the cycle visits (Bilgen-Boulos names), in Re order.
+    Cm_peak : float
+        Moment coefficient at the peak speed [-].
+    mean_power_W : float
+        Mean viscous power over the cycle [W].
+    torque_peak_Nm : float
+        Viscous torque at the peak speed [N m].
+    """
 
     name: str
     radius_m: float
@@ -42,7 +67,33 @@ class RegionResult:
 
 @dataclass(frozen=True)
 class CaseEvaluation:
-    """Result of :func:`evaluate_case`."""
+    """Result of :func:`evaluate_case`.
+
+    Attributes
+    ----------
+    case_name, oil : str
+        Names of the case and the oil.
+    oil_temp_C : float
+        Oil temperature [degC].
+    depth_m : float
+        Sea depth [m].
+    nu_cSt : float
+        Kinematic viscosity at the condition [cSt].
+    density_kg_m3 : float
+        Oil density at the condition [kg/m^3].
+    laminar_law, form : str
+        The friction law's laminar law and form.
+    peak_speed_rpm : float
+        Peak speed of the cycle [rpm].
+    regions : tuple of RegionResult
+        Region 1, then region 2 if any.
+    total_mean_power_W : float
+        Mean viscous power of all regions (Eq. 10) [W].
+    viscous_torque_peak_Nm : float
+        Viscous torque of all regions at the peak speed [N m].
+    cycle_energy_J : float
+        Energy dissipated over one cycle [J].
+    """
 
     case_name: str
     oil: str
@@ -59,16 +110,37 @@ class CaseEvaluation:
     cycle_energy_J: float
 
     def to_dict(self) -> dict:
-        """Plain-dict form (the ``--json`` output)."""
-        from dataclasses import asdict
+        """Plain-dict form (the ``--json`` output).
 
+        Returns
+        -------
+        dict
+            The fields with their unit-carrying names (``mean_power_W`` [W]).
+        """
         d = asdict(self)
         d["regions"] = [dict(asdict(r), regimes=list(r.regimes)) for r in self.regions]
         return d
 
 
 def oil_state(case: DesignCase, oil_temp_C: float | None = None, depth_m: float | None = None):
-    """(nu [m^2/s], mu [Pa s], rho [kg/m^3]) of the case's oil at its (or the given) condition."""
+    """(nu [m^2/s], mu [Pa s], rho [kg/m^3]) of the case's oil at its (or the given) condition.
+
+    Warns (OilgapWarning) outside the trusted temperature range of the Walther line.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (oil and operating condition).
+    oil_temp_C : float, optional
+        Oil temperature [degC] (default: the case's).
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+
+    Returns
+    -------
+    nu_m2_s, mu_Pa_s, rho_kg_m3 : float
+        [m^2/s], [Pa s], [kg/m^3].
+    """
     t = case.operating.oil_temp_C if oil_temp_C is None else oil_temp_C
     d = case.operating.depth_m if depth_m is None else depth_m
     warn_if_untrusted_temperature(t)
@@ -81,8 +153,13 @@ def region_powers(case: DesignCase, omega_rad_s, nu_m2_s, rho_kg_m3) -> dict[str
     Parameters
     ----------
     case : DesignCase
-    omega_rad_s : rotor speed(s) [rad/s]
-    nu_m2_s, rho_kg_m3 : oil state [m^2/s], [kg/m^3]
+        The joint's regions and friction law.
+    omega_rad_s : float or array
+        Rotor speed(s) [rad/s].
+    nu_m2_s : float or array
+        Kinematic viscosity [m^2/s].
+    rho_kg_m3 : float or array
+        Oil density [kg/m^3].
 
     Returns
     -------
@@ -95,7 +172,27 @@ def region_powers(case: DesignCase, omega_rad_s, nu_m2_s, rho_kg_m3) -> dict[str
 
 def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
                        depth_m: float | None = None) -> float:
-    """Mean viscous power [W] of all regions over the case's duty cycle (Eq. 10)."""
+    """Mean viscous power [W] of all regions over the case's duty cycle (Eq. 10).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The joint, oil, condition and duty cycle.
+    oil_temp_C : float, optional
+        Oil temperature [degC] (default: the case's).
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+
+    Returns
+    -------
+    float
+        Mean power [W].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 5 and 10) [1].
+    """
     nu, _, rho = oil_state(case, oil_temp_C, depth_m)
     nodes, weights = case.duty_cycle.speed_distribution()
     return float(sum(region_mean_power(r, nodes, weights, nu, rho, case.friction)
@@ -109,8 +206,24 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     Parameters
     ----------
     case : DesignCase
-    oil_temp_C, depth_m : override the case's operating condition [degC], [m]
-    laminar_law : override the friction law's laminar law ("couette" or "bilgen-boulos")
+        The joint, oil, condition, duty cycle and friction law.
+    oil_temp_C : float, optional
+        Oil temperature [degC] (default: the case's).
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+    laminar_law : {"couette", "bilgen-boulos"}, optional
+        Override of the friction law's laminar law.
+
+    Returns
+    -------
+    CaseEvaluation
+        Oil state, and per region Re, Ta, C_m at the peak speed, the regimes
+        visited and the mean power [W]; totals [W], [N m], [J].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 3-6 and 8-10) [1].
     """
     if laminar_law is not None:
         case = replace(case, friction=replace(case.friction, laminar_law=laminar_law))

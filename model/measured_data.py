@@ -60,14 +60,30 @@ TEMP_STEP_K = 0.5
 
 @dataclass(frozen=True)
 class DropRecord:
-    """Rows dropped for one reason: count and up to five file line numbers."""
+    """Rows dropped for one reason: count and up to five file line numbers.
+
+    Attributes
+    ----------
+    reason : str
+        Why the rows were dropped (the first reason that applies to a row).
+    count : int
+        Number of rows dropped [-].
+    lines : tuple of int
+        Up to five line numbers of the file (header = line 1).
+    """
 
     reason: str
     count: int
     lines: tuple[int, ...] = ()
 
     def to_dict(self) -> dict:
-        """JSON form."""
+        """JSON form.
+
+        Returns
+        -------
+        dict
+            ``reason``, ``count`` [-] and ``example_lines``.
+        """
         return {"reason": self.reason, "count": self.count, "example_lines": list(self.lines)}
 
 
@@ -75,8 +91,24 @@ class DropRecord:
 class MeasuredData:
     """Validated samples (``frame``, sorted by run and time) and what was dropped.
 
-    ``frame`` keeps the file's line number in column ``line`` (header = line 1).
-    ``kind`` is "power_W" or "viscous_power_W".
+    Attributes
+    ----------
+    frame : pandas.DataFrame
+        The usable rows, units in the column names (``time_s`` [s], ``speed_rpm``
+        [rpm], ``temp_C`` [degC], ``power_W`` [W]), plus the file's line number in
+        ``line`` (header = line 1) and ``oil_free`` (bool).
+    kind : str
+        ``"power_W"`` or ``"viscous_power_W"``: which power column the file has.
+    dropped : tuple of DropRecord
+        Dropped rows by reason.
+    n_read : int
+        Rows read [-].
+    source : str
+        File name (for messages).
+    ignored_columns : tuple of str
+        Columns that are not part of the format.
+    oils : dict of str to Oil
+        The oils table the names were checked against.
     """
 
     frame: pd.DataFrame
@@ -89,11 +121,17 @@ class MeasuredData:
 
     @property
     def n_dropped(self) -> int:
-        """Total number of dropped rows."""
+        """Total number of dropped rows [-]."""
         return sum(d.count for d in self.dropped)
 
     def drop_summary(self) -> str:
-        """One line per reason."""
+        """One line per reason.
+
+        Returns
+        -------
+        str
+            "N rows read, M dropped:" and one line per reason with its count [-].
+        """
         if not self.dropped:
             return f"{self.n_read} rows read, none dropped"
         lines = [f"{self.n_read} rows read, {self.n_dropped} dropped:"]
@@ -106,6 +144,16 @@ class MeasuredData:
 
 def read_table(path: str | Path) -> pd.DataFrame:
     """Read a CSV or Parquet file as text-preserving columns.
+
+    Parameters
+    ----------
+    path : str or Path
+        ``.csv``, or ``.parquet``/``.pq`` (needs pyarrow); units in column names.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The raw table (CSV values as text), column names stripped [units as named].
 
     Raises
     ------
@@ -196,9 +244,18 @@ def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
 
     Parameters
     ----------
-    df : raw table (columns as read; values may be text)
-    oils : oils table keyed by canonical name (default: the built-in catalogue)
-    source : name used in messages
+    df : pandas.DataFrame
+        Raw table (columns as read, units in their names; values may be text).
+    oils : dict of str to Oil, optional
+        Oils table keyed by canonical name (default: the built-in catalogue).
+    source : str
+        Name used in messages.
+
+    Returns
+    -------
+    MeasuredData
+        Usable rows (numeric columns as float: [s], [rpm], [degC], [W], [-]) and
+        the drop report.
 
     Raises
     ------
@@ -250,6 +307,17 @@ def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
     df = df.copy()
     df["oil_free"] = df["oil"].str.lower() == OIL_FREE
 
+    df = _drop_run_problems(df, d, kind)
+
+    if not (~df["oil_free"]).any():
+        summary = "; ".join(f"{r.count} x {r.reason}" for r in d.result())
+        raise InputError("data", source, f"no usable oil run remains (dropped: {summary})"
+                         if summary else "holds no oil run (every row has oil = none)")
+    df = df.sort_values(["run", "time_s"], kind="stable").reset_index(drop=True)
+    return MeasuredData(df, kind, d.result(), n_read, source, ignored, catalogue)
+
+
+def _drop_run_problems(df: pd.DataFrame, d: _Dropper, kind: str) -> pd.DataFrame:
     # run consistency: one oil and one T per run
     for col, label in (("oil", "oil"), ("roughness_T", "roughness_T")):
         mode = df.groupby("run")[col].agg(lambda s: s.value_counts().index[0])
@@ -276,18 +344,25 @@ def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
     else:
         df = d.drop(df, df["oil_free"].to_numpy(),
                     "oil-free run (not needed: viscous_power_W is measured directly)")
-
-    if not (~df["oil_free"]).any():
-        summary = "; ".join(f"{r.count} x {r.reason}" for r in d.result())
-        raise InputError("data", source, f"no usable oil run remains (dropped: {summary})"
-                         if summary else "holds no oil run (every row has oil = none)")
-    df = df.sort_values(["run", "time_s"], kind="stable").reset_index(drop=True)
-    return MeasuredData(df, kind, d.result(), n_read, source, ignored, catalogue)
+    return df
 
 
 def load_measured(path: str | Path, oils: str | Path | dict[str, Oil] | None = None
                   ) -> MeasuredData:
-    """Read and validate a data file; ``oils`` is an oils CSV path or a catalogue."""
+    """Read and validate a data file; ``oils`` is an oils CSV path or a catalogue.
+
+    Parameters
+    ----------
+    path : str or Path
+        CSV or Parquet data file (columns: see the module docstring; units in names).
+    oils : str, Path or dict of str to Oil, optional
+        Oils CSV (nu [cSt], density [kg/m^3]) or catalogue (default: built-in).
+
+    Returns
+    -------
+    MeasuredData
+        As :func:`validate`.
+    """
     cat = read_oils_csv(oils) if isinstance(oils, (str, Path)) else oils
     return validate(read_table(path), cat, str(path))
 
@@ -298,6 +373,20 @@ def load_measured(path: str | Path, oils: str | Path | dict[str, Oil] | None = N
 def time_derivative(time_s: np.ndarray, x: np.ndarray, window_s: float) -> np.ndarray:
     """d x / d t of one run [unit of x per s]: Savitzky-Golay (quadratic) on a uniform
     record, central differences otherwise.
+
+    Parameters
+    ----------
+    time_s : ndarray
+        Sample times of one run [s], increasing.
+    x : ndarray
+        The signal [any unit].
+    window_s : float
+        Savitzky-Golay window [s] (odd number of samples, at least 5).
+
+    Returns
+    -------
+    ndarray
+        Derivative [unit of x per s] (zeros for fewer than 3 samples).
 
     References
     ----------
@@ -317,7 +406,18 @@ def time_derivative(time_s: np.ndarray, x: np.ndarray, window_s: float) -> np.nd
 
 
 def add_kinematics(frame: pd.DataFrame) -> pd.DataFrame:
-    """Columns ``omega`` [rad/s], ``domega_dt`` [rad/s^2], ``dtemp_dt`` [K/s] per run."""
+    """Columns ``omega`` [rad/s], ``domega_dt`` [rad/s^2], ``dtemp_dt`` [K/s] per run.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Validated samples (``run``, ``time_s`` [s], ``speed_rpm`` [rpm], ``temp_C``).
+
+    Returns
+    -------
+    pandas.DataFrame
+        A copy with the three columns added (:func:`time_derivative` per run).
+    """
     f = frame.copy()
     f["omega"] = rpm_to_rad_s(f["speed_rpm"].to_numpy())
     a = np.empty(len(f))
@@ -338,11 +438,29 @@ def add_kinematics(frame: pd.DataFrame) -> pd.DataFrame:
 class Samples:
     """Oil-run samples ready for calibration (SI arrays, one entry per sample).
 
-    ``viscous_W`` is the measured viscous power (directly, or power minus the
-    baseline); ``nu_m2_s``/``density_kg_m3`` at the measured temperature and
-    ``nu_pm``/``rho_pm`` at temperature -/+ :data:`TEMP_STEP_K` (NaN where the
-    row overrides the oil table, so no temperature law is known).
-    ``index`` maps back to the rows of the validated frame.
+    Attributes
+    ----------
+    run, run_code, run_names : ndarray, ndarray of int, tuple of str
+        Run name, its index in ``run_names``, and the run names in order.
+    oil : ndarray of str
+        Oil name as written in the file.
+    roughness_T : ndarray
+        Clearance roughness T of the run [-].
+    time_s, speed_rpm, omega, domega_dt : ndarray
+        Time [s], speed [rpm], speed [rad/s], acceleration [rad/s^2].
+    temp_C, dtemp_dt : ndarray
+        Measured temperature [degC] and its rate [K/s].
+    nu_m2_s, density_kg_m3 : ndarray
+        Oil state at the measured temperature [m^2/s], [kg/m^3].
+    nu_pm, rho_pm : tuple of two ndarray
+        The same at temperature -/+ :data:`TEMP_STEP_K` [m^2/s], [kg/m^3] (NaN where
+        the row overrides the oil table, so no temperature law is known).
+    gap1_m : ndarray
+        Region-1 clearance [m].
+    viscous_W : ndarray
+        Measured viscous power [W] (directly, or power minus the baseline).
+    index : ndarray of int
+        Rows of the validated frame the samples come from.
     """
 
     run: np.ndarray
@@ -366,11 +484,22 @@ class Samples:
 
     @property
     def n(self) -> int:
-        """Number of samples."""
+        """Number of samples [-]."""
         return len(self.omega)
 
     def subset(self, mask: np.ndarray) -> Samples:
-        """The samples where ``mask`` holds (run codes kept)."""
+        """The samples where ``mask`` holds (run codes kept).
+
+        Parameters
+        ----------
+        mask : ndarray of bool or int
+            Samples to keep [-].
+
+        Returns
+        -------
+        Samples
+            The subset (SI arrays as here).
+        """
         kw = {}
         for k in self.__dataclass_fields__:
             v = getattr(self, k)
@@ -388,12 +517,33 @@ def oil_samples(data: MeasuredData, region1_gap_m: float,
                 pressure_gauge_Pa: float = 0.0, frame: pd.DataFrame | None = None) -> Samples:
     """The oil-run samples of validated data, with nu, rho and the viscous power.
 
-    nu and rho come from each oil's Walther line and density law at ``temp_C``
-    (``pressure_gauge_Pa``, default atmospheric) unless the row gives
-    ``nu_cSt``/``density_kg_m3``. With ``power_W`` the baseline of the run's T is
-    subtracted (``baselines``: T -> an object with ``predict(omega, domega_dt, temp_C)``
-    [W], e.g. :func:`oilgap.optim.calibration.baseline.fit_baselines`). ``frame``: the
-    data's frame with kinematics already added (:func:`add_kinematics`), if at hand.
+    nu and rho follow each oil's Walther line and density law at ``temp_C`` unless the
+    row gives ``nu_cSt``/``density_kg_m3``. With ``power_W`` the baseline of the run's T
+    (``predict(omega, domega_dt, temp_C)`` [W], e.g.
+    :func:`oilgap.optim.calibration.baseline.fit_baselines`) is subtracted.
+
+    Parameters
+    ----------
+    data : MeasuredData
+        Validated data.
+    region1_gap_m : float
+        Region-1 clearance of rows without ``gap_mm`` [m].
+    baselines : mapping of float to baseline, optional
+        Roughness T [-] -> oil-free baseline; required for ``power_W`` data.
+    pressure_gauge_Pa : float
+        Oil pressure above atmospheric [Pa].
+    frame : pandas.DataFrame, optional
+        ``data.frame`` after :func:`add_kinematics`, if at hand.
+
+    Returns
+    -------
+    Samples
+        The oil-run samples (SI), viscous power [W].
+
+    Raises
+    ------
+    InputError
+        ``power_W`` data without baselines.
     """
     f = add_kinematics(data.frame) if frame is None else frame
     if data.kind == "power_W" and baselines is None:

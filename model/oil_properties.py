@@ -26,6 +26,11 @@ References
    (bulk modulus) and 2.6.2 (pressure-viscosity coefficient).
 .. [4] C. J. A. Roelands, *Correlational aspects of the viscosity-temperature-
    pressure relationship of lubricating oils*, PhD thesis, TU Delft, 1966.
+.. [5] P. M. Saunders, "Practical conversion of pressure to depth", J. Phys.
+   Oceanogr. 11:573-574, 1981 (the hydrostatic column with a mean density).
+.. [6] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for
+   a Deep-Sea Electric Manipulator*, Sec. IV.B (ISO VG 22 at about 857 cSt at
+   2 degC and 7000 m: a check of the temperature and pressure laws together).
 """
 
 from __future__ import annotations
@@ -79,7 +84,8 @@ def walther_coefficients(nu1_cSt, temp1_K, nu2_cSt, temp2_K):
     Returns
     -------
     A, B : float
-        ``log10(log10(nu + 0.7)) = A - B log10(T)``.
+        ``log10(log10(nu + 0.7)) = A - B log10(T)`` with nu in [cSt] and T in [K];
+        A [-], B [-].
 
     References
     ----------
@@ -97,6 +103,20 @@ def walther_coefficients(nu1_cSt, temp1_K, nu2_cSt, temp2_K):
 def walther_viscosity_cSt(temp_K, A, B):
     """Kinematic viscosity [cSt] at ``temp_K`` [K] on the Walther line (A, B).
 
+    ``nu = 10^(10^(A - B log10 T)) - 0.7``.
+
+    Parameters
+    ----------
+    temp_K : float, array or CasADi symbol
+        Temperature [K].
+    A, B : float
+        Walther coefficients [-] (:func:`walther_coefficients`).
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Kinematic viscosity at atmospheric pressure [cSt].
+
     References
     ----------
     ASTM D341 [1].
@@ -105,7 +125,24 @@ def walther_viscosity_cSt(temp_K, A, B):
 
 
 def walther_temperature_K(nu_cSt, A, B):
-    """Inverse of :func:`walther_viscosity_cSt`: temperature [K] at which nu [cSt] is reached."""
+    """Inverse of :func:`walther_viscosity_cSt`: temperature [K] at which nu [cSt] is reached.
+
+    Parameters
+    ----------
+    nu_cSt : float or array
+        Kinematic viscosity [cSt].
+    A, B : float
+        Walther coefficients [-] (:func:`walther_coefficients`).
+
+    Returns
+    -------
+    float or array
+        Temperature [K].
+
+    References
+    ----------
+    ASTM D341 [1].
+    """
     return 10.0 ** ((A - m.log10(m.log10(nu_cSt + WALTHER_OFFSET_CST))) / B)
 
 
@@ -118,6 +155,11 @@ def barus_factor(pressure_gauge_Pa, alpha_1_Pa=BARUS_MINERAL_OIL_1_PA):
         Pressure above atmospheric [Pa].
     alpha_1_Pa : float
         Pressure-viscosity coefficient [1/Pa].
+
+    Returns
+    -------
+    float or array
+        ``mu(p) / mu(0)`` [-].
 
     References
     ----------
@@ -132,6 +174,20 @@ def barus_coefficient(alpha_ref_1_Pa, mu0_Pa_s, mu_ref_Pa_s):
     ``alpha = alpha_ref ln(mu0 / mu_inf) / ln(mu_ref / mu_inf)``: the temperature
     dependence of the initial slope of Roelands' equation, scaled so that
     ``alpha = alpha_ref`` where the oil has its reference viscosity ``mu_ref``.
+
+    Parameters
+    ----------
+    alpha_ref_1_Pa : float
+        Barus coefficient at the reference temperature (40 degC) [1/Pa].
+    mu0_Pa_s : float or array
+        Dynamic viscosity at atmospheric pressure and the temperature of interest [Pa s].
+    mu_ref_Pa_s : float
+        Dynamic viscosity at atmospheric pressure and the reference temperature [Pa s].
+
+    Returns
+    -------
+    float or array
+        Barus coefficient at the temperature of interest [1/Pa].
 
     References
     ----------
@@ -148,6 +204,24 @@ def oil_density(density15_kg_m3, temp_K, pressure_gauge_Pa=0.0,
 
     ``rho = rho15 exp(-beta (T - 288.15) + p / K)``.
 
+    Parameters
+    ----------
+    density15_kg_m3 : float
+        Density at 15 degC and atmospheric pressure [kg/m^3].
+    temp_K : float or array
+        Temperature [K].
+    pressure_gauge_Pa : float or array
+        Pressure above atmospheric [Pa].
+    expansion_1_K : float
+        Volumetric thermal expansion coefficient beta [1/K].
+    bulk_modulus_Pa : float
+        Isothermal bulk modulus K [Pa].
+
+    Returns
+    -------
+    float or array
+        Density [kg/m^3].
+
     References
     ----------
     Vacca & Franzoni [3], sec. 2.3-2.4.
@@ -158,12 +232,49 @@ def oil_density(density15_kg_m3, temp_K, pressure_gauge_Pa=0.0,
 
 
 def seawater_gauge_pressure(depth_m, seawater_density_kg_m3=SEAWATER_DENSITY_KG_M3):
-    """Hydrostatic gauge pressure [Pa] at ``depth_m`` [m] of sea water: ``rho_sw g depth``."""
+    """Hydrostatic gauge pressure [Pa] at ``depth_m`` [m] of sea water: ``rho_sw g depth``.
+
+    A constant column density overstates the pressure at 11 km by about 1.6 %
+    (compressibility and latitude are left out) [5].
+
+    Parameters
+    ----------
+    depth_m : float or array
+        Depth below the sea surface [m].
+    seawater_density_kg_m3 : float
+        Mean density of the water column rho_sw [kg/m^3].
+
+    Returns
+    -------
+    float or array
+        Pressure above atmospheric [Pa].
+
+    References
+    ----------
+    Hydrostatics with a mean column density; Saunders [5].
+    """
     return seawater_density_kg_m3 * STANDARD_GRAVITY_M_S2 * depth_m
 
 
 def seawater_absolute_pressure(depth_m, seawater_density_kg_m3=SEAWATER_DENSITY_KG_M3):
-    """Absolute pressure [Pa] at ``depth_m`` [m]: atmosphere plus the water column."""
+    """Absolute pressure [Pa] at ``depth_m`` [m]: atmosphere plus the water column.
+
+    Parameters
+    ----------
+    depth_m : float or array
+        Depth below the sea surface [m].
+    seawater_density_kg_m3 : float
+        Mean density of the water column [kg/m^3].
+
+    Returns
+    -------
+    float or array
+        Absolute pressure [Pa].
+
+    References
+    ----------
+    Saunders [5] (see :func:`seawater_gauge_pressure`).
+    """
     return STANDARD_ATMOSPHERE_PA + seawater_gauge_pressure(depth_m, seawater_density_kg_m3)
 
 
@@ -178,11 +289,36 @@ def oil_viscosities(walther_A, walther_B, density15_kg_m3, temp_K, pressure_gaug
     viscosity at pressure is mu(T, p) / rho(T, p). ``alpha_1_Pa`` is the Barus
     coefficient at 40 degC; :func:`barus_coefficient` carries it to ``temp_K``.
 
+    Parameters
+    ----------
+    walther_A, walther_B : float
+        Walther coefficients of the oil [-] (:func:`walther_coefficients`).
+    density15_kg_m3 : float
+        Density at 15 degC and atmospheric pressure [kg/m^3].
+    temp_K : float, array or CasADi symbol
+        Oil temperature [K].
+    pressure_gauge_Pa : float, array or CasADi symbol
+        Pressure above atmospheric [Pa].
+    alpha_1_Pa : float
+        Barus coefficient at 40 degC [1/Pa].
+    expansion_1_K : float
+        Volumetric thermal expansion coefficient [1/K].
+    bulk_modulus_Pa : float
+        Bulk modulus [Pa].
+
     Returns
     -------
-    nu_m2_s : kinematic viscosity [m^2/s]
-    mu_Pa_s : dynamic viscosity [Pa s]
-    rho_kg_m3 : density [kg/m^3]
+    nu_m2_s : float, array or CasADi expression
+        Kinematic viscosity [m^2/s].
+    mu_Pa_s : float, array or CasADi expression
+        Dynamic viscosity [Pa s].
+    rho_kg_m3 : float, array or CasADi expression
+        Density [kg/m^3].
+
+    References
+    ----------
+    ASTM D341 [1]; Barus [2] with Roelands' temperature dependence [4]; density
+    after Vacca & Franzoni [3]. Checked against the seed's 857 cSt [6].
     """
     nu0_m2_s = cst_to_m2_s(walther_viscosity_cSt(temp_K, walther_A, walther_B))
     rho0 = oil_density(density15_kg_m3, temp_K, 0.0, expansion_1_K, bulk_modulus_Pa)

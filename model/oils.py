@@ -9,6 +9,12 @@ grade number) with typical nu at 100 degC of VI ~ 100 mineral oils and typical
 densities (850-910 kg/m^3). A user CSV has the columns
 ``oil,nu40_cSt,nu100_cSt,density_kg_m3`` and optionally
 ``barus_1_GPa`` (pressure-viscosity coefficient, default 17 /GPa).
+
+References
+----------
+.. [1] ISO 3448:1992, Industrial liquid lubricants -- ISO viscosity classification
+   (nu at 40 degC = the grade number, +-10 %).
+.. [2] ASTM D341-20 (the Walther line through the 40 and 100 degC points).
 """
 
 from __future__ import annotations
@@ -23,7 +29,7 @@ from pathlib import Path
 import numpy as np
 
 from . import oil_properties as op
-from .errors import InputError, OilgapWarning, check_positive
+from .errors import InputError, OilgapWarning, check_positive, check_range
 from .units import ZERO_CELSIUS_K, celsius_to_kelvin, m2_s_to_cst, per_gpa_to_per_pa
 
 OIL_COLUMNS = ("oil", "nu40_cSt", "nu100_cSt", "density_kg_m3")
@@ -37,12 +43,18 @@ class Oil:
     Attributes
     ----------
     name : str
+        Name as written by the user or the catalogue ('VG22', 'Tellus S2 M 22').
     nu40_cSt, nu100_cSt : float
         Kinematic viscosity at 40 and 100 degC, atmospheric pressure [cSt].
     density_kg_m3 : float
         Density at 15 degC, atmospheric pressure [kg/m^3].
     barus_1_Pa : float
-        Pressure-viscosity coefficient [1/Pa].
+        Pressure-viscosity coefficient at 40 degC [1/Pa] (default 1.7e-8, i.e. 17 /GPa).
+
+    Raises
+    ------
+    InputError
+        A non-positive property, a negative Barus coefficient, or nu100 >= nu40.
     """
 
     name: str
@@ -64,25 +76,61 @@ class Oil:
 
     @property
     def walther(self) -> tuple[float, float]:
-        """ASTM D341 coefficients (A, B) through the 40 and 100 degC points."""
+        """ASTM D341 coefficients (A [-], B [-]) through the 40 and 100 degC points [2]."""
         return op.walther_coefficients(self.nu40_cSt, ZERO_CELSIUS_K + 40.0,
                                        self.nu100_cSt, ZERO_CELSIUS_K + 100.0)
 
     def properties(self, temp_K, pressure_gauge_Pa=0.0):
-        """(nu [m^2/s], mu [Pa s], rho [kg/m^3]) at temperature [K] and gauge pressure [Pa]."""
+        """Kinematic and dynamic viscosity and density at temperature and gauge pressure.
+
+        Parameters
+        ----------
+        temp_K : float, array or CasADi symbol
+            Oil temperature [K].
+        pressure_gauge_Pa : float, array or CasADi symbol
+            Pressure above atmospheric [Pa].
+
+        Returns
+        -------
+        nu_m2_s, mu_Pa_s, rho_kg_m3
+            [m^2/s], [Pa s], [kg/m^3]
+            (:func:`~oilgap.model.oil_properties.oil_viscosities`).
+        """
         A, B = self.walther
         return op.oil_viscosities(A, B, self.density_kg_m3, temp_K, pressure_gauge_Pa,
                                   self.barus_1_Pa)
 
     def kinematic_viscosity_cSt(self, temp_C, depth_m=0.0) -> float:
-        """Kinematic viscosity [cSt] at oil temperature [degC] and sea depth [m]."""
+        """Kinematic viscosity [cSt] at oil temperature [degC] and sea depth [m].
+
+        Parameters
+        ----------
+        temp_C : float
+            Oil temperature [degC].
+        depth_m : float
+            Sea depth [m]; the oil carries the water column's gauge pressure.
+
+        Returns
+        -------
+        float
+            Kinematic viscosity [cSt].
+        """
         nu, _, _ = self.properties(celsius_to_kelvin(temp_C),
                                    op.seawater_gauge_pressure(depth_m))
         return m2_s_to_cst(nu)
 
 
 def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C") -> None:
-    """Warn (OilgapWarning) if a temperature lies outside the trusted Walther range."""
+    """Warn (OilgapWarning) if a temperature lies outside the trusted Walther range.
+
+    Parameters
+    ----------
+    temp_C : float or array
+        Oil temperature(s) [degC]; the range is
+        :data:`~oilgap.model.oil_properties.WALTHER_TRUSTED_RANGE_C`.
+    field : str
+        Name of the temperature in the warning.
+    """
     lo, hi = op.WALTHER_TRUSTED_RANGE_C
     t = np.asarray(temp_C, dtype=float)
     if t.size and (np.nanmin(t) < lo or np.nanmax(t) > hi):
@@ -96,7 +144,18 @@ def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C") -> None:
 
 
 def normalize_oil_name(name: str) -> str:
-    """Canonical key of an oil name: 'ISO VG 22', 'vg22', 'VG 22' -> 'VG22'."""
+    """Canonical key of an oil name: 'ISO VG 22', 'vg22', 'VG 22' -> 'VG22'.
+
+    Parameters
+    ----------
+    name : str
+        Oil name as written [-].
+
+    Returns
+    -------
+    str
+        Upper case without spaces, dashes, underscores or a leading 'ISO'.
+    """
     key = str(name).strip().upper().replace(" ", "").replace("-", "").replace("_", "")
     if key.startswith("ISOVG"):
         key = key[3:]
@@ -105,6 +164,17 @@ def normalize_oil_name(name: str) -> str:
 
 def read_oils_csv(path: str | Path) -> dict[str, Oil]:
     """Read an oils table ``oil,nu40_cSt,nu100_cSt,density_kg_m3[,barus_1_GPa]``.
+
+    Parameters
+    ----------
+    path : str or Path
+        CSV file; units in the column names: nu [cSt], density at 15 degC
+        [kg/m^3], Barus coefficient [1/GPa] (optional, default 17).
+
+    Returns
+    -------
+    dict of str to Oil
+        The oils keyed by :func:`normalize_oil_name` (SI inside each Oil).
 
     Raises
     ------
@@ -162,8 +232,6 @@ def _num(raw):
 
 
 def _nonneg(field, raw, where):
-    from .errors import check_range
-
     return check_range(field, _num(raw), 0.0, None, where)
 
 
@@ -171,7 +239,14 @@ _BUILTIN: dict[str, Oil] | None = None
 
 
 def builtin_oils() -> dict[str, Oil]:
-    """The built-in ISO VG catalogue, keyed by canonical name ('VG10' ... 'VG1000')."""
+    """The built-in ISO VG catalogue, keyed by canonical name ('VG10' ... 'VG1000').
+
+    Returns
+    -------
+    dict of str to Oil
+        A copy of the catalogue: nu at 40 degC = the grade number [cSt] [1], typical
+        nu at 100 degC [cSt] and density [kg/m^3] of VI ~ 100 mineral oils.
+    """
     global _BUILTIN
     if _BUILTIN is None:
         with resources.as_file(resources.files(__package__) / "data" / "iso_vg_oils.csv") as p:
@@ -181,6 +256,18 @@ def builtin_oils() -> dict[str, Oil]:
 
 def get_oil(name: str, catalogue: dict[str, Oil] | None = None) -> Oil:
     """Look an oil up by name (case- and space-insensitive: 'VG22', 'ISO VG 22').
+
+    Parameters
+    ----------
+    name : str
+        Oil name [-].
+    catalogue : dict of str to Oil, optional
+        Oils keyed by canonical name (default: :func:`builtin_oils`).
+
+    Returns
+    -------
+    Oil
+        The oil (properties in SI, nu in [cSt] in its attribute names).
 
     Raises
     ------

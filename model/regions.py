@@ -82,12 +82,18 @@ def joint_regions(case: DesignCase) -> tuple[Region, ...]:
     Parameters
     ----------
     case : DesignCase
+        The joint (radii T1-T4 and lengths in [m], SI inside).
 
     Returns
     -------
     tuple of Region
-        Region 1 with R = T2, delta = T3 - T2, its length and T (Eq. 9);
-        region 2 with its radius, gap and length and T = 1 [1].
+        Region 1 with R = T2, delta = T3 - T2, its length [m] and T [-] (Eq. 9);
+        region 2 with its radius, gap and length [m] and T = 1.
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 9, Table 1, Fig. 4) [1].
     """
     r1 = case.region1
     out = [Region(REGION_NAMES[0], r1.radius, r1.gap, r1.length, r1.roughness)]
@@ -104,6 +110,7 @@ def joint_geometry(case: DesignCase, roughness_T: Any = None, gap1_m: Any = None
     Parameters
     ----------
     case : DesignCase
+        The joint (SI inside: radii and lengths [m]).
     roughness_T : float or array, optional
         Region-1 roughness per sample or run [-] (default: the case's T).
     gap1_m : float or array, optional
@@ -112,6 +119,9 @@ def joint_geometry(case: DesignCase, roughness_T: Any = None, gap1_m: Any = None
     Returns
     -------
     JointGeometry
+        Regions (:func:`joint_regions`, region 1 with the given T and gap), end-face
+        radii (rotor radius T2, shaft bore) [m] and bearing pitch diameter
+        ``2 R2 + delta2`` [m] (None without region 2).
     """
     regions = list(joint_regions(case))
     changes = {}
@@ -130,13 +140,30 @@ def region_power(region: Region, omega_rad_s, nu_m2_s, density_kg_m3, law: Frict
     """Viscous power [W] of one region at speed(s) ``omega_rad_s`` [rad/s].
 
     :func:`~oilgap.model.viscous_loss.clearance_power` with the region's R,
-    delta, L and T; ``nu_m2_s`` [m^2/s] and ``density_kg_m3`` [kg/m^3] the
-    oil's state [1].
+    delta, L and T.
+
+    Parameters
+    ----------
+    region : Region
+        R, delta, L [m] and T [-] of the clearance.
+    omega_rad_s : float, array or CasADi symbol
+        Rotor speed(s) [rad/s] (sign ignored).
+    nu_m2_s : float, array or CasADi symbol
+        Kinematic viscosity [m^2/s].
+    density_kg_m3 : float, array or CasADi symbol
+        Oil density [kg/m^3].
+    law : FrictionLaw
+        How C_m is computed.
 
     Returns
     -------
     float, array or CasADi expression
         Power [W].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 4-9) [1].
     """
     return clearance_power(omega_rad_s, nu_m2_s, density_kg_m3, region.radius_m,
                            region.gap_m, region.length_m, law, region.roughness_T)
@@ -152,10 +179,31 @@ def region_mean_power(region: Region, nodes_rad_s, weights, nu_m2_s, density_kg_
     as a ``casadi.DM``. Nodes along the last axis (arrays of shape (..., n)
     give one mean per leading index).
 
+    Parameters
+    ----------
+    region : Region
+        R, delta, L [m] and T [-] of the clearance.
+    nodes_rad_s : array or casadi.DM
+        Distinct |omega| of the cycle [rad/s].
+    weights : array
+        Time fraction of each node [-] (sum 1).
+    nu_m2_s : float, array or CasADi symbol
+        Kinematic viscosity [m^2/s] (steady over the cycle).
+    density_kg_m3 : float, array or CasADi symbol
+        Oil density [kg/m^3].
+    law : FrictionLaw
+        How C_m is computed.
+
     Returns
     -------
     float, array or CasADi expression
         Mean power [W].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 5 and 10) [1]: the
+    mean over the cycle's 1500 samples, reduced exactly to its speed distribution.
     """
     return weighted_mean(region_power(region, nodes_rad_s, nu_m2_s, density_kg_m3, law),
                          weights)
@@ -169,19 +217,50 @@ def rotor_stator_radii(R_m, delta_m, rotor_groove_m, stator_groove_m):
 
     Parameters
     ----------
-    R_m : rotor outer radius [m]
-    delta_m : clearance [m]
-    rotor_groove_m, stator_groove_m : groove depths left open [m]
+    R_m : float, array or CasADi symbol
+        Rotor outer radius [m].
+    delta_m : float, array or CasADi symbol
+        Clearance [m].
+    rotor_groove_m, stator_groove_m : float, array or CasADi symbol
+        Groove depths left open (after any epoxy fill) [m].
 
     Returns
     -------
-    (T1, T2, T3, T4) [m]
+    T1, T2, T3, T4 : float, array or CasADi expression
+        The four radii [m].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 9, Fig. 5) [1].
     """
     T3 = R_m + delta_m
     return R_m - rotor_groove_m, R_m, T3, T3 + stator_groove_m
 
 
 def rotor_stator_region(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m) -> Region:
-    """Region 1 from its design variables (R, delta, d_r, d_s, L) [m]; T from Eq. 9."""
+    """Region 1 from its design variables (R, delta, d_r, d_s, L) [m]; T from Eq. 9.
+
+    Parameters
+    ----------
+    R_m : float, array or CasADi symbol
+        Rotor outer radius [m].
+    delta_m : float, array or CasADi symbol
+        Clearance [m].
+    rotor_groove_m, stator_groove_m : float, array or CasADi symbol
+        Groove depths left open [m].
+    L_m : float, array or CasADi symbol
+        Length [m].
+
+    Returns
+    -------
+    Region
+        ``"rotor-stator"`` with R, delta, L [m] and ``T = 1 + (d_r + d_s)/delta`` [-].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 9) [1].
+    """
     T = groove_roughness(*rotor_stator_radii(R_m, delta_m, rotor_groove_m, stator_groove_m))
     return Region(REGION_NAMES[0], R_m, delta_m, L_m, T)

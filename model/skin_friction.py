@@ -7,7 +7,7 @@ law (Eq. 7) and the groove-roughness law (Eq. 8):
 * ``bilgen_boulos_cm_smooth``: the same branches blended with logistic weights
   in ln Re (width :data:`SMOOTH_WIDTH`), twice differentiable everywhere, for
   the optimizer. Outside a +-10 % band of Re around each break it is within
-  3 % of the exact form (tested; the bound actually reached is in the README).
+  3 % of the exact form (tested in ``tests/model/test_skin_friction.py``).
 * laminar law ``"couette"`` (default): ``C_m = max(C_m,Couette, C_m,Eq.6)`` with
   the exact circular-Couette coefficient ``8 (1+x)^2 / ((2+x) Re)``. No flow
   between the cylinders dissipates less than laminar Couette flow (Helmholtz's
@@ -25,7 +25,8 @@ References
 .. [1] E. Bilgen, R. Boulos, ASME J. Fluids Eng. 95(1):122-126, 1973.
 .. [2] J. Pyrhönen, T. Jokinen, V. Hrabovcová, *Design of Rotating Electrical
    Machines*, 2nd ed., Wiley 2014, p. 528.
-.. [3] Seed paper, Eqs. 5-9.
+.. [3] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for a
+   Deep-Sea Electric Manipulator*, Eqs. 5-9.
 .. [4] H. Helmholtz (1868); D. J. Korteweg, Phil. Mag. 16:112-118, 1883
    (minimum dissipation of Stokes flow).
 """
@@ -60,20 +61,79 @@ LAMINAR_LAWS = ("couette", "bilgen-boulos")
 
 
 def power_law_cm(reynolds, gap_ratio, C, alpha, beta):
-    """General power law ``Cm = C (delta/R)^alpha Re^beta`` (seed Eq. 7) [-]."""
+    """General power law ``Cm = C (delta/R)^alpha Re^beta`` (seed Eq. 7) [-].
+
+    Parameters
+    ----------
+    reynolds : float, array or CasADi symbol
+        Couette Reynolds number [-] (> 0).
+    gap_ratio : float, array or CasADi symbol
+        x = delta / R [-].
+    C, alpha, beta : float
+        Coefficient [-] and exponents [-] of the law.
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Moment coefficient C_m [-].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 7) [3]; each branch of Bilgen & Boulos [1]
+    is one instance.
+    """
     return C * gap_ratio**alpha * reynolds**beta
 
 
 def groove_roughness_factor(roughness_T, gamma):
-    """Groove-roughness factor ``T^gamma`` of seed Eq. 8 [-]."""
+    """Groove-roughness factor ``T^gamma`` of seed Eq. 8 [-].
+
+    Parameters
+    ----------
+    roughness_T : float, array or CasADi symbol
+        Clearance roughness T [-] (Eq. 9; 1 for a smooth annulus).
+    gamma : float or CasADi symbol
+        Roughness exponent [-].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Factor on C_m [-].
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 8) [3].
+    """
     return roughness_T**gamma
 
 
 def groove_roughness(T1_m, T2_m, T3_m, T4_m):
     """Clearance roughness ``T = (T4 - T1) / (T3 - T2)`` (seed Eq. 9) [-].
 
-    T1 rotor groove-bottom radius, T2 rotor outer radius, T3 stator bore radius,
-    T4 stator groove-bottom radius [m]; T3 - T2 is the clearance.
+    T3 - T2 is the clearance; the groove depths add to it.
+
+    Parameters
+    ----------
+    T1_m : float, array or CasADi symbol
+        Rotor groove-bottom radius [m].
+    T2_m : float, array or CasADi symbol
+        Rotor outer radius [m].
+    T3_m : float, array or CasADi symbol
+        Stator bore radius [m].
+    T4_m : float, array or CasADi symbol
+        Stator groove-bottom radius [m].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Roughness T [-] (1 for smooth walls).
+
+    References
+    ----------
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 9) [3]; the radii as read from its Fig. 5.
     """
     return (T4_m - T1_m) / (T3_m - T2_m)
 
@@ -81,9 +141,27 @@ def groove_roughness(T1_m, T2_m, T3_m, T4_m):
 def bilgen_boulos_cm(reynolds, gap_ratio):
     """Seed Eq. 6 exactly: the piecewise Bilgen-Boulos moment coefficient [-].
 
+    ``C_m = C_k x^0.3 Re^beta_k`` with (C, beta) = (10, -1) for Re < 64,
+    (2.00, -0.6) for 64 <= Re < 500, (1.03, -0.5) for 500 <= Re < 1e4 and
+    (0.065, -0.2) above.
+
+    Parameters
+    ----------
+    reynolds : float, array or CasADi symbol
+        Couette Reynolds number [-] (> 0).
+    gap_ratio : float, array or CasADi symbol
+        x = delta / R [-].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Moment coefficient C_m [-].
+
     References
     ----------
-    Bilgen & Boulos [1]; seed Eq. 6 [3].
+    Bilgen & Boulos [1]; Pyrhönen et al. [2];
+    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 6) [3].
     """
     b = [power_law_cm(reynolds, gap_ratio, C, BILGEN_BOULOS_ALPHA, beta)
          for C, beta in BILGEN_BOULOS_BRANCHES]
@@ -100,9 +178,25 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
     1e4. Every branch is an instance of Eq. 7, so the blend is Eq. 7 with a
     Reynolds-dependent C and beta.
 
+    Parameters
+    ----------
+    reynolds : float, array or CasADi symbol
+        Couette Reynolds number [-] (> 0).
+    gap_ratio : float, array or CasADi symbol
+        x = delta / R [-].
+    width : float
+        Width of the logistic blends in ln Re [-] (:data:`SMOOTH_WIDTH`).
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Moment coefficient C_m [-].
+
     References
     ----------
-    Bilgen & Boulos [1]; seed Eqs. 6-7 [3].
+    Bilgen & Boulos [1];
+    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 6-7) [3].
     """
     ln_re = m.log(reynolds)
     ln_x = m.log(gap_ratio)
@@ -117,9 +211,27 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
 def couette_law_cm(reynolds, gap_ratio):
     """Eq. 6 bounded below by the exact laminar law: ``max(Couette, Eq. 6)`` [-].
 
+    No flow between the cylinders dissipates less than circular Couette flow
+    (minimum dissipation of Stokes flow), so Eq. 6 values below it are unphysical.
+
+    Parameters
+    ----------
+    reynolds : float, array or CasADi symbol
+        Couette Reynolds number [-] (> 0).
+    gap_ratio : float, array or CasADi symbol
+        x = delta / R [-].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Moment coefficient C_m [-].
+
     References
     ----------
-    White (circular Couette flow); Helmholtz/Korteweg [4]; Bilgen & Boulos [1].
+    White, *Viscous Fluid Flow*, sec. 3-2.3 (circular Couette flow); Helmholtz and
+    Korteweg [4]; Bilgen & Boulos [1];
+    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 6) [3].
     """
     return m.fmax(couette_moment_coefficient(reynolds, gap_ratio),
                   bilgen_boulos_cm(reynolds, gap_ratio))
@@ -128,7 +240,32 @@ def couette_law_cm(reynolds, gap_ratio):
 def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
                           max_width=SMOOTH_MAX_WIDTH):
     """Smooth form of :func:`couette_law_cm`: a smooth max in log space of the
-    Couette coefficient and :func:`bilgen_boulos_cm_smooth` [-]."""
+    Couette coefficient and :func:`bilgen_boulos_cm_smooth` [-].
+
+    ``ln C_m = ln C_c + smooth_relu(ln C_bb - ln C_c, max_width)``.
+
+    Parameters
+    ----------
+    reynolds : float, array or CasADi symbol
+        Couette Reynolds number [-] (> 0).
+    gap_ratio : float, array or CasADi symbol
+        x = delta / R [-].
+    width : float
+        Width of the branch blends in ln Re [-] (:data:`SMOOTH_WIDTH`).
+    max_width : float
+        Width of the smooth max in ln C_m [-] (:data:`SMOOTH_MAX_WIDTH`).
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Moment coefficient C_m [-].
+
+    References
+    ----------
+    As :func:`couette_law_cm` (Helmholtz and Korteweg [4], Bilgen & Boulos [1],
+    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eq. 6) [3]).
+    """
     ln_cc = m.log(couette_moment_coefficient(reynolds, gap_ratio))
     ln_bb = m.log(bilgen_boulos_cm_smooth(reynolds, gap_ratio, width))
     return m.exp(ln_cc + m.smooth_relu(ln_bb - ln_cc, max_width))
@@ -141,16 +278,24 @@ class FrictionLaw:
     Attributes
     ----------
     form : {"bilgen-boulos", "smooth", "power-law"}
-        Eq. 6 exactly, its smooth form, or one power law (Eq. 7) with C, alpha, beta.
+        Eq. 6 exactly, its smooth form, or one power law (Eq. 7) with C, alpha, beta
+        (equations of the seed paper, *Modeling and Optimization of Compensating Oil
+        Viscous Power for a Deep-Sea Electric Manipulator*).
     laminar_law : {"couette", "bilgen-boulos"}
         ``"couette"``: Eq. 6 bounded below by the exact laminar Couette law;
         ``"bilgen-boulos"``: Eq. 6 as published (both Eq. 6 forms).
     gamma : float
-        Groove-roughness exponent of Eq. 8 (applies to region 1 only, via T).
+        Groove-roughness exponent of Eq. 8 [-] (applies to region 1 only, via T).
     scale : float
-        Multiplier on the Eq. 6 forms (a calibration constant; 1 = as published).
+        Multiplier on the Eq. 6 forms [-] (a calibration constant; 1 = as published).
     C, alpha, beta : float
-        Coefficients of the power-law form (default: the Eq. 6 laminar branch).
+        Coefficient [-] and exponents [-] of the power-law form (default: the Eq. 6
+        laminar branch).
+
+    Raises
+    ------
+    InputError
+        Unknown form or laminar law, non-finite exponents, C or scale <= 0.
     """
 
     form: Literal["bilgen-boulos", "smooth", "power-law"] = "bilgen-boulos"
@@ -174,7 +319,13 @@ class FrictionLaw:
         check_positive("C", self.C, where)
 
     def smooth(self) -> FrictionLaw:
-        """The same law with the smooth form of Eq. 6 (power law stays as it is)."""
+        """The same law with the smooth form of Eq. 6 (power law stays as it is).
+
+        Returns
+        -------
+        FrictionLaw
+            ``form = "smooth"`` unless the form is ``"power-law"``; C_m stays [-].
+        """
         return self if self.form == "power-law" else replace(self, form="smooth")
 
 
@@ -183,14 +334,24 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
 
     Parameters
     ----------
-    reynolds : Couette Reynolds number [-] (floored at :data:`RE_FLOOR`)
-    gap_ratio : delta / R [-]
+    reynolds : float, array or CasADi symbol
+        Couette Reynolds number [-] (floored at :data:`RE_FLOOR`).
+    gap_ratio : float, array or CasADi symbol
+        delta / R [-].
     law : FrictionLaw
-    roughness_T : clearance roughness T [-] (1 = smooth; Eq. 9)
+        Form, laminar law, roughness exponent gamma [-], scale [-].
+    roughness_T : float, array or CasADi symbol
+        Clearance roughness T [-] (1 = smooth; Eq. 9).
+
+    Returns
+    -------
+    float, array or CasADi expression
+        ``scale * C_m,form(Re, x) * T^gamma`` [-] (no scale for the power law).
 
     References
     ----------
-    Seed Eqs. 6-8 [3]; Bilgen & Boulos [1].
+    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 6-8) [3]; Bilgen & Boulos [1].
     """
     re = m.fmax(reynolds, RE_FLOOR)
     if law.form == "power-law":

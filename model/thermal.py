@@ -37,16 +37,25 @@ def lumped_temperature_rate(temp_C, heat_W, ambient_C, resistance_K_W, heat_capa
 
     Parameters
     ----------
-    temp_C : temperature of the lump [degC]
-    heat_W : heat released in it [W]
-    ambient_C : temperature of the surroundings [degC]
-    resistance_K_W : thermal resistance to the surroundings [K/W], > 0
-    heat_capacity_J_K : heat capacity of the lump [J/K], > 0
+    temp_C : float or array
+        Temperature of the lump [degC].
+    heat_W : float or array
+        Heat released in it [W].
+    ambient_C : float or array
+        Temperature of the surroundings [degC].
+    resistance_K_W : float
+        Thermal resistance to the surroundings [K/W], > 0.
+    heat_capacity_J_K : float
+        Heat capacity of the lump [J/K], > 0.
 
     Returns
     -------
     float or array
         Rate of change of the temperature [K/s].
+
+    References
+    ----------
+    Bergman et al. [1], sec. 5.2 (lumped capacitance).
     """
     return (heat_W - (temp_C - ambient_C) / resistance_K_W) / heat_capacity_J_K
 
@@ -74,6 +83,12 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
         ``R_th`` [K/W], >= 0 (0: the oil is at ``T_base``).
     n : int
         Number of cases.
+    tol_K : float
+        Tolerance on the residual ``g(T)`` [K].
+    max_iter : int
+        Largest number of Newton iterations.
+    max_temp_C : float
+        Cap of the temperature [degC] (:data:`MAX_OIL_TEMP_C`).
 
     Returns
     -------
@@ -88,6 +103,10 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
         ``resistance_K_W`` < 0.
     SolverError
         No convergence to ``tol_K`` in ``max_iter`` iterations.
+
+    References
+    ----------
+    Bergman et al. [1], sec. 3.1 (thermal resistance).
     """
     tb = np.broadcast_to(np.asarray(base_temp_C, dtype=float), (n,)).copy()
     rth = float(resistance_K_W)

@@ -1,9 +1,10 @@
 """Independent solve of the design NLP with SciPy SLSQP on the numpy path of the model.
 
 Same problem as :class:`oilgap.optim.design.DesignProblem` (same variables in
-mm, same scaling, same bounds and parameters, same model functions), but the
-objective and constraints are evaluated with numpy (vectorised over the
-duty-cycle nodes) and SLSQP differentiates them by finite differences. No
+mm, same scaling, same bounds and parameters, the same objective), but the
+objective and constraints are evaluated on the numpy path of
+:class:`oilgap.optim.design.DesignObjective` (vectorised over the duty-cycle
+nodes) and SLSQP differentiates them by finite differences. No
 CasADi, no IPOPT: it is the cross-check of the CasADi/IPOPT optimum and the
 baseline of the speed benchmark.
 
@@ -16,22 +17,43 @@ References
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 from scipy.optimize import Bounds, minimize
 
-from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.units import MM_TO_M
 
-from .design import DesignParameters, DesignProblem, region1_mean_power
+from .design import DesignParameters, DesignProblem
 
 
 @dataclass(frozen=True)
 class ReferenceResult:
-    """Outcome of :func:`solve_slsqp` (SI)."""
+    """Outcome of :func:`solve_slsqp` (SI).
+
+    Parameters
+    ----------
+    x_m : ndarray of 5 floats
+        The optimum (R, delta, d_r, d_s, L) [m].
+    region1_power_W : float
+        Region-1 mean power [W].
+    mean_power_W : float
+        Region 1 plus region 2, smooth C_m (the NLP's objective) [W].
+    torque_capability_Nm : float
+        Torque capability [N m].
+    inertia_kgm2 : float
+        Rotor inertia [kg m^2].
+    success : bool
+        SLSQP's success flag.
+    message : str
+        SLSQP's message.
+    iterations, evaluations : int
+        SLSQP iterations and objective evaluations.
+    solve_time_s : float
+        Wall time [s].
+    """
 
     x_m: np.ndarray
     """(R, delta, d_r, d_s, L) [m]."""
@@ -47,24 +69,33 @@ class ReferenceResult:
     solve_time_s: float
 
 
-def numpy_functions(problem: DesignProblem, params: DesignParameters):
-    """(objective P1(x_mm) [W], torque(x_mm) [N m], inertia(x_mm) [kg m^2]) on the numpy path."""
-    nodes, weights, law, motor = (problem.nodes_rad_s, problem.weights, problem.law,
-                                  problem.case.motor)
-    nu, rho = params.nu_m2_s, params.rho_kg_m3
-    d_r0 = problem.machined_rotor_groove_m
+def numpy_functions(problem: DesignProblem, params: DesignParameters
+                    ) -> tuple[Callable, Callable, Callable]:
+    """The objective and constraints of a solve as functions of x in mm (numpy path).
+
+    Parameters
+    ----------
+    problem : DesignProblem
+        Supplies the objective (:meth:`DesignProblem.objective`).
+    params : DesignParameters
+        The solve's parameters (its oil state).
+
+    Returns
+    -------
+    power, torque, inertia : callable
+        Of x = (R, delta, d_r, d_s, L) [mm]: region-1 mean power P1 [W], torque
+        capability [N m], rotor inertia [kg m^2], as floats.
+    """
+    objective = problem.objective(params)
 
     def power(x_mm):
-        R, d, a, b, L = np.asarray(x_mm, dtype=float) * MM_TO_M
-        return float(region1_mean_power(R, d, a, b, L, nu, rho, nodes, weights, law))
+        return float(objective.mean_power(np.asarray(x_mm, dtype=float) * MM_TO_M))
 
     def torque(x_mm):
-        R, d, _, _, L = np.asarray(x_mm, dtype=float) * MM_TO_M
-        return float(motor_torque(motor, R, d, L)[0])
+        return float(objective.torque(np.asarray(x_mm, dtype=float) * MM_TO_M))
 
     def inertia(x_mm):
-        R, _, a, _, L = np.asarray(x_mm, dtype=float) * MM_TO_M
-        return float(rotor_inertia(motor, R, a, L, d_r0))
+        return float(objective.inertia(np.asarray(x_mm, dtype=float) * MM_TO_M))
 
     return power, torque, inertia
 
@@ -76,10 +107,21 @@ def solve_slsqp(problem: DesignProblem, x0: Sequence[float] | None = None, *,
     Parameters
     ----------
     problem : DesignProblem
-        Supplies the case, nodes/weights, law and the parameter resolution.
-    x0 : (R, delta, d_r, d_s, L) [m]; default the case's design
-    ftol : SLSQP tolerance on the scaled objective (~1 at the start) [-]
-    **overrides : as :meth:`DesignProblem.solve`
+        Supplies the case, the objective (:func:`numpy_functions`) and the
+        parameter resolution.
+    x0 : sequence of 5 floats, optional
+        Start (R, delta, d_r, d_s, L) [m]; default the case's design.
+    ftol : float
+        SLSQP tolerance on the scaled objective (~1 at the start) [-].
+    maxiter : int
+        SLSQP's iteration limit.
+    **overrides
+        As :meth:`DesignProblem.solve`.
+
+    Returns
+    -------
+    ReferenceResult
+        The optimum [m] with its powers [W], torque [N m] and inertia [kg m^2].
     """
     params = problem.parameters(**overrides)
     lo_mm = np.asarray(params.lower_m) / MM_TO_M

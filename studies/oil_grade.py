@@ -2,7 +2,7 @@
 
 For each grade the study evaluates the joint's mean viscous power over its duty
 cycle on a grid over the envelope (sea depth x oil temperature, default
-0-7000 m x 0-40 degC) through :func:`oilgap.studies.trade.run_grid`, then:
+0-7000 m x 0-40 degC) through :func:`oilgap.studies.grid.runner.run_grid`, then:
 
 * **Lubrication limit** (harmonic reducer and bearings): the lowest viscosity in
   the envelope (hottest, shallowest point) must stay at or above ``nu_min_cSt``.
@@ -47,10 +47,13 @@ from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, check_finite, check_positive, check_range
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
-from oilgap.studies.trade import markdown_table, new_figure, run_grid, save_figure, write_tables
+from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_tables
 
 ISO_GRADES = ("VG10", "VG15", "VG22", "VG32", "VG46", "VG68", "VG100", "VG150", "VG220",
               "VG320", "VG460", "VG680", "VG1000")
+WHERE = "oil-grade study"
+"""Context named by the study's InputErrors."""
 DEFAULT_NU_MIN_CST = 13.0
 """Lubrication limit: minimum viscosity at the hottest envelope point [cSt]."""
 DEFAULT_NU_MAX_CST = 1000.0
@@ -185,7 +188,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     mission_hours : mission duration [h]
     rated_temps_C : oil temperatures of the loss-vs-grade view at the rated depth
         (default: envelope min, the case's temperature, 20 degC, envelope max)
-    workers, progress : passed to :func:`~oilgap.studies.trade.run_grid`
+    workers, progress : passed to :func:`~oilgap.studies.grid.runner.run_grid`
 
     Raises
     ------
@@ -193,37 +196,75 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         Bad limits, ranges, grid sizes, mission or grade names.
     """
     base = case if case is not None else seed_case()
-    where = "oil-grade study"
-    nu_min = check_positive("nu_min_cSt", nu_min_cSt, where)
-    nu_max = check_positive("nu_max_cSt", nu_max_cSt, where)
-    if nu_max <= nu_min:
-        raise InputError("nu_max_cSt", nu_max, f"must be > nu_min_cSt = {nu_min:g}", where)
-    tol = check_range("iso_tolerance", iso_tolerance, 0.0, 0.5, where)
-    d_lo, d_hi = _range("depth_range_m", depth_range_m, 0.0, 11_000.0)
-    t_lo, t_hi = _range("temp_range_C", temp_range_C, -20.0, 150.0)
-    for name, n in (("n_depth", n_depth), ("n_temp", n_temp)):
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-            raise InputError(name, n, "must be an integer >= 2", where)
-    hours = check_positive("mission_hours", mission_hours, where)
+    settings = _settings(nu_min_cSt, nu_max_cSt, iso_tolerance, depth_range_m, temp_range_C,
+                         n_depth, n_temp, mission_hours)
     if not grades:
-        raise InputError("grades", list(grades), "needs at least one oil", where)
+        raise InputError("grades", list(grades), "needs at least one oil", WHERE)
     catalogue = builtin_oils()
     if base.oils_csv:
         catalogue.update(read_oils_csv(base.oils_csv))
     grades = [get_oil(g, catalogue).name for g in grades]
-    if mission is not None:
-        segs, source = parse_mission(mission), "given"
-    elif base.mission:
-        segs, source = tuple(base.mission), "the case's [[mission]] rows"
-    else:
-        segs, source = SEED_MISSION, "default seed mission (the case has none)"
-    rated_depth = base.operating.depth_m
+    segs, source = _mission(base, mission)
+    settings["rated_depth_m"] = base.operating.depth_m
     if rated_temps_C is None:
+        t_lo, t_hi = settings["temp_range_C"]
         rated_temps_C = sorted({t_lo, base.operating.oil_temp_C, 20.0, t_hi})
-    rated_temps = [check_finite("rated_temps_C", t, where) for t in rated_temps_C]
+    settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated_temps_C]
+    grid = _grid(grades, segs, settings)
+    res = run_grid(grid, base, out_dir=Path(out_dir) / "grid" if out_dir else None,
+                   workers=workers, progress=progress, label="oil-grade", catalogue=catalogue)
+    failed = res[res["status"] != "ok"]
+    if len(failed):
+        raise InputError("grid point", failed.iloc[0][["oil", "depth_m", "oil_temp_C"]].to_dict(),
+                         f"failed: {failed['error'].iloc[0]}", WHERE)
+    envelope = res[res["label"] == "envelope"].reset_index(drop=True)
+    mres = res[res["label"] == "mission"].reset_index(drop=True)
+    rated = res[res["label"] == "rated"].reset_index(drop=True)
+    table = _grade_table(base, catalogue, grades, envelope, mres, rated, segs, settings)
+    recommended, runner_up, best_e = _rank(table)
+    _verdicts(table, recommended, runner_up, best_e, settings)
+    result = OilGradeResult(table, envelope, rated, recommended, runner_up, segs, source,
+                            settings)
+    if out_dir is not None:
+        files = write_outputs(Path(out_dir), result, base)
+        result = replace(result, files=files)
+    return result
 
-    depths = np.linspace(d_lo, d_hi, n_depth)
-    temps = np.linspace(t_lo, t_hi, n_temp)
+
+def _settings(nu_min_cSt: float, nu_max_cSt: float, iso_tolerance: float,
+              depth_range_m: Sequence[float], temp_range_C: Sequence[float], n_depth: int,
+              n_temp: int, mission_hours: float) -> dict:
+    """The study's limits, envelope and grid sizes, checked."""
+    nu_min = check_positive("nu_min_cSt", nu_min_cSt, WHERE)
+    nu_max = check_positive("nu_max_cSt", nu_max_cSt, WHERE)
+    if nu_max <= nu_min:
+        raise InputError("nu_max_cSt", nu_max, f"must be > nu_min_cSt = {nu_min:g}", WHERE)
+    tol = check_range("iso_tolerance", iso_tolerance, 0.0, 0.5, WHERE)
+    d_lo, d_hi = _range("depth_range_m", depth_range_m, 0.0, 11_000.0)
+    t_lo, t_hi = _range("temp_range_C", temp_range_C, -20.0, 150.0)
+    for name, n in (("n_depth", n_depth), ("n_temp", n_temp)):
+        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
+            raise InputError(name, n, "must be an integer >= 2", WHERE)
+    hours = check_positive("mission_hours", mission_hours, WHERE)
+    return {"nu_min_cSt": nu_min, "nu_max_cSt": nu_max, "iso_tolerance": tol,
+            "depth_range_m": (d_lo, d_hi), "temp_range_C": (t_lo, t_hi),
+            "n_depth": int(n_depth), "n_temp": int(n_temp), "mission_hours": hours}
+
+
+def _mission(base: DesignCase, mission) -> tuple[tuple[MissionSegment, ...], str]:
+    """The mission profile used and where it comes from."""
+    if mission is not None:
+        return parse_mission(mission), "given"
+    if base.mission:
+        return tuple(base.mission), "the case's [[mission]] rows"
+    return SEED_MISSION, "default seed mission (the case has none)"
+
+
+def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> pd.DataFrame:
+    """One grid for every grade: the envelope, the mission rows and the rated-depth view."""
+    depths = np.linspace(*settings["depth_range_m"], settings["n_depth"])
+    temps = np.linspace(*settings["temp_range_C"], settings["n_temp"])
+    rated_temps = settings["rated_temps_C"]
     D, Tm = np.meshgrid(depths, temps, indexing="ij")
     env = pd.DataFrame({"depth_m": np.tile(D.ravel(), len(grades)),
                         "oil_temp_C": np.tile(Tm.ravel(), len(grades)),
@@ -231,21 +272,19 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     mis = pd.DataFrame({"depth_m": np.tile([s.depth_m for s in segs], len(grades)),
                         "oil_temp_C": np.tile([s.oil_temp_C for s in segs], len(grades)),
                         "oil": np.repeat(grades, len(segs)), "label": "mission"})
-    rat = pd.DataFrame({"depth_m": rated_depth,
+    rat = pd.DataFrame({"depth_m": settings["rated_depth_m"],
                         "oil_temp_C": np.tile(rated_temps, len(grades)),
                         "oil": np.repeat(grades, len(rated_temps)), "label": "rated"})
-    grid = pd.concat([env, mis, rat], ignore_index=True)
-    res = run_grid(grid, base, out_dir=Path(out_dir) / "grid" if out_dir else None,
-                   workers=workers, progress=progress, label="oil-grade", catalogue=catalogue)
-    failed = res[res["status"] != "ok"]
-    if len(failed):
-        raise InputError("grid point", failed.iloc[0][["oil", "depth_m", "oil_temp_C"]].to_dict(),
-                         f"failed: {failed['error'].iloc[0]}", where)
-    envelope = res[res["label"] == "envelope"].reset_index(drop=True)
-    mres = res[res["label"] == "mission"].reset_index(drop=True)
-    rated = res[res["label"] == "rated"].reset_index(drop=True)
-    fr = np.array([s.fraction for s in segs])
+    return pd.concat([env, mis, rat], ignore_index=True)
 
+
+def _grade_table(base: DesignCase, catalogue: dict, grades: list[str], envelope: pd.DataFrame,
+                 mres: pd.DataFrame, rated: pd.DataFrame, segs: Sequence[MissionSegment],
+                 settings: dict) -> pd.DataFrame:
+    """One row per grade: the envelope's extreme viscosities, the limits' checks, the
+    cold peak torque, the powers and the mission energy."""
+    tol = settings["iso_tolerance"]
+    fr = np.array([s.fraction for s in segs])
     rows = []
     for g in grades:
         e = envelope[envelope["oil"] == g]
@@ -264,16 +303,21 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
             "nu_min_at_m": float(e.loc[i_lo, "depth_m"]),
             "nu_max_envelope_cSt": hi_nu, "nu_max_at_C": float(e.loc[i_hi, "oil_temp_C"]),
             "nu_max_at_m": float(e.loc[i_hi, "depth_m"]),
-            "passes_lubrication": bool((1 - tol) * lo_nu >= nu_min),
-            "passes_cold": bool((1 + tol) * hi_nu <= nu_max),
+            "passes_lubrication": bool((1 - tol) * lo_nu >= settings["nu_min_cSt"]),
+            "passes_cold": bool((1 + tol) * hi_nu <= settings["nu_max_cSt"]),
             "peak_viscous_torque_cold_Nm": evaluate_case(cold_case).viscous_torque_peak_Nm,
             "envelope_min_power_W": float(e["mean_power_W"].min()),
             "envelope_max_power_W": float(e["mean_power_W"].max()),
             "rated_power_W": (float(r_at_case["mean_power_W"].iloc[0]) if len(r_at_case)
                               else float("nan")),
             "mission_mean_power_W": mean_p,
-            "mission_energy_Wh": mean_p * hours})
-    table = pd.DataFrame(rows)
+            "mission_energy_Wh": mean_p * settings["mission_hours"]})
+    return pd.DataFrame(rows)
+
+
+def _rank(table: pd.DataFrame) -> tuple[str | None, str | None, float]:
+    """Add ``feasible`` and ``rank`` (by mission energy among the feasible grades);
+    return (recommended, runner-up, the recommended grade's mission energy [Wh])."""
     table["feasible"] = table["passes_lubrication"] & table["passes_cold"]
     order = table[table["feasible"]].sort_values("mission_energy_Wh")
     table["rank"] = pd.Series(dtype="Int64")
@@ -282,6 +326,13 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     recommended = order["oil"].iloc[0] if len(order) else None
     runner_up = order["oil"].iloc[1] if len(order) > 1 else None
     best_e = float(order["mission_energy_Wh"].iloc[0]) if len(order) else float("nan")
+    return recommended, runner_up, best_e
+
+
+def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | None,
+              best_e: float, settings: dict) -> None:
+    """Add ``verdict`` and ``reason``: why each grade fails, loses or wins."""
+    tol, nu_min, nu_max = (settings[k] for k in ("iso_tolerance", "nu_min_cSt", "nu_max_cSt"))
     verdicts, reasons = [], []
     for _, r in table.iterrows():
         why = []
@@ -310,16 +361,6 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
                            f"{recommended}")
     table["verdict"] = verdicts
     table["reason"] = reasons
-    settings = {"nu_min_cSt": nu_min, "nu_max_cSt": nu_max, "iso_tolerance": tol,
-                "depth_range_m": (d_lo, d_hi), "temp_range_C": (t_lo, t_hi),
-                "n_depth": int(n_depth), "n_temp": int(n_temp), "mission_hours": hours,
-                "rated_depth_m": rated_depth, "rated_temps_C": rated_temps}
-    result = OilGradeResult(table, envelope, rated, recommended, runner_up, segs, source,
-                            settings)
-    if out_dir is not None:
-        files = write_outputs(Path(out_dir), result, base)
-        result = replace(result, files=files)
-    return result
 
 
 def oil_grade_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:

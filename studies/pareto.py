@@ -3,8 +3,8 @@
 Both fronts are epsilon-constraint sweeps of the design NLP of issue 3
 (:class:`oilgap.optim.design.DesignProblem`, built once and re-solved with
 parameters), each point one IPOPT solve warm-started (primal and dual) from its
-neighbour, run through the trade-study engine
-(:func:`oilgap.studies.trade.run_grid` in ``mode="optimize"``, one chunk, so
+neighbour, run through the grid engine
+(:func:`oilgap.studies.grid.runner.run_grid` in ``mode="optimize"``, one chunk, so
 the grid is one warm-started chain):
 
 * **Gap front** (objectives: magnetic gap delta, mean viscous power; both
@@ -41,11 +41,8 @@ References
 from __future__ import annotations
 
 import time
-import warnings
-from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import pandas as pd
@@ -55,144 +52,24 @@ from oilgap.model.case_io import seed_case
 from oilgap.model.errors import (
     InfeasibleError,
     InputError,
-    OilgapWarning,
     SolverError,
     check_positive,
 )
-from oilgap.model.oils import get_oil
 from oilgap.model.units import MM_TO_M
-from oilgap.studies.trade import (
-    case_fingerprint,
-    evaluate_arrays,
-    evaluate_cases,
-    markdown_table,
-    new_figure,
-    run_grid,
-    save_figure,
-    write_tables,
-)
+from oilgap.optim.design import DesignProblem
+from oilgap.optim.multiobjective import arc_length_epsilons, hypervolume_2d
+from oilgap.studies.grid.evaluate import evaluate_cases
+from oilgap.studies.grid.optimize import solve_design_point
+from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.grid.store import case_fingerprint
+from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_tables
 
 MIN_POINTS = 50
 """The fewest points a front may have."""
 DEFAULT_POINTS = 60
 
 
-# --------------------------------------------------------------------------- one solve
-
-
-_PROBLEMS: dict[str, Any] = {}
-"""DesignProblems built in this process, by case fingerprint (the NLP is built once)."""
-_MAX_PROBLEMS = 16
-
-
-def _problem(case: DesignCase, problems: dict | None = None) -> tuple[str, Any]:
-    from oilgap.optim.design import DesignProblem
-
-    cache = _PROBLEMS if problems is None else problems
-    key = case_fingerprint(case)
-    if key not in cache:
-        if len(cache) >= _MAX_PROBLEMS:
-            cache.pop(next(iter(cache)))
-        cache[key] = DesignProblem(case)
-    return key, cache[key]
-
-
-_OVERRIDE_MAP = {"torque_min_Nm": ("torque_min_Nm", 1.0),
-                 "delta_min_mm": ("gap_min_m", MM_TO_M),
-                 "delta_max_mm": ("gap_max_m", MM_TO_M),
-                 "inertia_max_ratio": ("inertia_max_ratio", 1.0)}
-
-
-def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None,
-                       problems: dict | None = None, operating: Mapping[str, Any] | None = None
-                       ) -> tuple[dict, Any]:
-    """Solve the design NLP of ``case`` with grid overrides; return (record, warm start).
-
-    Parameters
-    ----------
-    case : DesignCase
-        The structure (geometry, friction, duty cycle, motor, bounds); its
-        DesignProblem is built once per distinct case (cached in ``problems``,
-        default a per-process cache).
-    overrides : mapping
-        Grid columns ``torque_min_Nm`` [N m], ``delta_min_mm``, ``delta_max_mm``
-        [mm], ``inertia_max_ratio`` [-].
-    x0 : optional
-        The warm start returned by a previous call (primal and dual if it came
-        from the same problem, primal only otherwise).
-    operating : mapping, optional
-        ``oil`` (name), ``oil_temp_C``, ``depth_m``: NLP parameters, no rebuild.
-
-    Returns
-    -------
-    record : dict
-        The result columns of :data:`oilgap.studies.trade.OPTIMIZE_RESULTS`.
-    warm : tuple
-        (problem key, DesignResult), to pass as the next ``x0``.
-
-    Raises
-    ------
-    InputError, InfeasibleError, SolverError
-        As :meth:`DesignProblem.solve`.
-    """
-    key, prob = _problem(case, problems)
-    kw: dict[str, Any] = {}
-    for k, v in overrides.items():
-        name, f = _OVERRIDE_MAP[k]
-        kw[name] = float(v) * f
-    for k, v in (operating or {}).items():
-        kw[k] = get_oil(str(v)) if k == "oil" else float(v)
-    start = None
-    if x0 is not None:
-        k0, r0 = x0
-        start = r0 if k0 == key else r0.optimal
-    t0 = time.perf_counter()
-    res = prob.solve(x0=start, **kw)
-    dt = time.perf_counter() - t0
-    o = res.optimal
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", OilgapWarning)
-        exact = float(evaluate_arrays([res.to_case()])[0]["mean_power_W"][0])
-    rec = dict(o.to_dict(), initial_mean_power_W=res.initial.mean_power_W,
-               mean_power_exact_W=exact, solve_time_s=dt, iterations=res.iterations,
-               active_constraints=" ".join(res.active_constraints),
-               torque_min_Nm_used=res.parameters.torque_min_Nm,
-               inertia_max_kgm2_used=res.parameters.inertia_max_kgm2)
-    return rec, (key, res)
-
-
 # --------------------------------------------------------------------------- fronts
-
-
-def hypervolume_2d(points: np.ndarray, ref: tuple[float, float]) -> float:
-    """Hypervolume (area) dominated by a set of 2-D points, both objectives minimised.
-
-    The area of the union of the boxes ``[f1, r1] x [f2, r2]`` over the points
-    that dominate the reference point ``r``; exact (sweep over f1).
-
-    References
-    ----------
-    Zitzler & Thiele [2].
-    """
-    p = np.asarray(points, dtype=float).reshape(-1, 2)
-    p = p[np.all(np.isfinite(p), axis=1) & (p[:, 0] < ref[0]) & (p[:, 1] < ref[1])]
-    if p.size == 0:
-        return 0.0
-    p = p[np.lexsort((p[:, 1], p[:, 0]))]
-    area, best_f2 = 0.0, float(ref[1])
-    for f1, f2 in p:  # f1 ascending: each new best f2 adds a strip of width ref1 - f1
-        if f2 < best_f2:
-            area += (ref[0] - f1) * (best_f2 - f2)
-            best_f2 = f2
-    return float(area)
-
-
-def nondominated(points: np.ndarray) -> np.ndarray:
-    """Mask of the points no other point dominates (both objectives minimised)."""
-    p = np.asarray(points, dtype=float).reshape(-1, 2)
-    le = (p[None, :, 0] <= p[:, None, 0]) & (p[None, :, 1] <= p[:, None, 1])
-    lt = (p[None, :, 0] < p[:, None, 0]) | (p[None, :, 1] < p[:, None, 1])
-    return ~np.any(le & lt, axis=1)
 
 
 def seed_points(case: DesignCase | None = None) -> pd.DataFrame:
@@ -202,8 +79,6 @@ def seed_points(case: DesignCase | None = None) -> pd.DataFrame:
     epoxy fill of the smoothed one) and with the exact C_m (``mean_power_exact_W``).
     If ``case`` is given, it is marked as ``case`` too.
     """
-    from oilgap.optim.design import DesignProblem
-
     grooved, smoothed = seed_case(False), seed_case(True)
     prob = DesignProblem(grooved)
     rows = []
@@ -238,30 +113,6 @@ def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
                    chunk_size=len(grid), progress=progress, label=label)
     res["epsilon"] = eps
     return res
-
-
-def arc_length_epsilons(x_top: float, y_top: float, x_bot: float, y_bot: float,
-                        points: int) -> np.ndarray:
-    """Epsilon values from ``x_top`` down to ``x_bot``, equally spaced along the front's
-    normalised arc length, the front modelled as ``y = a + b / x`` through its two ends.
-
-    Equal steps in delta crowd the flat part of a front shaped like 1/delta and
-    leave big steps on the steep part; equal arc length in normalised objective
-    space spreads the points evenly along the curve (a larger hypervolume for
-    the same number of solves). Falls back to equal steps in x if the ends do
-    not describe a falling front.
-    """
-    if not (x_top > x_bot > 0 and y_bot > y_top):
-        return np.linspace(x_top, x_bot, points)
-    b = (y_bot - y_top) / (1.0 / x_bot - 1.0 / x_top)
-    x = np.linspace(x_bot, x_top, 4001)
-    y = y_top + b * (1.0 / x - 1.0 / x_top)
-    xn = (x - x_bot) / (x_top - x_bot)
-    yn = (y - y_top) / (y_bot - y_top)
-    s = np.r_[0.0, np.cumsum(np.hypot(np.diff(xn), np.diff(yn)))]
-    eps = np.interp(np.linspace(0.0, s[-1], points), s, x)[::-1]
-    eps[0], eps[-1] = x_top, x_bot
-    return eps
 
 
 def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
@@ -310,8 +161,6 @@ def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = N
                                rtol: float = 1e-6) -> float:
     """Smallest ``inertia_max_ratio`` for which the design problem is feasible (bisection
     on :meth:`DesignProblem.check_feasible`, which decides feasibility exactly)."""
-    from oilgap.optim.design import DesignProblem
-
     prob = DesignProblem(case)
     kw = {} if torque_min_Nm is None else {"torque_min_Nm": torque_min_Nm}
 
@@ -555,29 +404,21 @@ def gap_problem_numpy(case: DesignCase | None = None, torque_min_Nm: float | Non
     Returns ``(lower_m, upper_m, evaluate)`` where ``evaluate(X)`` takes an
     (n, 5) array of (R, delta, d_r, d_s, L) [m] and returns ``F`` (n, 2) =
     (delta [mm], mean power [W]) and ``G`` (n, 2) <= 0 for feasibility
-    (torque_min - torque, J - J_max, scaled). Same functions and parameters as
-    the NLP (:func:`oilgap.optim.design.region1_mean_power`, ``motor_torque``,
-    ``rotor_inertia``, smooth C_m, the case's speed distribution).
+    (torque_min - torque, J - J_max, scaled). Same objective and parameters as
+    the NLP (:class:`oilgap.optim.design.DesignObjective`: smooth C_m, the
+    case's speed distribution, the motor's torque and inertia).
     """
-    from oilgap.model.motor import motor_torque, rotor_inertia
-    from oilgap.optim.design import DesignProblem, region1_mean_power
-
     base = case if case is not None else seed_case()
     prob = DesignProblem(base)
     params = prob.parameters(**({} if torque_min_Nm is None else
                                 {"torque_min_Nm": torque_min_Nm}))
-    nu, rho = params.nu_m2_s, params.rho_kg_m3
-    p2 = prob.region2_power(nu, rho)
-    m = base.motor
-    nodes, weights = prob.nodes_rad_s, prob.weights
+    p2 = prob.region2_power(params.nu_m2_s, params.rho_kg_m3)
+    objective = prob.objective(params)
 
     def evaluate(X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         X = np.atleast_2d(np.asarray(X, dtype=float))
-        R, d, dr, ds, L = (X[:, k:k + 1] for k in range(5))
-        p1 = region1_mean_power(R, d, dr, ds, L, nu, rho, nodes[None, :], weights, prob.law)
-        F = np.column_stack([X[:, 1] / MM_TO_M, np.ravel(p1) + p2])
-        tau = np.ravel(motor_torque(m, R, d, L)[0])
-        J = np.ravel(rotor_inertia(m, R, dr, L, prob.machined_rotor_groove_m))
+        p1, tau, J = objective(X)
+        F = np.column_stack([X[:, 1] / MM_TO_M, p1 + p2])
         G = np.column_stack([(params.torque_min_Nm - tau) / params.torque_min_Nm,
                              (J - params.inertia_max_kgm2) / params.inertia_max_kgm2])
         return F, G

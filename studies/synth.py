@@ -53,6 +53,7 @@ from oilgap.model.regions import joint_geometry
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.thermal import lumped_temperature_rate
 from oilgap.model.units import ZERO_CELSIUS_K, rad_s_to_rpm, rpm_to_rad_s
+from oilgap.optim.calibration import LoopEstimator
 
 DEFAULT_STRENGTH = {
     "end_face_disc": 4.0,
@@ -239,6 +240,88 @@ def _key(cfg: SynthConfig) -> str:
     return repr(d) + repr(case_to_dict(cfg.case))
 
 
+class _RigModel:
+    """The rig's runs as one ODE system: speed, heat, thermal state and sensor readings."""
+
+    def __init__(self, cfg: SynthConfig):
+        self.cfg = cfg
+        self.runs = _runs(cfg)
+        self.n_r = len(self.runs)
+        self.has_oil = np.array([r.oil is not None for r in self.runs])
+        self.oils = [get_oil(r.oil or cfg.oils[0]) for r in self.runs]
+        self.rough = np.array([r.roughness for r in self.runs])
+        self.w0 = rpm_to_rad_s(cfg.peak_speed_rpm)
+        self.two_pi_f = 2.0 * np.pi * cfg.frequency_hz
+        self.lag = cfg.strength if cfg.effect == "thermal_lag" else 0.0
+        self.sol = None
+
+    def speed(self, t):
+        """Speed [rad/s] and acceleration [rad/s^2] at times t."""
+        w0, f = self.w0, self.two_pi_f
+        return w0 * np.sin(f * t), w0 * f * np.cos(f * t)
+
+    def split(self, y):
+        """(heated node, measured, oil) temperatures [degC]."""
+        n_r, lag = self.n_r, self.lag
+        th = y[:n_r]
+        if lag > 0:
+            return th, th, y[n_r:]
+        if lag < 0:
+            return th, y[n_r:], th
+        return th, th, th
+
+    def heat(self, t, y):
+        """Heat released in each run's joint [W]."""
+        cfg, has_oil = self.cfg, self.has_oil
+        w, a = self.speed(t)
+        th, _, toil = self.split(y)
+        nu, rho = _oil_state(self.oils, has_oil, toil)
+        ctx = _context(cfg, w, a, nu, rho, self.rough)
+        p = (ctx.power_W + _effect_power(cfg, ctx)) * has_oil
+        if cfg.effect == "oil_inertia":  # stored, not dissipated
+            p = ctx.power_W * has_oil
+        return p + cfg.baseline.heat(w, a, th)
+
+    def rhs(self, t, y):
+        """d/dt of the thermal state: the lumped law, plus the lagging node if any."""
+        cfg, n_r, lag = self.cfg, self.n_r, self.lag
+        th = y[:n_r]
+        dth = lumped_temperature_rate(th, self.heat(t, y), cfg.ambient_C,
+                                      cfg.thermal_resistance_K_W, cfg.heat_capacity_J_K)
+        if lag == 0.0:
+            return dth
+        other = y[n_r:]
+        return np.concatenate([dth, (th - other) / abs(lag)])
+
+    def integrate(self, t: np.ndarray) -> None:
+        """Integrate the thermal state over the record (dense output kept)."""
+        y0 = np.full(self.n_r * (2 if self.lag else 1), self.cfg.ambient_C)
+        sol = solve_ivp(self.rhs, (0.0, t[-1]), y0, method="RK45", t_eval=t,
+                        dense_output=True, rtol=1e-7, atol=1e-6, max_step=1.0)
+        if not sol.success:  # pragma: no cover - a smooth, stable ODE
+            raise SolverError(f"thermal model: {sol.message}")
+        self.sol = sol
+
+    def record(self, tt):
+        """Everything the sensors see at times tt (n_runs x n arrays)."""
+        cfg, has_oil, rough = self.cfg, self.has_oil, self.rough
+        yy = self.sol.sol(np.clip(tt, 0.0, None)) if np.ndim(tt) else \
+            self.sol.sol(max(tt, 0.0))
+        w, a = self.speed(tt)
+        th, tmeas, toil = self.split(yy)
+        nu, rho = _oil_state(self.oils, has_oil[:, None], toil)
+        ctx = _context(cfg, w[None, :], a[None, :], nu, rho, rough[:, None])
+        visc = ctx.power_W * has_oil[:, None]
+        eff = _effect_power(cfg, ctx) * has_oil[:, None]
+        extra = np.zeros_like(visc)
+        if cfg.extra_power == "direction_dependent":
+            extra = 0.15 * visc * np.sign(w)[None, :]
+        elif cfg.extra_power == "power_meter_drift":
+            extra = 0.02 * np.broadcast_to(tt, visc.shape) * has_oil[:, None]
+        base = cfg.baseline.power(w[None, :], a[None, :], th, rough[:, None])
+        return w, th, tmeas, toil, visc, eff, extra, base
+
+
 def simulate_truth(config: SynthConfig | None = None) -> dict:
     """Noise-free simulation of every run (cached).
 
@@ -253,81 +336,19 @@ def simulate_truth(config: SynthConfig | None = None) -> dict:
     key = _key(cfg)
     if key in _CACHE:
         return _CACHE[key]
-    runs = _runs(cfg)
-    n_r = len(runs)
-    has_oil = np.array([r.oil is not None for r in runs])
-    oils = [get_oil(r.oil or cfg.oils[0]) for r in runs]
-    rough = np.array([r.roughness for r in runs])
-    w0 = rpm_to_rad_s(cfg.peak_speed_rpm)
-    two_pi_f = 2.0 * np.pi * cfg.frequency_hz
-    bl = cfg.baseline
-    lag = cfg.strength if cfg.effect == "thermal_lag" else 0.0
-
-    def speed(t):
-        return w0 * np.sin(two_pi_f * t), w0 * two_pi_f * np.cos(two_pi_f * t)
-
-    def split(y):
-        """(heated node, measured, oil) temperatures [degC]."""
-        th = y[:n_r]
-        if lag > 0:
-            return th, th, y[n_r:]
-        if lag < 0:
-            return th, y[n_r:], th
-        return th, th, th
-
-    def heat(t, y):
-        w, a = speed(t)
-        th, _, toil = split(y)
-        nu, rho = _oil_state(oils, has_oil, toil)
-        ctx = _context(cfg, w, a, nu, rho, rough)
-        p = (ctx.power_W + _effect_power(cfg, ctx)) * has_oil
-        if cfg.effect == "oil_inertia":  # stored, not dissipated
-            p = ctx.power_W * has_oil
-        return p + bl.heat(w, a, th)
-
-    def rhs(t, y):
-        th = y[:n_r]
-        dth = lumped_temperature_rate(th, heat(t, y), cfg.ambient_C,
-                                      cfg.thermal_resistance_K_W, cfg.heat_capacity_J_K)
-        if lag == 0.0:
-            return dth
-        other = y[n_r:]
-        return np.concatenate([dth, (th - other) / abs(lag)])
-
+    rig = _RigModel(cfg)
     t = np.arange(cfg.n_samples) * cfg.sample_interval_s
-    y0 = np.full(n_r * (2 if lag else 1), cfg.ambient_C)
-    sol = solve_ivp(rhs, (0.0, t[-1]), y0, method="RK45", t_eval=t, dense_output=True,
-                    rtol=1e-7, atol=1e-6, max_step=1.0)
-    if not sol.success:  # pragma: no cover - a smooth, stable ODE
-        raise SolverError(f"thermal model: {sol.message}")
+    rig.integrate(t)
     delay = cfg.strength if cfg.effect == "sensor_delay" else 0.0
-
-    def record(tt):
-        """Everything the sensors see at times tt (n_runs x n arrays)."""
-        yy = sol.sol(np.clip(tt, 0.0, None)) if np.ndim(tt) else sol.sol(max(tt, 0.0))
-        w, a = speed(tt)
-        th, tmeas, toil = split(yy)
-        nu, rho = _oil_state(oils, has_oil[:, None], toil)
-        ctx = _context(cfg, w[None, :], a[None, :], nu, rho, rough[:, None])
-        visc = ctx.power_W * has_oil[:, None]
-        eff = _effect_power(cfg, ctx) * has_oil[:, None]
-        extra = np.zeros_like(visc)
-        if cfg.extra_power == "direction_dependent":
-            extra = 0.15 * visc * np.sign(w)[None, :]
-        elif cfg.extra_power == "power_meter_drift":
-            extra = 0.02 * np.broadcast_to(tt, visc.shape) * has_oil[:, None]
-        base = bl.power(w[None, :], a[None, :], th, rough[:, None])
-        return w, th, tmeas, toil, visc, eff, extra, base
-
-    w, th, tmeas, toil, visc, eff, extra, base = record(t)
+    w, th, tmeas, toil, visc, eff, extra, base = rig.record(t)
     if delay:
-        _, _, _, _, visc_d, eff_d, extra_d, base_d = record(t - delay)
+        _, _, _, _, visc_d, eff_d, extra_d, base_d = rig.record(t - delay)
     else:
         visc_d, eff_d, extra_d, base_d = visc, eff, extra, base
     oil_part = visc_d + eff_d + extra_d
     measured = oil_part + base_d if cfg.kind == "power_W" else oil_part
-    out = {"config": cfg, "runs": [(r.name, r.oil, r.roughness) for r in runs], "time_s": t,
-           "omega": np.broadcast_to(w, visc.shape).copy(), "temp_meas_C": tmeas,
+    out = {"config": cfg, "runs": [(r.name, r.oil, r.roughness) for r in rig.runs],
+           "time_s": t, "omega": np.broadcast_to(w, visc.shape).copy(), "temp_meas_C": tmeas,
            "temp_oil_C": toil, "viscous_W": visc, "effect_W": eff_d + extra_d,
            "measured_W": measured}
     if len(_CACHE) > 64:
@@ -377,8 +398,6 @@ def weakest_strength(effect: str, config: SynthConfig | None = None,
     the last strength found on every seed (``weakest_found``), the first one
     missed (``first_missed``) and each step's held-out cuts.
     """
-    from oilgap.optim.calibration.estimator import LoopEstimator
-
     cfg = config or SynthConfig()
     get_effect(effect)
     s = DEFAULT_STRENGTH[effect]

@@ -4,6 +4,12 @@ The baseline is a linear least-squares model of the oil-free runs of each T in
 speed, acceleration and (if the oil-free runs span enough of it) temperature;
 the runs are not synchronised sample by sample, so the model, not the samples,
 is subtracted from the oil runs' electrical power.
+
+References
+----------
+.. [1] G. H. Golub, C. F. Van Loan, *Matrix Computations*, 4th ed., Johns
+   Hopkins 2013, sec. 5.5 (least squares, coefficient covariance
+   ``s^2 (X'X)^+``).
 """
 
 from __future__ import annotations
@@ -32,8 +38,29 @@ def _baseline_matrix(omega, alpha, dtemp, with_temp: bool) -> np.ndarray:
 class BaselineFit:
     """Oil-free baseline of one roughness T: ``P = sum_j c_j f_j(w, dw/dt, T)`` [W].
 
-    ``terms`` names the basis functions f_j (w [rad/s], dw/dt [rad/s^2], dT =
-    temp - ``temp_ref_C`` [K]); ``coef`` their least-squares coefficients.
+    Parameters
+    ----------
+    roughness_T : float
+        Roughness T of the runs [-].
+    terms : tuple of str
+        Names of the basis functions f_j (w [rad/s], dw/dt [rad/s^2], dT =
+        temp - ``temp_ref_C`` [K]).
+    coef : array
+        Their least-squares coefficients [W per unit basis function].
+    temp_ref_C : float
+        Reference temperature of dT [degC].
+    rmse_W : float
+        RMS residual of the fit [W].
+    n_samples : int
+        Oil-free samples fitted.
+    temp_range_C : (float, float)
+        Temperature range of the oil-free runs [degC].
+    speed_max_rpm : float
+        Largest |speed| of the oil-free runs [rpm].
+    notes : tuple of str
+        Warnings (temperature independence, extrapolation).
+    cov : array, optional
+        Covariance of ``coef`` [1].
     """
 
     roughness_T: float
@@ -48,13 +75,43 @@ class BaselineFit:
     cov: np.ndarray | None = None
 
     def design(self, omega, domega_dt, temp_C) -> np.ndarray:
-        """Basis matrix f_j at the samples [W per unit coefficient]."""
+        """Basis matrix f_j at the samples.
+
+        Parameters
+        ----------
+        omega : array
+            Speed [rad/s].
+        domega_dt : array
+            Acceleration [rad/s^2].
+        temp_C : array
+            Temperature [degC].
+
+        Returns
+        -------
+        array, shape (n, len(terms))
+            The basis functions [W per unit coefficient].
+        """
         return _baseline_matrix(np.asarray(omega, float), np.asarray(domega_dt, float),
                                 np.asarray(temp_C, float) - self.temp_ref_C,
                                 len(self.terms) > len(BASELINE_TERMS))
 
     def predict(self, omega, domega_dt, temp_C) -> np.ndarray:
-        """Baseline power [W] at speed [rad/s], acceleration [rad/s^2], temperature [degC]."""
+        """Baseline power at the samples.
+
+        Parameters
+        ----------
+        omega : array
+            Speed [rad/s].
+        domega_dt : array
+            Acceleration [rad/s^2].
+        temp_C : array
+            Temperature [degC].
+
+        Returns
+        -------
+        array
+            Power [W].
+        """
         return self.design(omega, domega_dt, temp_C) @ self.coef
 
     def to_dict(self) -> dict:
@@ -66,13 +123,24 @@ class BaselineFit:
                 "speed_max_rpm": self.speed_max_rpm, "notes": list(self.notes)}
 
 
-
 def fit_baselines(frame: pd.DataFrame) -> dict[float, BaselineFit]:
-    """Least-squares baseline per roughness T from the oil-free runs (frame with kinematics).
+    """Least-squares baseline per roughness T from the oil-free runs [1].
 
     Temperature terms are used only if the oil-free runs of that T span at least
     :data:`BASELINE_TEMP_SPAN_K`; otherwise the baseline is taken as independent
     of temperature and a note says so.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Validated data with kinematics
+        (:func:`oilgap.model.measured_data.add_kinematics`): omega [rad/s],
+        domega_dt [rad/s^2], temp_C [degC], power_W [W], speed_rpm [rpm].
+
+    Returns
+    -------
+    dict
+        T [-] -> BaselineFit.
     """
     out = {}
     free = frame[frame["oil_free"]]

@@ -1,18 +1,25 @@
-"""The design NLP of the clearance geometry (CasADi/IPOPT) and its results."""
+"""The design NLP of the clearance geometry (CasADi/IPOPT) and its results.
 
-from .problem import (
-    VARIABLE_LABELS,
-    VARIABLES,
-    DesignParameters,
-    DesignPoint,
-    DesignProblem,
-    DesignResult,
-    Multiplier,
-    region1_mean_power,
-    solve_design,
-)
+One module per responsibility:
+
+* :mod:`.variables`: the decision variables, their scaling for IPOPT, the IPOPT options;
+* :mod:`.parameters`: the parameters of one solve, resolved and validated;
+* :mod:`.objective`: the one objective (mean power, torque, inertia; CasADi and numpy);
+* :mod:`.feasibility`: the feasibility check before IPOPT and its message;
+* :mod:`.results`: design points, multipliers (converted to physical units), the optimum;
+* :mod:`.problem`: the NLP built once per case and its solves (IPOPT, multi-start, warm start).
+"""
+
+from .feasibility import check_feasible, infeasibility_message
+from .objective import DesignObjective, region1_mean_power
+from .parameters import DesignParameters, resolve_parameters
+from .problem import DesignProblem, solve_design
+from .results import DesignPoint, DesignResult, Multiplier, convert_multipliers, design_point
+from .variables import VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 __all__ = [
     "VARIABLES", "VARIABLE_LABELS", "DesignParameters", "DesignPoint", "DesignProblem",
-    "DesignResult", "Multiplier", "region1_mean_power", "solve_design",
+    "DesignResult", "Multiplier", "region1_mean_power", "solve_design", "DesignObjective",
+    "resolve_parameters", "check_feasible", "infeasibility_message", "convert_multipliers",
+    "design_point", "to_nlp", "from_nlp",
 ]

@@ -1,55 +1,37 @@
 """The ``oilgap`` command line: a thin layer over the Python API.
 
-Each subcommand lives in its own module exposing ``add_parser(subparsers)``
-which registers the parser and sets ``func`` to a callable taking the parsed
-arguments and returning an exit code. Errors: bad input exits 2 with one line
-naming the field, the value and what is allowed; an infeasible design problem
-exits 3; another solver failure exits 4. No traceback reaches the user.
+The argument tables live in :mod:`oilgap.studies.cli.parsers` (cheap to import);
+each command's ``run(args)`` lives in its own module, named in
+:data:`COMMANDS` and imported only when that command runs (loading cvxpy,
+CasADi's NLP or matplotlib costs seconds that ``oilgap evaluate`` should not
+pay). Errors: bad input exits 2 with one line naming the field, the value and
+what is allowed; an infeasible design problem exits 3; another solver failure
+exits 4. No traceback reaches the user.
 """
 
 from __future__ import annotations
 
-import argparse
-import math
+import importlib
 import sys
 import warnings
 from collections.abc import Sequence
 
 from oilgap.model.errors import InfeasibleError, InputError, OilgapWarning, SolverError
+from oilgap.studies.cli.parsers import build_parser, finite_float
 
-SUBCOMMAND_MODULES = (
-    "oilgap.studies.cli.evaluate",
-    "oilgap.studies.cli.optimize",
-    "oilgap.studies.cli.study",
-    "oilgap.studies.cli.loop",
-    "oilgap.studies.cli.synth",
-)
+__all__ = ["COMMANDS", "build_parser", "finite_float", "main"]
 
-
-def finite_float(text: str) -> float:
-    """argparse type: a finite float (NaN and infinity refused)."""
-    try:
-        x = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
-    if not math.isfinite(x):
-        raise argparse.ArgumentTypeError(f"{text!r} is not allowed; a finite number is "
-                                         "required") from None
-    return x
-
-
-def build_parser() -> argparse.ArgumentParser:
-    """The top-level parser with every registered subcommand."""
-    import importlib
-
-    parser = argparse.ArgumentParser(
-        prog="oilgap",
-        description="Viscous-loss design tool for oil-filled joints of deep-sea manipulators.")
-    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
-    sub.required = True
-    for name in SUBCOMMAND_MODULES:
-        importlib.import_module(name).add_parser(sub)
-    return parser
+COMMANDS: dict[str, str] = {
+    "evaluate": "oilgap.studies.cli.evaluate",
+    "optimize": "oilgap.studies.cli.optimize",
+    "study smoothing": "oilgap.studies.cli.study_smoothing",
+    "study pareto": "oilgap.studies.cli.study_pareto",
+    "study oil-grade": "oilgap.studies.cli.study_oil_grade",
+    "study sweep": "oilgap.studies.cli.study_sweep",
+    "loop": "oilgap.studies.cli.loop",
+    "synth": "oilgap.studies.cli.synth",
+}
+"""The one dispatch table: command -> module whose ``run(args)`` returns the exit code."""
 
 
 def _show_warning(message, category, filename, lineno, file=None, line=None):
@@ -58,15 +40,12 @@ def _show_warning(message, category, filename, lineno, file=None, line=None):
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``oilgap`` console script; returns the exit code."""
-    import matplotlib
-
-    matplotlib.use("Agg")
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    args = build_parser().parse_args(argv)
     warnings.showwarning = _show_warning
     warnings.simplefilter("default", OilgapWarning)
     try:
-        return int(args.func(args) or 0)
+        command = importlib.import_module(COMMANDS[args.command])
+        return int(command.run(args) or 0)
     except InputError as e:
         print(f"oilgap: error: {e}", file=sys.stderr)
         return 2

@@ -1,54 +1,14 @@
-"""``oilgap evaluate``: the viscous loss of a joint, region by region."""
+"""``oilgap evaluate``: the viscous loss of a joint, region by region (arguments in
+:func:`oilgap.studies.cli.parsers.add_evaluate`)."""
 
 from __future__ import annotations
 
 import argparse
 import json
 
-from oilgap.model.case import DesignCase
-from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
-from oilgap.model.oils import get_oil, read_oils_csv
 from oilgap.model.units import m_to_mm
-
-
-def add_parser(sub) -> None:
-    from oilgap.studies.cli import finite_float
-
-    p = sub.add_parser("evaluate", help="viscous loss of a joint over its duty cycle",
-                       description="Evaluate a joint's viscous loss over its duty cycle, region "
-                       "by region. Without CASE: the built-in seed joint, grooved (T = 4).")
-    p.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
-    p.add_argument("--oil", help="oil name (overrides the case), e.g. VG22")
-    p.add_argument("--oils", metavar="OILS.csv", help="oils table to look --oil up in")
-    p.add_argument("--temp-c", type=finite_float, help="oil temperature [degC]")
-    p.add_argument("--depth-m", type=finite_float, help="sea depth [m]")
-    p.add_argument("--laminar-law", choices=("couette", "bilgen-boulos"),
-                   help="law below the critical Taylor number (default: the case's)")
-    p.add_argument("--smoothed", action="store_true",
-                   help="without CASE: the seed joint smoothed with epoxy (T = 2)")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.set_defaults(func=run)
-
-
-def load_case(args: argparse.Namespace) -> DesignCase:
-    """The case named on the command line (or the seed), with --oil/--oils, --temp-c and
-    --depth-m applied and validated. Shared by the subcommands that take a CASE."""
-    from dataclasses import replace
-
-    from oilgap.model.case import OperatingPoint
-
-    case = read_case_toml(args.case) if args.case else seed_case(getattr(args, "smoothed",
-                                                                         False))
-    if getattr(args, "oil", None) or getattr(args, "oils", None):
-        cat = read_oils_csv(args.oils) if getattr(args, "oils", None) else None
-        case = replace(case, oil=get_oil(args.oil or case.oil.name, cat))
-    op = case.operating
-    if getattr(args, "temp_c", None) is not None or getattr(args, "depth_m", None) is not None:
-        op = OperatingPoint(op.depth_m if args.depth_m is None else args.depth_m,
-                            op.oil_temp_C if args.temp_c is None else args.temp_c)
-        case = replace(case, operating=op)
-    return case
+from oilgap.studies.cli.common import load_case
 
 
 def format_evaluation(ev: CaseEvaluation) -> str:
@@ -80,6 +40,7 @@ def format_evaluation(ev: CaseEvaluation) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    """Evaluate the case and print the table (or JSON); returns the exit code."""
     case = load_case(args)
     ev = evaluate_case(case, laminar_law=args.laminar_law)
     if args.json:

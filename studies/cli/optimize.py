@@ -5,6 +5,7 @@ Thin layer over :class:`oilgap.optim.design.DesignProblem`: loads the case
 and prints the initial and optimal designs side by side, the active constraints
 and what each constraint costs (its multiplier in physical units). Exit codes:
 2 bad input, 3 infeasible problem, 4 solver failure (from ``oilgap.studies.cli``).
+Arguments in :func:`oilgap.studies.cli.parsers.add_optimize`.
 """
 
 from __future__ import annotations
@@ -13,44 +14,12 @@ import argparse
 import json
 import warnings
 from pathlib import Path
-from typing import TYPE_CHECKING
 
+from oilgap.model.case_io import write_case_toml
 from oilgap.model.errors import InputError, OilgapWarning, check_finite, check_positive
 from oilgap.model.units import m2_s_to_cst
-
-if TYPE_CHECKING:
-    from oilgap.optim.design import DesignResult
-
-
-def add_parser(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser(
-        "optimize", help="optimize the rotor-stator clearance geometry (CasADi/IPOPT)",
-        description="Minimize the mean viscous power over the duty cycle by the region-1 "
-        "geometry (R, delta, groove fill, L) subject to the motor's torque capability, the "
-        "rotor inertia and the case's bounds. Without CASE: the built-in seed joint at its "
-        "rated depth. Exit 3 if the constraints conflict, 4 if IPOPT fails.")
-    p.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
-    p.add_argument("--oil", help="oil name (overrides the case), e.g. VG22")
-    p.add_argument("--oils", metavar="OILS.csv", help="oils table to look --oil up in")
-    p.add_argument("--temp-c", metavar="X", help="oil temperature [degC]")
-    p.add_argument("--depth-m", metavar="X", help="sea depth [m]")
-    p.add_argument("--torque-min-nm", metavar="X",
-                   help="required torque capability [N m] (default: the case's "
-                   "bounds.torque_min_Nm, else the initial design's capability)")
-    p.add_argument("--inertia-max-ratio", metavar="X",
-                   help="rotor inertia limit as a multiple of the case's unfilled rotor "
-                   "(default: the case's bounds.inertia_max_ratio)")
-    p.add_argument("--starts", metavar="N", default="8",
-                   help="start points: the case's design and N-1 random points in the bounds; "
-                   "the best optimum is reported (default 8; the loss can be non-convex near "
-                   "the Re = 64/500 regime breaks)")
-    p.add_argument("--smoothed", action="store_true",
-                   help="without CASE: start from the seed joint smoothed with epoxy (T = 2)")
-    p.add_argument("--json", action="store_true", help="print one JSON object")
-    p.add_argument("--out", metavar="CASE_OPT.toml",
-                   help="write the optimal design as a case TOML (oilgap evaluate reads it)")
-    p.add_argument("--verbose", action="store_true", help="show IPOPT's iterations")
-    p.set_defaults(func=run)
+from oilgap.optim.design import DesignProblem, DesignResult
+from oilgap.studies.cli.common import load_case
 
 
 def _number(args: argparse.Namespace, attr: str, field: str,
@@ -131,10 +100,7 @@ def format_result(res: DesignResult, exact: tuple | None = None) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    from oilgap.model.case_io import write_case_toml
-    from oilgap.optim.design import DesignProblem
-    from oilgap.studies.cli.evaluate import load_case
-
+    """Solve the design NLP and print (or write) the result; returns the exit code."""
     args.temp_c = _number(args, "temp_c", "--temp-c")
     args.depth_m = _number(args, "depth_m", "--depth-m")
     torque_min = _number(args, "torque_min_nm", "--torque-min-nm", positive=True)

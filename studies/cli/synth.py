@@ -1,48 +1,19 @@
-"""``oilgap synth``: synthetic rig data in the measured-data format."""
+"""``oilgap synth``: synthetic rig data in the measured-data format (arguments in
+:func:`oilgap.studies.cli.parsers.add_synth`)."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
-
-def add_parser(sub) -> None:
-    """Register ``oilgap synth``."""
-    from oilgap.model.effects import EFFECTS
-    from oilgap.studies.cli import finite_float
-
-    p = sub.add_parser(
-        "synth", help="simulate the seed's viscous-power experiment (test data for loop)",
-        description="Simulate the seed's experiment: oil-free runs and four oils (ISO VG 150, "
-        "320, 680, 1000), grooved (T = 4) and smoothed (T = 2), 1500 samples every 0.2 s of "
-        "3000 rpm sin(0.1 pi t), a lumped thermal model heated by the losses, load and motor "
-        "losses, measurement noise, and optionally one library effect. The CSV carries no "
-        "trace of the effect.")
-    p.add_argument("--effect", choices=list(EFFECTS), metavar="NAME",
-                   help="inject this library effect (see --list-effects)")
-    p.add_argument("--strength", type=finite_float,
-                   help="strength of the effect in its unit (default: its test strength)")
-    p.add_argument("--seed", type=int, default=0, help="noise seed (default 0)")
-    p.add_argument("--out", metavar="data.csv", default="synth.csv",
-                   help="output CSV (default: synth.csv)")
-    p.add_argument("--case", metavar="RIG.toml", help="rig geometry (default: the seed joint)")
-    p.add_argument("--roughness", metavar="T,T", default="4,2",
-                   help="roughness T of the two rotor builds (default 4,2)")
-    p.add_argument("--viscous", action="store_true",
-                   help="write viscous_power_W (a torque balance) instead of power_W; no "
-                   "oil-free runs")
-    p.add_argument("--list-effects", action="store_true",
-                   help="list the library effects with their strength units and exit")
-    p.set_defaults(func=run)
+from oilgap.model.case_io import read_case_toml
+from oilgap.model.effects import EFFECTS
+from oilgap.model.errors import InputError
+from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize, write_synth_csv
 
 
 def run(args: argparse.Namespace) -> int:
     """Write the synthetic data; returns the exit code."""
-    from oilgap.model.case_io import read_case_toml
-    from oilgap.model.effects import EFFECTS
-    from oilgap.model.errors import InputError
-    from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize, write_synth_csv
-
     if args.list_effects:
         print(f"{'effect':<24}{'strength unit':<15}{'default':>10}  formula")
         for n, e in EFFECTS.items():

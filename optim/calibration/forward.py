@@ -1,0 +1,319 @@
+"""Stage 2 of the calibration: the forward model of the oil runs' viscous power.
+
+:class:`ForwardModel` evaluates, for the samples of the oil runs, the seed
+paper's clearance model (Eq. 8 per region through
+:func:`~oilgap.model.regions.region_power`, region 1 with each sample's T and
+gap, region 2 at T = 1) with the effects of the library added at given
+coefficients. The joint's regions, the bearing pitch diameter and the rotor's
+end-face radii come from :func:`~oilgap.model.regions.joint_geometry`; the
+effect features from :func:`~oilgap.model.effects.effect_context`; the exact
+shear-thinning form from :func:`~oilgap.model.effects.cross_region_ratios`.
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power
+   for a Deep-Sea Electric Manipulator*, Eqs. 5, 8 and 9.
+.. [2] M. M. Cross, "Rheology of non-Newtonian fluids: a new flow equation for
+   pseudoplastic systems", J. Colloid Sci. 20:417-437, 1965 (shear thinning).
+.. [3] T. L. Bergman et al., *Fundamentals of Heat and Mass Transfer*, 7th ed.,
+   Wiley 2011, sec. 5.2 (first-order lag of the gap oil temperature).
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+
+import numpy as np
+
+from oilgap.model.case import DesignCase
+from oilgap.model.effects import (
+    EFFECTS,
+    EffectContext,
+    cross_region_ratios,
+    effect_context,
+    first_order_lag,
+)
+from oilgap.model.measured_data import TEMP_STEP_K, Samples
+from oilgap.model.oils import Oil, normalize_oil_name
+from oilgap.model.regions import JointGeometry, joint_geometry, region_power
+from oilgap.model.skin_friction import FrictionLaw
+from oilgap.model.units import celsius_to_kelvin
+
+EXACT_FORMS = ("thermal_lag", "sensor_delay", "shear_thinning")
+"""Effects refitted with their full nonlinear form (the regression feature is its first
+order): the first-order lag of the oil temperature, the time shift of the power
+record, the Cross viscosity ratio 1/(1 + lambda^2 gamma_dot^2)."""
+
+SPEED_STEP = 1e-4
+"""Relative speed step of the central difference dP/domega [-]."""
+
+
+def sample_geometry(case: DesignCase, samples: Samples) -> JointGeometry:
+    """The joint's regions with region 1 at each sample's roughness and gap.
+
+    Parameters
+    ----------
+    case : DesignCase
+        Rig geometry.
+    samples : Samples
+        Oil-run samples (``roughness_T`` [-] and ``gap1_m`` [m] per sample).
+
+    Returns
+    -------
+    JointGeometry
+        Regions, end-face radii [m] and bearing pitch diameter [m] (Eqs. 5, 9 [1]).
+    """
+    return joint_geometry(case, roughness_T=samples.roughness_T, gap1_m=samples.gap1_m)
+
+
+def _run_indices(s: Samples) -> list[np.ndarray]:
+    return [np.nonzero(s.run_code == c)[0] for c in np.unique(s.run_code)]
+
+
+class ForwardModel:
+    """Model viscous power [W] of a sample set for any friction law and effect coefficients.
+
+    :meth:`power` gives Eq. 8 per region with the effects of ``coefs`` (name ->
+    coefficient in the library's unit): thermal lag moves the oil temperature
+    the viscosity follows (the oil's Walther line and density law are evaluated
+    there) [3], shear thinning scales each region by the Cross ratio [2], sensor
+    delay shifts the whole record in time, and the others add their library term.
+
+    Parameters
+    ----------
+    samples : Samples
+        Oil-run samples (SI arrays).
+    case : DesignCase
+        Rig geometry.
+    oils : dict of str to Oil
+        Oils by normalised name (their temperature laws serve the thermal lag).
+
+    Attributes
+    ----------
+    samples : Samples
+    case : DesignCase
+    geometry : JointGeometry
+        Regions with region 1 at each sample's T and gap [m].
+    runs : list of arrays
+        Sample indices of each run.
+    oil_groups : list of (array, Oil)
+        Samples whose viscosity follows each oil's temperature law.
+    """
+
+    def __init__(self, samples: Samples, case: DesignCase, oils: dict[str, Oil]):
+        s = samples
+        self.samples = s
+        self.case = case
+        self.geometry = sample_geometry(case, s)
+        self.runs = _run_indices(s)
+        law_rows = np.isfinite(s.nu_pm[0])
+        uniq, inv = np.unique(s.oil.astype(str), return_inverse=True)
+        keys = np.array([normalize_oil_name(o) for o in uniq])[inv]
+        self.oil_groups = [(np.nonzero((keys == k) & law_rows)[0], oils[k])
+                           for k in np.unique(keys[law_rows]) if k in oils]
+        self._static: dict[str, np.ndarray] = {}
+
+    def subset(self, mask: np.ndarray) -> ForwardModel:
+        """Forward model of the samples where ``mask`` holds.
+
+        Parameters
+        ----------
+        mask : array of bool
+            Samples kept [-].
+
+        Returns
+        -------
+        ForwardModel
+            Sharing the cached law-independent features, restricted to ``mask``.
+        """
+        sub = copy.copy(self)
+        sub.samples = s = self.samples.subset(mask)
+        sub.geometry = sample_geometry(self.case, s)
+        sub.runs = _run_indices(s)
+        pos = np.cumsum(mask) - 1
+        sub.oil_groups = [(pos[idx[mask[idx]]], oil) for idx, oil in self.oil_groups]
+        sub._static = {k: v[mask] for k, v in self._static.items()}
+        return sub
+
+    def region_powers(self, law: FrictionLaw, omega=None, nu=None, rho=None
+                      ) -> list[np.ndarray]:
+        """Viscous power [W] per region and sample (Eq. 8 through ``region_power`` [1]).
+
+        Parameters
+        ----------
+        law : FrictionLaw
+            Friction law of every region.
+        omega, nu, rho : arrays, optional
+            Speed [rad/s], kinematic viscosity [m^2/s] and density [kg/m^3] per
+            sample (default: the samples').
+
+        Returns
+        -------
+        list of arrays
+            Region 1, then region 2 if the rig has one [W].
+        """
+        s = self.samples
+        omega = s.omega if omega is None else omega
+        nu = s.nu_m2_s if nu is None else nu
+        rho = s.density_kg_m3 if rho is None else rho
+        return [region_power(r, omega, nu, rho, law) for r in self.geometry.regions]
+
+    def base_power(self, law: FrictionLaw) -> np.ndarray:
+        """Viscous power of all regions [W] per sample, no effect.
+
+        Parameters
+        ----------
+        law : FrictionLaw
+
+        Returns
+        -------
+        array
+            Sum of :meth:`region_powers` [W].
+        """
+        return sum(self.region_powers(law))
+
+    def _power_derivatives(self, law: FrictionLaw) -> tuple[np.ndarray, np.ndarray]:
+        """dP/dt [W/s] along the record and dP/dT [W/K] (NaN without a temperature law)."""
+        s = self.samples
+        h = SPEED_STEP
+        w = np.where(np.abs(s.omega) > 0, s.omega, 1.0)
+        dP_dw = (sum(self.region_powers(law, omega=s.omega * (1 + h)))
+                 - sum(self.region_powers(law, omega=s.omega * (1 - h)))) / (2 * h * w)
+        dP_dT = np.full(s.n, np.nan)
+        ok = np.isfinite(s.nu_pm[0]) & np.isfinite(s.nu_pm[1])
+        if ok.any():
+            nu_m, nu_p = (np.where(ok, x, s.nu_m2_s) for x in s.nu_pm)
+            rho_m, rho_p = (np.where(ok, x, s.density_kg_m3) for x in s.rho_pm)
+            d = (sum(self.region_powers(law, nu=nu_p, rho=rho_p))
+                 - sum(self.region_powers(law, nu=nu_m, rho=rho_m))) / (2 * TEMP_STEP_K)
+            dP_dT = np.where(ok, d, np.nan)
+        dP_dt = dP_dw * s.domega_dt + np.nan_to_num(dP_dT) * s.dtemp_dt
+        return dP_dt, dP_dT
+
+    def context(self, law: FrictionLaw, derivatives: bool = True, nu=None, rho=None
+                ) -> EffectContext:
+        """Effect context of the samples under ``law``.
+
+        Parameters
+        ----------
+        law : FrictionLaw
+        derivatives : bool
+            Compute dP/dt [W/s] (central difference in speed) and dP/dT [W/K]
+            (through nu(T), rho(T)); zero if False.
+        nu, rho : arrays, optional
+            Oil state per sample [m^2/s], [kg/m^3] (default: the samples').
+
+        Returns
+        -------
+        EffectContext
+        """
+        s = self.samples
+        nu = s.nu_m2_s if nu is None else nu
+        rho = s.density_kg_m3 if rho is None else rho
+        pw = self.region_powers(law, nu=nu, rho=rho)
+        slopes = {}
+        if derivatives:
+            dP_dt, dP_dT = self._power_derivatives(law)
+            slopes = {"dpower_dt_W_s": dP_dt, "dpower_dtemp_W_K": dP_dT}
+        return effect_context(self.geometry, s.omega, s.domega_dt, nu, rho, law, powers_W=pw,
+                              dtemp_dt_K_s=s.dtemp_dt, **slopes)
+
+    def oil_state_at(self, temp_C: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Viscosity [m^2/s] and density [kg/m^3] at the oil temperature ``temp_C`` [degC].
+
+        Parameters
+        ----------
+        temp_C : array
+            Oil temperature per sample [degC].
+
+        Returns
+        -------
+        (nu, rho)
+            Per sample; unchanged where the row has no temperature law.
+        """
+        nu = self.samples.nu_m2_s.copy()
+        rho = self.samples.density_kg_m3.copy()
+        for idx, oil in self.oil_groups:
+            nu[idx], _, rho[idx] = oil.properties(celsius_to_kelvin(temp_C[idx]), 0.0)
+        return nu, rho
+
+    def lagged_temperature(self, tau_s: float) -> np.ndarray:
+        """Oil temperature [degC] lagging (tau > 0) or leading (tau < 0) the measured one [3].
+
+        Parameters
+        ----------
+        tau_s : float
+            Time constant of the first-order lag [s].
+
+        Returns
+        -------
+        array
+            Temperature per sample [degC].
+        """
+        s = self.samples
+        if tau_s < 0:
+            return s.temp_C - tau_s * s.dtemp_dt
+        out = np.empty(s.n)
+        for idx in self.runs:
+            out[idx] = first_order_lag(s.time_s[idx], s.temp_C[idx], tau_s)
+        return out
+
+    def static_feature(self, name: str) -> np.ndarray:
+        """Feature of an effect that does not depend on the friction law (cached).
+
+        Parameters
+        ----------
+        name : str
+            Library effect.
+
+        Returns
+        -------
+        array
+            Power per unit coefficient [W/unit].
+        """
+        if name not in self._static:
+            ctx = self.context(FrictionLaw(form="power-law"), derivatives=False)
+            self._static[name] = EFFECTS[name].feature_values(ctx)
+        return self._static[name]
+
+    def power(self, law: FrictionLaw, coefs: dict | None = None) -> np.ndarray:
+        """Model viscous power [W] per sample.
+
+        Parameters
+        ----------
+        law : FrictionLaw
+            Friction law of the clearance model (Eq. 8 [1]).
+        coefs : dict, optional
+            Effect name -> coefficient in the library's unit.
+
+        Returns
+        -------
+        array
+            Power [W] per sample.
+        """
+        coefs = coefs or {}
+        s = self.samples
+        nu = rho = None
+        if coefs.get("thermal_lag", 0.0):
+            nu, rho = self.oil_state_at(self.lagged_temperature(coefs["thermal_lag"]))
+        ctx = self.context(law, derivatives=False, nu=nu, rho=rho)
+        total = 0.0
+        lam2 = max(0.0, coefs.get("shear_thinning", 0.0))
+        ratios = cross_region_ratios(ctx, math.sqrt(lam2)) if lam2 else [1.0] * len(ctx.regions)
+        for r, ratio in zip(ctx.regions, ratios, strict=True):
+            total = total + r.power_W * ratio
+        for name, c in coefs.items():
+            if name in EXACT_FORMS or c == 0.0:
+                continue
+            f = EFFECTS[name].feature_values(ctx) if name == "taylor_vortex_onset" \
+                else self.static_feature(name)
+            total = total + c * f
+        d = coefs.get("sensor_delay", 0.0)
+        if d:
+            out = np.empty(s.n)
+            for idx in self.runs:
+                t = s.time_s[idx]
+                out[idx] = np.interp(t - d, t, total[idx])
+            total = out
+        return np.asarray(total, dtype=float) * np.ones(s.n)

@@ -1,0 +1,259 @@
+"""Stage 8 of the calibration: the results as tables and records.
+
+The accepted effects with their coefficients and intervals, the final status of
+every candidate, the error of each run, the seed's Table 3 comparison (RMSE
+without and with T per oil and T), and the JSON pieces of ``loop.json``.
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power
+   for a Deep-Sea Electric Manipulator*, Table 3.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+
+from oilgap.model.effects import EFFECTS
+from oilgap.model.measured_data import Samples
+from oilgap.model.skin_friction import FrictionLaw
+
+from .candidates import Candidates
+from .forward import ForwardModel
+from .refit import FinalModel, rmse
+from .selection import Selection
+
+
+@dataclass(frozen=True)
+class EffectResult:
+    """An accepted effect with its fitted coefficient and confidence interval.
+
+    Attributes
+    ----------
+    name, title, formula, reference : str
+        From the library.
+    coefficient : float
+        Fitted coefficient [``unit``].
+    ci_low, ci_high : float
+        Its 95 % interval [``unit``].
+    unit : str
+        Unit of the coefficient.
+    strength : float
+        The coefficient as the synthetic rig's strength [``strength_unit``].
+    strength_unit : str
+    heldout_gain_pct : float
+        Held-out RMSE fall it brings in the final model [%].
+    rms_power_W : float
+        RMS of its power over the samples [W].
+    """
+
+    name: str
+    title: str
+    formula: str
+    reference: str
+    coefficient: float
+    ci_low: float
+    ci_high: float
+    unit: str
+    strength: float
+    strength_unit: str
+    heldout_gain_pct: float
+    rms_power_W: float
+
+    def coefficient_label(self) -> str:
+        """Symbol of the coefficient (e.g. ``tau_c``)."""
+        return EFFECTS[self.name].coefficient.split(" (")[0]
+
+    def to_dict(self) -> dict:
+        """JSON form (the issue's keys first)."""
+        return {"name": self.name, "formula": self.formula, "coefficient": self.coefficient,
+                "ci_low": self.ci_low, "ci_high": self.ci_high,
+                "heldout_gain_pct": self.heldout_gain_pct, "title": self.title,
+                "symbol": self.coefficient_label(),
+                "reference": self.reference, "unit": self.unit, "strength": self.strength,
+                "strength_unit": self.strength_unit, "rms_power_W": self.rms_power_W}
+
+
+def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray, np.ndarray],
+                   gains: dict[str, float]) -> list[EffectResult]:
+    """The accepted effects as records.
+
+    Parameters
+    ----------
+    model : ForwardModel
+        All oil runs.
+    final : FinalModel
+    ci : (lo, hi)
+        Interval of each coefficient (library units).
+    gains : dict
+        Effect -> held-out gain [%].
+
+    Returns
+    -------
+    list of EffectResult
+        With each effect's own power: the final model minus the final model
+        without it [W RMS].
+    """
+    fit = final.fit
+    coefs = dict(zip(final.accepted, map(float, fit.theta), strict=True))
+    out = []
+    for i, n in enumerate(final.accepted):
+        eff = EFFECTS[n]
+        c = float(fit.theta[i])
+        only = model.power(fit.law, dict(coefs)) - model.power(
+            fit.law, {m: v for m, v in coefs.items() if m != n})
+        out.append(EffectResult(
+            n, eff.title, eff.formula, eff.reference, c, float(ci[0][i]), float(ci[1][i]),
+            eff.unit, float(eff.strength_from_coefficient(c)), eff.strength_unit, gains[n],
+            rmse(only)))
+    return out
+
+
+def candidate_statuses(cands: Candidates, selection: Selection, final: FinalModel,
+                       noise_W: float, margin: float, min_explained: float) -> list[dict]:
+    """Final status of every library effect considered.
+
+    Parameters
+    ----------
+    cands : Candidates
+    selection : Selection
+        Its ``candidates`` (records with the held-out scores alone).
+    final : FinalModel
+    noise_W : float
+        Noise level [W].
+    margin, min_explained : float
+        Acceptance thresholds [-].
+
+    Returns
+    -------
+    list of dict
+        Records with status "accepted", the reason a candidate was rejected
+        (and the held-out gain it adds to the accepted ones [%]), or the
+        screening status.
+    """
+    sel, e0, accepted = selection.selector, selection.heldout_before_W, final.accepted
+    e_acc = sel.cv(final.chosen)
+    out = []
+    for info in selection.candidates:
+        if info["name"] in accepted:
+            info = {**info, "status": "accepted"}
+        elif info["status"] != "candidate":
+            pass
+        elif e0 * e0 - noise_W * noise_W <= 0:
+            info = {**info, "status": "rejected: no structure above the noise"}
+        elif accepted:
+            add = min(sel.cv(final.chosen + (j,)) for j in cands.columns_of(info["name"]))
+            gain = 100.0 * (1.0 - add / e_acc)
+            info = {**info, "heldout_gain_added_pct": gain,
+                    "status": (f"rejected: adds {gain:.1f} % to {', '.join(accepted)} "
+                               f"(margin {100 * margin:.0f} %)")}
+        else:
+            g, x = info["heldout_gain_alone_pct"], info["explained_structure_alone"]
+            info = {**info, "status": (f"rejected: held-out gain {g:.1f} % " + (
+                f"< margin {100 * margin:.0f} %" if g < 100 * margin else
+                f"but explains only {100 * x:.0f} % of the structure "
+                f"(< {100 * min_explained:.0f} %)"))}
+        out.append(info)
+    return out
+
+
+def table3_rows(s: Samples, p_without: np.ndarray, p_with: np.ndarray) -> list[dict]:
+    """The seed's Table 3 [1]: RMSE without and with T per oil and T.
+
+    Parameters
+    ----------
+    s : Samples
+        Oil-run samples (measured viscous power [W]).
+    p_without, p_with : arrays
+        Model power without T (published law) and with T (fitted Eq. 8) [W].
+
+    Returns
+    -------
+    list of dict
+        oil, roughness_T [-], rmse_without_T_W, rmse_with_T_W [W], reduction_pct [%];
+        sorted by the oil's median viscosity, then T.
+    """
+    y = s.viscous_W
+    rows = []
+    keys = pd.DataFrame({"oil": s.oil, "T": s.roughness_T})
+    for (oil, T), g in keys.groupby(["oil", "T"], sort=False):
+        m = g.index.to_numpy()
+        wo, wt = rmse((y - p_without)[m]), rmse((y - p_with)[m])
+        rows.append({"oil": oil, "roughness_T": float(T), "rmse_without_T_W": wo,
+                     "rmse_with_T_W": wt, "reduction_pct": 100.0 * (1.0 - wt / wo)
+                     if wo > 0 else float("nan")})
+    order = {o: float(np.median(s.nu_m2_s[s.oil == o])) for o in set(s.oil)}
+    return sorted(rows, key=lambda r: (order[r["oil"]], r["roughness_T"]))
+
+
+def per_run_rows(s: Samples, pred: dict[str, np.ndarray], final: FinalModel,
+                 table3: list[dict]) -> list[dict]:
+    """Error of each run, in the order of Table 3 (then by run name).
+
+    Parameters
+    ----------
+    s : Samples
+    pred : dict
+        ``without_T``, ``with_T``, ``with_effect`` model power per sample [W].
+    final : FinalModel
+        Its held-out predictions before and after [W].
+    table3 : list of dict
+        From :func:`table3_rows`.
+
+    Returns
+    -------
+    list of dict
+        run, oil, roughness_T [-], n_samples and RMSE in-sample and held out [W].
+    """
+    y = s.viscous_W
+    rows = []
+    for c, name in enumerate(s.run_names):
+        m = s.run_code == c
+        rows.append({
+            "run": name, "oil": str(s.oil[m][0]), "roughness_T": float(s.roughness_T[m][0]),
+            "n_samples": int(m.sum()), "rmse_without_T_W": rmse((y - pred["without_T"])[m]),
+            "rmse_with_T_W": rmse((y - pred["with_T"])[m]),
+            "rmse_with_effect_W": rmse((y - pred["with_effect"])[m]),
+            "heldout_rmse_before_W": rmse((y - final.before.pred)[m]),
+            "heldout_rmse_after_W": rmse((y - final.after.pred)[m])})
+    rank = {(r["oil"], r["roughness_T"]): i for i, r in enumerate(table3)}
+    rows.sort(key=lambda r: (rank[(r["oil"], r["roughness_T"])], r["run"]))
+    return rows
+
+
+def strip_bins(rs: dict) -> dict:
+    """A residual structure without its bins (for JSON).
+
+    Parameters
+    ----------
+    rs : dict
+        From :func:`~oilgap.optim.calibration.residuals.residual_structure`.
+
+    Returns
+    -------
+    dict
+        The same with only Pearson r and eta^2 [-] per variable.
+    """
+    out = {k: v for k, v in rs.items() if k != "variables"}
+    out["variables"] = {k: {"pearson_r": v["pearson_r"], "eta2": v["eta2"]}
+                        for k, v in rs["variables"].items()}
+    return out
+
+
+def law_dict(law: FrictionLaw) -> dict:
+    """JSON form of a friction law.
+
+    Parameters
+    ----------
+    law : FrictionLaw
+
+    Returns
+    -------
+    dict
+        form, laminar_law, gamma, scale, C, alpha, beta [-].
+    """
+    return {"form": law.form, "laminar_law": law.laminar_law, "gamma": law.gamma,
+            "scale": law.scale, "C": law.C, "alpha": law.alpha, "beta": law.beta}

@@ -1,0 +1,44 @@
+"""Helpers shared by the command modules: the case named on the command line, the
+output folder of a study and the list of files written."""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Iterable
+from dataclasses import replace
+from pathlib import Path
+
+from oilgap.model.case import DesignCase, OperatingPoint
+from oilgap.model.case_io import read_case_toml, seed_case
+from oilgap.model.oils import get_oil, read_oils_csv
+
+
+def load_case(args: argparse.Namespace) -> DesignCase:
+    """The case named on the command line (or the seed), with --oil/--oils, --temp-c and
+    --depth-m applied and validated. Shared by the subcommands that take a CASE."""
+    case = read_case_toml(args.case) if args.case else seed_case(getattr(args, "smoothed",
+                                                                         False))
+    if getattr(args, "oil", None) or getattr(args, "oils", None):
+        cat = read_oils_csv(args.oils) if getattr(args, "oils", None) else None
+        case = replace(case, oil=get_oil(args.oil or case.oil.name, cat))
+    op = case.operating
+    if getattr(args, "temp_c", None) is not None or getattr(args, "depth_m", None) is not None:
+        op = OperatingPoint(op.depth_m if args.depth_m is None else args.depth_m,
+                            op.oil_temp_C if args.temp_c is None else args.temp_c)
+        case = replace(case, operating=op)
+    return case
+
+
+def case_or_seed(path: str | None) -> DesignCase:
+    """The case TOML at ``path``, or the seed joint (grooved) without one."""
+    return read_case_toml(path) if path else seed_case()
+
+
+def study_out(args: argparse.Namespace, study: str) -> Path:
+    """The study's output folder: ``--out``, else ``out/<study>``."""
+    return Path(args.out) if args.out else Path("out") / study
+
+
+def file_list(files: Iterable) -> str:
+    """The files written, one indented line each."""
+    return "\n".join(f"  {f}" for f in files)

@@ -1,0 +1,101 @@
+"""``oilgap study sweep GRID.csv``: evaluate or optimize every row of a grid (arguments in
+:func:`oilgap.studies.cli.parsers.add_study`); a thin layer over
+:func:`oilgap.studies.grid.runner.run_grid`, resumable with the same ``--out``."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from oilgap.model.evaluation import mean_viscous_power
+from oilgap.model.oils import read_oils_csv
+from oilgap.studies.cli.common import case_or_seed, file_list, study_out
+from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
+from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.grid.schema import read_grid_csv
+from oilgap.studies.reporting import markdown_table, new_figure, save_figure
+
+
+def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Path):
+    ok = res[res["status"] == "ok"]
+    params = [c for c in res.columns if c in _param_names() and c != "label"]
+    num = [c for c in params if pd.api.types.is_numeric_dtype(res[c])
+           and res[c].nunique() > 1]
+    fig, ax = new_figure(7.5, 4.8)
+    if num:
+        x = num[0]
+        if len(num) > 1:
+            sc = ax.scatter(ok[x], ok["mean_power_W"], c=ok[num[1]], s=14, cmap="viridis")
+            fig.colorbar(sc, ax=ax, label=_axis_label(num[1]))
+        else:
+            ax.plot(ok[x], ok["mean_power_W"], "o", ms=4)
+        ax.set_xlabel(_axis_label(x))
+    else:
+        ax.plot(np.arange(len(ok)), ok["mean_power_W"], "o", ms=4)
+        ax.set_xlabel("grid row [-]")
+    ax.axhline(base_power, color="k", ls="--", lw=1,
+               label=f"base case ({base_name}): {base_power:.2f} W")
+    ax.set_ylabel("mean viscous power over the duty cycle [W]")
+    ax.set_title(f"Sweep: {len(ok)}/{len(res)} points")
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=8)
+    return save_figure(fig, path)
+
+
+def _axis_label(col: str) -> str:
+    """Axis label with units from the column's description: "oil temperature [degC]"."""
+    desc = {**PARAM_COLUMNS, **OPTIMIZE_COLUMNS}.get(col, col)
+    return desc[:desc.index("]") + 1] if "]" in desc else col
+
+
+def _param_names() -> set[str]:
+    return set(PARAM_COLUMNS) | set(OPTIMIZE_COLUMNS)
+
+
+def run(args: argparse.Namespace) -> int:
+    """``oilgap study sweep GRID.csv``: run a grid (resumable); returns the exit code."""
+    grid = read_grid_csv(args.grid)
+    case = case_or_seed(args.case)
+    cat = read_oils_csv(args.oils) if args.oils else None
+    out = study_out(args, "sweep")
+    t0 = time.perf_counter()
+    res = run_grid(grid, case, mode=args.mode, out_dir=out, workers=args.workers,
+                   chunk_size=args.chunk_size, progress=args.progress, catalogue=cat,
+                   retry_failed=args.retry_failed)
+    dt = time.perf_counter() - t0
+    ok = res[res["status"] == "ok"]
+    bad = res[res["status"] != "ok"]
+    base_p = mean_viscous_power(case)
+    fig = _sweep_figure(res, base_p, case.name, out / "sweep.png")
+    lines = [f"# Sweep of {Path(args.grid).name} ({args.mode})", "",
+             f"Base case: {case.name} ({base_p:.3f} W at its operating point). "
+             f"{len(res)} points: {len(ok)} ok, {len(bad)} failed; "
+             f"{res.attrs.get('computed', len(res))} computed this run, "
+             f"{res.attrs.get('reused', 0)} taken from {out}/points_{args.mode}.csv; "
+             f"{dt:.2f} s."]
+    if len(ok):
+        best = ok.loc[ok["mean_power_W"].idxmin()]
+        worst = ok.loc[ok["mean_power_W"].idxmax()]
+        cols = [c for c in grid.columns] + ["mean_power_W"]
+        lines += ["", "Lowest and highest mean power:", "",
+                  markdown_table(pd.DataFrame([best[cols], worst[cols]]), 3)]
+    if len(bad):
+        lines += ["", f"First failure (row {bad.index[0]}): {bad['error'].iloc[0]}"]
+    md = out / "summary.md"
+    md.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    print(f"{len(res)} points: {len(ok)} ok, {len(bad)} failed "
+          f"({res.attrs.get('computed', len(res))} computed, {res.attrs.get('reused', 0)} "
+          f"reused) in {dt:.2f} s")
+    if len(ok):
+        print(f"mean power {ok['mean_power_W'].min():.3f} .. {ok['mean_power_W'].max():.3f} W "
+              f"(base case {base_p:.3f} W)")
+    if len(bad):
+        print(f"first failure (row {bad.index[0]}): {bad['error'].iloc[0]}", file=sys.stderr)
+    print(f"wrote {out}/:\n" + file_list([out / "results.csv", out / f"points_{args.mode}.csv",
+                                       fig, md]))
+    return 0

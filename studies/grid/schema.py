@@ -1,0 +1,220 @@
+"""The grid schema: which columns a grid may hold, their checks, and one row applied to a case.
+
+One row of a grid is one design point: its columns name what changes with
+respect to a base case (units in the names; an empty cell keeps the base
+case's value). The columns are listed in :data:`PARAM_COLUMNS` (and
+:data:`OPTIMIZE_COLUMNS` in optimize mode), defined in
+:mod:`oilgap.studies.grid.columns`.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import replace
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+import pandas as pd
+
+from oilgap.model.case import DesignCase
+from oilgap.model.duty_cycle import DutyCycle
+from oilgap.model.errors import InputError, check_positive
+from oilgap.model.oils import Oil, get_oil
+from oilgap.model.units import MM_TO_M
+from oilgap.studies.grid.columns import (
+    MODES,
+    OPTIMIZE_COLUMNS,
+    PARAM_COLUMNS,
+    STRING_COLUMNS,
+)
+
+__all__ = ["MODES", "OPTIMIZE_COLUMNS", "PARAM_COLUMNS", "STRING_COLUMNS", "apply_params",
+           "is_missing", "read_grid_csv", "validate_grid"]
+
+WHERE = "trade study"
+"""Context named by every InputError of the engine."""
+
+
+def is_missing(v: Any) -> bool:
+    """True for an empty grid cell: None, NaN or a blank string."""
+    return v is None or (isinstance(v, float) and math.isnan(v)) or (
+        isinstance(v, str) and v.strip() == "")
+
+
+# --------------------------------------------------------------------------- grid checks
+
+
+def _check_columns(grid: pd.DataFrame, mode: str) -> None:
+    if mode not in MODES:
+        raise InputError("mode", mode, f"allowed: {', '.join(MODES)}", WHERE)
+    if not isinstance(grid, pd.DataFrame):
+        raise InputError("grid", type(grid).__name__, "must be a pandas DataFrame", WHERE)
+    allowed = dict(PARAM_COLUMNS)
+    if mode == "optimize":
+        allowed.update(OPTIMIZE_COLUMNS)
+    if len(grid) == 0 or len(grid.columns) == 0:
+        raise InputError("grid", f"{len(grid)} rows x {len(grid.columns)} columns",
+                         "must hold at least one row and one parameter column", WHERE)
+    for c in grid.columns:
+        if c not in allowed:
+            raise InputError("column", c, f"unknown grid column; allowed ({mode} mode): "
+                             f"{', '.join(allowed)}", WHERE)
+    if len(set(grid.columns)) != len(grid.columns):
+        raise InputError("column", list(grid.columns), "column names must be unique", WHERE)
+    if "T" in grid.columns and ({"T1_mm", "T4_mm"} & set(grid.columns)):
+        raise InputError("column", "T", "give either T or T1_mm/T4_mm, not both", WHERE)
+
+
+def _numeric_column(col: pd.Series, name: str) -> np.ndarray:
+    vals = pd.to_numeric(col, errors="coerce")
+    bad = vals.isna() & col.notna() & ~col.astype(str).str.strip().isin(["", "nan"])
+    if bad.any():
+        i = int(np.flatnonzero(bad.to_numpy())[0])
+        raise InputError(name, col.iloc[i], f"a number is required (grid row {i})", WHERE)
+    arr = vals.to_numpy(dtype=float)
+    if np.isinf(arr).any():
+        i = int(np.flatnonzero(np.isinf(arr))[0])
+        raise InputError(name, arr[i], f"a finite number is required (grid row {i})", WHERE)
+    return arr
+
+
+def validate_grid(grid: pd.DataFrame, mode: str = "evaluate") -> pd.DataFrame:
+    """Check a grid and return it with numeric columns as float and a clean index.
+
+    Raises
+    ------
+    InputError
+        Not a DataFrame, no rows, an unknown column, a non-numeric or
+        non-finite value in a numeric column, ``T < 1``, or both ``T`` and
+        ``T1_mm``/``T4_mm`` (conflicting definitions of the grooves).
+    """
+    _check_columns(grid, mode)
+    out = grid.reset_index(drop=True).copy()
+    for c in out.columns:
+        if c in STRING_COLUMNS:
+            out[c] = out[c].astype(object).where(out[c].notna(), None)
+        else:
+            out[c] = _numeric_column(out[c], c)
+    if "T" in out.columns:
+        t = out["T"].to_numpy(dtype=float)
+        low = np.flatnonzero(t < 1.0)
+        if low.size:
+            raise InputError("T", float(t[low[0]]), "must be >= 1 (T = 1 is a smooth "
+                             f"clearance; grid row {int(low[0])})", WHERE)
+    return out
+
+
+def read_grid_csv(path: str | Path) -> pd.DataFrame:
+    """Read a grid CSV (one column per parameter, see :data:`PARAM_COLUMNS`)."""
+    p = Path(path)
+    if not p.is_file():
+        raise InputError("grid", str(p), "must be an existing CSV file", WHERE)
+    try:
+        df = pd.read_csv(p, dtype={c: str for c in STRING_COLUMNS}, skipinitialspace=True)
+    except pd.errors.EmptyDataError:
+        raise InputError("grid", str(p), "is empty; it must hold a header and at least one "
+                         "row", WHERE) from None
+    except (pd.errors.ParserError, UnicodeDecodeError) as e:
+        raise InputError("grid", str(p), f"is not a readable CSV ({e})", WHERE) from None
+    df.columns = [str(c).strip() for c in df.columns]
+    return df
+
+
+# --------------------------------------------------------------------------- one point's case
+
+
+_DUTY_CACHE: dict[tuple, DutyCycle] = {}
+_POSITIVE = ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm", "R_mm", "gap_mm",
+             "region2_radius_mm", "region2_length_mm", "region2_gap_mm", "peak_speed_rpm")
+_GEOMETRY = ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm", "R_mm", "gap_mm", "T")
+
+
+def _sine_with_peak(case: DesignCase, peak_rpm: float) -> DutyCycle:
+    spec = dict(case.duty_cycle.spec)
+    if spec.get("kind") != "sine":
+        raise InputError("peak_speed_rpm", peak_rpm, "only for a case with a sine duty cycle",
+                         WHERE)
+    spec.pop("kind")
+    spec["peak_speed_rpm"] = float(peak_rpm)
+    key = tuple(sorted(spec.items()))
+    if key not in _DUTY_CACHE:
+        if len(_DUTY_CACHE) > 256:
+            _DUTY_CACHE.clear()
+        _DUTY_CACHE[key] = DutyCycle.sine(**spec)
+    return _DUTY_CACHE[key]
+
+
+def _apply_geometry(case: DesignCase, p: Mapping[str, Any]) -> DesignCase:
+    """Region-1 radii and length of a row, in the order of :func:`apply_params`."""
+    mm = MM_TO_M
+    r1 = case.region1
+    g = {"T1": r1.T1, "T2": r1.T2, "T3": r1.T3, "T4": r1.T4, "length": r1.length,
+         "T1_unfilled": r1.T1_unfilled, "T4_unfilled": r1.T4_unfilled}
+    for k in ("T1", "T2", "T3", "T4", "length"):
+        if k + "_mm" in p:
+            g[k] = float(p[k + "_mm"]) * mm
+    if "R_mm" in p:
+        s = float(p["R_mm"]) * mm - g["T2"]
+        for k in ("T1", "T2", "T3", "T4", "T1_unfilled", "T4_unfilled"):
+            g[k] += s
+    if "gap_mm" in p:
+        s = float(p["gap_mm"]) * mm - (g["T3"] - g["T2"])
+        for k in ("T3", "T4", "T4_unfilled"):
+            g[k] += s
+    if "T" in p:
+        t_val = float(p["T"])
+        if t_val < 1.0:
+            raise InputError("T", t_val, "must be >= 1 (T = 1 is a smooth clearance)", WHERE)
+        rotor, stator = g["T2"] - g["T1"], g["T4"] - g["T3"]
+        share = 0.5 if rotor + stator <= 0 else rotor / (rotor + stator)
+        depth = (t_val - 1.0) * (g["T3"] - g["T2"])
+        g["T1"] = g["T2"] - share * depth
+        g["T4"] = g["T3"] + (1.0 - share) * depth
+    g["T1_unfilled"] = min(g["T1_unfilled"], g["T1"])
+    g["T4_unfilled"] = max(g["T4_unfilled"], g["T4"])
+    return replace(case, region1=replace(r1, **g))
+
+
+def apply_params(case: DesignCase, params: Mapping[str, Any],
+                 catalogue: Mapping[str, Oil] | None = None) -> DesignCase:
+    """The base case with one grid row's parameters applied (validated by the case).
+
+    Geometry is applied in this order: explicit ``T1_mm..T4_mm``/``length_mm``,
+    then ``R_mm`` (shifts all four radii), then ``gap_mm`` (moves the stator:
+    T3 and T4), then ``T`` (sets the total groove depth ``(T - 1) delta``,
+    split between rotor and stator in the case's proportion). Groove bottoms
+    before filling follow so that filling never has to remove material.
+
+    Raises
+    ------
+    InputError
+        A value the case refuses (the message names the field).
+    """
+    p = {k: v for k, v in params.items() if not is_missing(v) and k != "label"}
+    for k in _POSITIVE:
+        if k in p:
+            check_positive(k, p[k], "grid row")
+    if "oil" in p:
+        case = replace(case, oil=get_oil(str(p["oil"]), catalogue))
+    if "oil_temp_C" in p or "depth_m" in p:
+        op = case.operating
+        case = replace(case, operating=type(op)(float(p.get("depth_m", op.depth_m)),
+                                                float(p.get("oil_temp_C", op.oil_temp_C))))
+    if any(k in p for k in _GEOMETRY):
+        case = _apply_geometry(case, p)
+    fkw = {k: p[k] for k in ("gamma", "scale", "laminar_law", "form") if k in p}
+    if fkw:
+        fkw = {k: (str(v) if k in ("laminar_law", "form") else float(v)) for k, v in fkw.items()}
+        case = replace(case, friction=replace(case.friction, **fkw))
+    if "peak_speed_rpm" in p:
+        case = replace(case, duty_cycle=_sine_with_peak(case, float(p["peak_speed_rpm"])))
+    r2kw = {k[len("region2_"):-3]: float(p[k]) * MM_TO_M
+            for k in ("region2_radius_mm", "region2_length_mm", "region2_gap_mm") if k in p}
+    if r2kw:
+        if case.region2 is None:
+            k0 = next(k for k in p if k.startswith("region2_"))
+            raise InputError(k0, p[k0], "the base case has no region 2", WHERE)
+        case = replace(case, region2=replace(case.region2, **r2kw))
+    return case

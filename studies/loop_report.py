@@ -1,0 +1,326 @@
+"""Report of the measured-data loop: terminal summary, ``loop.json``, ``report.md``, figures.
+
+Tables and figures follow :mod:`oilgap.studies.reporting`. Figures (matplotlib,
+Agg canvas), written next to the report:
+
+* ``measured_vs_model.png``: per run, the measured viscous power against time
+  with the model without T, with T (before) and with the accepted effects (after);
+* ``residual_vs_speed.png``: residual against signed speed, before and after;
+* ``residual_vs_time.png``: residual against time, before and after, per run.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import numpy as np
+
+from oilgap.model.errors import InputError
+from oilgap.optim.calibration.estimator import LoopEstimator
+from oilgap.studies.reporting import markdown_rows, new_figure, save_figure
+
+FIGURES = ("measured_vs_model.png", "residual_vs_speed.png", "residual_vs_time.png")
+DPI = 110
+"""Resolution of the loop's figures [dots per inch]."""
+
+
+def _num(x: float, digits: int = 4) -> str:
+    if x is None or (isinstance(x, float) and not math.isfinite(x)):
+        return "-"
+    return f"{x:.{digits}g}"
+
+
+def error_table(est: LoopEstimator) -> str:
+    """Table 3 of the seed (RMSE by oil and roughness, without T, with T, reduction)."""
+    lines = [f"{'oil':<14}{'T':>5}{'without T W':>14}{'with T W':>11}{'reduction':>11}"]
+    for r in est.table3_:
+        lines.append(f"{r['oil']:<14}{r['roughness_T']:>5g}{r['rmse_without_T_W']:>14.3f}"
+                     f"{r['rmse_with_T_W']:>11.3f}{r['reduction_pct']:>10.0f} %")
+    return "\n".join(lines)
+
+
+def format_summary(est: LoopEstimator) -> str:
+    """What ``oilgap loop`` prints: data, calibration, error table, effects, before/after."""
+    d = est.data_
+    c = est.calibration_
+    ci = est.calibration_ci_
+    lines = [f"data        {d.source}: {d.kind}, {est.samples_.n} oil samples in "
+             f"{len(est.samples_.run_names)} runs; {d.drop_summary().splitlines()[0]}"]
+    for r in d.dropped:
+        lines.append(f"            dropped {r.count} x {r.reason}")
+    if d.ignored_columns:
+        lines.append(f"            ignored columns: {', '.join(d.ignored_columns)}")
+    for b in est.baselines_.values():
+        lines.append(f"baseline    T = {b.roughness_T:g}: oil-free fit RMSE {b.rmse_W:.3f} W "
+                     f"({b.n_samples} samples)" + ("; " + "; ".join(b.notes) if b.notes else ""))
+    par = ", ".join(
+        f"{k} = {_num(c[k])}" + (f" [{_num(ci[k][0])}, {_num(ci[k][1])}]"
+                                 if isinstance(ci[k], list) else " (fixed)")
+        for k in ("C", "alpha", "beta", "gamma"))
+    lines += [f"calibration Eq. 8 with T: {par}",
+              f"            without T: the case's law ({est.law_without_T_.form}, laminar "
+              f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted", "",
+              "error table (RMSE of the viscous power by oil and roughness)", error_table(est),
+              ""]
+    if est.effects_:
+        lines.append("effects found (accepted by leave-one-run-out cross-validation)")
+        for e in est.effects_:
+            lines.append(f"  {e.name}: {e.formula}")
+            unit = "" if e.unit == "-" else f" {e.unit}"
+            ci_txt = (f"[{_num(e.ci_low)}, {_num(e.ci_high)}] (95 %)" if math.isfinite(e.ci_low)
+                      else "(no interval: fewer than 3 runs)")
+            if e.strength_unit != e.unit:  # e.g. lambda^2 fitted, lambda reported too
+                unit += f" (strength {_num(e.strength)} {e.strength_unit})"
+            lines.append(f"    {e.coefficient_label()} = {_num(e.coefficient)}{unit} "
+                         f"{ci_txt}, held-out gain "
+                         f"{e.heldout_gain_pct:.1f} %, RMS {e.rms_power_W:.3g} W")
+    else:
+        best = max((x for x in est.candidates_ if "heldout_gain_alone_pct" in x),
+                   key=lambda x: x["heldout_gain_alone_pct"], default=None)
+        why = (f" (best candidate {best['name']}: held-out gain "
+               f"{best['heldout_gain_alone_pct']:.1f} % < margin {100 * est.margin:.0f} %)"
+               if best else "")
+        lines.append("no missing effect found" + why)
+    if est.unexplained_:
+        lines.append("unexplained: " + est.unexplained_["description"])
+    h = est.heldout_rmse_
+    r = est.rmse_
+    lines += ["", f"{'RMSE W':<22}{'without T':>10}{'with T':>10}{'with effect':>13}",
+              f"{'in-sample':<22}{r['without_T']:>10.3f}{r['with_T']:>10.3f}"
+              f"{r['with_effect']:>13.3f}",
+              f"{'held-out (LORO)':<22}{'':>10}{h['before']:>10.3f}{h['after']:>13.3f}",
+              f"noise level {est.noise_W_:.3f} W; held-out RMSE "
+              + (f"falls by {100 * (1 - h['after'] / h['before']):.1f} %"
+                 if h["after"] < h["before"] else "unchanged (no effect accepted)")]
+    return "\n".join(x for x in lines if x is not None)
+
+
+def _figure_runs(est: LoopEstimator, path: Path) -> Path:
+    """Per run: measured viscous power against time with the model without T, with T
+    (before) and with the accepted effects (after)."""
+    s = est.samples_
+    runs = s.run_names
+    ncol = min(4, len(runs))
+    nrow = math.ceil(len(runs) / ncol)
+    fig, axes = new_figure(4 * ncol, 2.8 * nrow, ncols=ncol, nrows=nrow, squeeze=False,
+                           sharex=False)
+    for i, name in enumerate(runs):
+        ax = axes[i // ncol][i % ncol]
+        m = s.run_code == i
+        t = s.time_s[m]
+        ax.plot(t, s.viscous_W[m], ".", ms=1.5, color="0.5", label="measured")
+        ax.plot(t, est.pred_["without_T"][m], lw=0.8, color="tab:red", label="without T")
+        ax.plot(t, est.pred_["with_T"][m], lw=0.8, color="tab:blue", label="with T (before)")
+        if est.effects_:
+            ax.plot(t, est.pred_["with_effect"][m], lw=0.8, color="tab:green", ls="--",
+                    label="with effect (after)")
+        ax.set_title(name, fontsize=9)
+        ax.set_xlabel("time [s]", fontsize=8)
+        ax.set_ylabel("viscous power [W]", fontsize=8)
+        ax.tick_params(labelsize=7)
+    for j in range(len(runs), nrow * ncol):
+        axes[j // ncol][j % ncol].axis("off")
+    axes[0][0].legend(fontsize=7, loc="upper right")
+    return save_figure(fig, path, DPI)
+
+
+def _bin_means(xv: np.ndarray, res: np.ndarray, bins: int = 24
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """Centres and means of ``res`` in ``bins`` equal-count bins of ``xv``."""
+    edges = np.quantile(xv, np.linspace(0, 1, bins + 1))
+    idx = np.clip(np.searchsorted(edges, xv, side="right") - 1, 0, bins - 1)
+    count = np.maximum(np.bincount(idx, None, bins), 1)
+    return np.bincount(idx, xv, bins) / count, np.bincount(idx, res, bins) / count
+
+
+def _figure_residuals(est: LoopEstimator, path: Path, xv: np.ndarray, xlabel: str,
+                      per_run: bool) -> Path:
+    """Residual before and after against ``xv``: one line per run (``per_run``) or the
+    samples with their bin means."""
+    s = est.samples_
+    y = s.viscous_W
+    fig, axes = new_figure(11, 3.8, ncols=2, sharey=True)
+    for ax, res, title in ((axes[0], y - est.pred_["with_T"], "before (calibrated, with T)"),
+                           (axes[1], y - est.pred_["with_effect"],
+                            "after (with accepted effects)")):
+        if per_run:
+            for i, name in enumerate(s.run_names):
+                m = s.run_code == i
+                ax.plot(xv[m], res[m], lw=0.4, alpha=0.7, label=name)
+        else:
+            ax.plot(xv, res, ".", ms=1, alpha=0.3, color="0.4")
+            cen, mean = _bin_means(xv, res)
+            ax.plot(cen, mean, "o-", ms=3, color="tab:red", label="bin means")
+            ax.legend(fontsize=8)
+        ax.axhline(0, color="k", lw=0.5)
+        ax.set_title(f"residual {title}: RMSE {math.sqrt(np.mean(res * res)):.3g} W",
+                     fontsize=9)
+        ax.set_xlabel(xlabel)
+    axes[0].set_ylabel("measured - model [W]")
+    return save_figure(fig, path, DPI)
+
+
+def _figures(est: LoopEstimator, out: Path) -> list[Path]:
+    """The three figures of :data:`FIGURES`, written into ``out``."""
+    s = est.samples_
+    return [_figure_runs(est, out / FIGURES[0]),
+            _figure_residuals(est, out / FIGURES[1], s.speed_rpm, "speed [rpm]", False),
+            _figure_residuals(est, out / FIGURES[2], s.time_s, "time [s]", True)]
+
+
+def _md_data(est: LoopEstimator) -> list[str]:
+    """Report section: the data read, dropped and ignored; the oil-free baseline."""
+    d = est.data_
+    parts = ["# Measured-data loop report", "",
+             f"Data: `{d.source}` ({d.kind}); {d.n_read} rows read, {d.n_dropped} dropped; "
+             f"{est.samples_.n} oil samples in {len(est.samples_.run_names)} runs.", ""]
+    if d.dropped:
+        parts += [markdown_rows(["reason", "rows", "first lines"],
+                                [[x.reason, x.count, ", ".join(map(str, x.lines))]
+                                 for x in d.dropped]), ""]
+    if d.ignored_columns:
+        parts += [f"Ignored columns: {', '.join(d.ignored_columns)}.", ""]
+    if est.baselines_:
+        parts += ["## Oil-free baseline", "",
+                  markdown_rows(["T", "samples", "RMSE W", "temperature range degC", "notes"],
+                                [[f"{b.roughness_T:g}", b.n_samples, f"{b.rmse_W:.3f}",
+                                  f"{b.temp_range_C[0]:.1f}..{b.temp_range_C[1]:.1f}",
+                                  "; ".join(b.notes) or "-"]
+                                 for b in est.baselines_.values()]),
+                  ""]
+    return parts
+
+
+def _md_calibration(est: LoopEstimator) -> list[str]:
+    """Report section: the calibration (seed Table 3)."""
+    c, ci = est.calibration_, est.calibration_ci_
+    parts = ["## Calibration (seed Table 3)", "",
+             f"Without T: the case's friction law (form `{est.law_without_T_.form}`, laminar "
+             f"law `{est.law_without_T_.laminar_law}`) with gamma = 0, nothing fitted. "
+             "With T: Eq. 8, C_m = C (delta/R)^alpha Re^beta T^gamma, region 2 at T = 1, "
+             "fitted by nonlinear least squares on the power.", "",
+             markdown_rows(["parameter", "value", "95 % CI (jackknife over runs + baseline)",
+                            "identifiability"],
+                           [[k, _num(c[k], 5), (f"{_num(ci[k][0], 5)} .. {_num(ci[k][1], 5)}"
+                                                 if isinstance(ci[k], list) else "fixed"),
+                             est.identifiability_.get(k, "")]
+                            for k in ("C", "alpha", "beta", "gamma")]), ""]
+    if "correlations" in est.identifiability_:
+        parts += [f"Parameter correlations: {est.identifiability_['correlations']}.", ""]
+    parts += [markdown_rows(["oil", "T", "RMSE without T W", "RMSE with T W", "reduction"],
+                            [[x["oil"], f"{x['roughness_T']:g}", f"{x['rmse_without_T_W']:.3f}",
+                              f"{x['rmse_with_T_W']:.3f}", f"{x['reduction_pct']:.0f} %"]
+                             for x in est.table3_]), ""]
+    return parts
+
+
+def _md_search(est: LoopEstimator) -> list[str]:
+    """Report section: the calibrated model's residual and the effect search."""
+    rb = est.residual_before_
+    return ["## Residual of the calibrated model", "",
+            f"RMSE {rb['rmse_W']:.3f} W; noise (successive differences) {rb['noise_W']:.3f} W;"
+            f" structure above noise {rb['structured_rms_W']:.3f} W RMS "
+            f"({100 * rb['structured_fraction']:.0f} % of the variance). Autocorrelation "
+            + ", ".join(f"lag {k}: {v:.2f}" for k, v in rb["autocorrelation"].items()) + ".",
+            "",
+            markdown_rows(["variable", "eta^2", "Pearson r"],
+                          [[k, f"{v['eta2']:.3f}", f"{v['pearson_r']:+.3f}"]
+                           for k, v in rb["variables"].items()]), "",
+            "## Effect search", "",
+            f"Margin: an effect must lower the held-out (leave-one-run-out) RMSE by "
+            f"{100 * est.margin:.0f} % and explain {100 * est.min_explained:.0f} % of the "
+            "held-out structure above noise.", "",
+            markdown_rows(["effect", "status", "held-out gain alone", "best column",
+                           "lasso entry (lambda/lambda_max)", "R^2 on calibration"],
+                          [[x["name"], x["status"],
+                            (f"{x['heldout_gain_alone_pct']:.1f} %"
+                             if "heldout_gain_alone_pct" in x else "-"),
+                            x.get("best_column", "-"), _num(x.get("lasso_entry_lambda_rel")),
+                            _num(x.get("r2_on_calibration"), 6)] for x in est.candidates_]), ""]
+
+
+def _md_effects(est: LoopEstimator) -> list[str]:
+    """Report section: the forms left out, the accepted effects and what stays unexplained."""
+    parts = []
+    for k, v in est.confounded_forms_.items():
+        parts += [f"Not a candidate: `{k}`: {v}.", ""]
+    if est.effects_:
+        parts += ["### Accepted effects", "",
+                  markdown_rows(["effect", "formula", "coefficient", "95 % CI", "unit",
+                                 "held-out gain", "RMS power W", "reference"],
+                                [[e.name, f"`{e.formula}`", _num(e.coefficient, 5),
+                                  f"{_num(e.ci_low, 5)} .. {_num(e.ci_high, 5)}", e.unit,
+                                  f"{e.heldout_gain_pct:.1f} %", f"{e.rms_power_W:.3g}",
+                                  e.reference] for e in est.effects_]), ""]
+        ca, cia = est.calibration_after_, est.calibration_after_ci_
+        parts += ["Calibration refitted with the effects: " + ", ".join(
+            f"{k} = {_num(ca[k], 5)}" + (f" [{_num(cia[k][0], 5)}, {_num(cia[k][1], 5)}]"
+                                         if isinstance(cia[k], list) else "")
+            for k in ("C", "alpha", "beta", "gamma")) + ".", ""]
+    else:
+        parts += ["**No missing effect found.**", ""]
+    if est.unexplained_:
+        parts += ["### Unexplained structure", "", est.unexplained_["description"] + ".", ""]
+    return parts
+
+
+def _md_errors(est: LoopEstimator) -> list[str]:
+    """Report section: the errors before and after, overall and per run; the figures."""
+    h, r = est.heldout_rmse_, est.rmse_
+    return ["## Errors before and after", "",
+            markdown_rows(["RMSE W", "without T", "with T (before)", "with effect (after)"],
+                          [["in-sample", f"{r['without_T']:.3f}", f"{r['with_T']:.3f}",
+                            f"{r['with_effect']:.3f}"],
+                           ["held-out runs", "-", f"{h['before']:.3f}", f"{h['after']:.3f}"]]),
+            "", markdown_rows(["run", "oil", "T", "without T W", "with T W", "with effect W",
+                               "held-out before W", "held-out after W"],
+                              [[x["run"], x["oil"], f"{x['roughness_T']:g}",
+                                f"{x['rmse_without_T_W']:.3f}", f"{x['rmse_with_T_W']:.3f}",
+                                f"{x['rmse_with_effect_W']:.3f}",
+                                f"{x['heldout_rmse_before_W']:.3f}",
+                                f"{x['heldout_rmse_after_W']:.3f}"] for x in est.per_run_]), "",
+            "## Figures", "", *(f"![{f}]({f})" for f in FIGURES)]
+
+
+def report_markdown(est: LoopEstimator) -> str:
+    """The ``report.md`` text."""
+    parts = (_md_data(est) + _md_calibration(est) + _md_search(est) + _md_effects(est)
+             + _md_errors(est))
+    return "\n".join(parts) + "\n"
+
+
+def _json_safe(x):
+    if isinstance(x, dict):
+        return {str(k): _json_safe(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_json_safe(v) for v in x]
+    if isinstance(x, (np.floating, float)):
+        v = float(x)
+        return v if math.isfinite(v) else None
+    if isinstance(x, np.integer):
+        return int(x)
+    if isinstance(x, np.bool_):
+        return bool(x)
+    return x
+
+
+def loop_json(est: LoopEstimator) -> dict:
+    """The ``loop.json`` document (non-finite numbers as null)."""
+    return _json_safe(est.to_dict())
+
+
+def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) -> dict:
+    """Write ``loop.json``, ``report.md`` and the figures to ``out_dir``; returns the paths."""
+    out = Path(out_dir)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise InputError("--out", str(out), f"cannot create the directory ({e.strerror})") \
+            from None
+    paths = {"json": out / "loop.json", "report": out / "report.md"}
+    paths["json"].write_text(json.dumps(loop_json(est), indent=2), encoding="utf-8")
+    paths["report"].write_text(report_markdown(est), encoding="utf-8")
+    paths["figures"] = _figures(est, out) if figures else []
+    return paths

@@ -1,0 +1,108 @@
+"""Pareto study: the fronts'
+optimality properties (constraints hold, nested feasible sets give a monotone
+front, the seeds are feasible hence dominated), warm-started points against cold
+solves, the numpy problem against the NLP, bad input."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+from oilgap.model.case_io import seed_case
+from oilgap.model.errors import InfeasibleError, InputError
+from oilgap.model.units import MM_TO_M
+from oilgap.optim.design import DesignProblem
+from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.pareto import (
+    gap_front,
+    gap_problem_numpy,
+    hypervolume_2d,
+    inertia_front,
+    min_feasible_inertia_ratio,
+    run,
+    seed_points,
+)
+
+
+@pytest.fixture(scope="module")
+def fronts():
+    case = seed_case()
+    return case, gap_front(case, 50), inertia_front(case, 50), seed_points()
+
+
+def test_gap_front_points_are_feasible_and_monotone(fronts):
+    case, g, _, _ = fronts
+    assert len(g) == 50 and (g["status"] == "ok").all()
+    assert (g["delta_mm"] <= g["epsilon"] * (1 + 1e-9)).all()
+    assert (g["torque_capability_Nm"] >= g["torque_min_Nm_used"] * (1 - 1e-6)).all()
+    assert (g["inertia_kgm2"] <= g["inertia_max_kgm2_used"] * (1 + 1e-6)).all()
+    # eps falls along the sweep: nested feasible sets, the optimum can only get worse
+    assert (np.diff(g["mean_power_W"].to_numpy()) >= -1e-9).all()
+    assert g["epsilon"].min() == pytest.approx(case.bounds.gap_min / MM_TO_M)
+
+
+def test_seed_designs_are_feasible_so_the_front_dominates_them(fronts):
+    _, g, _, seeds = fronts
+    at = g[g["epsilon"] >= 1.0 - 1e-12]  # the seed's gap is 1 mm: it is feasible there
+    for _, s in seeds.iterrows():
+        assert s["inertia_ratio"] <= 1.05 and s["delta_mm"] == pytest.approx(1.0)
+        assert (at["mean_power_W"] <= s["mean_power_W"] + 1e-9).all()
+
+
+def test_warm_started_points_match_cold_solves(fronts):
+    case, g, _, _ = fronts
+    prob = DesignProblem(case)
+    for k in (5, 25, 45):
+        cold = prob.solve(gap_max_m=g["epsilon"].iloc[k] * MM_TO_M)
+        assert g["mean_power_W"].iloc[k] == pytest.approx(cold.optimal.mean_power_W,
+                                                          rel=1e-6)
+
+
+def test_inertia_front(fronts):
+    case, _, i, _ = fronts
+    assert len(i) == 50 and (i["status"] == "ok").all()
+    assert (i["inertia_ratio"] <= i["epsilon"] * (1 + 1e-6)).all()
+    assert (np.diff(i["mean_power_W"].to_numpy()) >= -1e-9).all()
+
+
+def test_min_feasible_inertia_ratio_is_the_boundary():
+    case = seed_case()
+    r = min_feasible_inertia_ratio(case)
+    prob = DesignProblem(case)
+    with pytest.raises(InfeasibleError):
+        prob.solve(inertia_max_ratio=r * (1 - 1e-3))
+    assert prob.solve(inertia_max_ratio=r * (1 + 1e-3)).success
+
+
+def test_numpy_problem_matches_the_nlp(fronts):
+    case, g, _, _ = fronts
+    lo, hi, evaluate = gap_problem_numpy(case)
+    row = g.iloc[10]
+    x = np.array([row["R_mm"], row["delta_mm"], row["R_mm"] - row["T1_mm"],
+                  row["T4_mm"] - row["T3_mm"], row["L_mm"]]) * MM_TO_M
+    F, G = evaluate(x[None, :])
+    assert F[0, 0] == pytest.approx(row["delta_mm"], rel=1e-12)
+    assert F[0, 1] == pytest.approx(row["mean_power_W"], rel=1e-9)
+    assert (G <= 1e-6).all()
+    assert (x >= lo - 1e-12).all() and (x <= hi + 1e-12).all()
+
+
+def test_infeasible_points_are_rows_with_their_error():
+    res = run_grid(pd.DataFrame({"inertia_max_ratio": [1.05, 0.2]}), mode="optimize",
+                   workers=1, progress=False)
+    assert list(res["status"]) == ["ok", "error"]
+    assert "InfeasibleError" in res["error"].iloc[1]
+
+
+def test_too_few_points_refused():
+    with pytest.raises(InputError):
+        gap_front(seed_case(), 10)
+
+
+def test_outputs_written(tmp_path):
+    r = run(tmp_path, points=50)
+    for f in ("pareto_gap.csv", "pareto_inertia.csv", "pareto_gap.png", "pareto_inertia.png",
+              "summary.md"):
+        assert (tmp_path / f).stat().st_size > 0
+    ok = r.gap_front[r.gap_front["status"] == "ok"]
+    assert r.hypervolume == pytest.approx(
+        hypervolume_2d(ok[["delta_mm", "mean_power_W"]].to_numpy(), r.reference_point))

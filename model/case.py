@@ -24,7 +24,7 @@ from typing import Any
 
 from .duty_cycle import DutyCycle
 from .errors import InputError, check_positive, check_range
-from .oils import Oil
+from .fluids import Fluid
 from .skin_friction import FrictionLaw, groove_roughness
 from .units import MM_TO_M
 
@@ -309,8 +309,9 @@ class DesignCase:
         The rotor-stator clearance (radii and length [m]).
     region2 : BearingClearance or None
         The bearing annulus [m], if the joint has one.
-    oil : Oil
-        The compensating oil (nu [cSt] at 40 and 100 degC, density [kg/m^3]).
+    oil : Fluid
+        The compensating fluid: a mineral Oil (nu [cSt] at 40 and 100 degC, density
+        [kg/m^3]), a TableFluid or a GasFluid (:mod:`oilgap.model.fluids`).
     operating : OperatingPoint
         Depth [m] and oil temperature [degC].
     duty_cycle : DutyCycle
@@ -324,13 +325,13 @@ class DesignCase:
     mission : tuple of MissionSegment
         Mission profile (depth [m], temperature [degC], fraction [-]); may be empty.
     oils_csv : str or None
-        Path of the oils table the oil came from, if any.
+        Path of the oils table a mineral oil came from, if any.
     """
 
     name: str
     region1: RotorStatorClearance
     region2: BearingClearance | None
-    oil: Oil
+    oil: Fluid
     operating: OperatingPoint = field(default_factory=OperatingPoint)
     duty_cycle: DutyCycle = field(default_factory=DutyCycle.sine)
     friction: FrictionLaw = field(default_factory=FrictionLaw)

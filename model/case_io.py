@@ -3,7 +3,8 @@
 The TOML file carries units in its key names (``T1_mm``, ``depth_m``,
 ``peak_speed_rpm``); :func:`case_from_dict` converts them to the SI dataclasses
 of :mod:`oilgap.model.case` and :func:`case_to_dict` back. Every key is listed
-with its unit and default in ``docs/case-file.md``.
+with its unit and default in ``docs/case-file.md``; the ``[oil]`` keys of each kind of
+fluid (``kind = "mineral" | "table" | "gas"``) in ``docs/fluids.md``.
 
 References
 ----------
@@ -35,9 +36,10 @@ from .case import (
 )
 from .duty_cycle import DutyCycle
 from .errors import InputError, check_finite, check_range
+from .fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
 from .oils import Oil, builtin_oils, get_oil, normalize_oil_name, read_oils_csv
 from .skin_friction import FrictionLaw
-from .units import MM_TO_M
+from .units import MM_TO_M, celsius_to_kelvin, kelvin_to_celsius
 
 # --------------------------------------------------------------------------- TOML schema
 
@@ -47,7 +49,7 @@ _TABLES = {
     "region1": {"T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm", "T1_unfilled_mm",
                 "T4_unfilled_mm"},
     "region2": {"radius_mm", "length_mm", "gap_mm"},
-    "oil": {"name", "oils_csv", "nu40_cSt", "nu100_cSt", "density_kg_m3", "barus_1_GPa"},
+    "oil": set(),  # the union of _OIL_KEYS, filled in below
     "operating": {"depth_m", "oil_temp_C"},
     "duty_cycle": {"kind", "peak_speed_rpm", "frequency_hz", "duration_s", "sample_interval_s",
                    "csv"},
@@ -61,6 +63,17 @@ _TABLES = {
                "length_max_mm", "inertia_max_ratio", "torque_min_Nm"},
 }
 _ARRAY_TABLES = {"mission": {"depth_m", "oil_temp_C", "fraction"}}
+_OIL_KEYS = {  # [oil] keys of each kind of fluid
+    "mineral": {"kind", "name", "oils_csv", "nu40_cSt", "nu100_cSt", "density_kg_m3",
+                "barus_1_GPa", "polymer_thickened"},
+    "table": {"kind", "name", "table_csv", "outside_table", "polymer_thickened"},
+    "gas": {"kind", "name", "molar_mass_kg_per_mol", "sutherland_mu_ref_Pa_s",
+            "sutherland_T_ref_K", "sutherland_S_K", "trusted_min_C", "trusted_max_C"},
+}
+_TABLES["oil"] = set().union(*_OIL_KEYS.values())
+_GAS_CONSTANTS = {  # TOML key -> GasFluid field (SI: kg/mol, Pa s, K)
+    "molar_mass_kg_per_mol": "molar_mass_kg_mol", "sutherland_mu_ref_Pa_s": "mu_ref_Pa_s",
+    "sutherland_T_ref_K": "T_ref_K", "sutherland_S_K": "sutherland_S_K"}
 def _check_keys(table: dict, allowed: set[str], where: str) -> None:
     for k in table:
         if k not in allowed:
@@ -92,8 +105,8 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         The parsed TOML, units in the key names (``T1_mm`` [mm], ``depth_m`` [m],
         ``oil_temp_C`` [degC], ``peak_speed_rpm`` [rpm]).
     base_dir : Path, optional
-        Directory that relative paths (``oils_csv``, ``duty_cycle.csv``) are read
-        from (default: the working directory).
+        Directory that relative paths (``oils_csv``, ``table_csv``, ``duty_cycle.csv``)
+        are read from (default: the working directory).
 
     Returns
     -------
@@ -161,7 +174,28 @@ def _region2_from(doc: dict) -> BearingClearance | None:
     return region2
 
 
-def _oil_from(od: dict, base_dir: Path) -> tuple[Oil, str | None]:
+def _oil_from(od: dict, base_dir: Path) -> tuple[Fluid, str | None]:
+    kind = od.get("kind", "mineral")
+    if kind not in FLUID_KINDS:
+        raise InputError("oil.kind", kind, f"allowed: {', '.join(FLUID_KINDS)}", "case TOML")
+    for k in od:
+        if k not in _OIL_KEYS[kind]:
+            raise InputError(f"oil.{k}", od[k], f"not a key of kind = \"{kind}\"; its keys: "
+                             f"{', '.join(sorted(_OIL_KEYS[kind]))}", "case TOML")
+    flag = od.get("polymer_thickened")
+    if flag is not None and not isinstance(flag, bool):
+        raise InputError("oil.polymer_thickened", flag, "true or false", "case TOML")
+    if kind == "table":
+        p = Path(str(_require(od, "table_csv", "oil")))
+        p = p if p.is_absolute() else base_dir / p
+        return read_fluid_table(p, str(od["name"]) if "name" in od else None, bool(flag),
+                                str(od.get("outside_table", "refuse"))), None
+    if kind == "gas":
+        return _gas_from(od), None
+    return _mineral_from(od, base_dir, flag)
+
+
+def _mineral_from(od: dict, base_dir: Path, flag: bool | None) -> tuple[Oil, str | None]:
     oils_csv = None
     catalogue = None
     if "oils_csv" in od:
@@ -188,7 +222,39 @@ def _oil_from(od: dict, base_dir: Path) -> tuple[Oil, str | None]:
             raise InputError("oil.barus_1_GPa", od["barus_1_GPa"], "only with a custom oil "
                              "(nu40_cSt, nu100_cSt, density_kg_m3)", "case TOML")
         oil = get_oil(oil_name, catalogue)
+        if oil.kind != "mineral":
+            raise InputError("oil.name", oil_name, f"is a {oil.kind}: write kind = "
+                             f"\"{oil.kind}\" in [oil]", "case TOML")
+    if flag is not None:
+        oil = replace(oil, polymer_thickened=flag)
     return oil, oils_csv
+
+
+def _gas_from(od: dict) -> GasFluid:
+    own = {k: od[k] for k in _GAS_CONSTANTS if k in od}
+    if own:
+        missing = [k for k in _GAS_CONSTANTS if k not in od]
+        if missing:
+            raise InputError("oil." + missing[0], None, "a custom gas needs "
+                             f"{', '.join(_GAS_CONSTANTS)}", "case TOML")
+        gas = GasFluid(str(od.get("name", "custom gas")),
+                       **{f: check_finite(k, od[k], "oil") for k, f in _GAS_CONSTANTS.items()})
+    else:
+        name = str(_require(od, "name", "oil"))
+        gases = builtin_gases()
+        if gas_key(name) not in gases:
+            raise InputError("oil.name", name, "built-in gases are "
+                             f"{', '.join(g.name for g in gases.values())}; or give "
+                             f"{', '.join(_GAS_CONSTANTS)}", "case TOML")
+        gas = gases[gas_key(name)]
+    if "trusted_min_C" in od or "trusted_max_C" in od:
+        lo, hi = gas.trusted_range_K
+        if "trusted_min_C" in od:
+            lo = celsius_to_kelvin(check_finite("trusted_min_C", od["trusted_min_C"], "oil"))
+        if "trusted_max_C" in od:
+            hi = celsius_to_kelvin(check_finite("trusted_max_C", od["trusted_max_C"], "oil"))
+        gas = replace(gas, trusted_range_K=(lo, hi))
+    return gas
 
 
 def _duty_cycle_from(dcd: dict, base_dir: Path) -> DutyCycle:
@@ -300,7 +366,8 @@ def case_to_dict(case: DesignCase) -> dict:
     -------
     dict
         Tables and keys of the case file, values in the unit of each key (``T1_mm``
-        [mm], ``depth_m`` [m]); a custom oil is written out in full.
+        [mm], ``depth_m`` [m]); a custom oil or gas is written out in full, a table
+        fluid by the absolute path of its CSV; a mineral oil's ``[oil]`` has no ``kind``.
     """
     mm = 1.0 / MM_TO_M
     r1 = case.region1
@@ -313,14 +380,7 @@ def case_to_dict(case: DesignCase) -> dict:
         r2 = case.region2
         doc["region2"] = {"radius_mm": r2.radius * mm, "length_mm": r2.length * mm,
                           "gap_mm": r2.gap * mm}
-    o = case.oil
-    od: dict[str, Any] = {"name": o.name}
-    if case.oils_csv:
-        od["oils_csv"] = case.oils_csv
-    elif builtin_oils().get(normalize_oil_name(o.name)) != o:
-        od.update(nu40_cSt=o.nu40_cSt, nu100_cSt=o.nu100_cSt, density_kg_m3=o.density_kg_m3,
-                  barus_1_GPa=o.barus_1_Pa * 1e9)
-    doc["oil"] = od
+    doc["oil"] = _oil_to_dict(case.oil, case.oils_csv)
     doc["operating"] = {"depth_m": case.operating.depth_m,
                         "oil_temp_C": case.operating.oil_temp_C}
     doc["duty_cycle"] = dict(case.duty_cycle.spec)
@@ -343,6 +403,50 @@ def case_to_dict(case: DesignCase) -> dict:
         doc["mission"] = [{"depth_m": s.depth_m, "oil_temp_C": s.oil_temp_C,
                            "fraction": s.fraction} for s in case.mission]
     return doc
+
+
+def _oil_to_dict(o: Fluid, oils_csv: str | None) -> dict[str, Any]:
+    """The [oil] table of a fluid (a mineral oil's is what it was before fluids had kinds)."""
+    if o.kind == "gas":
+        od: dict[str, Any] = {"kind": "gas", "name": o.name}
+        if builtin_gases().get(gas_key(o.name)) != o:
+            od.update({k: getattr(o, f) for k, f in _GAS_CONSTANTS.items()})
+            lo, hi = o.trusted_range_K
+            if lo > 0.0:
+                od["trusted_min_C"] = float(kelvin_to_celsius(lo))
+            if math.isfinite(hi):
+                od["trusted_max_C"] = float(kelvin_to_celsius(hi))
+        return od
+    if o.kind == "table":
+        if o.source is None:
+            raise InputError("oil.table_csv", None, f"the table fluid {o.name!r} was not read "
+                             "from a CSV file, so it cannot be written to a case file")
+        od = {"kind": "table", "name": o.name, "table_csv": o.source}
+        if o.outside != "refuse":
+            od["outside_table"] = o.outside
+        if o.polymer_thickened:
+            od["polymer_thickened"] = True
+        return od
+    od = {"name": o.name}
+    if oils_csv:
+        od["oils_csv"] = oils_csv
+        if o.polymer_thickened != _csv_flag(oils_csv, o.name):
+            od["polymer_thickened"] = o.polymer_thickened
+    elif builtin_oils().get(normalize_oil_name(o.name)) != o:
+        od.update(nu40_cSt=o.nu40_cSt, nu100_cSt=o.nu100_cSt, density_kg_m3=o.density_kg_m3,
+                  barus_1_GPa=o.barus_1_Pa * 1e9)
+        if o.polymer_thickened:
+            od["polymer_thickened"] = True
+    return od
+
+
+def _csv_flag(oils_csv: str, name: str) -> bool:
+    """The polymer_thickened flag the oils CSV gives the oil (False if it cannot tell)."""
+    try:
+        oil = read_oils_csv(oils_csv).get(normalize_oil_name(name))
+    except InputError:
+        return False
+    return bool(oil is not None and oil.polymer_thickened)
 
 
 def _toml_value(v: Any) -> str:

@@ -1,9 +1,9 @@
 """Evaluate a design case over its duty cycle, region by region.
 
-Thin layer over the physics functions: oil properties at the operating
-condition (:mod:`oil_properties`), Re and Ta (:mod:`taylor_couette`), C_m
-(:mod:`skin_friction`) and the power of each region (:mod:`viscous_loss`),
-averaged over the duty cycle by its exact speed distribution.
+Thin layer over the physics functions: the fluid's properties at the operating
+condition (any fluid of the case: :mod:`oil_properties`, :mod:`fluids`), Re and Ta
+(:mod:`taylor_couette`), C_m (:mod:`skin_friction`) and the power of each region
+(:mod:`viscous_loss`), averaged over the duty cycle by its exact speed distribution.
 
 References
 ----------
@@ -19,8 +19,8 @@ from dataclasses import asdict, dataclass, replace
 import numpy as np
 
 from .case import DesignCase
+from .fluids import warn_if_untrusted_state
 from .oil_properties import seawater_gauge_pressure
-from .oils import warn_if_untrusted_temperature
 from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
 from .taylor_couette import couette_reynolds, flow_regime, taylor_number
@@ -123,9 +123,11 @@ class CaseEvaluation:
 
 
 def oil_state(case: DesignCase, oil_temp_C: float | None = None, depth_m: float | None = None):
-    """(nu [m^2/s], mu [Pa s], rho [kg/m^3]) of the case's oil at its (or the given) condition.
+    """(nu [m^2/s], mu [Pa s], rho [kg/m^3]) of the case's fluid at its (or the given) condition.
 
-    Warns (OilgapWarning) outside the trusted temperature range of the Walther line.
+    Warns (OilgapWarning) outside the fluid's trusted range (the Walther line's for a
+    mineral oil, the Sutherland law's for a gas; a gas above 1 MPa absolute); a table
+    fluid refuses temperatures outside its table (InputError).
 
     Parameters
     ----------
@@ -143,8 +145,9 @@ def oil_state(case: DesignCase, oil_temp_C: float | None = None, depth_m: float 
     """
     t = case.operating.oil_temp_C if oil_temp_C is None else oil_temp_C
     d = case.operating.depth_m if depth_m is None else depth_m
-    warn_if_untrusted_temperature(t)
-    return case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
+    p = seawater_gauge_pressure(d)
+    warn_if_untrusted_state(case.oil, t, p)
+    return case.oil.properties(celsius_to_kelvin(t), p)
 
 
 def region_powers(case: DesignCase, omega_rad_s, nu_m2_s, rho_kg_m3) -> dict[str, np.ndarray]:

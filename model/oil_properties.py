@@ -330,3 +330,56 @@ def oil_viscosities(walther_A, walther_B, density15_kg_m3, temp_K, pressure_gaug
     alpha = barus_coefficient(alpha_1_Pa, mu0, mu_ref)
     mu = mu0 * barus_factor(pressure_gauge_Pa, alpha)
     return mu / rho, mu, rho
+
+
+def oil_viscosity_temperature_slope(walther_A, walther_B, density15_kg_m3, temp_K,
+                                    pressure_gauge_Pa=0.0, alpha_1_Pa=BARUS_MINERAL_OIL_1_PA,
+                                    expansion_1_K=THERMAL_EXPANSION_MINERAL_OIL_1_K,
+                                    bulk_modulus_Pa=BULK_MODULUS_MINERAL_OIL_PA):
+    """Viscosity-temperature slope ``b = -d ln(mu)/dT`` [1/K] of :func:`oil_viscosities`.
+
+    With ``mu = nu0(T) rho(T, 0) exp(alpha(T) p)`` and Roelands' ``alpha(T) = alpha_ref
+    ln(mu0/mu_inf) / ln(mu_ref/mu_inf)``, ``ln mu = ln mu0 (1 + alpha_ref p / ln(mu_ref/
+    mu_inf)) + const``, so
+
+    ``b = (1 + alpha_ref p / ln(mu_ref/mu_inf)) (B (nu0 + 0.7) ln(nu0 + 0.7) / (nu0 T)
+    + beta)``,
+
+    where ``B (nu0 + 0.7) ln(nu0 + 0.7) / (nu0 T) = -d ln nu0/dT`` follows from
+    differentiating the Walther line ``log10 log10(nu0 + 0.7) = A - B log10 T``
+    (nu0 [cSt] at atmospheric pressure) and ``beta = -d ln rho/dT``.
+
+    Parameters
+    ----------
+    walther_A, walther_B : float
+        Walther coefficients of the oil [-].
+    density15_kg_m3 : float
+        Density at 15 degC and atmospheric pressure [kg/m^3].
+    temp_K : float, array or CasADi symbol
+        Oil temperature [K].
+    pressure_gauge_Pa : float, array or CasADi symbol
+        Pressure above atmospheric [Pa].
+    alpha_1_Pa : float
+        Barus coefficient at 40 degC [1/Pa].
+    expansion_1_K : float
+        Volumetric thermal expansion coefficient [1/K].
+    bulk_modulus_Pa : float
+        Bulk modulus [Pa] (does not enter: mu does not depend on rho(p)).
+
+    Returns
+    -------
+    float, array or CasADi expression
+        b [1/K] (positive: the oil thins as it warms).
+
+    References
+    ----------
+    ASTM D341 [1]; Barus [2] with Roelands [4]; density after Vacca & Franzoni [3].
+    """
+    nu0 = walther_viscosity_cSt(temp_K, walther_A, walther_B)
+    z = nu0 + WALTHER_OFFSET_CST
+    walther_term = walther_B * z * m.log(z) / (nu0 * temp_K)
+    t_ref = BARUS_REFERENCE_TEMPERATURE_K
+    mu_ref = cst_to_m2_s(walther_viscosity_cSt(t_ref, walther_A, walther_B)) * oil_density(
+        density15_kg_m3, t_ref, 0.0, expansion_1_K, bulk_modulus_Pa)
+    barus_term = 1.0 + alpha_1_Pa * pressure_gauge_Pa / m.log(mu_ref / ROELANDS_MU_INF_PA_S)
+    return barus_term * (walther_term + expansion_1_K)

@@ -8,13 +8,21 @@ The built-in catalogue holds ISO VG 10 to 1000 (ISO 3448: nu at 40 degC is the
 grade number) with typical nu at 100 degC of VI ~ 100 mineral oils and typical
 densities (850-910 kg/m^3). A user CSV has the columns
 ``oil,nu40_cSt,nu100_cSt,density_kg_m3`` and optionally
-``barus_1_GPa`` (pressure-viscosity coefficient, default 17 /GPa).
+``barus_1_GPa`` (pressure-viscosity coefficient, default 17 /GPa) and
+``polymer_thickened`` (true/false, default false: a straight mineral oil).
+
+:func:`get_oil` also finds the built-in gases of :mod:`oilgap.model.fluids` ('air',
+'nitrogen'); an Oil has the interface of every fluid
+(:class:`~oilgap.model.fluids.Fluid`).
 
 References
 ----------
 .. [1] ISO 3448:1992, Industrial liquid lubricants -- ISO viscosity classification
    (nu at 40 degC = the grade number, +-10 %).
 .. [2] ASTM D341-20 (the Walther line through the 40 and 100 degC points).
+.. [3] Barus (1893) with Roelands' temperature dependence of the pressure-viscosity
+   coefficient; the density law of Vacca & Franzoni (see
+   :mod:`oilgap.model.oil_properties`).
 """
 
 from __future__ import annotations
@@ -30,10 +38,13 @@ import numpy as np
 
 from . import oil_properties as op
 from .errors import InputError, OilgapWarning, check_positive, check_range
+from .fluids import Fluid, builtin_gases, gas_key, warn_if_untrusted_state
 from .units import ZERO_CELSIUS_K, celsius_to_kelvin, m2_s_to_cst, per_gpa_to_per_pa
 
 OIL_COLUMNS = ("oil", "nu40_cSt", "nu100_cSt", "density_kg_m3")
-OPTIONAL_OIL_COLUMNS = ("barus_1_GPa",)
+OPTIONAL_OIL_COLUMNS = ("barus_1_GPa", "polymer_thickened")
+TRUE_WORDS = ("true", "yes", "1")
+FALSE_WORDS = ("false", "no", "0", "")
 
 
 @dataclass(frozen=True)
@@ -50,6 +61,9 @@ class Oil:
         Density at 15 degC, atmospheric pressure [kg/m^3].
     barus_1_Pa : float
         Pressure-viscosity coefficient at 40 degC [1/Pa] (default 1.7e-8, i.e. 17 /GPa).
+    polymer_thickened : bool
+        True for a polymer-thickened (VI-improved) oil, whose shear thinning is plausible
+        [-]; default False (a straight mineral oil is Newtonian).
 
     Raises
     ------
@@ -62,6 +76,7 @@ class Oil:
     nu100_cSt: float
     density_kg_m3: float
     barus_1_Pa: float = op.BARUS_MINERAL_OIL_1_PA
+    polymer_thickened: bool = False
 
     def __post_init__(self):
         where = f"oil {self.name!r}"
@@ -73,6 +88,25 @@ class Oil:
         if self.nu100_cSt >= self.nu40_cSt:
             raise InputError("nu100_cSt", self.nu100_cSt,
                              f"must be below nu40_cSt = {self.nu40_cSt:g}", where)
+        if not isinstance(self.polymer_thickened, bool):
+            raise InputError("polymer_thickened", self.polymer_thickened, "true or false",
+                             where)
+
+    @property
+    def kind(self) -> str:
+        """``"mineral"`` [-]."""
+        return "mineral"
+
+    @property
+    def newtonian(self) -> bool:
+        """Not polymer-thickened [-]."""
+        return not self.polymer_thickened
+
+    @property
+    def trusted_range_C(self) -> tuple[float, float]:
+        """Temperatures [degC] over which the Walther line is trusted
+        (:data:`~oilgap.model.oil_properties.WALTHER_TRUSTED_RANGE_C`)."""
+        return op.WALTHER_TRUSTED_RANGE_C
 
     @property
     def walther(self) -> tuple[float, float]:
@@ -119,8 +153,29 @@ class Oil:
                                    op.seawater_gauge_pressure(depth_m))
         return m2_s_to_cst(nu)
 
+    def temperature_slope(self, temp_K, pressure_gauge_Pa=0.0):
+        """Viscosity-temperature slope ``b = -d ln(mu)/dT`` [1/K] at (T, p), closed form.
 
-def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C") -> None:
+        Parameters
+        ----------
+        temp_K : float, array or CasADi symbol
+            Oil temperature [K].
+        pressure_gauge_Pa : float, array or CasADi symbol
+            Pressure above atmospheric [Pa].
+
+        Returns
+        -------
+        float, array or CasADi expression
+            b [1/K] (:func:`~oilgap.model.oil_properties.oil_viscosity_temperature_slope`:
+            Walther [2], density and Barus-Roelands terms [3]).
+        """
+        A, B = self.walther
+        return op.oil_viscosity_temperature_slope(A, B, self.density_kg_m3, temp_K,
+                                                  pressure_gauge_Pa, self.barus_1_Pa)
+
+
+def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C",
+                                  fluid: Fluid | None = None) -> None:
     """Warn (OilgapWarning) if a temperature lies outside the trusted Walther range.
 
     Parameters
@@ -130,7 +185,13 @@ def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C") -> None:
         :data:`~oilgap.model.oil_properties.WALTHER_TRUSTED_RANGE_C`.
     field : str
         Name of the temperature in the warning.
+    fluid : Fluid, optional
+        A fluid whose own range and law apply instead
+        (:func:`~oilgap.model.fluids.warn_if_untrusted_state` at gauge pressure 0 [Pa]).
     """
+    if fluid is not None:
+        warn_if_untrusted_state(fluid, temp_C, 0.0, field)
+        return
     lo, hi = op.WALTHER_TRUSTED_RANGE_C
     t = np.asarray(temp_C, dtype=float)
     if t.size and (np.nanmin(t) < lo or np.nanmax(t) > hi):
@@ -163,13 +224,15 @@ def normalize_oil_name(name: str) -> str:
 
 
 def read_oils_csv(path: str | Path) -> dict[str, Oil]:
-    """Read an oils table ``oil,nu40_cSt,nu100_cSt,density_kg_m3[,barus_1_GPa]``.
+    """Read an oils table ``oil,nu40_cSt,nu100_cSt,density_kg_m3[,barus_1_GPa]
+    [,polymer_thickened]``.
 
     Parameters
     ----------
     path : str or Path
         CSV file; units in the column names: nu [cSt], density at 15 degC
-        [kg/m^3], Barus coefficient [1/GPa] (optional, default 17).
+        [kg/m^3], Barus coefficient [1/GPa] (optional, default 17), polymer_thickened
+        [-] (optional: true/false, yes/no, 1/0; default false).
 
     Returns
     -------
@@ -210,6 +273,9 @@ def read_oils_csv(path: str | Path) -> dict[str, Oil]:
                 raw = row[c]
                 if c in OPTIONAL_OIL_COLUMNS and (raw is None or raw.strip() == ""):
                     continue
+                if c == "polymer_thickened":
+                    vals[c] = _flag(c, raw, rwhere)
+                    continue
                 vals[c] = check_positive(c, _num(raw), rwhere) if c != "barus_1_GPa" else \
                     _nonneg(c, raw, rwhere)
             key = normalize_oil_name(name)
@@ -218,7 +284,7 @@ def read_oils_csv(path: str | Path) -> dict[str, Oil]:
             barus = per_gpa_to_per_pa(vals["barus_1_GPa"]) if "barus_1_GPa" in vals \
                 else op.BARUS_MINERAL_OIL_1_PA
             oils[key] = Oil(name, vals["nu40_cSt"], vals["nu100_cSt"], vals["density_kg_m3"],
-                            barus)
+                            barus, vals.get("polymer_thickened", False))
     if not oils:
         raise InputError("oils file", str(path), "must hold at least one oil", where)
     return oils
@@ -233,6 +299,13 @@ def _num(raw):
 
 def _nonneg(field, raw, where):
     return check_range(field, _num(raw), 0.0, None, where)
+
+
+def _flag(field, raw, where) -> bool:
+    word = str(raw).strip().lower()
+    if word not in TRUE_WORDS + FALSE_WORDS:
+        raise InputError(field, raw, "true or false (yes/no, 1/0)", where)
+    return word in TRUE_WORDS
 
 
 _BUILTIN: dict[str, Oil] | None = None
@@ -254,28 +327,46 @@ def builtin_oils() -> dict[str, Oil]:
     return dict(_BUILTIN)
 
 
-def get_oil(name: str, catalogue: dict[str, Oil] | None = None) -> Oil:
-    """Look an oil up by name (case- and space-insensitive: 'VG22', 'ISO VG 22').
+def builtin_fluids() -> dict[str, Fluid]:
+    """The built-in oils and gases, keyed by canonical name ('VG22', 'AIR').
+
+    Returns
+    -------
+    dict of str to Fluid
+        :func:`builtin_oils` and :func:`~oilgap.model.fluids.builtin_gases` (SI inside:
+        nu [cSt] in attribute names, molar mass [kg/mol]).
+    """
+    return {**builtin_oils(), **builtin_gases()}
+
+
+def get_oil(name: str, catalogue: dict[str, Oil] | None = None) -> Fluid:
+    """Look a fluid up by name (case- and space-insensitive: 'VG22', 'ISO VG 22', 'Air').
+
+    The catalogue first, then the built-in gases ('air', 'nitrogen').
 
     Parameters
     ----------
     name : str
-        Oil name [-].
+        Oil or gas name [-].
     catalogue : dict of str to Oil, optional
         Oils keyed by canonical name (default: :func:`builtin_oils`).
 
     Returns
     -------
-    Oil
-        The oil (properties in SI, nu in [cSt] in its attribute names).
+    Oil or GasFluid
+        The fluid (properties in SI, nu in [cSt] in its attribute names).
 
     Raises
     ------
     InputError
-        Unknown oil; the message lists the known names.
+        Unknown name; the message lists the known names.
     """
     cat = builtin_oils() if catalogue is None else catalogue
     key = normalize_oil_name(name)
-    if key not in cat:
-        raise InputError("oil", name, f"known oils are {', '.join(o.name for o in cat.values())}")
-    return cat[key]
+    if key in cat:
+        return cat[key]
+    gases = builtin_gases()
+    if gas_key(name) in gases:
+        return gases[gas_key(name)]
+    known = [o.name for o in cat.values()] + [g.name for g in gases.values()]
+    raise InputError("oil", name, f"known oils are {', '.join(known)}")

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 from oilgap.model.case import OperatingPoint
 from oilgap.model.errors import InputError, check_finite, check_positive
 from oilgap.model.evaluation import oil_state
-from oilgap.model.oils import Oil
+from oilgap.model.fluids import Fluid
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
 
 from .variables import VARIABLE_LABELS, VARIABLES
@@ -50,8 +50,8 @@ class DesignParameters:
         Bounds of (R, delta, d_r, d_s, L) [m].
     raw_oil_state : bool
         True if nu/rho were given directly (not from an oil at a condition).
-    oil_obj : Oil or None
-        The oil given as an override (None: the case's).
+    oil_obj : Fluid or None
+        The fluid given as an override (None: the case's).
     """
 
     oil: str
@@ -68,7 +68,7 @@ class DesignParameters:
     """Upper bounds of (R, delta, d_r, d_s, L) [m]."""
     raw_oil_state: bool = False
     """True if nu/rho were given directly (not from an oil at a condition)."""
-    oil_obj: Oil | None = field(default=None, repr=False, compare=False)
+    oil_obj: Fluid | None = field(default=None, repr=False, compare=False)
     """The oil given as an override (None: the case's)."""
 
     @property
@@ -108,9 +108,9 @@ def _finite_or_none(name: str, value: Any, positive: bool = True) -> float | Non
         name, value, "optimize")
 
 
-def _oil_state(problem: DesignProblem, oil: Oil | None, oil_temp_C: float | None,
+def _oil_state(problem: DesignProblem, oil: Fluid | None, oil_temp_C: float | None,
                depth_m: float | None, nu_m2_s: float | None, rho_kg_m3: float | None
-               ) -> tuple[Oil, float, float, float, float, bool]:
+               ) -> tuple[Fluid, float, float, float, float, bool]:
     """(oil, temperature [degC], depth [m], nu [m^2/s], rho [kg/m^3], raw) of a solve."""
     case = problem.case
     raw = nu_m2_s is not None or rho_kg_m3 is not None
@@ -182,7 +182,7 @@ def _check_bounds(problem: DesignProblem, lo: list, hi: list) -> None:
                          "bottoms outside the shaft bore", "optimize")
 
 
-def resolve_parameters(problem: DesignProblem, *, oil: Oil | None = None,
+def resolve_parameters(problem: DesignProblem, *, oil: Fluid | None = None,
                        oil_temp_C: float | None = None, depth_m: float | None = None,
                        nu_m2_s: float | None = None, rho_kg_m3: float | None = None,
                        torque_min_Nm: float | None = None,
@@ -199,8 +199,8 @@ def resolve_parameters(problem: DesignProblem, *, oil: Oil | None = None,
     problem : DesignProblem
         Supplies the case (oil, operating point, bounds, motor), its oil state,
         default torque, machined groove depths and inertia reference.
-    oil : Oil, optional
-        Oil (default: the case's).
+    oil : Fluid, optional
+        Oil, table fluid or gas (default: the case's).
     oil_temp_C : float, optional
         Oil temperature [degC] (default: the case's).
     depth_m : float, optional

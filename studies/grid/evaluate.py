@@ -19,7 +19,9 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import oil_state
-from oilgap.model.oils import Oil, warn_if_untrusted_temperature
+from oilgap.model.fluids import warn_if_untrusted_state
+from oilgap.model.oil_properties import seawater_gauge_pressure
+from oilgap.model.oils import Oil
 from oilgap.model.regions import Region, joint_regions, region_mean_power
 from oilgap.model.taylor_couette import couette_reynolds
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
@@ -47,10 +49,10 @@ def _oil_states(cases: list[DesignCase], idx: list[int], warn_col: list[str | No
         warnings.simplefilter("always", OilgapWarning)
         nu, _, rho = oil_state(c0, temps, depths)
     if rec:
-        for i, t in zip(idx, temps, strict=True):
+        for i, t, dep in zip(idx, temps, depths, strict=True):
             with warnings.catch_warnings(record=True) as r1:
                 warnings.simplefilter("always", OilgapWarning)
-                warn_if_untrusted_temperature(t)
+                warn_if_untrusted_state(c0.oil, t, seawater_gauge_pressure(dep))
             if r1:
                 warn_col[i] = str(r1[0].message)
     nu = np.broadcast_to(np.asarray(nu, dtype=float), temps.shape)

@@ -2,21 +2,32 @@
 
 Data format (CSV, or Parquet with ``.parquet``/``.pq``), one row per sample:
 
-* ``run``: one continuous recording; ``time_s``: seconds from the run's start,
-  increasing within a run; ``speed_rpm``: signed motor speed; ``temp_C``: the
-  temperature the viscosity follows; ``oil``: a name in the oils table, or
-  ``none`` for an oil-free baseline run; ``roughness_T``: the clearance roughness
-  T of the run (>= 1);
+* ``speed_rpm``: signed motor speed; ``temp_C``: the temperature the viscosity
+  follows; ``oil``: a name in the oils table (or a built-in gas), or ``none`` for
+  an oil-free baseline run; ``roughness_T``: the clearance roughness T of the row
+  (>= 1);
+* ``time_s`` (optional): seconds from the run's start, increasing within a run,
+  with ``run`` naming one continuous recording. **Without** ``time_s`` each row
+  is a steady operating point: no rates (d omega/dt = dT/dt = 0), so effects
+  that act through time are not candidates. ``run`` is then optional: rows that
+  share ``oil``, ``roughness_T`` and ``gap_mm`` form one group (one setup), and
+  leave-one-group-out validation leaves one setup out (leaving single rows out
+  would let a point's neighbours in the same sweep predict it, and cost one fold
+  per row);
 * exactly one of ``power_W`` (electrical input power; the viscous part is what
   remains after the oil-free baseline of the same T is taken away) or
-  ``viscous_power_W`` (the loss measured directly; no baseline needed);
+  ``viscous_power_W`` (the loss measured directly; no baseline needed); for
+  prediction (:func:`validate` with ``purpose="predict"``) neither is needed;
 * optional ``nu_cSt``, ``density_kg_m3`` (override the oils table for that row;
   with both, ``oil`` may name a fluid the table does not hold), ``gap_mm``
-  (region-1 clearance of that row).
+  (region-1 clearance of that row). Other columns are kept (for ``cv_by``).
 
 Every row that is dropped is counted under the first reason that applies
-(:class:`DropRecord`); a file that cannot be used at all raises
-:class:`~oilgap.model.errors.InputError` with one message.
+(:class:`DropRecord`; :attr:`MeasuredData.drop_code` gives each input row's
+reason); a file that cannot be used at all raises
+:class:`~oilgap.model.errors.InputError` with one message. Validation works on
+whole columns and on the distinct values of the text columns, never row by row
+in Python.
 
 The oil-free baseline that turns ``power_W`` into the viscous power is fitted
 by the calibration (:mod:`oilgap.optim.calibration.baseline`) and handed to
@@ -26,329 +37,52 @@ by the calibration (:mod:`oilgap.optim.calibration.baseline`) and handed to
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import pandas as pd
-from scipy.signal import savgol_filter
 
 from .errors import InputError
-from .oils import Oil, builtin_oils, normalize_oil_name, read_oils_csv
-from .units import (
-    ZERO_CELSIUS_K,
-    cst_to_m2_s,
-    mm_to_m,
-    rpm_to_rad_s,
+from .kinematics import (
+    SPEED_DERIVATIVE_WINDOW_S,
+    TEMP_DERIVATIVE_WINDOW_S,
+    add_kinematics,
+    time_derivative,
 )
+from .measured_validation import (
+    CORE_COLUMNS,
+    INTERNAL_COLUMNS,
+    MAX_CV_GROUPS,
+    MIN_RUN_SAMPLES,
+    OIL_FREE,
+    OPTIONAL_COLUMNS,
+    POWER_COLUMNS,
+    PURPOSES,
+    REQUIRED_COLUMNS,
+    TEMP_LIMITS_C,
+    TEMP_STEP_K,
+    DropRecord,
+    MeasuredData,
+    validate,
+)
+from .oils import Oil, normalize_oil_name, read_oils_csv
+from .table_io import read_table, text_codes
+from .units import ZERO_CELSIUS_K, cst_to_m2_s, m_to_mm, mm_to_m
 
-REQUIRED_COLUMNS = ("run", "time_s", "speed_rpm", "temp_C", "oil", "roughness_T")
-POWER_COLUMNS = ("power_W", "viscous_power_W")
-OPTIONAL_COLUMNS = ("nu_cSt", "density_kg_m3", "gap_mm")
-OIL_FREE = "none"
-MIN_RUN_SAMPLES = 10
-TEMP_LIMITS_C = (-60.0, 300.0)
-"""Temperatures outside this range [degC] are not oil temperatures: rows dropped."""
-SPEED_DERIVATIVE_WINDOW_S = 1.0
-"""Savitzky-Golay window [s] for d(omega)/dt (quadratic, at least 5 samples)."""
-TEMP_DERIVATIVE_WINDOW_S = 3.0
-"""Savitzky-Golay window [s] for dT/dt."""
-TEMP_STEP_K = 0.5
-"""Half-step [K] of the central difference for dP/dT."""
-
-
-@dataclass(frozen=True)
-class DropRecord:
-    """Rows dropped for one reason: count and up to five file line numbers.
-
-    Attributes
-    ----------
-    reason : str
-        Why the rows were dropped (the first reason that applies to a row).
-    count : int
-        Number of rows dropped [-].
-    lines : tuple of int
-        Up to five line numbers of the file (header = line 1).
-    """
-
-    reason: str
-    count: int
-    lines: tuple[int, ...] = ()
-
-    def to_dict(self) -> dict:
-        """JSON form.
-
-        Returns
-        -------
-        dict
-            ``reason``, ``count`` [-] and ``example_lines``.
-        """
-        return {"reason": self.reason, "count": self.count, "example_lines": list(self.lines)}
-
-
-@dataclass(frozen=True, eq=False)
-class MeasuredData:
-    """Validated samples (``frame``, sorted by run and time) and what was dropped.
-
-    Attributes
-    ----------
-    frame : pandas.DataFrame
-        The usable rows, units in the column names (``time_s`` [s], ``speed_rpm``
-        [rpm], ``temp_C`` [degC], ``power_W`` [W]), plus the file's line number in
-        ``line`` (header = line 1) and ``oil_free`` (bool).
-    kind : str
-        ``"power_W"`` or ``"viscous_power_W"``: which power column the file has.
-    dropped : tuple of DropRecord
-        Dropped rows by reason.
-    n_read : int
-        Rows read [-].
-    source : str
-        File name (for messages).
-    ignored_columns : tuple of str
-        Columns that are not part of the format.
-    oils : dict of str to Oil
-        The oils table the names were checked against.
-    """
-
-    frame: pd.DataFrame
-    kind: str
-    dropped: tuple[DropRecord, ...]
-    n_read: int
-    source: str
-    ignored_columns: tuple[str, ...]
-    oils: dict[str, Oil] = field(repr=False)
-
-    @property
-    def n_dropped(self) -> int:
-        """Total number of dropped rows [-]."""
-        return sum(d.count for d in self.dropped)
-
-    def drop_summary(self) -> str:
-        """One line per reason.
-
-        Returns
-        -------
-        str
-            "N rows read, M dropped:" and one line per reason with its count [-].
-        """
-        if not self.dropped:
-            return f"{self.n_read} rows read, none dropped"
-        lines = [f"{self.n_read} rows read, {self.n_dropped} dropped:"]
-        lines += [f"  {d.count:>6}  {d.reason}" for d in self.dropped]
-        return "\n".join(lines)
+__all__ = ["CORE_COLUMNS", "MAX_CV_GROUPS", "MIN_RUN_SAMPLES", "OIL_FREE", "OPTIONAL_COLUMNS",
+           "POWER_COLUMNS", "PURPOSES", "REQUIRED_COLUMNS", "SPEED_DERIVATIVE_WINDOW_S",
+           "TEMP_DERIVATIVE_WINDOW_S", "TEMP_LIMITS_C", "TEMP_STEP_K", "DropRecord",
+           "MeasuredData", "Samples", "add_kinematics", "cv_groups", "load_measured",
+           "oil_samples", "predict_samples", "read_table", "time_derivative", "validate"]
 
 
 # --------------------------------------------------------------------------- reading
 
 
-def read_table(path: str | Path) -> pd.DataFrame:
-    """Read a CSV or Parquet file as text-preserving columns.
-
-    Parameters
-    ----------
-    path : str or Path
-        ``.csv``, or ``.parquet``/``.pq`` (needs pyarrow); units in column names.
-
-    Returns
-    -------
-    pandas.DataFrame
-        The raw table (CSV values as text), column names stripped [units as named].
-
-    Raises
-    ------
-    InputError
-        Missing file, unreadable content, no rows.
-    """
-    path = Path(path)
-    if not path.is_file():
-        raise InputError("data", str(path), "must be an existing CSV or Parquet file")
-    suffix = path.suffix.lower()
-    try:
-        if suffix in (".parquet", ".pq"):
-            try:
-                df = pd.read_parquet(path)
-            except ImportError:
-                raise InputError("data", str(path), "reading Parquet needs pyarrow "
-                                 "(pip install 'oilgap[parquet]')") from None
-        else:
-            df = pd.read_csv(path, dtype=str, keep_default_na=False, skipinitialspace=True)
-    except InputError:
-        raise
-    except (pd.errors.ParserError, pd.errors.EmptyDataError, UnicodeDecodeError, OSError,
-            ValueError) as e:
-        first = str(e).strip().splitlines()[0] if str(e).strip() else type(e).__name__
-        raise InputError("data", str(path), f"is not a readable CSV/Parquet table ({first})") \
-            from None
-    if df.shape[0] == 0:
-        raise InputError("data", str(path), "holds no data rows")
-    df.columns = [str(c).strip() for c in df.columns]
-    return df
-
-
-def _check_columns(cols: list[str], where: str) -> tuple[str, tuple[str, ...]]:
-    missing = [c for c in REQUIRED_COLUMNS if c not in cols]
-    if missing:
-        lower = {c.lower(): c for c in cols}
-        hints = [f"{lower[m.lower()]!r} -> {m!r}" for m in missing if m.lower() in lower]
-        hint = f" (column names are case-sensitive: {', '.join(hints)})" if hints else ""
-        raise InputError("columns", cols, f"missing {missing}; required "
-                         f"{list(REQUIRED_COLUMNS)} and one of {list(POWER_COLUMNS)}{hint}",
-                         where)
-    present = [c for c in POWER_COLUMNS if c in cols]
-    if len(present) != 1:
-        what = "both" if present else "neither"
-        lower = {c.lower(): c for c in cols}
-        hints = [f"{lower[m.lower()]!r} -> {m!r}" for m in POWER_COLUMNS
-                 if not present and m.lower() in lower]
-        hint = f"; column names are case-sensitive: {', '.join(hints)}" if hints else ""
-        raise InputError("columns", cols, f"exactly one of {list(POWER_COLUMNS)} is required "
-                         f"({what} given{hint})", where)
-    dup = sorted({c for c in cols if cols.count(c) > 1})
-    if dup:
-        raise InputError("columns", dup, "column names must be unique", where)
-    known = set(REQUIRED_COLUMNS) | set(POWER_COLUMNS) | set(OPTIONAL_COLUMNS)
-    return present[0], tuple(c for c in cols if c not in known)
-
-
-def _given(frame: pd.DataFrame, col: str) -> pd.Series:
-    if col not in frame.columns:
-        return pd.Series(False, index=frame.index)
-    return frame[col].notna()
-
-
-def _numeric(s: pd.Series) -> pd.Series:
-    if s.dtype == object or pd.api.types.is_string_dtype(s):
-        s = s.astype(str).str.strip().replace({"": np.nan})
-    return pd.to_numeric(s, errors="coerce").astype(float)
-
-
-class _Dropper:
-    def __init__(self):
-        self.records: dict[str, list[int]] = {}
-
-    def drop(self, df: pd.DataFrame, mask, reason: str) -> pd.DataFrame:
-        mask = np.asarray(mask, dtype=bool)
-        if mask.any():
-            self.records.setdefault(reason, []).extend(df["line"].to_numpy()[mask].tolist())
-            return df.loc[~mask]
-        return df
-
-    def result(self) -> tuple[DropRecord, ...]:
-        return tuple(DropRecord(r, len(v), tuple(sorted(v)[:5])) for r, v in self.records.items())
-
-
-def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
-             source: str = "data") -> MeasuredData:
-    """Validate a raw table and return the usable samples with a drop report.
-
-    Parameters
-    ----------
-    df : pandas.DataFrame
-        Raw table (columns as read, units in their names; values may be text).
-    oils : dict of str to Oil, optional
-        Oils table keyed by canonical name (default: the built-in catalogue).
-    source : str
-        Name used in messages.
-
-    Returns
-    -------
-    MeasuredData
-        Usable rows (numeric columns as float: [s], [rpm], [degC], [W], [-]) and
-        the drop report.
-
-    Raises
-    ------
-    InputError
-        Missing or ambiguous columns, or no usable oil run left.
-    """
-    catalogue = builtin_oils() if oils is None else oils
-    kind, ignored = _check_columns(list(df.columns), source)
-    n_read = int(df.shape[0])
-    df = df.copy()
-    df["line"] = np.arange(2, n_read + 2)
-    d = _Dropper()
-
-    run = df["run"].astype(str).str.strip()
-    run = run.where(~df["run"].isna(), "")
-    df["run"] = run
-    df = d.drop(df, (df["run"] == "") | (df["run"].str.lower() == "nan"), "missing run")
-    oil = df["oil"].astype(str).str.strip()
-    df["oil"] = oil
-    df = d.drop(df, (df["oil"] == "") | (df["oil"].str.lower() == "nan"), "missing oil")
-
-    for c in ("time_s", "speed_rpm", "temp_C", "roughness_T", kind):
-        df[c] = _numeric(df[c])
-        df = d.drop(df, ~np.isfinite(df[c].to_numpy()), f"{c} missing or not a finite number")
-    for c in OPTIONAL_COLUMNS:
-        if c in df.columns:
-            df[c] = _numeric(df[c])
-            raw_bad = ~np.isnan(df[c].to_numpy()) & ~(np.isfinite(df[c].to_numpy())
-                                                     & (df[c].to_numpy() > 0))
-            df = d.drop(df, raw_bad, f"{c} not a positive finite number")
-    df = d.drop(df, df["roughness_T"].to_numpy() < 1.0, "roughness_T < 1")
-    lo, hi = TEMP_LIMITS_C
-    t = df["temp_C"].to_numpy()
-    df = d.drop(df, (t < lo) | (t > hi), f"temp_C outside [{lo:g}, {hi:g}] degC")
-    df = d.drop(df, df["time_s"].to_numpy() < 0.0, "time_s < 0")
-
-    # oils: known name, or both property overrides
-    def unknown_oil(frame: pd.DataFrame) -> np.ndarray:
-        free = frame["oil"].str.lower() == OIL_FREE
-        names = frame["oil"].unique()
-        known_names = {n for n in names if normalize_oil_name(n) in catalogue}
-        known = frame["oil"].isin(list(known_names))
-        override = _given(frame, "nu_cSt") & _given(frame, "density_kg_m3")
-        return (~free & ~known & ~override).to_numpy()
-
-    for name in sorted(df.loc[unknown_oil(df), "oil"].unique()):
-        df = d.drop(df, (df["oil"] == name).to_numpy() & unknown_oil(df),
-                    f"oil {name!r} not in the oils table (and no nu_cSt + density_kg_m3)")
-    df = df.copy()
-    df["oil_free"] = df["oil"].str.lower() == OIL_FREE
-
-    df = _drop_run_problems(df, d, kind)
-
-    if not (~df["oil_free"]).any():
-        summary = "; ".join(f"{r.count} x {r.reason}" for r in d.result())
-        raise InputError("data", source, f"no usable oil run remains (dropped: {summary})"
-                         if summary else "holds no oil run (every row has oil = none)")
-    df = df.sort_values(["run", "time_s"], kind="stable").reset_index(drop=True)
-    return MeasuredData(df, kind, d.result(), n_read, source, ignored, catalogue)
-
-
-def _drop_run_problems(df: pd.DataFrame, d: _Dropper, kind: str) -> pd.DataFrame:
-    # run consistency: one oil and one T per run
-    for col, label in (("oil", "oil"), ("roughness_T", "roughness_T")):
-        mode = df.groupby("run")[col].agg(lambda s: s.value_counts().index[0])
-        df = d.drop(df, (df[col] != df["run"].map(mode)).to_numpy(),
-                    f"{label} differs from the rest of its run")
-
-    # time: duplicates, then not increasing (file order within each run)
-    df = d.drop(df, df.duplicated(["run", "time_s"], keep="first").to_numpy(),
-                "duplicate time_s within run")
-    prev_max = df.groupby("run")["time_s"].transform(lambda s: s.cummax().shift(1))
-    df = d.drop(df, (prev_max.notna() & (df["time_s"] <= prev_max)).to_numpy(),
-                "time_s does not increase within run")
-
-    counts = df.groupby("run")["run"].transform("size")
-    df = d.drop(df, (counts < MIN_RUN_SAMPLES).to_numpy(),
-                f"run shorter than {MIN_RUN_SAMPLES} samples")
-
-    if kind == "power_W":
-        free_T = list(df.loc[df["oil_free"], "roughness_T"].unique())
-        nobase = ~df["oil_free"] & ~df["roughness_T"].isin(free_T)
-        for T in sorted(df.loc[nobase, "roughness_T"].unique()):
-            df = d.drop(df, (~df["oil_free"] & (df["roughness_T"] == T)).to_numpy(),
-                        f"no oil-free baseline run with roughness_T = {T:g}")
-    else:
-        df = d.drop(df, df["oil_free"].to_numpy(),
-                    "oil-free run (not needed: viscous_power_W is measured directly)")
-    return df
-
-
-def load_measured(path: str | Path, oils: str | Path | dict[str, Oil] | None = None
-                  ) -> MeasuredData:
+def load_measured(path: str | Path, oils: str | Path | dict[str, Oil] | None = None,
+                  purpose: str = "fit") -> MeasuredData:
     """Read and validate a data file; ``oils`` is an oils CSV path or a catalogue.
 
     Parameters
@@ -357,6 +91,8 @@ def load_measured(path: str | Path, oils: str | Path | dict[str, Oil] | None = N
         CSV or Parquet data file (columns: see the module docstring; units in names).
     oils : str, Path or dict of str to Oil, optional
         Oils CSV (nu [cSt], density [kg/m^3]) or catalogue (default: built-in).
+    purpose : {"fit", "predict"}
+        As :func:`validate`.
 
     Returns
     -------
@@ -364,71 +100,7 @@ def load_measured(path: str | Path, oils: str | Path | dict[str, Oil] | None = N
         As :func:`validate`.
     """
     cat = read_oils_csv(oils) if isinstance(oils, (str, Path)) else oils
-    return validate(read_table(path), cat, str(path))
-
-
-# --------------------------------------------------------------------------- derivatives
-
-
-def time_derivative(time_s: np.ndarray, x: np.ndarray, window_s: float) -> np.ndarray:
-    """d x / d t of one run [unit of x per s]: Savitzky-Golay (quadratic) on a uniform
-    record, central differences otherwise.
-
-    Parameters
-    ----------
-    time_s : ndarray
-        Sample times of one run [s], increasing.
-    x : ndarray
-        The signal [any unit].
-    window_s : float
-        Savitzky-Golay window [s] (odd number of samples, at least 5).
-
-    Returns
-    -------
-    ndarray
-        Derivative [unit of x per s] (zeros for fewer than 3 samples).
-
-    References
-    ----------
-    A. Savitzky, M. J. E. Golay, Anal. Chem. 36:1627, 1964.
-    """
-    t = np.asarray(time_s, dtype=float)
-    x = np.asarray(x, dtype=float)
-    if len(t) < 3:
-        return np.zeros_like(x)
-    dt = np.diff(t)
-    h = float(np.median(dt))
-    win = int(round(window_s / h)) // 2 * 2 + 1
-    win = max(win, 5)
-    if len(t) >= win and np.all(np.abs(dt - h) <= 0.05 * h):
-        return savgol_filter(x, win, 2, deriv=1, delta=h, mode="interp")
-    return np.gradient(x, t)
-
-
-def add_kinematics(frame: pd.DataFrame) -> pd.DataFrame:
-    """Columns ``omega`` [rad/s], ``domega_dt`` [rad/s^2], ``dtemp_dt`` [K/s] per run.
-
-    Parameters
-    ----------
-    frame : pandas.DataFrame
-        Validated samples (``run``, ``time_s`` [s], ``speed_rpm`` [rpm], ``temp_C``).
-
-    Returns
-    -------
-    pandas.DataFrame
-        A copy with the three columns added (:func:`time_derivative` per run).
-    """
-    f = frame.copy()
-    f["omega"] = rpm_to_rad_s(f["speed_rpm"].to_numpy())
-    a = np.empty(len(f))
-    dT = np.empty(len(f))
-    for _, idx in f.groupby("run", sort=False).indices.items():
-        t = f["time_s"].to_numpy()[idx]
-        a[idx] = time_derivative(t, f["omega"].to_numpy()[idx], SPEED_DERIVATIVE_WINDOW_S)
-        dT[idx] = time_derivative(t, f["temp_C"].to_numpy()[idx], TEMP_DERIVATIVE_WINDOW_S)
-    f["domega_dt"] = a
-    f["dtemp_dt"] = dT
-    return f
+    return validate(read_table(path), cat, str(path), purpose)
 
 
 # --------------------------------------------------------------------------- samples
@@ -447,9 +119,10 @@ class Samples:
     roughness_T : ndarray
         Clearance roughness T of the run [-].
     time_s, speed_rpm, omega, domega_dt : ndarray
-        Time [s], speed [rpm], speed [rad/s], acceleration [rad/s^2].
+        Time [s] (zero without time), speed [rpm], speed [rad/s], acceleration
+        [rad/s^2] (zero without time).
     temp_C, dtemp_dt : ndarray
-        Measured temperature [degC] and its rate [K/s].
+        Measured temperature [degC] and its rate [K/s] (zero without time).
     nu_m2_s, density_kg_m3 : ndarray
         Oil state at the measured temperature [m^2/s], [kg/m^3].
     nu_pm, rho_pm : tuple of two ndarray
@@ -458,9 +131,18 @@ class Samples:
     gap1_m : ndarray
         Region-1 clearance [m].
     viscous_W : ndarray
-        Measured viscous power [W] (directly, or power minus the baseline).
+        Measured viscous power [W] (directly, or power minus the baseline; NaN for
+        samples to predict).
     index : ndarray of int
         Rows of the validated frame the samples come from.
+    has_time : bool
+        False for steady operating points (no rates; time-dependent effects are
+        not candidates).
+    cv_group, cv_names : ndarray of int, tuple of str
+        Group of each sample for leave-one-group-out validation (index in
+        ``cv_names``); by default the runs.
+    cv_by : str
+        The column the groups come from (``"run"`` by default).
     """
 
     run: np.ndarray
@@ -481,6 +163,16 @@ class Samples:
     gap1_m: np.ndarray
     viscous_W: np.ndarray
     index: np.ndarray
+    has_time: bool = True
+    cv_group: np.ndarray | None = None
+    cv_names: tuple[str, ...] | None = None
+    cv_by: str = "run"
+
+    def __post_init__(self):
+        if self.cv_group is None:
+            object.__setattr__(self, "cv_group", self.run_code)
+        if self.cv_names is None:
+            object.__setattr__(self, "cv_names", self.run_names)
 
     @property
     def n(self) -> int:
@@ -488,7 +180,7 @@ class Samples:
         return len(self.omega)
 
     def subset(self, mask: np.ndarray) -> Samples:
-        """The samples where ``mask`` holds (run codes kept).
+        """The samples where ``mask`` holds (run and group codes kept).
 
         Parameters
         ----------
@@ -503,7 +195,7 @@ class Samples:
         kw = {}
         for k in self.__dataclass_fields__:
             v = getattr(self, k)
-            if k == "run_names":
+            if k in ("run_names", "cv_names", "has_time", "cv_by"):
                 kw[k] = v
             elif isinstance(v, tuple):
                 kw[k] = tuple(x[mask] for x in v)
@@ -512,9 +204,138 @@ class Samples:
         return Samples(**kw)
 
 
+def _properties(fluid, temp_K: np.ndarray, p_Pa: float, strict: bool):
+    """(nu, rho) of a fluid; NaN instead of an error when not ``strict`` (a table edge)."""
+    try:
+        nu, _, rho = fluid.properties(temp_K, p_Pa)
+    except InputError:
+        if strict:
+            raise
+        return np.nan, np.nan
+    return nu, rho
+
+
+def _fluid_state(o: pd.DataFrame, oils: Mapping, region1_gap_m: float, p_Pa: float):
+    """nu, rho, nu_pm, rho_pm and the region-1 gap of each row of ``o`` (SI)."""
+    n = len(o)
+    tK = o["temp_C"].to_numpy(dtype=float) + ZERO_CELSIUS_K
+    nu, rho, nu_m, nu_p, rho_m, rho_p = (np.full(n, np.nan) for _ in range(6))
+    codes, names = text_codes(o["oil"])
+    for k, name in enumerate(names):
+        key = normalize_oil_name(name)
+        if key not in oils:
+            continue
+        sel = codes == k
+        nu[sel], rho[sel] = _properties(oils[key], tK[sel], p_Pa, True)
+        nu_m[sel], rho_m[sel] = _properties(oils[key], tK[sel] - TEMP_STEP_K, p_Pa, False)
+        nu_p[sel], rho_p[sel] = _properties(oils[key], tK[sel] + TEMP_STEP_K, p_Pa, False)
+    for col, arr, pm, scale in (("nu_cSt", nu, (nu_m, nu_p), cst_to_m2_s(1.0)),
+                                ("density_kg_m3", rho, (rho_m, rho_p), 1.0)):
+        if col in o.columns:
+            v = o[col].to_numpy(dtype=float)
+            given = ~np.isnan(v)
+            arr[given] = v[given] * scale
+            for x in pm:
+                x[given] = np.nan
+    gap = np.full(n, float(region1_gap_m))
+    if "gap_mm" in o.columns:
+        g = o["gap_mm"].to_numpy(dtype=float)
+        given = ~np.isnan(g)
+        gap[given] = mm_to_m(g[given])
+    return nu, rho, (nu_m, nu_p), (rho_m, rho_p), gap
+
+
+def cv_groups(o: pd.DataFrame, gap1_m: np.ndarray, cv_by: str, source: str = "data"
+              ) -> tuple[np.ndarray, tuple[str, ...]]:
+    """Groups of leave-one-group-out validation from a column of the oil rows.
+
+    Parameters
+    ----------
+    o : pandas.DataFrame
+        The oil rows of a validated frame.
+    gap1_m : ndarray
+        Their region-1 gap [m] (``cv_by="gap_mm"`` groups by it, the case's gap
+        where the row gives none).
+    cv_by : str
+        ``"run"``, ``"gap_mm"`` or any other column of the data (e.g. ``oil``).
+    source : str
+        Name used in messages.
+
+    Returns
+    -------
+    (codes, names)
+        Group of each row [-] (index into ``names``, sorted by value).
+
+    Raises
+    ------
+    InputError
+        Not a column of the data; fewer than 2 groups among the oil rows; more than
+        :data:`MAX_CV_GROUPS`.
+    """
+    if cv_by == "run":
+        codes, names = _run_codes(o)
+    elif cv_by == "gap_mm":
+        vals, codes = np.unique(np.round(m_to_mm(gap1_m), 12), return_inverse=True)
+        names = tuple(f"{v:g}" for v in vals)
+    elif cv_by in o.columns and cv_by not in INTERNAL_COLUMNS:
+        col = o[cv_by]
+        if pd.api.types.is_numeric_dtype(col.dtype) and not pd.api.types.is_bool_dtype(col):
+            v = col.to_numpy(dtype=float, na_value=np.nan)
+            vals, codes = np.unique(v, return_inverse=True)   # NaN last, one group
+            names = tuple("(missing)" if np.isnan(x) else f"{x:g}" for x in vals)
+        else:
+            codes, nm = text_codes(col)
+            used, codes = np.unique(codes, return_inverse=True)
+            names = tuple(str(nm[u]) or "(missing)" for u in used)
+    else:
+        cols = [c for c in o.columns if c not in INTERNAL_COLUMNS]
+        raise InputError("cv_by", cv_by, f"is not a column of the data (columns: "
+                         f"{', '.join(cols)})", source)
+    k = len(names)
+    if k < 2:
+        raise InputError("cv_by", cv_by, f"has {k} group among the oil rows "
+                         f"({', '.join(names) or 'none'}); leave-one-group-out needs at "
+                         "least 2", source)
+    if k > MAX_CV_GROUPS:
+        raise InputError("cv_by", cv_by, f"has {k} groups among the oil rows; at most "
+                         f"{MAX_CV_GROUPS} (one fold each): round or bin the column", source)
+    return np.asarray(codes, dtype=np.int64).ravel(), names
+
+
+def _text(col: pd.Series) -> np.ndarray:
+    """A text column as an object array (a categorical one through its few categories)."""
+    if isinstance(col.dtype, pd.CategoricalDtype):
+        return np.asarray(col.cat.categories, dtype=object)[col.cat.codes.to_numpy()]
+    return col.to_numpy(dtype=object)
+
+
+def _run_codes(o: pd.DataFrame) -> tuple[np.ndarray, tuple[str, ...]]:
+    """Run of each row as 0, 1, ... in order of appearance, and the run names."""
+    rc = o["run_code"].to_numpy() if "run_code" in o.columns else _text(o["run"])
+    code, _ = pd.factorize(rc)
+    _, idx = np.unique(code, return_index=True)
+    runs = o["run"].iloc[idx].to_numpy(dtype=object)
+    return code.astype(np.int64), tuple(str(r) for r in runs)
+
+
+def _samples(o: pd.DataFrame, state, y: np.ndarray, has_time: bool, cv=None) -> Samples:
+    """Samples of the rows ``o`` (with kinematics) and their fluid state."""
+    code, names = _run_codes(o)
+    runs = _text(o["run"])
+    nu, rho, nu_pm, rho_pm, gap = state
+    cv_group, cv_names, cv_by = cv if cv is not None else (None, None, "run")
+    f = {c: o[c].to_numpy(dtype=float) for c in ("roughness_T", "time_s", "speed_rpm", "omega",
+                                                 "domega_dt", "temp_C", "dtemp_dt")}
+    return Samples(runs, code, names, _text(o["oil"]), f["roughness_T"],
+                   f["time_s"], f["speed_rpm"], f["omega"], f["domega_dt"], f["temp_C"],
+                   f["dtemp_dt"], nu, rho, nu_pm, rho_pm, gap, y, o.index.to_numpy(), has_time,
+                   cv_group, cv_names, cv_by)
+
+
 def oil_samples(data: MeasuredData, region1_gap_m: float,
                 baselines: Mapping[float, Any] | None = None,
-                pressure_gauge_Pa: float = 0.0, frame: pd.DataFrame | None = None) -> Samples:
+                pressure_gauge_Pa: float = 0.0, frame: pd.DataFrame | None = None,
+                cv_by: str = "run") -> Samples:
     """The oil-run samples of validated data, with nu, rho and the viscous power.
 
     nu and rho follow each oil's Walther line and density law at ``temp_C`` unless the
@@ -534,6 +355,9 @@ def oil_samples(data: MeasuredData, region1_gap_m: float,
         Oil pressure above atmospheric [Pa].
     frame : pandas.DataFrame, optional
         ``data.frame`` after :func:`add_kinematics`, if at hand.
+    cv_by : str
+        Column whose values group the samples for leave-one-group-out validation
+        (:func:`cv_groups`; default the runs).
 
     Returns
     -------
@@ -543,52 +367,48 @@ def oil_samples(data: MeasuredData, region1_gap_m: float,
     Raises
     ------
     InputError
-        ``power_W`` data without baselines.
+        ``power_W`` data without baselines; an unusable ``cv_by``.
     """
-    f = add_kinematics(data.frame) if frame is None else frame
+    f = add_kinematics(data.frame, data.has_time) if frame is None else frame
     if data.kind == "power_W" and baselines is None:
         raise InputError("baselines", None, "power_W data need the oil-free baseline of each "
                          "roughness T", data.source)
-    o = f[~f["oil_free"]]
-    n = len(o)
-    tK = o["temp_C"].to_numpy() + ZERO_CELSIUS_K
-    nu = np.full(n, np.nan)
-    rho = np.full(n, np.nan)
-    nu_m, nu_p, rho_m, rho_p = (np.full(n, np.nan) for _ in range(4))
-    uniq = {n: normalize_oil_name(n) for n in o["oil"].unique()}
-    keys = o["oil"].map(uniq).to_numpy()
-    for key in np.unique(keys):
-        if key not in data.oils:
-            continue
-        sel = keys == key
-        oil = data.oils[key]
-        nu[sel], _, rho[sel] = oil.properties(tK[sel], pressure_gauge_Pa)
-        nu_m[sel], _, rho_m[sel] = oil.properties(tK[sel] - TEMP_STEP_K, pressure_gauge_Pa)
-        nu_p[sel], _, rho_p[sel] = oil.properties(tK[sel] + TEMP_STEP_K, pressure_gauge_Pa)
-    if "nu_cSt" in o.columns:
-        given = o["nu_cSt"].notna().to_numpy()
-        nu[given] = cst_to_m2_s(o["nu_cSt"].to_numpy()[given])
-        nu_m[given] = nu_p[given] = np.nan
-    if "density_kg_m3" in o.columns:
-        given = o["density_kg_m3"].notna().to_numpy()
-        rho[given] = o["density_kg_m3"].to_numpy()[given]
-        rho_m[given] = rho_p[given] = np.nan
-    gap = np.full(n, float(region1_gap_m))
-    if "gap_mm" in o.columns:
-        given = o["gap_mm"].notna().to_numpy()
-        gap[given] = mm_to_m(o["gap_mm"].to_numpy()[given])
+    o = f[~f["oil_free"].to_numpy()]
+    state = _fluid_state(o, data.oils, region1_gap_m, pressure_gauge_Pa)
     if data.kind == "power_W":
-        y = o["power_W"].to_numpy().copy()
-        for T, b in baselines.items():
-            sel = o["roughness_T"].to_numpy() == T
+        y = o["power_W"].to_numpy(dtype=float).copy()
+        T = o["roughness_T"].to_numpy()
+        for t, b in baselines.items():
+            sel = T == t
             y[sel] -= b.predict(o["omega"].to_numpy()[sel], o["domega_dt"].to_numpy()[sel],
                                 o["temp_C"].to_numpy()[sel])
     else:
-        y = o["viscous_power_W"].to_numpy()
-    names = tuple(dict.fromkeys(o["run"].tolist()))
-    code = {r: i for i, r in enumerate(names)}
-    return Samples(o["run"].to_numpy(), np.array([code[r] for r in o["run"]]), names,
-                   o["oil"].to_numpy(), o["roughness_T"].to_numpy(), o["time_s"].to_numpy(),
-                   o["speed_rpm"].to_numpy(), o["omega"].to_numpy(), o["domega_dt"].to_numpy(),
-                   o["temp_C"].to_numpy(), o["dtemp_dt"].to_numpy(), nu, rho, (nu_m, nu_p),
-                   (rho_m, rho_p), gap, y, o.index.to_numpy())
+        y = o["viscous_power_W"].to_numpy(dtype=float)
+    codes, names = cv_groups(o, state[4], cv_by, data.source)
+    return _samples(o, state, y, data.has_time, (codes, names, cv_by))
+
+
+def predict_samples(data: MeasuredData, region1_gap_m: float, pressure_gauge_Pa: float = 0.0,
+                    frame: pd.DataFrame | None = None) -> Samples:
+    """Samples of the oil rows of data validated for prediction (no power needed).
+
+    Parameters
+    ----------
+    data : MeasuredData
+        Validated with ``purpose="predict"`` (or for fitting: its oil rows).
+    region1_gap_m : float
+        Region-1 clearance of rows without ``gap_mm`` [m].
+    pressure_gauge_Pa : float
+        Oil pressure above atmospheric [Pa].
+    frame : pandas.DataFrame, optional
+        ``data.frame`` after :func:`add_kinematics`, if at hand.
+
+    Returns
+    -------
+    Samples
+        SI arrays as :func:`oil_samples`, ``viscous_W`` NaN [W].
+    """
+    f = add_kinematics(data.frame, data.has_time) if frame is None else frame
+    o = f[~f["oil_free"].to_numpy()]
+    state = _fluid_state(o, data.oils, region1_gap_m, pressure_gauge_Pa)
+    return _samples(o, state, np.full(len(o), np.nan), data.has_time)

@@ -3,7 +3,9 @@
 import numpy as np
 import pandas as pd
 import pytest
+from scipy.signal import savgol_filter
 
+from oilgap.model import table_io
 from oilgap.model.errors import InputError
 from oilgap.model.measured_data import (
     load_measured,
@@ -128,3 +130,106 @@ def test_time_derivative_of_a_sine():
     exact = 314.16 * 0.1 * np.pi * np.cos(0.1 * np.pi * t)
     # quadratic Savitzky-Golay over 5 samples: error ~ w''' h^2 (N^2 - ...) / 20 << 1 %
     assert np.max(np.abs(d - exact)[2:-2]) < 0.005 * np.max(np.abs(exact))
+
+
+# --------------------------------------------------------------------------- steady points
+
+
+def _steady(n=4, **extra):
+    """Steady operating points, no time_s and no run: two oils x two T, n speeds each."""
+    rows = []
+    for oil in ("VG150", "VG320"):
+        for T in (4.0, 2.0):
+            for k in range(n):
+                rows.append({"speed_rpm": 500.0 * (k + 1), "temp_C": 30.0 + k, "oil": oil,
+                             "roughness_T": T, "viscous_power_W": 10.0 + k})
+    return pd.DataFrame(rows).assign(**extra)
+
+
+def test_steady_points_need_no_time_and_no_run():
+    md = validate(_steady())
+    assert not md.has_time and md.n_dropped == 0
+    f = md.frame
+    # one group per (oil, T): 4 groups of 4 rows, each a "run" though shorter than a
+    # time-series run may be (MIN_RUN_SAMPLES = 10 applies to time series only)
+    assert sorted(set(f["run"])) == ["VG150 T=2", "VG150 T=4", "VG320 T=2", "VG320 T=4"]
+    assert (f.groupby("run", observed=True).size() == 4).all()
+    assert (f["time_s"] == 0).all()
+    s = oil_samples(md, region1_gap_m=1.0e-3)
+    assert not s.has_time and np.all(s.domega_dt == 0) and np.all(s.dtemp_dt == 0)
+    assert s.cv_by == "run" and np.array_equal(s.cv_group, s.run_code)
+    # file order is kept within a group (no time to sort by): speeds 500, 1000, ...
+    assert f.loc[f["run"] == "VG320 T=4", "speed_rpm"].tolist() == [500, 1000, 1500, 2000]
+
+
+def test_steady_groups_include_the_gap_and_time_needs_a_run():
+    df = _steady(gap_mm=np.tile([0.5, 0.8], 8))
+    assert len(set(validate(df).frame["run"])) == 8  # (oil, T, gap)
+    with pytest.raises(InputError, match="with run when time_s"):
+        validate(_steady().assign(time_s=0.0))
+
+
+def test_cv_groups_by_any_column_and_refusals():
+    md = validate(_steady(gap_mm=np.tile([0.5, 0.8], 8), rig=np.repeat(["A", "B"], 8)))
+    s = oil_samples(md, 1.0e-3, cv_by="gap_mm")
+    assert s.cv_names == ("0.5", "0.8") and s.cv_by == "gap_mm"
+    assert np.array_equal(s.cv_group, np.round(s.gap1_m * 1e3, 6) == 0.8)
+    s = oil_samples(md, 1.0e-3, cv_by="rig")           # a column outside the format
+    assert s.cv_names == ("A", "B") and np.bincount(s.cv_group).tolist() == [8, 8]
+    s = oil_samples(md, 1.0e-3, cv_by="oil")
+    assert s.cv_names == ("VG150", "VG320")
+    with pytest.raises(InputError, match="not a column of the data"):
+        oil_samples(md, 1.0e-3, cv_by="gap")
+    with pytest.raises(InputError, match="has 1 group"):
+        oil_samples(validate(_steady()), 1.0e-3, cv_by="gap_mm")  # every row at the case gap
+    with pytest.raises(InputError, match="has 1 group"):
+        oil_samples(validate(_steady().assign(oil="VG150")), 1.0e-3, cv_by="oil")
+
+
+# --------------------------------------------------------------------------- reading
+
+
+def test_pyarrow_and_pandas_readers_give_the_same_validated_data(tmp_path, monkeypatch):
+    df = _frame().astype(object)
+    df.loc[41, "speed_rpm"] = "fast"
+    df.loc[42, "temp_C"] = ""
+    df.loc[43, "run"] = " a "                 # stripped: still run a
+    df.loc[44, "oil"] = "nan"
+    df["note"] = "x"
+    p = tmp_path / "d.csv"
+    df.to_csv(p, index=False)
+    fast = load_measured(p)
+    monkeypatch.setattr(table_io, "_read_csv_arrow", lambda path: None)   # pandas' parser
+    slow = load_measured(p)
+    assert [r.to_dict() for r in fast.dropped] == [r.to_dict() for r in slow.dropped]
+    assert {r.reason: r.count for r in fast.dropped} == {
+        "missing oil": 1, "speed_rpm missing or not a finite number": 1,
+        "temp_C missing or not a finite number": 1}
+    for c in ("run", "oil", "time_s", "speed_rpm", "temp_C", "power_W", "line"):
+        assert fast.frame[c].astype(str).tolist() == slow.frame[c].astype(str).tolist()
+    reasons = fast.row_reasons()
+    assert reasons[41] == "speed_rpm missing or not a finite number" and reasons[0] == ""
+
+
+def test_predict_validation_needs_no_power_and_takes_any_row_order():
+    df = _frame().drop(columns=["power_W"]).sample(frac=1.0, random_state=3)
+    md = validate(df, purpose="predict")
+    assert md.kind == "none"
+    assert {r.reason: r.count for r in md.dropped} == {
+        "oil-free row (no viscous loss to predict)": 40}
+    f = md.frame
+    assert f["run"].tolist() == ["a"] * 40 + ["b"] * 40   # sorted by run, then time
+    assert np.all(np.diff(f["time_s"].to_numpy()[:40]) > 0)
+    with pytest.raises(InputError, match="exactly one of"):
+        validate(df)                            # fitting needs a power column
+
+
+def test_long_savitzky_golay_window_by_fft_equals_the_filter():
+    # 1 kHz logging: the 1 s window has 1001 samples; the FFT convolution with the
+    # filter's coefficients must equal scipy's direct filter (a second method) to rounding
+    rng = np.random.default_rng(1)
+    t = np.arange(20000) * 1e-3
+    x = np.cumsum(rng.normal(size=t.size)) + 300 * np.sin(0.3 * t)
+    direct = savgol_filter(x, 1001, 2, deriv=1, delta=1e-3, mode="interp")
+    fast = time_derivative(t, x, 1.0)
+    assert np.max(np.abs(fast - direct)) < 1e-10 * np.max(np.abs(direct))

@@ -27,7 +27,7 @@ References
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -53,6 +53,14 @@ from .effect_laws import (
     taylor_vortex_power,
     thermal_lag_power,
 )
+from .effect_plausibility import (
+    PLAUSIBLE,
+    SEAL_TANGENTIAL_FORCE_N_M,
+    TIME_DEPENDENT,
+    FluidFacts,
+    Plausibility,
+    RigFacts,
+)
 from .errors import InputError
 from .regions import JointGeometry, region_power
 from .skin_friction import FrictionLaw
@@ -66,7 +74,8 @@ __all__ = [
     "palmgren_viscous_moment", "ball_churning_power", "coulomb_friction_power",
     "oil_inertia_power", "first_order_lag", "thermal_lag_power", "taylor_excess_factor",
     "taylor_vortex_power", "couette_shear_rate", "cross_viscosity_ratio",
-    "carreau_viscosity_ratio", "shear_thinning_power", "sensor_delay_power",
+    "carreau_viscosity_ratio", "shear_thinning_power", "sensor_delay_power", "FluidFacts",
+    "RigFacts", "Plausibility", "PLAUSIBLE", "TIME_DEPENDENT", "SEAL_TANGENTIAL_FORCE_N_M",
 ]
 
 
@@ -328,6 +337,12 @@ class Effect:
         Maps the strength [strength_unit] to the coefficient [unit].
     strength_from_coefficient : callable
         The inverse.
+    plausible : Plausibility or None
+        Physically plausible range of the coefficient [unit], with its basis and
+        reference; a fit outside it is "implausible" and not accepted.
+    time_dependent : bool
+        True if the effect needs a time record (rates or lags): not a candidate
+        on steady-point data.
     """
 
     name: str
@@ -341,6 +356,26 @@ class Effect:
     strength_unit: str
     coefficient_from_strength: Callable[[float], float] = float
     strength_from_coefficient: Callable[[float], float] = float
+    plausible: Plausibility | None = None
+    time_dependent: bool = False
+
+    def implausibility(self, coefficient: float, facts: RigFacts) -> str | None:
+        """Why a fitted coefficient is implausible on this rig, or None if it is plausible.
+
+        Parameters
+        ----------
+        coefficient : float
+            Fitted coefficient [``unit``].
+        facts : RigFacts
+            The rig's size and fluids.
+
+        Returns
+        -------
+        str or None
+            The reason (the range, its basis and reference), or None.
+        """
+        return None if self.plausible is None else self.plausible.check(
+            self.coefficient.split(" (")[0], coefficient, self.unit, facts)
 
     def feature_values(self, ctx: EffectContext) -> np.ndarray | None:
         """The feature column [W per unit coefficient], or None if not applicable.
@@ -402,6 +437,9 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            "s"),
 )}
 """The candidate-effect library, by stable name."""
+
+EFFECTS = {n: replace(e, plausible=PLAUSIBLE[n], time_dependent=n in TIME_DEPENDENT)
+           for n, e in EFFECTS.items()}  # the plausible ranges and the time flag
 
 CONFOUNDED_FORMS = {
     "enclosed_disc_couette": (

@@ -138,12 +138,12 @@ def groove_roughness(T1_m, T2_m, T3_m, T4_m):
     return (T4_m - T1_m) / (T3_m - T2_m)
 
 
-def bilgen_boulos_cm(reynolds, gap_ratio):
+def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     """Seed Eq. 6 exactly: the piecewise Bilgen-Boulos moment coefficient [-].
 
-    ``C_m = C_k x^0.3 Re^beta_k`` with (C, beta) = (10, -1) for Re < 64,
-    (2.00, -0.6) for 64 <= Re < 500, (1.03, -0.5) for 500 <= Re < 1e4 and
-    (0.065, -0.2) above.
+    ``C_m = C_k x^alpha Re^beta_k`` (alpha = 0.3 as published) with (C, beta) =
+    (10, -1) for Re < 64, (2.00, -0.6) for 64 <= Re < 500, (1.03, -0.5) for
+    500 <= Re < 1e4 and (0.065, -0.2) above.
 
     Parameters
     ----------
@@ -151,6 +151,8 @@ def bilgen_boulos_cm(reynolds, gap_ratio):
         Couette Reynolds number [-] (> 0).
     gap_ratio : float, array or CasADi symbol
         x = delta / R [-].
+    alpha : float
+        Gap-ratio exponent [-] (:data:`BILGEN_BOULOS_ALPHA`; a calibration may free it).
 
     Returns
     -------
@@ -163,14 +165,13 @@ def bilgen_boulos_cm(reynolds, gap_ratio):
     seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
     Deep-Sea Electric Manipulator, Eq. 6) [3].
     """
-    b = [power_law_cm(reynolds, gap_ratio, C, BILGEN_BOULOS_ALPHA, beta)
-         for C, beta in BILGEN_BOULOS_BRANCHES]
+    b = [power_law_cm(reynolds, gap_ratio, C, alpha, beta) for C, beta in BILGEN_BOULOS_BRANCHES]
     r1, r2, r3 = REGIME_BOUNDARIES_RE
     return m.where(reynolds < r1, b[0], m.where(reynolds < r2, b[1],
                                                 m.where(reynolds < r3, b[2], b[3])))
 
 
-def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
+def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH, alpha=BILGEN_BOULOS_ALPHA):
     """Smooth form of Eq. 6: branches blended in log space with logistic weights.
 
     ``ln Cm = ln Cm_1 + sum_k s_k (ln Cm_{k+1} - ln Cm_k)``,
@@ -186,6 +187,8 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
         x = delta / R [-].
     width : float
         Width of the logistic blends in ln Re [-] (:data:`SMOOTH_WIDTH`).
+    alpha : float
+        Gap-ratio exponent [-] (:data:`BILGEN_BOULOS_ALPHA`).
 
     Returns
     -------
@@ -200,7 +203,7 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
     """
     ln_re = m.log(reynolds)
     ln_x = m.log(gap_ratio)
-    lnc = [math.log(C) + BILGEN_BOULOS_ALPHA * ln_x + beta * ln_re
+    lnc = [math.log(C) + alpha * ln_x + beta * ln_re
            for C, beta in BILGEN_BOULOS_BRANCHES]
     out = lnc[0]
     for k, re_k in enumerate(REGIME_BOUNDARIES_RE):
@@ -208,7 +211,7 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH):
     return m.exp(out)
 
 
-def couette_law_cm(reynolds, gap_ratio):
+def couette_law_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     """Eq. 6 bounded below by the exact laminar law: ``max(Couette, Eq. 6)`` [-].
 
     No flow between the cylinders dissipates less than circular Couette flow
@@ -220,6 +223,8 @@ def couette_law_cm(reynolds, gap_ratio):
         Couette Reynolds number [-] (> 0).
     gap_ratio : float, array or CasADi symbol
         x = delta / R [-].
+    alpha : float
+        Gap-ratio exponent of Eq. 6 [-] (:data:`BILGEN_BOULOS_ALPHA`).
 
     Returns
     -------
@@ -234,11 +239,11 @@ def couette_law_cm(reynolds, gap_ratio):
     Deep-Sea Electric Manipulator, Eq. 6) [3].
     """
     return m.fmax(couette_moment_coefficient(reynolds, gap_ratio),
-                  bilgen_boulos_cm(reynolds, gap_ratio))
+                  bilgen_boulos_cm(reynolds, gap_ratio, alpha))
 
 
 def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
-                          max_width=SMOOTH_MAX_WIDTH):
+                          max_width=SMOOTH_MAX_WIDTH, alpha=BILGEN_BOULOS_ALPHA):
     """Smooth form of :func:`couette_law_cm`: a smooth max in log space of the
     Couette coefficient and :func:`bilgen_boulos_cm_smooth` [-].
 
@@ -254,6 +259,8 @@ def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
         Width of the branch blends in ln Re [-] (:data:`SMOOTH_WIDTH`).
     max_width : float
         Width of the smooth max in ln C_m [-] (:data:`SMOOTH_MAX_WIDTH`).
+    alpha : float
+        Gap-ratio exponent of Eq. 6 [-] (:data:`BILGEN_BOULOS_ALPHA`).
 
     Returns
     -------
@@ -267,7 +274,7 @@ def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
     Deep-Sea Electric Manipulator, Eq. 6) [3]).
     """
     ln_cc = m.log(couette_moment_coefficient(reynolds, gap_ratio))
-    ln_bb = m.log(bilgen_boulos_cm_smooth(reynolds, gap_ratio, width))
+    ln_bb = m.log(bilgen_boulos_cm_smooth(reynolds, gap_ratio, width, alpha))
     return m.exp(ln_cc + m.smooth_relu(ln_bb - ln_cc, max_width))
 
 
@@ -290,7 +297,8 @@ class FrictionLaw:
         Multiplier on the Eq. 6 forms [-] (a calibration constant; 1 = as published).
     C, alpha, beta : float
         Coefficient [-] and exponents [-] of the power-law form (default: the Eq. 6
-        laminar branch).
+        laminar branch); alpha is also the gap-ratio exponent of the Eq. 6 forms
+        (0.3 as published).
 
     Raises
     ------
@@ -357,11 +365,12 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
     if law.form == "power-law":
         base = power_law_cm(re, gap_ratio, law.C, law.alpha, law.beta)
     elif law.laminar_law == "couette":
-        base = law.scale * (couette_law_cm_smooth(re, gap_ratio) if law.form == "smooth"
-                            else couette_law_cm(re, gap_ratio))
+        base = law.scale * (couette_law_cm_smooth(re, gap_ratio, alpha=law.alpha)
+                            if law.form == "smooth" else couette_law_cm(re, gap_ratio, law.alpha))
     else:
-        base = law.scale * (bilgen_boulos_cm_smooth(re, gap_ratio) if law.form == "smooth"
-                            else bilgen_boulos_cm(re, gap_ratio))
+        base = law.scale * (bilgen_boulos_cm_smooth(re, gap_ratio, alpha=law.alpha)
+                            if law.form == "smooth" else bilgen_boulos_cm(re, gap_ratio,
+                                                                           law.alpha))
     if isinstance(law.gamma, (int, float)) and law.gamma == 0.0:
         return base
     return base * groove_roughness_factor(roughness_T, law.gamma)

@@ -41,6 +41,16 @@ def error_table(est: LoopEstimator) -> str:
     return "\n".join(lines)
 
 
+def _base_text(est: LoopEstimator, long: bool = False) -> str:
+    """The base model in words."""
+    if est.spec_.base == "eq6":
+        return ("the smooth Eq. 6 x scale x T^gamma" if not long else
+                f"the design tool's Eq. 6 in its smooth form (laminar law "
+                f"`{est.spec_.laminar_law}`) times one scale (1 = published) and T^gamma")
+    return ("power law C (delta/R)^alpha Re^beta T^gamma" if not long else
+            "a free power law, C_m = C (delta/R)^alpha Re^beta T^gamma")
+
+
 def format_summary(est: LoopEstimator) -> str:
     """What ``oilgap loop`` prints: data, calibration, error table, effects, before/after."""
     d = est.data_
@@ -58,12 +68,17 @@ def format_summary(est: LoopEstimator) -> str:
     par = ", ".join(
         f"{k} = {_num(c[k])}" + (f" [{_num(ci[k][0])}, {_num(ci[k][1])}]"
                                  if isinstance(ci[k], list) else " (fixed)")
-        for k in ("C", "alpha", "beta", "gamma"))
-    lines += [f"calibration Eq. 8 with T: {par}",
+        for k in c)
+    lines += [f"calibration with T ({_base_text(est)}): {par}",
               f"            without T: the case's law ({est.law_without_T_.form}, laminar "
               f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted", "",
               "error table (RMSE of the viscous power by oil and roughness)", error_table(est),
               ""]
+    lines += [f"finding     {f['message']}" + (f"\n            {f['evidence']}"
+                                               if f.get("evidence") else "")
+              for f in est.findings_]
+    if est.findings_:
+        lines.append("")
     if est.effects_:
         lines.append("effects found (accepted by leave-one-run-out cross-validation)")
         for e in est.effects_:
@@ -79,10 +94,12 @@ def format_summary(est: LoopEstimator) -> str:
     else:
         best = max((x for x in est.candidates_ if "heldout_gain_alone_pct" in x),
                    key=lambda x: x["heldout_gain_alone_pct"], default=None)
-        why = (f" (best candidate {best['name']}: held-out gain "
-               f"{best['heldout_gain_alone_pct']:.1f} % < margin {100 * est.margin:.0f} %)"
-               if best else "")
+        # the reason is the candidate's own status: the rule that actually rejected it
+        why = f" (best candidate {best['name']}: {best['status']})" if best else ""
         lines.append("no missing effect found" + why)
+    for x in est.candidates_:
+        if x["status"].startswith(("implausible", "not a candidate")):
+            lines.append(f"  {x['name']}: {x['status']}")
     if est.unexplained_:
         lines.append("unexplained: " + est.unexplained_["description"])
     h = est.heldout_rmse_
@@ -106,10 +123,11 @@ def _figure_runs(est: LoopEstimator, path: Path) -> Path:
     nrow = math.ceil(len(runs) / ncol)
     fig, axes = new_figure(4 * ncol, 2.8 * nrow, ncols=ncol, nrows=nrow, squeeze=False,
                            sharex=False)
+    steady = not getattr(s, "has_time", True)
     for i, name in enumerate(runs):
         ax = axes[i // ncol][i % ncol]
         m = s.run_code == i
-        t = s.time_s[m]
+        t = np.arange(int(m.sum())) if steady else s.time_s[m]
         ax.plot(t, s.viscous_W[m], ".", ms=1.5, color="0.5", label="measured")
         ax.plot(t, est.pred_["without_T"][m], lw=0.8, color="tab:red", label="without T")
         ax.plot(t, est.pred_["with_T"][m], lw=0.8, color="tab:blue", label="with T (before)")
@@ -117,7 +135,7 @@ def _figure_runs(est: LoopEstimator, path: Path) -> Path:
             ax.plot(t, est.pred_["with_effect"][m], lw=0.8, color="tab:green", ls="--",
                     label="with effect (after)")
         ax.set_title(name, fontsize=9)
-        ax.set_xlabel("time [s]", fontsize=8)
+        ax.set_xlabel("operating point" if steady else "time [s]", fontsize=8)
         ax.set_ylabel("viscous power [W]", fontsize=8)
         ax.tick_params(labelsize=7)
     for j in range(len(runs), nrow * ncol):
@@ -165,9 +183,17 @@ def _figure_residuals(est: LoopEstimator, path: Path, xv: np.ndarray, xlabel: st
 def _figures(est: LoopEstimator, out: Path) -> list[Path]:
     """The three figures of :data:`FIGURES`, written into ``out``."""
     s = est.samples_
+    steady = not getattr(s, "has_time", True)
+    order = s.time_s
+    if steady:  # operating-point number within its run
+        order = np.zeros(s.n)
+        for c in np.unique(s.run_code):
+            idx = np.nonzero(s.run_code == c)[0]
+            order[idx] = np.arange(len(idx))
     return [_figure_runs(est, out / FIGURES[0]),
             _figure_residuals(est, out / FIGURES[1], s.speed_rpm, "speed [rpm]", False),
-            _figure_residuals(est, out / FIGURES[2], s.time_s, "time [s]", True)]
+            _figure_residuals(est, out / FIGURES[2], order,
+                              "operating point" if steady else "time [s]", True)]
 
 
 def _md_data(est: LoopEstimator) -> list[str]:
@@ -196,17 +222,26 @@ def _md_data(est: LoopEstimator) -> list[str]:
 def _md_calibration(est: LoopEstimator) -> list[str]:
     """Report section: the calibration (seed Table 3)."""
     c, ci = est.calibration_, est.calibration_ci_
+    ranges = est.to_dict()["parameter_ranges"]
     parts = ["## Calibration (seed Table 3)", "",
              f"Without T: the case's friction law (form `{est.law_without_T_.form}`, laminar "
              f"law `{est.law_without_T_.laminar_law}`) with gamma = 0, nothing fitted. "
-             "With T: Eq. 8, C_m = C (delta/R)^alpha Re^beta T^gamma, region 2 at T = 1, "
-             "fitted by nonlinear least squares on the power.", "",
-             markdown_rows(["parameter", "value", "95 % CI (jackknife over runs + baseline)",
-                            "identifiability"],
+             f"With T: {_base_text(est, long=True)}, region 2 at T = 1, fitted by nonlinear "
+             "least squares on the power.", "",
+             markdown_rows(["parameter", "value", "95 % CI (jackknife over groups + baseline)",
+                            "physical range", "identifiability"],
                            [[k, _num(c[k], 5), (f"{_num(ci[k][0], 5)} .. {_num(ci[k][1], 5)}"
                                                  if isinstance(ci[k], list) else "fixed"),
+                             (f"{ranges[k]['range'][0]:g} .. {ranges[k]['range'][1]:g}"
+                              if k in ranges else "-"),
                              est.identifiability_.get(k, "")]
-                            for k in ("C", "alpha", "beta", "gamma")]), ""]
+                            for k in c]), ""]
+    if est.findings_:
+        parts += ["### Findings", ""] + [
+            f"- {f['message']}." + (f" {f['evidence'][0].upper()}{f['evidence'][1:]}."
+                                    if f.get("evidence") else "") for f in est.findings_] + [""]
+    parts += ["Physical ranges: " + "; ".join(
+        f"{k}: {v['basis']} ({v['source']})" for k, v in ranges.items() if k in c) + ".", ""]
     if "correlations" in est.identifiability_:
         parts += [f"Parameter correlations: {est.identifiability_['correlations']}.", ""]
     parts += [markdown_rows(["oil", "T", "RMSE without T W", "RMSE with T W", "reduction"],
@@ -229,9 +264,10 @@ def _md_search(est: LoopEstimator) -> list[str]:
                           [[k, f"{v['eta2']:.3f}", f"{v['pearson_r']:+.3f}"]
                            for k, v in rb["variables"].items()]), "",
             "## Effect search", "",
-            f"Margin: an effect must lower the held-out (leave-one-run-out) RMSE by "
-            f"{100 * est.margin:.0f} % and explain {100 * est.min_explained:.0f} % of the "
-            "held-out structure above noise.", "",
+            f"Margin: each effect must lower the held-out (leave-one-group-out) RMSE by "
+            f"{100 * est.margin:.0f} %, and the effects kept must together explain "
+            f"{100 * est.min_explained:.0f} % of the held-out structure above noise. An effect "
+            "fitted outside its plausible range is implausible and not accepted.", "",
             markdown_rows(["effect", "status", "held-out gain alone", "best column",
                            "lasso entry (lambda/lambda_max)", "R^2 on calibration"],
                           [[x["name"], x["status"],
@@ -258,7 +294,7 @@ def _md_effects(est: LoopEstimator) -> list[str]:
         parts += ["Calibration refitted with the effects: " + ", ".join(
             f"{k} = {_num(ca[k], 5)}" + (f" [{_num(cia[k][0], 5)}, {_num(cia[k][1], 5)}]"
                                          if isinstance(cia[k], list) else "")
-            for k in ("C", "alpha", "beta", "gamma")) + ".", ""]
+            for k in ca) + ".", ""]
     else:
         parts += ["**No missing effect found.**", ""]
     if est.unexplained_:

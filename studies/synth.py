@@ -6,19 +6,20 @@ at 40 degC), each with the grooved (T = 4) and the smoothed (T = 2) rotor;
 simulates, per run:
 
 * Viscous power from the physics core: ``clearance_power`` per region (region 1
-  with the run's T, region 2 with T = 1) under a *truth* friction law, the
-  power law of Eq. 8 with the Eq. 6 laminar branch (C = 10, alpha = 0.3,
-  beta = -1) and the seed case's gamma, and the oil's nu, rho from its Walther
-  line and density law at the oil temperature (atmospheric pressure: the seed's
-  rig stands in a tank).
+  with the run's T, region 2 with T = 1) under a *truth* friction law, by
+  default the design tool's: the case's Eq. 6 in its smooth form (as the NLP
+  and the loop's default base model use it) with the case's laminar law and
+  gamma; and the oil's nu, rho from its Walther line and density law at the
+  oil temperature (atmospheric pressure: the seed's rig stands in a tank). A
+  power law (the loop's ``--base power-law``) can be given as ``truth``.
 * A lumped thermal model heated by the losses, integrated with
   ``scipy.integrate.solve_ivp`` (all runs at once):
   ``C_th dT/dt = P_heat - (T - T_amb)/R_th``, P_heat = viscous power +
   dissipative effect + motor heat (iron, copper, a share of the gear loss).
 * The electrical input power: a baseline of load and motor losses
   (:class:`BaselineTruth`, the same for oil-free and oil runs of one T) plus the
-  viscous power and, optionally, one library effect at a given strength
-  (:mod:`oilgap.model.effects`; thermal lag acts through the oil temperature,
+  viscous power and, optionally, one or several library effects at given
+  strengths (:mod:`oilgap.model.effects`; thermal lag acts through the oil temperature,
   sensor delay by shifting the power record in time, shear thinning with the
   full Cross law, the others as their library terms).
 * Measurement noise on power, speed and temperature (seeded).
@@ -48,7 +49,7 @@ from oilgap.model.effects import (
 )
 from oilgap.model.errors import InputError, SolverError, check_finite
 from oilgap.model.oil_properties import oil_viscosities
-from oilgap.model.oils import get_oil
+from oilgap.model.oils import builtin_fluids, get_oil, normalize_oil_name
 from oilgap.model.regions import joint_geometry
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.thermal import lumped_temperature_rate
@@ -106,12 +107,26 @@ class BaselineTruth:
 
 
 def seed_truth_law(case: DesignCase | None = None) -> FrictionLaw:
-    """The synthetic rig's true friction law: Eq. 8 with the Eq. 6 laminar branch.
+    """The synthetic rig's true friction law: the design tool's Eq. 6 in its smooth form.
 
-    C = 10, alpha = 0.3, beta = -1 and the case's gamma (the seed's, by default).
+    ``FrictionLaw(form="smooth")`` with the case's laminar law, scale 1, alpha 0.3
+    and the case's gamma (the seed's, by default): the loop's default base model
+    at scale 1.
     """
     case = case or seed_case()
+    return FrictionLaw(form="smooth", laminar_law=case.friction.laminar_law,
+                       gamma=case.friction.gamma)
+
+
+def power_law_truth(case: DesignCase | None = None) -> FrictionLaw:
+    """A power-law truth: Eq. 8 with the Eq. 6 laminar branch (C = 10, alpha = 0.3,
+    beta = -1) and the case's gamma (the loop's ``--base power-law`` model)."""
+    case = case or seed_case()
     return FrictionLaw(form="power-law", C=10.0, alpha=0.3, beta=-1.0, gamma=case.friction.gamma)
+
+
+SYNTH_OILS = ("VG150", "VG320", "VG680", "VG1000")
+"""The rig's four oils (ISO VG grades of the built-in catalogue)."""
 
 
 @dataclass(frozen=True)
@@ -123,10 +138,14 @@ class SynthConfig:
     ``roughness``. ``truth`` None means :func:`seed_truth_law` of the case.
     ``kind`` "power_W" writes the electrical input (with oil-free runs);
     "viscous_power_W" writes the viscous loss directly (no oil-free runs).
+    ``effect``/``strength`` inject one library effect; ``effects`` several at
+    once (``{name: strength}``, a strength None meaning the default); both
+    together are refused. ``fluids`` holds oils that override the catalogue by
+    name (e.g. a polymer-thickened VG320).
     """
 
     case: DesignCase | None = None
-    oils: tuple[str, ...] = ("VG150", "VG320", "VG680", "VG1000")
+    oils: tuple[str, ...] = SYNTH_OILS
     roughness: tuple[float, ...] = (4.0, 2.0)
     n_samples: int = 1500
     sample_interval_s: float = 0.2
@@ -144,6 +163,23 @@ class SynthConfig:
     effect: str | None = None
     strength: float | None = None
     extra_power: str | None = None
+    effects: tuple | dict | None = None
+    fluids: tuple = ()
+
+    def __post_init__(self):
+        if isinstance(self.effects, dict):  # hashable: a tuple of (name, strength)
+            object.__setattr__(self, "effects", tuple(self.effects.items()))
+
+    def oil(self, name: str):
+        """The oil of that name: from ``fluids`` if there, else the catalogue."""
+        for o in self.fluids:
+            if normalize_oil_name(o.name) == normalize_oil_name(name):
+                return o
+        return get_oil(name)
+
+    def injected(self) -> dict[str, float]:
+        """Effect -> strength of a resolved configuration (empty without effects)."""
+        return dict(self.effects or ())
 
     def resolved(self) -> SynthConfig:
         """The same configuration with defaults filled in and checked."""
@@ -157,18 +193,59 @@ class SynthConfig:
             if not r >= 1.0:
                 raise InputError("roughness_T", r, "must be >= 1", "synth")
         for o in self.oils:
-            get_oil(o)
+            if getattr(self.oil(o), "kind", "mineral") != "mineral":  # Walther arrays below
+                raise InputError("oil", o, "the synthetic rig takes mineral oils", "synth")
         strength = self.strength
         if self.effect is not None:
+            if self.effects:
+                raise InputError("effects", dict(self.effects), "give effect or effects, not "
+                                 "both", "synth")
             get_effect(self.effect)
             strength = DEFAULT_STRENGTH[self.effect] if strength is None else \
                 check_finite("strength", strength, "synth")
+            effects = ((self.effect, strength),)
         elif strength is not None:
             raise InputError("strength", strength, "only together with an effect", "synth")
+        else:
+            effects = tuple((get_effect(n).name, DEFAULT_STRENGTH[n] if st is None else
+                             check_finite(f"strength of {n}", st, "synth"))
+                            for n, st in self.effects or ())
         if self.extra_power not in (None, *OUTSIDE_LIBRARY):
             raise InputError("extra_power", self.extra_power,
                              f"allowed: {', '.join(OUTSIDE_LIBRARY)}", "synth")
-        return replace(self, case=case, truth=truth, strength=strength)
+        return replace(self, case=case, truth=truth, strength=strength, effects=effects)
+
+
+def polymer_thickened(oils: tuple[str, ...] = SYNTH_OILS) -> tuple:
+    """The catalogue's oils of those names, marked polymer-thickened (for ``fluids``).
+
+    Parameters
+    ----------
+    oils : tuple of str
+        Catalogue names (default: the rig's four oils).
+
+    Returns
+    -------
+    tuple of Oil
+        The same Walther lines and densities with ``polymer_thickened=True``.
+    """
+    return tuple(replace(get_oil(o), polymer_thickened=True) for o in oils)
+
+
+def fluid_table(config: SynthConfig | None = None) -> dict:
+    """The fluid table the loop needs for the rig's data: the catalogue, ``fluids`` over it.
+
+    Parameters
+    ----------
+    config : SynthConfig, optional
+
+    Returns
+    -------
+    dict
+        Normalised name -> fluid.
+    """
+    cfg = config or SynthConfig()
+    return {**builtin_fluids(), **{normalize_oil_name(o.name): o for o in cfg.fluids}}
 
 
 OUTSIDE_LIBRARY = {
@@ -205,20 +282,23 @@ def _context(cfg: SynthConfig, omega, domega_dt, nu, rho, roughness) -> EffectCo
     return effect_context(geometry, omega, domega_dt, nu, rho, cfg.truth)
 
 
-def _effect_power(cfg: SynthConfig, ctx: EffectContext) -> np.ndarray:
-    """Injected power of the configured effect [W] (static effects only)."""
-    name = cfg.effect
-    if name is None or name in ("thermal_lag", "sensor_delay"):
-        return np.zeros_like(ctx.nu_m2_s)
-    eff = EFFECTS[name]
-    if name == "shear_thinning":  # the full Cross law, not its first-order term
-        return sum(r.power_W * (q - 1.0)
-                   for r, q in zip(ctx.regions, cross_region_ratios(ctx, cfg.strength),
-                                   strict=True))
-    f = eff.feature_values(ctx)
-    if f is None:
-        return np.zeros_like(ctx.nu_m2_s)
-    return eff.coefficient_from_strength(cfg.strength) * f
+def _effect_power(cfg: SynthConfig, ctx: EffectContext, dissipated: bool = False
+                  ) -> np.ndarray:
+    """Injected power of the configured effects [W] (static effects only; ``dissipated``:
+    without the oil's inertia, which stores energy rather than heating the oil)."""
+    total = np.zeros_like(np.asarray(ctx.power_W, dtype=float))
+    for name, strength in cfg.injected().items():
+        if name in ("thermal_lag", "sensor_delay") or (dissipated and name == "oil_inertia"):
+            continue
+        eff = EFFECTS[name]
+        if name == "shear_thinning":  # the full Cross law, not its first-order term
+            total = total + sum(r.power_W * (q - 1.0) for r, q in zip(
+                ctx.regions, cross_region_ratios(ctx, strength), strict=True))
+            continue
+        f = eff.feature_values(ctx)
+        if f is not None:
+            total = total + eff.coefficient_from_strength(strength) * f
+    return total
 
 
 def _oil_state(oils, has_oil, temp_C):
@@ -248,11 +328,11 @@ class _RigModel:
         self.runs = _runs(cfg)
         self.n_r = len(self.runs)
         self.has_oil = np.array([r.oil is not None for r in self.runs])
-        self.oils = [get_oil(r.oil or cfg.oils[0]) for r in self.runs]
+        self.oils = [cfg.oil(r.oil or cfg.oils[0]) for r in self.runs]
         self.rough = np.array([r.roughness for r in self.runs])
         self.w0 = rpm_to_rad_s(cfg.peak_speed_rpm)
         self.two_pi_f = 2.0 * np.pi * cfg.frequency_hz
-        self.lag = cfg.strength if cfg.effect == "thermal_lag" else 0.0
+        self.lag = cfg.injected().get("thermal_lag", 0.0)
         self.sol = None
 
     def speed(self, t):
@@ -277,9 +357,7 @@ class _RigModel:
         th, _, toil = self.split(y)
         nu, rho = _oil_state(self.oils, has_oil, toil)
         ctx = _context(cfg, w, a, nu, rho, self.rough)
-        p = (ctx.power_W + _effect_power(cfg, ctx)) * has_oil
-        if cfg.effect == "oil_inertia":  # stored, not dissipated
-            p = ctx.power_W * has_oil
+        p = (ctx.power_W + _effect_power(cfg, ctx, dissipated=True)) * has_oil
         return p + cfg.baseline.heat(w, a, th)
 
     def rhs(self, t, y):
@@ -339,7 +417,7 @@ def simulate_truth(config: SynthConfig | None = None) -> dict:
     rig = _RigModel(cfg)
     t = np.arange(cfg.n_samples) * cfg.sample_interval_s
     rig.integrate(t)
-    delay = cfg.strength if cfg.effect == "sensor_delay" else 0.0
+    delay = cfg.injected().get("sensor_delay", 0.0)
     w, th, tmeas, toil, visc, eff, extra, base = rig.record(t)
     if delay:
         _, _, _, _, visc_d, eff_d, extra_d, base_d = rig.record(t - delay)
@@ -394,19 +472,23 @@ def weakest_strength(effect: str, config: SynthConfig | None = None,
     """Weakest strength at which the loop, not told which, still names ``effect``.
 
     Starting at :data:`DEFAULT_STRENGTH`, the strength is multiplied by ``step``
-    until, on some seed, the loop does not accept exactly ``effect``. Returns
+    until, on some seed, the loop does not accept exactly ``effect`` (shear
+    thinning in the rig's oils marked polymer-thickened, where it is plausible). Returns
     the last strength found on every seed (``weakest_found``), the first one
     missed (``first_missed``) and each step's held-out cuts.
     """
     cfg = config or SynthConfig()
     get_effect(effect)
+    if effect == "shear_thinning" and not cfg.fluids:  # plausible only in a thickened oil
+        cfg = replace(cfg, fluids=polymer_thickened(cfg.oils))
+    oils = fluid_table(cfg) if cfg.fluids else None
     s = DEFAULT_STRENGTH[effect]
     found = None
     steps = []
     for _ in range(max_steps):
         named, cuts = [], []
         for seed in seeds:
-            est = LoopEstimator(case=cfg.case, **loop_options).fit(
+            est = LoopEstimator(case=cfg.case, oils=oils, **loop_options).fit(
                 synthesize(replace(cfg, effect=effect, strength=s), seed))
             named.append([e.name for e in est.effects_])
             h = est.heldout_rmse_

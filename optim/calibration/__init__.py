@@ -4,12 +4,16 @@ Stages (each its own module, called in this order by :class:`LoopEstimator`):
 
 * :mod:`.baseline`: the oil-free baseline of each roughness T.
 * :mod:`.forward`: the forward model (Eq. 8 per region plus effect terms).
-* :mod:`.least_squares`: which Eq. 8 parameters the data identify, nonlinear
-  least squares, one-step leave-one-run-out folds.
+* :mod:`.spec`: the base model (Eq. 6 x scale x T^gamma, or a free power law) and
+  which of its parameters the data, and each cross-validation fold, identify.
+* :mod:`.least_squares`: nonlinear least squares, one-step folds.
+* :mod:`.ranges`: the physical range of each calibrated parameter; findings.
 * :mod:`.residuals`: noise level and structure of a residual.
 * :mod:`.candidates`: library effects as candidate regression columns.
-* :mod:`.selection`: sign-constrained lasso, box least squares, leave-one-run-out
+* :mod:`.selection`: sign-constrained lasso, box least squares, leave-one-group-out
   selector, forward selection with backward pruning.
+* :mod:`.search`: screening, selection and refit, repeated without implausible
+  fits; the evidence trial of a parameter outside its range.
 * :mod:`.refit`: nonlinear refit of the selected effects, held-out errors.
 * :mod:`.uncertainty`: jackknife intervals, baseline variance propagation.
 * :mod:`.results`: effect records, candidate statuses, per-run and Table 3 rows.
@@ -21,15 +25,14 @@ from .candidates import Candidates, exact_form_variants, screen_candidates
 from .estimator import LoopEstimator
 from .forward import EXACT_FORMS, ForwardModel, sample_geometry
 from .least_squares import (
-    BASE_PARAMS,
-    BaseSpec,
     ModelFit,
-    decide_spec,
+    check_alpha,
     fit_model,
     identifiability,
     initial_guess,
     one_step_fold,
 )
+from .ranges import PARAM_RANGES, ParamRange, held_values, parameter_findings
 from .refit import FinalModel, HeldOut, Refitter, heldout_gains, refit_selected, rmse
 from .residuals import (
     autocorrelation,
@@ -45,6 +48,7 @@ from .results import (
     per_run_rows,
     table3_rows,
 )
+from .search import EffectSearch, SearchOptions, evidence_trial, fluid_facts, search_effects
 from .selection import (
     LeaveOneRunOutSelector,
     Selection,
@@ -55,9 +59,23 @@ from .selection import (
     select_effects,
     stepwise_selection,
 )
+from .spec import (
+    BASE_PARAMS,
+    BASES,
+    EQ6_PARAMS,
+    LOG_PARAMS,
+    PARAM_LIMITS,
+    BaseSpec,
+    cv_groups,
+    decide_spec,
+    fold_spec,
+)
 from .uncertainty import baseline_variance, effect_ci, jackknife_ci, parameter_ci
 
 __all__ = [
+    "BASES", "EQ6_PARAMS", "LOG_PARAMS", "PARAM_LIMITS", "PARAM_RANGES", "ParamRange",
+    "EffectSearch", "SearchOptions", "check_alpha", "cv_groups", "evidence_trial",
+    "fluid_facts", "fold_spec", "held_values", "parameter_findings", "search_effects",
     "BASE_PARAMS", "EXACT_FORMS", "BaseSpec", "BaselineFit", "Candidates", "EffectResult",
     "FinalModel", "ForwardModel", "HeldOut", "LeaveOneRunOutSelector", "LoopEstimator",
     "ModelFit", "Refitter", "Selection", "SignConstrainedLasso", "StepwiseResult",

@@ -139,8 +139,13 @@ def _screen(name: str, f: np.ndarray | None, jc: np.ndarray, spec: BaseSpec, yma
     return info
 
 
+STEADY_POINT_STATUS = ("not a candidate: steady-point data (no time_s); a time-dependent "
+                       "effect needs a time record")
+"""Status of a time-dependent effect on data without a time column."""
+
+
 def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
-                      names: list[str]) -> Candidates:
+                      names: list[str], has_time: bool = True) -> Candidates:
     """Candidate columns of the library effects ``names`` at the calibrated law.
 
     Parameters
@@ -148,11 +153,14 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
     model : ForwardModel
         The oil runs.
     spec : BaseSpec
-        Free Eq. 8 parameters (named in the confounding statement).
+        Free base parameters (named in the confounding statement).
     base : ModelFit
         Calibration without effect (law, Jacobian [W per unit parameter]).
     names : list of str
         Library effects considered.
+    has_time : bool
+        False for steady-point data: time-dependent effects (oil inertia,
+        thermal lag, sensor delay) are not candidates, with that reason.
 
     Returns
     -------
@@ -167,6 +175,11 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
     out = Candidates()
     cols = []
     for n in names:
+        if not has_time and EFFECTS[n].time_dependent:
+            eff = EFFECTS[n]
+            out.info.append({"name": n, "title": eff.title, "formula": eff.formula,
+                             "nonnegative": eff.nonnegative, "status": STEADY_POINT_STATUS})
+            continue
         f = EFFECTS[n].feature_values(ctx)
         info = _screen(n, f, base.jac_base, spec, ymax)
         out.info.append(info)

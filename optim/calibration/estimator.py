@@ -10,22 +10,31 @@ stages of this package in order:
    and density law.
 2. The forward model of the oil runs (:mod:`.forward`).
 3. The seed's Table 3 comparison. *Without T*: the case's published friction
-   law (Eq. 6) with gamma = 0, nothing fitted. *With T*: Eq. 8 fitted by
-   nonlinear least squares on the power in W, the free parameters decided from
-   the data and reported with the Jacobian's correlations (:mod:`.least_squares`).
+   law (Eq. 6) with gamma = 0, nothing fitted. *With T*: the base model
+   (:mod:`.spec`; default the design tool's smooth Eq. 6 times one scale and
+   T^gamma, alpha where several gaps identify it; option: a free power law)
+   fitted by nonlinear least squares on the power in W, the free parameters
+   decided from the data and reported with the Jacobian's correlations
+   (:mod:`.least_squares`). Each parameter is checked against its physical
+   range (:mod:`.ranges`): a value outside it is a *finding*.
 4. Residual analysis of the calibrated model: binned structure, autocorrelation,
    the noise level from successive differences (:mod:`.residuals`).
-5. Effect search over the library of :mod:`oilgap.model.effects`: candidate
-   columns (:mod:`.candidates`), the sign-constrained lasso path and
-   leave-one-run-out selection (:mod:`.selection`). An effect is accepted only
-   if it lowers the held-out RMSE by the margin (default 10 %) *and* explains
-   at least half of the held-out structure above the noise; otherwise the
-   answer is "no missing effect found", and structure left over is reported
-   with what it correlates with.
+5. Effect search over the library of :mod:`oilgap.model.effects` (:mod:`.search`):
+   candidate columns (:mod:`.candidates`), the sign-constrained lasso path and
+   leave-one-group-out forward selection (:mod:`.selection`): each effect must
+   lower the held-out RMSE by the margin (default 10 %), and the effects kept
+   must together explain at least half of the held-out structure above the
+   noise; otherwise the answer is "no missing effect found", and structure
+   left over is reported with what it correlates with. An effect fitted
+   outside its plausible range is "implausible" and the search runs without
+   it. A parameter outside its range is held at the bound and the search run
+   again (evidence for an effect it absorbed).
 6. Refit with the accepted effects (nonlinear, all parameters), errors before
-   and after in-sample and on held-out runs (:mod:`.refit`).
-7. Each parameter and coefficient with a jackknife-over-runs 95 % confidence
-   interval, widened by the baseline's error (:mod:`.uncertainty`).
+   and after in-sample and on held-out groups (:mod:`.refit`); a fold that
+   cannot identify a parameter holds it at its all-data value.
+7. Each parameter and coefficient with a jackknife-over-groups 95 % confidence
+   interval (C and the scale in log space), widened by the baseline's error
+   (:mod:`.uncertainty`).
 8. Tables and records (:mod:`.results`).
 
 References
@@ -52,7 +61,7 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
-from oilgap.model.effects import CONFOUNDED_FORMS, EFFECTS
+from oilgap.model.effects import CONFOUNDED_FORMS, EFFECTS, RigFacts
 from oilgap.model.errors import InputError
 from oilgap.model.measured_data import (
     MeasuredData,
@@ -66,18 +75,17 @@ from oilgap.model.oils import Oil, read_oils_csv
 from oilgap.model.regions import joint_geometry
 
 from .baseline import BaselineFit, fit_baselines
-from .candidates import screen_candidates
 from .forward import ForwardModel
-from .least_squares import (
-    BASE_PARAMS,
-    BaseSpec,
-    ModelFit,
-    decide_spec,
-    fit_model,
-    identifiability,
-    initial_guess,
+from .least_squares import ModelFit, check_alpha, fit_model, identifiability, initial_guess
+from .model_io import FittedModel
+from .ranges import (
+    PARAM_RANGES,
+    explained_findings,
+    held_values,
+    no_signal_finding,
+    parameter_findings,
 )
-from .refit import CV_MODES, FinalModel, Refitter, heldout_gains, refit_selected, rmse
+from .refit import CV_MODES, FinalModel, heldout_gains, rmse
 from .residuals import residual_structure, unexplained_structure
 from .results import (
     candidate_statuses,
@@ -87,7 +95,8 @@ from .results import (
     strip_bins,
     table3_rows,
 )
-from .selection import Selection, select_effects
+from .search import EffectSearch, SearchOptions, evidence_trial, fluid_facts, search_effects
+from .spec import BASES, BaseSpec, decide_spec
 from .uncertainty import effect_ci, parameter_ci
 
 DEFAULT_MARGIN = 0.10
@@ -120,6 +129,13 @@ class LoopEstimator:
         How each leave-one-run-out fold is refitted for the reported held-out
         errors and the jackknife: one Gauss-Newton step from the all-runs fit
         (default, fast) or a complete nonlinear refit.
+    base : {"eq6", "power-law"}
+        Base model: the design tool's Eq. 6 regime structure (smooth form, the
+        case's laminar law) times one scale and T^gamma (default), or a free
+        power law C (delta/R)^alpha Re^beta T^gamma.
+    cv_by : str
+        Column of the data whose values are the groups of leave-one-group-out
+        validation (default ``"run"``; e.g. ``"gap_mm"``, ``"oil"``).
 
     Attributes
     ----------
@@ -154,7 +170,8 @@ class LoopEstimator:
     def __init__(self, case: DesignCase | None = None, oils: dict[str, Oil] | str | Path |
                  None = None, margin: float = DEFAULT_MARGIN,
                  min_explained: float = DEFAULT_MIN_EXPLAINED, effects=None,
-                 max_effects: int = 3, cv: str = "one-step"):
+                 max_effects: int = 3, cv: str = "one-step", base: str = "eq6",
+                 cv_by: str = "run"):
         self.case = case
         self.oils = oils
         self.margin = margin
@@ -162,6 +179,8 @@ class LoopEstimator:
         self.effects = effects
         self.max_effects = max_effects
         self.cv = cv
+        self.base = base
+        self.cv_by = cv_by
 
     # ------------------------------------------------------------------ fit
     def fit(self, data) -> LoopEstimator:
@@ -183,41 +202,78 @@ class LoopEstimator:
         # 1. oil-free baseline; oil-run samples with nu and rho
         self.baselines_, s = self._load_samples(data)
         self.samples_ = s
-        # 2. forward model; 3. Table 3: without T (published law, gamma = 0), with T (Eq. 8)
+        # 2. forward model; 3. Table 3: without T (published law, gamma = 0), with T (base)
         model = self.forward_model_ = ForwardModel(s, case, data.oils)
         self.law_without_T_ = replace(case.friction, gamma=0.0)
-        spec, stmt = decide_spec(s, model.geometry, case)
-        self.spec_ = spec
-        base = fit_model(model, spec, initial_guess(model, spec))
-        self.law_with_T_ = base.law
-        self.identifiability_ = identifiability(stmt, spec, base)
-        # 4. residual structure of the calibration
-        r0 = s.viscous_W - base.pred
-        self.residual_before_ = residual_structure(r0, s)
+        spec, base, stmt = self._calibrate(model, case)
+        # 4. residual structure of the calibration; its parameters against their ranges
+        self.residual_before_ = residual_structure(s.viscous_W - base.pred, s)
         self.noise_W_ = sigma = self.residual_before_["noise_W"]
-        # 5. effect search: candidate columns, lasso path, leave-one-run-out selection
-        cands = screen_candidates(model, spec, base, names)
-        sel = select_effects(base.jac_base, r0, s.run_code, cands, sigma, self.margin,
-                             self.min_explained, self.max_effects)
-        self.lasso_path_ = sel.lasso_path
-        # 6. nonlinear refit, checked on held-out runs; each effect's held-out gain
-        refitter = Refitter(model, spec, cands.feature_scale(), self.cv)
-        final = refit_selected(refitter, base, cands, sel, self.margin)
-        self._store_final(sel, final)
-        # 7. confidence intervals (jackknife over runs + the baseline's error)
-        self._intervals(spec, base, final)
-        ci = effect_ci(spec, final.fit, final.after.folds, s, self.baselines_)
+        no_signal = no_signal_finding(s.viscous_W, base.pred, sigma)
+        # 5-6. effect search with plausibility, refit; the evidence trial of a range violation
+        facts = RigFacts.of(model.geometry, fluid_facts(s, data.oils))
+        opts = SearchOptions(self.margin, self.min_explained, self.max_effects, self.cv,
+                             bool(getattr(s, "has_time", True)))
+        free = search_effects(model, spec, base, names, facts, sigma, opts)
+        search, self.findings_ = self._evidence(model, free, no_signal, names, facts, sigma,
+                                                opts)
+        self.identifiability_ = self._identifiability(stmt, free)
+        final = replace(search.final, before=free.final.before)
+        self._store_final(search, final)
+        # 7. confidence intervals (jackknife over groups, log space for C and the scale)
+        self._intervals(free, search, no_signal is not None)
+        ci = effect_ci(search.spec, final.fit, final.after.folds, s, self.baselines_)
         # 8. results
-        self.effects_ = effect_results(model, final, ci, heldout_gains(refitter, final))
-        self.candidates_ = candidate_statuses(cands, sel, final, sigma, self.margin,
-                                              self.min_explained)
+        self.effects_ = effect_results(model, final, ci, heldout_gains(search.refitter, final))
+        self.candidates_ = candidate_statuses(search.cands, search.selection, final, sigma,
+                                              self.margin, self.min_explained,
+                                              search.implausible)
         self.confounded_forms_ = dict(CONFOUNDED_FORMS)
         self._tables(model, base, final)
         return self
 
-    def _store_final(self, sel: Selection, final: FinalModel) -> None:
+    def _calibrate(self, model: ForwardModel, case: DesignCase
+                   ) -> tuple[BaseSpec, ModelFit, dict]:
+        """Stage 3: the base model's free parameters and its fit to the oil runs."""
+        spec, stmt = decide_spec(model.samples, model.geometry, case, self.base)
+        spec, stmt = check_alpha(model, spec, stmt)
+        base = fit_model(model, spec, initial_guess(model, spec))
+        self.spec_, self.law_with_T_ = spec, base.law
+        return spec, base, stmt
+
+    def _evidence(self, model: ForwardModel, free: EffectSearch, no_signal: dict | None,
+                  names: list[str], facts: RigFacts, sigma: float, opts: SearchOptions
+                  ) -> tuple[EffectSearch, list[dict]]:
+        """Findings on the calibration, and the search adopted after the evidence trial."""
+        fit = free.final.fit
+        after = parameter_findings(free.spec, fit, model)
+        if no_signal:  # a level pinned by the noise is no evidence of anything
+            return free, [f for f in after if f["kind"] != "out of range"] + [no_signal]
+        before = parameter_findings(free.spec, free.base, model) if free.final.accepted else []
+        search, evidence = evidence_trial(model, free, held_values(after), names, facts, sigma,
+                                          opts)
+        held = held_values(after)
+        out = [{**f, "evidence": evidence} if f["parameter"] in held else f for f in after]
+        return search, out + explained_findings(before, after, free.spec.values(fit.x),
+                                                free.final.accepted)
+
+    def _identifiability(self, stmt: dict, free: EffectSearch) -> dict:
+        """Per-parameter statements, with the folds that held a parameter at its value."""
+        out = identifiability(stmt, free.spec, free.base)
+        held = free.final.before.held
+        for k in free.spec.free:
+            n = sum(k in h for h in held)
+            if n:
+                out[k] = (f"{out[k]}; held at the all-data value in {n} of {len(held)} "
+                          "cross-validation folds (their training data cannot identify it)")
+        return out
+
+    def _store_final(self, search: EffectSearch, final: FinalModel) -> None:
         """The selection's log and the final model's law, coefficients and held-out errors."""
-        self.selection_log_ = sel.log + final.log
+        sel = search.selection
+        self.search_ = search
+        self.selection_log_ = search.log
+        self.lasso_path_ = sel.lasso_path
         self.nonlinear_check_ = final.nonlinear_check
         self.heldout_linear_ = {"before": sel.heldout_before_W,
                                 "after": sel.selector.cv(final.chosen)}
@@ -225,14 +281,19 @@ class LoopEstimator:
         self.effect_coef_ = dict(zip(final.accepted, map(float, final.fit.theta), strict=True))
         self.heldout_pred_ = {"before": final.before.pred, "after": final.after.pred}
 
-    def _intervals(self, spec: BaseSpec, base: ModelFit, final: FinalModel) -> None:
-        """Eq. 8 parameters without and with the effects, with their 95 % intervals."""
+    def _intervals(self, free: EffectSearch, search: EffectSearch, no_signal: bool) -> None:
+        """Base parameters without and with the effects, with their 95 % intervals."""
         s, b = self.samples_, self.baselines_
-        vals_b, vals_f = spec.values(base.x), spec.values(final.fit.x)
-        self.calibration_ = {k: float(vals_b[k]) for k in BASE_PARAMS}
-        self.calibration_ci_ = parameter_ci(spec, base, final.before.folds, s, b)
-        self.calibration_after_ = {k: float(vals_f[k]) for k in BASE_PARAMS}
-        self.calibration_after_ci_ = parameter_ci(spec, final.fit, final.after.folds, s, b)
+        out = []
+        for srch, fit, ho in ((free, free.base, free.final.before),
+                              (search, search.final.fit, search.final.after)):
+            vals = srch.spec.values(fit.x)
+            ci = parameter_ci(srch.spec, fit, ho.folds, s, b, ho.held)
+            for k in srch.spec.at_limit(fit.x) if not no_signal else srch.spec.free:
+                ci[k] = [float("nan"), float("nan")]  # not identified: no interval
+            out.append(({k: float(vals[k]) for k in srch.spec.params}, ci))
+        (self.calibration_, self.calibration_ci_), \
+            (self.calibration_after_, self.calibration_after_ci_) = out
 
     def _tables(self, model: ForwardModel, base: ModelFit, final: FinalModel) -> None:
         """Errors in-sample and held out, per run and per oil and T; the final residual."""
@@ -256,6 +317,10 @@ class LoopEstimator:
                 raise InputError(k, v, "must be a number in [0, 1)", "loop")
         if self.cv not in CV_MODES:
             raise InputError("cv", self.cv, "allowed: one-step, full", "loop")
+        if self.base not in BASES:
+            raise InputError("base", self.base, f"allowed: {', '.join(BASES)}", "loop")
+        if not (isinstance(self.max_effects, int) and self.max_effects >= 1):
+            raise InputError("max_effects", self.max_effects, "must be an integer >= 1", "loop")
         names = list(EFFECTS) if self.effects is None else list(self.effects)
         for n in names:
             if n not in EFFECTS:
@@ -277,57 +342,58 @@ class LoopEstimator:
 
     def _load_samples(self, data: MeasuredData) -> tuple[dict[float, BaselineFit], Samples]:
         """Stage 1: the baselines (power_W data) and the oil-run samples of ``data``."""
-        kin = add_kinematics(data.frame)
+        kin = add_kinematics(data.frame, data.has_time)
         baselines: dict[float, BaselineFit] = {}
         if data.kind == "power_W":
             baselines = fit_baselines(kin)
-        s = oil_samples(data, self.geometry_.regions[0].gap_m, baselines or None, frame=kin)
-        if len(s.run_names) < 2:
-            raise InputError("oil runs", len(s.run_names), "the loop needs at least 2 oil runs "
-                             "(it validates on whole runs left out)", data.source)
+        # cv_by with fewer than 2 groups (e.g. one oil run) is refused by oil_samples
+        s = oil_samples(data, self.geometry_.regions[0].gap_m, baselines or None, frame=kin,
+                        cv_by=self.cv_by)
         bad = ~(np.isfinite(s.nu_m2_s) & np.isfinite(s.density_kg_m3))
         if bad.any():  # pragma: no cover - validation guarantees properties
             raise InputError("oil", s.oil[bad][0], "no viscosity or density for this row")
+        r1 = self.geometry_.regions[0].radius_m
+        bad = ~((s.gap1_m > 0) & (s.gap1_m < r1))
+        if bad.any():
+            raise InputError("gap_mm", float(s.gap1_m[bad][0] * 1e3), "a region-1 clearance "
+                             f"must lie between 0 and the rotor radius {r1 * 1e3:g} mm",
+                             data.source)
         return baselines, s
 
-    def _samples(self, data: MeasuredData, baselines=None) -> Samples:
-        """Oil-run samples of new data (its own baselines, overridden by ``baselines``)."""
-        if data.kind == "power_W":
-            own = fit_baselines(add_kinematics(data.frame))
-            baselines = {**own, **(baselines or {})}
-        return oil_samples(data, self.geometry_.regions[0].gap_m, baselines)
-
     # ------------------------------------------------------------------ predict
+    def fitted_model(self) -> FittedModel:
+        """The fitted model as a predictor (what ``loop.json``'s ``model`` block holds).
+
+        Returns
+        -------
+        FittedModel
+        """
+        if not hasattr(self, "law_"):
+            raise InputError("estimator", "unfitted", "call fit(data) before predict")
+        return FittedModel.from_estimator(self)
+
     def predict(self, data, stage: str = "with_effect") -> pd.Series:
-        """Model viscous power [W] of the oil-run samples of ``data``.
+        """Model viscous power [W] of the rows of ``data``, aligned with the caller's rows.
 
         Parameters
         ----------
         data : path, DataFrame or MeasuredData
-            Measured runs (of the same rig).
+            Rows of the same rig in the loop's data format; no power column and no
+            oil-free runs needed (new operating conditions). Without ``time_s`` each
+            row is a steady point.
         stage : {"without_T", "with_T", "with_effect"}
-            Published law (gamma = 0), calibrated Eq. 8, or calibrated with the
+            Published law (gamma = 0), calibrated base model, or calibrated with the
             accepted effects.
 
         Returns
         -------
         pandas.Series
-            Power [W], indexed by the rows of the validated frame.
+            Power [W] with the caller's index (a path: the file's row numbers from 0);
+            NaN where a row cannot be predicted (oil-free, invalid), the reason in
+            ``series.attrs["reason"]``.
         """
-        if not hasattr(self, "law_"):
-            raise InputError("estimator", "unfitted", "call fit(data) before predict")
-        if stage not in STAGES:
-            raise InputError("stage", stage, "allowed: without_T, with_T, with_effect")
-        d = self._as_data(data)
-        s = self._samples(d, self.baselines_)
-        model = ForwardModel(s, self.case_, d.oils)
-        if stage == "without_T":
-            p = model.power(self.law_without_T_)
-        elif stage == "with_T":
-            p = model.power(self.law_with_T_)
-        else:
-            p = model.power(self.law_, self.effect_coef_)
-        return pd.Series(p, index=s.index, name=f"viscous_power_W_{stage}")
+        cat = self.data_.oils if hasattr(self, "data_") else None
+        return self.fitted_model().predict(data, stage, cat)
 
     # ------------------------------------------------------------------ report
     def to_dict(self) -> dict:
@@ -346,6 +412,9 @@ class LoopEstimator:
             "per_run": [{k: r[k] for k in ("run", "oil", "roughness_T", "rmse_without_T_W",
                                            "rmse_with_T_W", "rmse_with_effect_W")}
                         for r in self.per_run_],
+            "base": self.base,
+            "findings": list(self.findings_),
+            "parameter_ranges": {k: v.to_dict() for k, v in PARAM_RANGES.items()},
             "calibration": dict(self.calibration_),
             "effects": [e.to_dict() for e in self.effects_],
             "unexplained": self.unexplained_,
@@ -370,4 +439,5 @@ class LoopEstimator:
             "baseline": [b.to_dict() for b in self.baselines_.values()],
             "models": {s: law_dict(law) for s, law in zip(
                 STAGES, (self.law_without_T_, self.law_with_T_, self.law_), strict=True)},
+            "model": self.fitted_model().to_dict(),
         }

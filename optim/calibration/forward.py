@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import copy
 import math
+from dataclasses import replace
 
 import numpy as np
 
@@ -37,7 +38,7 @@ from oilgap.model.effects import (
 from oilgap.model.measured_data import TEMP_STEP_K, Samples
 from oilgap.model.oils import Oil, normalize_oil_name
 from oilgap.model.regions import JointGeometry, joint_geometry, region_power
-from oilgap.model.skin_friction import FrictionLaw
+from oilgap.model.skin_friction import FrictionLaw, groove_roughness_factor
 from oilgap.model.units import celsius_to_kelvin
 
 EXACT_FORMS = ("thermal_lag", "sensor_delay", "shear_thinning")
@@ -47,6 +48,9 @@ record, the Cross viscosity ratio 1/(1 + lambda^2 gamma_dot^2)."""
 
 SPEED_STEP = 1e-4
 """Relative speed step of the central difference dP/domega [-]."""
+
+SHAPE_CACHE = 4
+"""Law shapes whose region powers a forward model keeps (each is regions x samples)."""
 
 
 def sample_geometry(case: DesignCase, samples: Samples) -> JointGeometry:
@@ -113,6 +117,8 @@ class ForwardModel:
         self.oil_groups = [(np.nonzero((keys == k) & law_rows)[0], oils[k])
                            for k in np.unique(keys[law_rows]) if k in oils]
         self._static: dict[str, np.ndarray] = {}
+        self._shapes: dict[tuple, list[np.ndarray]] = {}  # law shape -> region powers
+        self._lags: dict[float, tuple] = {}  # thermal-lag tau -> (nu, rho) at the lagged T
 
     def subset(self, mask: np.ndarray) -> ForwardModel:
         """Forward model of the samples where ``mask`` holds.
@@ -134,6 +140,7 @@ class ForwardModel:
         pos = np.cumsum(mask) - 1
         sub.oil_groups = [(pos[idx[mask[idx]]], oil) for idx, oil in self.oil_groups]
         sub._static = {k: v[mask] for k, v in self._static.items()}
+        sub._shapes, sub._lags = {}, {}
         return sub
 
     def region_powers(self, law: FrictionLaw, omega=None, nu=None, rho=None
@@ -154,10 +161,47 @@ class ForwardModel:
             Region 1, then region 2 if the rig has one [W].
         """
         s = self.samples
+        state = self._state_key(nu, rho)
+        if (omega is None or omega is s.omega) and state is not False:
+            return self._law_powers(law, state)
         omega = s.omega if omega is None else omega
         nu = s.nu_m2_s if nu is None else nu
         rho = s.density_kg_m3 if rho is None else rho
         return [region_power(r, omega, nu, rho, law) for r in self.geometry.regions]
+
+    def _state_key(self, nu, rho):
+        """None: the samples' own oil state; tau: a kept thermal-lag state; False: other."""
+        s = self.samples
+        if (nu is None or nu is s.nu_m2_s) and (rho is None or rho is s.density_kg_m3):
+            return None
+        return next((t for t, (n, r) in self._lags.items() if n is nu and r is rho), False)
+
+    def _lagged_state(self, tau_s: float) -> tuple:
+        """(nu, rho) at the oil temperature lagging by ``tau_s`` [3] (the last few kept)."""
+        if tau_s not in self._lags:
+            if len(self._lags) >= SHAPE_CACHE:
+                self._lags.pop(next(iter(self._lags)))
+            self._lags[tau_s] = self.oil_state_at(self.lagged_temperature(tau_s))
+        return self._lags[tau_s]
+
+    def _law_powers(self, law: FrictionLaw, state=None) -> list[np.ndarray]:
+        """Region powers at the samples' speed and a kept oil state [W]. The law's scale
+        (C of the power law) and T^gamma multiply the power (Eq. 8 [1]), so the rest of
+        it, its shape, is evaluated once per (form, laminar law, alpha, beta, oil state)
+        and kept (the last few)."""
+        unit = replace(law, scale=1.0, C=1.0, gamma=0.0)
+        key = (unit.form, unit.laminar_law, unit.alpha, unit.beta, state)
+        if key not in self._shapes:
+            s = self.samples
+            nu, rho = (s.nu_m2_s, s.density_kg_m3) if state is None else self._lags[state]
+            if len(self._shapes) >= SHAPE_CACHE:
+                self._shapes.pop(next(iter(self._shapes)))
+            self._shapes[key] = [region_power(r, s.omega, nu, rho, unit)
+                                 for r in self.geometry.regions]
+        k = law.C if law.form == "power-law" else law.scale
+        return [p * (k if law.gamma == 0.0 else k * groove_roughness_factor(r.roughness_T,
+                                                                             law.gamma))
+                for r, p in zip(self.geometry.regions, self._shapes[key], strict=True)]
 
     def base_power(self, law: FrictionLaw) -> np.ndarray:
         """Viscous power of all regions [W] per sample, no effect.
@@ -296,13 +340,17 @@ class ForwardModel:
         s = self.samples
         nu = rho = None
         if coefs.get("thermal_lag", 0.0):
-            nu, rho = self.oil_state_at(self.lagged_temperature(coefs["thermal_lag"]))
-        ctx = self.context(law, derivatives=False, nu=nu, rho=rho)
+            nu, rho = self._lagged_state(coefs["thermal_lag"])
         total = 0.0
         lam2 = max(0.0, coefs.get("shear_thinning", 0.0))
-        ratios = cross_region_ratios(ctx, math.sqrt(lam2)) if lam2 else [1.0] * len(ctx.regions)
-        for r, ratio in zip(ctx.regions, ratios, strict=True):
-            total = total + r.power_W * ratio
+        if lam2 or coefs.get("taylor_vortex_onset", 0.0):  # effects that need the context
+            ctx = self.context(law, derivatives=False, nu=nu, rho=rho)
+            pw = [r.power_W for r in ctx.regions]
+        else:
+            pw = self.region_powers(law, nu=nu, rho=rho)
+        ratios = cross_region_ratios(ctx, math.sqrt(lam2)) if lam2 else [1.0] * len(pw)
+        for p, ratio in zip(pw, ratios, strict=True):
+            total = total + p * ratio
         for name, c in coefs.items():
             if name in EXACT_FORMS or c == 0.0:
                 continue

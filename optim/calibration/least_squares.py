@@ -1,13 +1,13 @@
-"""Stage 3 of the calibration: nonlinear least squares of Eq. 8 (and effects) on the power.
+"""Stage 3b of the calibration: nonlinear least squares of the base model (and effects).
 
-``C_m = C (delta/R)^alpha Re^beta T^gamma`` (``FrictionLaw(form="power-law")``)
-is fitted to the oil runs' viscous power in W by ``scipy.optimize.least_squares``
-[2]. Why not a linear fit of ln C_m: the noise is additive in W (a power
-meter), samples near zero speed carry no information about C_m and can be
-negative, and with two regions the power is a sum of two power laws, not
-linear in the parameters in any log space. Which parameters are free is
-decided from the data (:func:`decide_spec`: gamma needs two values of T, alpha
-two region-1 gap ratios, beta a spread of Re).
+The base model (:mod:`.spec`: the Eq. 6 regime structure times a scale and
+T^gamma by default, or a free power law ``C (delta/R)^alpha Re^beta T^gamma``)
+is fitted to the oil runs' viscous power in W by
+``scipy.optimize.least_squares`` [2]. Why not a linear fit of ln C_m: the
+noise is additive in W (a power meter), samples near zero speed carry no
+information about C_m and can be negative, and with two regions the power is a
+sum of two laws, not linear in the parameters in any log space. Every unknown
+stays inside the numerical box of :data:`.spec.PARAM_LIMITS`.
 
 References
 ----------
@@ -29,100 +29,26 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import least_squares
 
-from oilgap.model.case import DesignCase
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import SolverError
-from oilgap.model.measured_data import Samples
-from oilgap.model.regions import JointGeometry
 from oilgap.model.skin_friction import BILGEN_BOULOS_ALPHA, FrictionLaw
-from oilgap.model.taylor_couette import couette_reynolds
 
 from .forward import ForwardModel
+from .spec import START_VALUES, BaseSpec
 
-BASE_PARAMS = ("C", "alpha", "beta", "gamma")
-"""The Eq. 8 parameters, in the order they are reported."""
-
-START_VALUES = {"C": 10.0, "alpha": BILGEN_BOULOS_ALPHA, "beta": -1.0, "gamma": 0.0}
-"""Start of the free parameters before C is rescaled to the data."""
-
-BETA_MIN_SPREAD = 0.2
-"""Power-weighted standard deviation of ln Re_1 above which beta is identifiable [-]."""
-
-
-@dataclass(frozen=True)
-class BaseSpec:
-    """Which Eq. 8 parameters are fitted and the values of the fixed ones.
-
-    Parameters
-    ----------
-    free : tuple of str
-        Fitted parameters, in :data:`BASE_PARAMS` order (C enters as ln C).
-    fixed : dict
-        Values of the others (alpha [-], beta [-], gamma [-]).
-    """
-
-    free: tuple[str, ...]
-    fixed: dict
-
-    def law(self, x: np.ndarray) -> FrictionLaw:
-        """Friction law at the free-parameter vector ``x`` (C as ln C) [1].
-
-        Parameters
-        ----------
-        x : array
-            Free parameters [-].
-
-        Returns
-        -------
-        FrictionLaw
-            ``form="power-law"`` with C, alpha, beta, gamma.
-        """
-        v = dict(self.fixed)
-        for name, val in zip(self.free, x, strict=True):
-            v[name] = math.exp(val) if name == "C" else float(val)
-        return FrictionLaw(form="power-law", C=v["C"], alpha=v["alpha"], beta=v["beta"],
-                           gamma=v["gamma"])
-
-    def values(self, x: np.ndarray) -> dict:
-        """All four parameters by name [-].
-
-        Parameters
-        ----------
-        x : array
-            Free parameters (C as ln C) [-].
-
-        Returns
-        -------
-        dict
-            C, alpha, beta, gamma.
-        """
-        law = self.law(x)
-        return {"C": law.C, "alpha": law.alpha, "beta": law.beta, "gamma": law.gamma}
-
-    def start(self, values: dict) -> np.ndarray:
-        """Free-parameter vector from parameter values.
-
-        Parameters
-        ----------
-        values : dict
-            Parameter name -> value [-].
-
-        Returns
-        -------
-        array
-            Free parameters (C as ln C) [-].
-        """
-        return np.array([math.log(values[k]) if k == "C" else values[k] for k in self.free])
+FOLD_STEP_LIMIT = 2.0
+"""Largest change of a base parameter (ln C, ln scale, exponents) [-] a one-step fold may
+make; a larger step falls back to a full nonlinear refit of that fold."""
 
 
 @dataclass
 class ModelFit:
-    """A fitted model: Eq. 8 parameters, effect coefficients, prediction, Jacobian.
+    """A fitted model: base parameters, effect coefficients, prediction, Jacobian.
 
     Attributes
     ----------
     x : array
-        Free Eq. 8 parameters (C as ln C) [-].
+        Free base parameters (C, scale as logarithms) [-].
     theta : array
         Effect coefficients (library units).
     law : FrictionLaw
@@ -153,7 +79,7 @@ class ModelFit:
 
     @property
     def z(self) -> np.ndarray:
-        """The solver's unknowns: free Eq. 8 parameters, then scaled effect coefficients."""
+        """The solver's unknowns: free base parameters, then scaled effect coefficients."""
         sc = np.ones(0) if self.scale is None else self.scale
         return np.concatenate([self.x, self.theta * sc])
 
@@ -199,8 +125,9 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
               full: ForwardModel | None = None) -> ModelFit:
     """Nonlinear least squares of the model (Eq. 8 + effects ``names``) to the power [W].
 
-    Unknowns: the free Eq. 8 parameters (C as ln C) and one coefficient per
-    effect, bounded below by 0 where the library says so; effect coefficients
+    Unknowns: the free base parameters (C, scale as logarithms, within their
+    box) and one coefficient per effect, bounded below by 0 where the library
+    says so; effect coefficients
     are scaled by ``scale`` for conditioning. The Jacobian is by central
     differences of the model; the solver is SciPy's trust-region reflective [2].
 
@@ -209,9 +136,9 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
     model : ForwardModel
         Samples the model is fitted to (their ``viscous_W`` [W]).
     spec : BaseSpec
-        Free and fixed Eq. 8 parameters.
+        Free and fixed base parameters.
     x0 : array
-        Start of the free parameters (C as ln C) [-].
+        Start of the free parameters (C, scale as logarithms) [-].
     names : tuple of str
         Library effects fitted with the law.
     theta0 : array, optional
@@ -233,13 +160,22 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
     """
     k = len(names)
     q = len(x0)
+    if q + k == 0:  # nothing to fit: the model at the given parameters
+        law = spec.law(np.zeros(0))
+        out = full or model
+        return ModelFit(np.zeros(0), np.zeros(0), law, out.base_power(law),
+                        np.zeros((out.samples.n, 0)), np.zeros((model.samples.n, 0)),
+                        np.ones(0), (), np.zeros(0))
     sc = np.ones(k) if scale is None else np.where(np.asarray(scale) > 0, scale, 1.0)
     lo_t = np.array([0.0 if EFFECTS[n].nonnegative else -np.inf for n in names])
     t0 = np.zeros(k) if theta0 is None else np.maximum(np.asarray(theta0, float), lo_t)
     prob = _ScaledProblem(model, spec, tuple(names), q, sc, lo_t)
     z0 = np.concatenate([x0, t0 * sc])
-    lo = np.concatenate([np.full(q, -np.inf), lo_t * sc])
-    hi = np.full(q + k, np.inf)
+    blo, bhi = spec.bounds()
+    x0 = np.clip(np.asarray(x0, float), blo, bhi)
+    z0 = np.concatenate([x0, t0 * sc])
+    lo = np.concatenate([blo, lo_t * sc])
+    hi = np.concatenate([bhi, np.full(k, np.inf)])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         res = least_squares(prob.residual, z0, jac=prob.jacobian, bounds=(lo, hi),
@@ -255,15 +191,16 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
                     jb, jfull, sc, tuple(names), lo_t)
 
 
-def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.ndarray
-                  ) -> ModelFit:
+def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.ndarray,
+                  hold: tuple[str, ...] = ()) -> ModelFit | None:
     """Refit without some runs by one Gauss-Newton step from the all-runs solution [3].
 
     ``dz = -(J_tr' J_tr)^-1 J_tr' r_tr`` with the all-runs Jacobian J and
     residual r restricted to the training rows (coefficients projected onto
     their bounds), then the exact model at the new parameters. The step is
     exact for a model linear in its parameters and accurate to second order
-    in the change otherwise.
+    in the change otherwise. Parameters in ``hold`` (the fold cannot identify
+    them) keep their all-data values.
 
     Parameters
     ----------
@@ -274,93 +211,88 @@ def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.
     spec : BaseSpec
     train : array of bool
         Samples of the training runs [-].
+    hold : tuple of str
+        Free base parameters held at their all-data values in this fold.
 
     Returns
     -------
-    ModelFit
-        Parameters after the step; prediction on all samples [W].
+    ModelFit or None
+        Parameters after the step; prediction on all samples [W]. None if the
+        step moves a base parameter by more than :data:`FOLD_STEP_LIMIT` or
+        leaves the numerical box (the caller refits that fold in full).
     """
     q = len(fit.x)
-    J = fit.jac[train]
+    keep = np.ones(len(fit.z), bool)
+    keep[[spec.free.index(k) for k in hold]] = False
+    J = fit.jac[train][:, keep]
     r = (fit.pred - model.samples.viscous_W)[train]
-    dz, *_ = np.linalg.lstsq(J, -r, rcond=None)
-    z = fit.z + dz
-    lo = np.concatenate([np.full(q, -np.inf), fit.lower * fit.scale])
-    z = np.maximum(z, lo)
-    x = z[:q]
+    dz = np.zeros(len(fit.z))
+    dz[keep], *_ = np.linalg.lstsq(J, -r, rcond=None)
+    blo, bhi = spec.bounds()
+    x = fit.x + dz[:q]
+    if (not np.all(np.isfinite(dz)) or np.any(np.abs(dz[:q]) > FOLD_STEP_LIMIT)
+            or np.any(x < blo) or np.any(x > bhi)):
+        return None
+    z = np.maximum(fit.z + dz, np.concatenate([np.full(q, -np.inf), fit.lower * fit.scale]))
     theta = z[q:] / fit.scale
     coefs = dict(zip(fit.names, theta, strict=True))
     law = spec.law(x)
-    return ModelFit(x, theta, law, model.power(law, coefs), fit.jac_base, None, fit.scale,
-                    fit.names, fit.lower)
+    pred = model.power(law, coefs)
+    if not np.all(np.isfinite(pred)):
+        return None
+    return ModelFit(x, theta, law, pred, fit.jac_base, None, fit.scale, fit.names, fit.lower)
 
 
-def _log_re_spread(s: Samples, radius1_m: float) -> tuple[float, float]:
-    """Power-weighted sd of ln Re_1 [-] and the largest Re_1 [-] of the samples."""
-    re = couette_reynolds(s.omega, radius1_m, s.gap1_m, s.nu_m2_s)
-    w = np.abs(s.omega) ** 2
-    ok = re > 0
-    lre = np.log(re[ok])
-    sd = float(np.sqrt(np.average((lre - np.average(lre, weights=w[ok])) ** 2, weights=w[ok])))
-    return sd, float(re.max())
+ALPHA_MIN_WEIGHT = 0.1
+"""Share of the pure Eq. 6 gap sensitivity (d ln P_1 / d alpha = ln(delta/R)) below which
+region 1's power is taken as independent of alpha [-]."""
 
 
-def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase) -> tuple[BaseSpec, dict]:
-    """Which Eq. 8 parameters the data identify, with the reason for each.
+def check_alpha(model: ForwardModel, spec: BaseSpec, stmt: dict) -> tuple[BaseSpec, dict]:
+    """Fix alpha if region 1's power hardly depends on it at these samples.
 
-    C is always fitted; gamma if the oil runs have two values of T; alpha if
-    they have two region-1 gap ratios; beta if ln Re_1 spreads by
-    :data:`BETA_MIN_SPREAD` (power-weighted). Fixed ones take the published
-    values (alpha of Eq. 6, beta = -1, the case's gamma) [1].
+    With the Couette laminar law region 1 follows ``max(Couette, Eq. 6)``; where
+    Eq. 6 lies below the Couette bound the power has no alpha in it, however
+    many gap ratios the data hold (alpha would act only on region 2, whose gap
+    is fixed). The test: the power-weighted RMS of ``d ln P_1 / d alpha`` is
+    below :data:`ALPHA_MIN_WEIGHT` of that of ``ln(delta/R)``, its value where
+    Eq. 6 governs.
 
     Parameters
     ----------
-    s : Samples
-        Oil-run samples.
-    geometry : JointGeometry
-        Rig regions (region 1's radius [m]).
-    case : DesignCase
-        Rig (its friction law's gamma).
+    model : ForwardModel
+    spec : BaseSpec
+    stmt : dict
+        Statements of :func:`decide_spec`.
 
     Returns
     -------
     (BaseSpec, dict)
-        The specification and a statement per parameter.
+        The specification (alpha [-] fixed at 0.3 if region 1 does not depend on
+        it) and the statements.
     """
-    radius1 = geometry.regions[0].radius_m
-    stmt = {"C": "identified: the scale of the loss"}
-    free = ["C"]
-    fixed = {"alpha": BILGEN_BOULOS_ALPHA, "beta": -1.0, "gamma": case.friction.gamma}
-    Ts = sorted(set(np.round(s.roughness_T, 9)))
-    if len(Ts) >= 2:
-        free.append("gamma")
-        stmt["gamma"] = f"identified from the runs at T = {', '.join(f'{t:g}' for t in Ts)}"
-    else:
-        fixed["gamma"] = 0.0 if Ts == [1.0] else case.friction.gamma
-        stmt["gamma"] = (f"not identifiable: every oil run has T = {Ts[0]:g}; fixed at "
-                         f"{fixed['gamma']:g} (only C T^gamma is identified)")
-    ratios = sorted(set(np.round(s.gap1_m / radius1, 6)))
-    if len(ratios) >= 2:
-        free.append("alpha")
-        stmt["alpha"] = (f"identified from {len(ratios)} region-1 gap ratios "
-                         f"{ratios[0]:.4g}..{ratios[-1]:.4g}")
-    else:
-        stmt["alpha"] = (f"not identifiable: one region-1 gap ratio (delta/R = {ratios[0]:.4g});"
-                         f" fixed at {BILGEN_BOULOS_ALPHA:g} (Eq. 6), C absorbs (delta/R)^alpha")
-    sd, re_max = _log_re_spread(s, radius1)
-    if sd >= BETA_MIN_SPREAD:
-        free.append("beta")
-        stmt["beta"] = (f"identified from the spread of Re over the data (power-weighted sd of "
-                        f"ln Re_1 = {sd:.2f}; Re_1 up to {re_max:.3g})")
-    else:
-        stmt["beta"] = (f"not identifiable: Re hardly varies (sd of ln Re = {sd:.2f}); fixed at "
-                        "-1 (laminar)")
-    order = [p for p in BASE_PARAMS if p in free]
-    return BaseSpec(tuple(order), {k: v for k, v in fixed.items() if k not in order}), stmt
+    if "alpha" not in spec.free:
+        return spec, stmt
+    vals = spec.values(spec.start({**START_VALUES, **spec.fixed}))
+    h = 1e-3  # local: at x ~ 0.05 Eq. 6 is within 7 % of Couette
+    p = [model.region_powers(spec.holding({**vals, "alpha": vals["alpha"] + d}).law(
+        np.zeros(0)))[0] for d in (-h, h)]
+    w = 0.5 * (p[0] + p[1])
+    ok = (w > 0) & (p[0] > 0) & (p[1] > 0)
+    if ok.any():
+        dlnp = (np.log(p[1][ok]) - np.log(p[0][ok])) / (2 * h)
+        lnx = np.log(model.samples.gap1_m[ok] / model.geometry.regions[0].radius_m)
+        wk = w[ok] ** 2
+        if np.sum(wk * dlnp ** 2) >= ALPHA_MIN_WEIGHT ** 2 * np.sum(wk * lnx ** 2):
+            return spec, stmt
+    stmt = {**stmt, "alpha": (f"not identifiable: region 1 follows the Couette bound (Eq. 6 "
+                              f"lies below it at these samples), which has no alpha; fixed at "
+                              f"{BILGEN_BOULOS_ALPHA:g} (Eq. 6)")}
+    return spec.holding({"alpha": BILGEN_BOULOS_ALPHA}), stmt
 
 
 def initial_guess(model: ForwardModel, spec: BaseSpec) -> np.ndarray:
-    """Start of the free parameters: :data:`START_VALUES`, C scaled to the data.
+    """Start of the free parameters: :data:`START_VALUES`, the level scaled to the data.
 
     Parameters
     ----------
@@ -370,14 +302,36 @@ def initial_guess(model: ForwardModel, spec: BaseSpec) -> np.ndarray:
     Returns
     -------
     array
-        Free parameters (C as ln C) [-]; ln C moved by the least-squares factor
-        ``p0'y / p0'p0`` of the start's power p0 [W] onto the measured y [W].
+        Free parameters (C, scale as logarithms) [-]; the level (ln C or ln
+        scale) moved by the least-squares factor ``p0'y / p0'p0`` of the start's
+        power p0 [W] onto the measured y [W] (floored at 1e-12).
     """
+    return rescale_level(model, spec, spec.start({**START_VALUES, **spec.fixed}))
+
+
+def rescale_level(model: ForwardModel, spec: BaseSpec, x0: np.ndarray) -> np.ndarray:
+    """A start with its level (ln C or ln scale) moved onto the data.
+
+    Parameters
+    ----------
+    model : ForwardModel
+    spec : BaseSpec
+    x0 : array
+        Free parameters (C, scale as logarithms) [-].
+
+    Returns
+    -------
+    array
+        ``x0`` with the level moved by ``ln(p0'y / p0'p0)`` (the factor floored at
+        1e-12), p0 the power at ``x0`` [W], y the measured power [W].
+    """
+    x0 = np.array(x0, dtype=float)
     y = model.samples.viscous_W
-    x0 = spec.start({**START_VALUES, **spec.fixed})
     p0 = model.base_power(spec.law(x0))
-    if "C" in spec.free:
-        x0[spec.free.index("C")] += math.log(max(1e-12, float(p0 @ y) / float(p0 @ p0)))
+    level = next((k for k in ("C", "scale") if k in spec.free), None)
+    den = float(p0 @ p0)
+    if level is not None and den > 0 and np.isfinite(den):
+        x0[spec.free.index(level)] += math.log(max(1e-12, float(p0 @ y) / den))
     return x0
 
 
@@ -400,7 +354,7 @@ def identifiability(statements: dict, spec: BaseSpec, fit: ModelFit) -> dict:
     """
     out = dict(statements)
     jc = fit.jac_base
-    if jc.shape[1] > 1:
+    if jc.shape[1] > 1 and np.all(np.std(jc, axis=0) > 0):
         corr = np.corrcoef(jc.T)
         pairs = [f"corr({spec.free[i]}, {spec.free[j]}) = {corr[i, j]:+.3f}"
                  for i in range(len(spec.free)) for j in range(i + 1, len(spec.free))]

@@ -17,7 +17,7 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 
@@ -25,6 +25,7 @@ from .candidates import Candidates
 from .forward import ForwardModel
 from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold
 from .selection import Selection
+from .spec import cv_groups, fold_spec
 
 CV_MODES = ("one-step", "full")
 """How each leave-one-run-out fold is refitted."""
@@ -53,13 +54,18 @@ class HeldOut:
     Attributes
     ----------
     pred : array
-        Each sample predicted by the fit without its run [W].
+        Each sample predicted by the fit without its group [W].
     folds : list of ModelFit
-        The fit without each run, in run-code order.
+        The fit without each group, in group-code order (parameters in the
+        all-data specification).
+    held : list of tuple of str
+        Per fold, the base parameters it could not identify (held at their
+        all-data values).
     """
 
     pred: np.ndarray
     folds: list[ModelFit]
+    held: list[tuple[str, ...]] = field(default_factory=list)
 
 
 class Refitter:
@@ -83,6 +89,7 @@ class Refitter:
         self.spec = spec
         self.feature_scale = feature_scale
         self.cv = cv
+        self._holds: dict[int, tuple[str, ...]] | None = None
 
     def fit(self, names, x_start: np.ndarray, theta_start: np.ndarray | None,
             on: ForwardModel | None = None) -> ModelFit:
@@ -107,18 +114,54 @@ class Refitter:
         return fit_model(on or self.model, self.spec, x_start, tuple(names), theta_start, sc,
                          full=self.model)
 
+    def fold_holds(self) -> dict[int, tuple[str, ...]]:
+        """Per cross-validation group, the base parameters its fold cannot identify.
+
+        Returns
+        -------
+        dict
+            Group code -> parameters held at their all-data values (cached).
+        """
+        if self._holds is None:
+            s = self.model.samples
+            groups = cv_groups(s)
+            r1 = self.model.geometry.regions[0].radius_m
+            self._holds = {int(c): fold_spec(self.spec, s.subset(groups != c), r1)
+                           for c in np.unique(groups)}
+        return self._holds
+
+    def _full_fold(self, names, x_all: np.ndarray, theta: np.ndarray | None, train: np.ndarray,
+                   hold: tuple[str, ...]) -> ModelFit:
+        """Complete nonlinear refit on ``train`` with ``hold`` at their all-data values."""
+        spec = self.spec
+        vals = spec.values(x_all)
+        sub = spec.holding({k: vals[k] for k in hold})
+        keep = [spec.free.index(k) for k in sub.free]
+        sc = np.array([self.feature_scale[n] for n in names])
+        f = fit_model(self.model.subset(train), sub, x_all[keep], tuple(names), theta, sc,
+                      full=self.model)
+        x = x_all.copy()
+        x[keep] = f.x
+        return ModelFit(x, f.theta, spec.law(x), f.pred, f.jac_base, None, f.scale, f.names,
+                        f.lower)
+
     def leave_one_run_out(self, names, x_start: np.ndarray, theta_start: np.ndarray | None,
                           at: ModelFit | None = None) -> HeldOut:
         """Held-out predictions and per-fold fits of the model ``names`` [1].
+
+        One fold per cross-validation group (:func:`.spec.cv_groups`: the run
+        unless the data say otherwise). A fold that cannot identify a base
+        parameter holds it at its all-data value; a one-step fold that would
+        move a parameter too far is refitted in full.
 
         Parameters
         ----------
         names : sequence of str
             Effects.
         x_start, theta_start : arrays
-            Start of full refits.
+            Start of full refits (the all-data values).
         at : ModelFit, optional
-            All-runs fit: the folds are one Gauss-Newton step from it unless
+            All-data fit: the folds are one Gauss-Newton step from it unless
             ``cv == "full"`` (without it, full refits).
 
         Returns
@@ -126,20 +169,23 @@ class Refitter:
         HeldOut
         """
         s = self.model.samples
-        runs = np.unique(s.run_code)
+        groups = cv_groups(s)
+        holds = self.fold_holds()
         pred = np.empty(s.n)
-        folds = []
-        full = at is None or self.cv == "full"
-        if full:
-            subs = {c: self.model.subset(s.run_code != c) for c in runs}
-        for c in runs:
-            if full:
-                f = self.fit(names, x_start, theta_start, subs[c])
-            else:
-                f = one_step_fold(at, self.model, self.spec, s.run_code != c)
-            pred[s.run_code == c] = f.pred[s.run_code == c]
+        folds, held = [], []
+        x_all = at.x if at is not None else np.asarray(x_start, float)
+        th_all = at.theta if at is not None else theta_start
+        for c in np.unique(groups):
+            train, hold = groups != c, holds[int(c)]
+            f = None
+            if at is not None and self.cv != "full":
+                f = one_step_fold(at, self.model, self.spec, train, hold)
+            if f is None:
+                f = self._full_fold(names, x_all, th_all, train, hold)
+            pred[~train] = f.pred[~train]
             folds.append(f)
-        return HeldOut(pred, folds)
+            held.append(hold)
+        return HeldOut(pred, folds, held)
 
 
 @dataclass
@@ -213,7 +259,37 @@ def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
         log = [{"step": "nonlinear check", "rejected": accepted,
                 "gain_pct": 100 * (1 - ha / hb)}]
         return FinalModel(base, [], (), before, before, check, log)
-    return FinalModel(fit, accepted, chosen, before, after, check, [])
+    return _prune_nonlinear(refitter, FinalModel(fit, accepted, chosen, before, after, check,
+                                                 []), margin)
+
+
+def _prune_nonlinear(refitter: Refitter, final: FinalModel, margin: float) -> FinalModel:
+    """Drop, one at a time, an effect that brings less than the margin in the nonlinear refit.
+
+    The linearised selection can take in a column the nonlinear refit then
+    sets to nothing (e.g. an exact-form variant next to a stronger effect):
+    each accepted effect must keep its held-out margin against the final model
+    without it, as in the linearised backward pruning.
+    """
+    log = list(final.log)
+    while len(final.accepted) > 1:
+        gains = heldout_gains(refitter, final)
+        weakest = min(gains, key=gains.get)
+        if gains[weakest] >= 100.0 * margin:
+            break
+        log.append({"step": "nonlinear prune", "dropped": weakest,
+                    "gain_pct": gains[weakest]})
+        keep = [i for i, n in enumerate(final.accepted) if n != weakest]
+        names = [final.accepted[i] for i in keep]
+        fit = refitter.fit(names, final.fit.x, final.fit.theta[keep])
+        after = refitter.leave_one_run_out(names, fit.x, fit.theta, fit)
+        y = refitter.model.samples.viscous_W
+        ha, hb = rmse(y - after.pred), rmse(y - final.before.pred)
+        check = {"heldout_before_W": hb, "heldout_after_W": ha,
+                 "gain_pct": 100 * (1 - ha / hb)}
+        final = FinalModel(fit, names, tuple(final.chosen[i] for i in keep), final.before,
+                           after, check, log)
+    return final
 
 
 def heldout_gains(refitter: Refitter, final: FinalModel) -> dict[str, float]:

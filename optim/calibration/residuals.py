@@ -78,13 +78,13 @@ def autocorrelation(res: np.ndarray, run_code: np.ndarray, lag: int) -> float:
     float
         ``sum r_k r_k+lag / sum r_k^2`` (0 for a zero residual) [-].
     """
-    num = den = 0.0
-    for c in np.unique(run_code):
-        r = res[run_code == c]
-        r = r - r.mean()
-        den += float(r @ r)
-        if len(r) > lag:
-            num += float(r[lag:] @ r[:-lag])
+    order = np.argsort(run_code, kind="stable")       # each run's samples contiguous, in order
+    code = np.asarray(run_code)[order]
+    cnt = np.bincount(code)
+    r = res[order] - (np.bincount(code, weights=res[order]) / np.maximum(cnt, 1))[code]
+    den = float(r @ r)
+    same = code[lag:] == code[:-lag]
+    num = float(r[lag:][same] @ r[:-lag][same]) if len(r) > lag else 0.0
     return num / den if den > 0 else 0.0
 
 

@@ -112,52 +112,87 @@ def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray,
     return out
 
 
+def _set_rejection(selection: Selection, final: FinalModel, margin: float,
+                   min_explained: float) -> tuple[list[str], str] | None:
+    """Effects a set-level rule rejected (structure check, nonlinear check) and the rule."""
+    for rec in selection.log:
+        if rec.get("step") == "structure" and not rec["accepted"]:
+            return ([e.split(" (")[0] for e in rec["effects"]],
+                    f"the effects selected together ({', '.join(rec['effects'])}) explain only "
+                    f"{100 * rec['explained_total']:.0f} % of the held-out structure above the "
+                    f"noise (< {100 * min_explained:.0f} %)")
+    for rec in final.log:
+        if rec.get("step") == "nonlinear check":
+            return (list(rec["rejected"]),
+                    f"the nonlinear refit of {', '.join(rec['rejected'])} lowers the held-out "
+                    f"RMSE by only {rec['gain_pct']:.1f} % (< margin {100 * margin:.0f} %)")
+    return None
+
+
 def candidate_statuses(cands: Candidates, selection: Selection, final: FinalModel,
-                       noise_W: float, margin: float, min_explained: float) -> list[dict]:
-    """Final status of every library effect considered.
+                       noise_W: float, margin: float, min_explained: float,
+                       implausible: dict[str, str] | None = None) -> list[dict]:
+    """Final status of every library effect considered, with the rule that decided it.
 
     Parameters
     ----------
     cands : Candidates
     selection : Selection
-        Its ``candidates`` (records with the held-out scores alone).
+        Its ``candidates`` (records with the held-out scores alone) and its log.
     final : FinalModel
     noise_W : float
         Noise level [W].
     margin, min_explained : float
         Acceptance thresholds [-].
+    implausible : dict, optional
+        Effect -> why its fitted coefficient is implausible.
 
     Returns
     -------
     list of dict
-        Records with status "accepted", the reason a candidate was rejected
-        (and the held-out gain it adds to the accepted ones [%]), or the
-        screening status.
+        Records with status "accepted", "implausible: ..." (fitted outside its
+        plausible range, not accepted), the reason a candidate was rejected (the
+        rule that actually rejected it; with an accepted set, the held-out gain
+        it adds to it [%]), or the screening status.
     """
     sel, e0, accepted = selection.selector, selection.heldout_before_W, final.accepted
+    implausible = implausible or {}
     e_acc = sel.cv(final.chosen)
+    set_rule = _set_rejection(selection, final, margin, min_explained)
     out = []
     for info in selection.candidates:
-        if info["name"] in accepted:
+        name = info["name"]
+        if name in accepted:
             info = {**info, "status": "accepted"}
+        elif name in implausible:
+            info = {**info, "status": f"implausible: {implausible[name]}"}
         elif info["status"] != "candidate":
             pass
         elif e0 * e0 - noise_W * noise_W <= 0:
             info = {**info, "status": "rejected: no structure above the noise"}
         elif accepted:
-            add = min(sel.cv(final.chosen + (j,)) for j in cands.columns_of(info["name"]))
+            add = min(sel.cv(final.chosen + (j,)) for j in cands.columns_of(name))
             gain = 100.0 * (1.0 - add / e_acc)
             info = {**info, "heldout_gain_added_pct": gain,
                     "status": (f"rejected: adds {gain:.1f} % to {', '.join(accepted)} "
                                f"(margin {100 * margin:.0f} %)")}
         else:
-            g, x = info["heldout_gain_alone_pct"], info["explained_structure_alone"]
-            info = {**info, "status": (f"rejected: held-out gain {g:.1f} % " + (
-                f"< margin {100 * margin:.0f} %" if g < 100 * margin else
-                f"but explains only {100 * x:.0f} % of the structure "
-                f"(< {100 * min_explained:.0f} %)"))}
+            info = {**info, "status": _alone_status(info, set_rule, margin, min_explained)}
         out.append(info)
     return out
+
+
+def _alone_status(info: dict, set_rule, margin: float, min_explained: float) -> str:
+    """Why a candidate was rejected when no effect was accepted."""
+    g, x = info["heldout_gain_alone_pct"], info["explained_structure_alone"]
+    if set_rule is not None and info["name"] in set_rule[0]:
+        return f"rejected: held-out gain {g:.1f} % alone, but {set_rule[1]}"
+    if g < 100 * margin:
+        return f"rejected: held-out gain {g:.1f} % < margin {100 * margin:.0f} %"
+    if set_rule is not None:
+        return f"rejected: held-out gain {g:.1f} % alone; not selected ({set_rule[1]})"
+    return (f"rejected: held-out gain {g:.1f} % but explains only {100 * x:.0f} % of the "
+            f"structure (< {100 * min_explained:.0f} %)")
 
 
 def table3_rows(s: Samples, p_without: np.ndarray, p_with: np.ndarray) -> list[dict]:

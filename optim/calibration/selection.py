@@ -6,10 +6,13 @@ on the calibration's Jacobian (free, unpenalised) and the candidate columns
 [1] ranks the effects; leave-one-run-out cross-validation on per-run Gram
 matrices judges supports exactly and fast (:class:`LeaveOneRunOutSelector`,
 inner problems by :func:`box_lstsq` [3]). Forward selection adds the effect
-that lowers the held-out RMSE most while it lowers it by the margin *and*
-explains at least ``min_explained`` of the held-out structure above the noise;
+that lowers the held-out RMSE most while each addition lowers it by the margin;
 backward pruning then drops any effect that no longer brings the margin in the
-final set (:func:`stepwise_selection`).
+final set; the set kept must together explain at least ``min_explained`` of
+the held-out structure above the noise, or nothing is accepted
+(:func:`stepwise_selection`). Folds are the cross-validation groups (the runs
+unless the data say otherwise); a base parameter a fold cannot identify keeps
+its all-data value there (its linearised coefficient is held at zero).
 
 References
 ----------
@@ -150,31 +153,41 @@ class LeaveOneRunOutSelector:
     r : array, shape (n,)
         Residual of the calibration [W].
     run_code : array of int, shape (n,)
-        Run of each sample.
+        Cross-validation group of each sample (the run by default).
     nonneg : array of bool, shape (k,)
         Column j's coefficient must be >= 0.
     group : array of int, shape (k,)
         Effect of each column.
+    hold : dict, optional
+        Fold (group code) -> calibration columns held at zero in that fold (the
+        parameters its training data cannot identify).
     """
 
     def __init__(self, J: np.ndarray, F: np.ndarray, r: np.ndarray, run_code: np.ndarray,
-                 nonneg: np.ndarray, group: np.ndarray):
+                 nonneg: np.ndarray, group: np.ndarray, hold: dict | None = None):
         self.q = J.shape[1]
         X = np.column_stack([J, F])
-        sc = np.sqrt(np.mean(X * X, axis=0))
+        sc = np.sqrt(np.einsum("ij,ij->j", X, X) / max(1, len(X)))  # RMS, no n x p temporary
         self.scale = np.where(sc > 0, sc, 1.0)
-        X = X / self.scale
+        X /= self.scale
         self.k = F.shape[1]
         self.nonneg = np.asarray(nonneg, bool)
         self.group = np.asarray(group)
         self.runs = np.unique(run_code)
+        self.hold = {int(c): tuple(v) for c, v in (hold or {}).items()}
         self.G, self.h, self.s, self.n = {}, {}, {}, {}
+        code = np.asarray(run_code)
+        if np.all(code[1:] >= code[:-1]):  # groups contiguous (runs): slices, no copies
+            lo, hi = np.searchsorted(code, self.runs), np.searchsorted(code, self.runs, "right")
+            part = {c: slice(a, b) for c, a, b in zip(self.runs, lo, hi, strict=True)}
+        else:
+            part = {c: code == c for c in self.runs}
         for c in self.runs:
-            m = run_code == c
-            self.G[c] = X[m].T @ X[m]
-            self.h[c] = X[m].T @ r[m]
-            self.s[c] = float(r[m] @ r[m])
-            self.n[c] = int(m.sum())
+            Xc, rc = X[part[c]], r[part[c]]
+            self.G[c] = Xc.T @ Xc
+            self.h[c] = Xc.T @ rc
+            self.s[c] = float(rc @ rc)
+            self.n[c] = len(rc)
         self.Gt = sum(self.G.values())
         self.ht = sum(self.h.values())
         self.nt = sum(self.n.values())
@@ -210,7 +223,12 @@ class LeaveOneRunOutSelector:
             sse = 0.0
             for c in self.runs:
                 ntr = self.nt - self.n[c]
-                x = box_lstsq((self.Gt - self.G[c]) / ntr, (self.ht - self.h[c]) / ntr, lo, hi)
+                lo_c, hi_c = lo, hi
+                if self.hold.get(int(c)):
+                    lo_c, hi_c = lo.copy(), hi.copy()
+                    lo_c[list(self.hold[int(c)])] = hi_c[list(self.hold[int(c)])] = 0.0
+                x = box_lstsq((self.Gt - self.G[c]) / ntr, (self.ht - self.h[c]) / ntr, lo_c,
+                              hi_c)
                 sse += max(0.0, self.s[c] - 2 * x @ self.h[c] + x @ self.G[c] @ x)
             self._cache[key] = math.sqrt(sse / self.nt)
         return self._cache[key]
@@ -246,10 +264,11 @@ class LeaveOneRunOutSelector:
             lambda / lambda_max [-] and the candidate columns with a coefficient
             above 1e-4 of the residual's RMS [W] (the columns have unit RMS).
         """
-        if self.k == 0:
+        rms = math.sqrt(sum(self.s.values()) / self.nt)
+        if self.k == 0 or not rms > 0:
             return []
         G = self.Gt / self.nt
-        h = self.ht / self.nt
+        h = self.ht / self.nt / rms  # the residual at unit RMS: same supports, any scale
         lo0, hi0 = self._bounds(frozenset())
         x0 = box_lstsq(G, h, lo0, hi0)
         grad = 2 * (h - G @ x0)[self.q:]
@@ -262,7 +281,7 @@ class LeaveOneRunOutSelector:
         lo, hi = self._bounds(frozenset(range(self.k)))
         lasso = SignConstrainedLasso(L.T, solve_triangular(L, h, lower=True), lo, hi)
         path = []
-        tol = 1e-4 * math.sqrt(sum(self.s.values()) / self.nt)
+        tol = 1e-4
         for lam in lam_max * np.logspace(0, -3, n_lambda):
             x = lasso.solve(np.concatenate([np.zeros(self.q), np.full(self.k, lam)]))
             sup = tuple(int(j) for j in np.nonzero(np.abs(x[self.q:]) > tol)[0])
@@ -285,24 +304,76 @@ class StepwiseResult:
     chosen : tuple of int
         Candidate columns kept.
     log : list of dict
-        One record per forward step (held-out RMSE [W], gain [%], explained
-        share [-], accepted) and per pruned column.
+        One record per forward step (held-out RMSE [W], gain [%], share of the
+        current and of the initial structure explained [-], accepted, and the
+        rule that rejected it), per pruned column, and the structure check.
     """
 
     chosen: tuple[int, ...]
     log: list[dict]
 
 
+def _prune(sel: LeaveOneRunOutSelector, cands: Candidates, chosen: tuple[int, ...],
+           margin: float, log: list[dict]) -> tuple[int, ...]:
+    """Backward pruning: drop a column that no longer brings the margin in the set."""
+    changed = True
+    while changed and len(chosen) > 1:
+        changed = False
+        for j in chosen:
+            rest = tuple(i for i in chosen if i != j)
+            if sel.cv(rest) * (1 - margin) < sel.cv(chosen):
+                chosen = rest
+                changed = True
+                log.append({"step": "prune", "dropped": cands.label(j)})
+                break
+    return chosen
+
+
+def _best_pair(sel: LeaveOneRunOutSelector, cands: Candidates, chosen: tuple[int, ...],
+               trials: dict[int, float], e_cur: float, margin: float
+               ) -> tuple[int, int] | None:
+    """Two columns of two new effects that bring the margin together when neither does alone.
+
+    The pair with the lowest held-out RMSE among the columns of ``trials``; it is
+    returned only if it lowers the held-out RMSE by ``margin`` and each of its
+    two columns brings the margin against the other alone (each is needed).
+    """
+    name = cands.name
+    cols = sorted(trials)
+    best, e_best = None, np.inf
+    for a in range(len(cols)):
+        for b in range(a + 1, len(cols)):
+            i, j = cols[a], cols[b]
+            if name[i] != name[j]:
+                e = sel.cv(chosen + (i, j))
+                if e < e_best:
+                    best, e_best = (i, j), e
+    if best is None or e_best > e_cur * (1.0 - margin):
+        return None
+    i, j = best
+    if e_best > min(trials[i], trials[j]) * (1.0 - margin):
+        return None
+    return best
+
+
 def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float,
                        entry: dict[str, float], noise_W: float, margin: float,
-                       min_explained: float, max_effects: int) -> StepwiseResult:
-    """Forward selection on the held-out RMSE, then backward pruning.
+                       min_explained: float, max_effects: int,
+                       exclude: frozenset[str] | set[str] = frozenset()) -> StepwiseResult:
+    """Forward selection on the held-out RMSE, backward pruning, then the structure check.
 
-    Each step adds the column (of an effect not yet in) with the lowest
-    held-out RMSE; near-ties (0.1 %) go to the effect the lasso path takes in
-    first. The step is accepted if the RMSE falls by ``margin`` and the step
-    explains ``min_explained`` of the structure above the noise. Then each
-    chosen column must still bring the margin in the final set, or it is dropped.
+    Each step adds the column (of an effect not yet in and not excluded) with
+    the lowest held-out RMSE; near-ties (0.1 %) go to the effect the lasso path
+    takes in first. The step is accepted if it lowers the held-out RMSE by
+    ``margin``; if no single column does, the best pair of two new effects is
+    taken instead when it brings the margin and each of the two brings it
+    against the other (two effects can cancel in the calibration's fit so that
+    neither shows alone). Selection goes on while steps are accepted, up to
+    ``max_effects``. Then each chosen column must still bring the margin in the
+    final set, or it is dropped. Last, the set kept must together explain
+    ``min_explained`` of the held-out structure above the noise (measured from
+    the calibration alone, so that two or three effects of similar size, none
+    of which explains half alone, are all found); otherwise nothing is accepted.
 
     Parameters
     ----------
@@ -315,9 +386,12 @@ def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float
     noise_W : float
         Noise level [W].
     margin, min_explained : float
-        Required relative fall of the held-out RMSE and explained share [-].
+        Required relative fall of the held-out RMSE per step and explained share
+        of the set [-].
     max_effects : int
         Most effects accepted together.
+    exclude : set of str
+        Effects not to select (implausible, or not applicable to these data).
 
     Returns
     -------
@@ -327,31 +401,37 @@ def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float
     chosen: tuple[int, ...] = ()
     e_cur = e0
     log = []
-    while len({name[j] for j in chosen}) < min(max_effects, len(cands.usable)):
+    n_max = min(max_effects, len(set(cands.usable) - set(exclude)))
+    while len({name[j] for j in chosen}) < n_max:
         taken = {name[j] for j in chosen}
-        trials = {j: sel.cv(chosen + (j,)) for j in range(len(name)) if name[j] not in taken}
+        trials = {j: sel.cv(chosen + (j,)) for j in range(len(name))
+                  if name[j] not in taken and name[j] not in exclude}
         best = min(trials, key=lambda j: (round(trials[j] / e_cur, 3), -entry.get(name[j], 0.0)))
-        e_new = trials[best]
+        add, e_new = (best,), trials[best]
+        ok = 1.0 - e_new / e_cur >= margin
+        if not ok and n_max - len(taken) >= 2:  # look ahead: two effects only found together
+            pair = _best_pair(sel, cands, chosen, trials, e_cur, margin)
+            if pair is not None:
+                add, e_new, ok = pair, sel.cv(chosen + pair), True
         gain = 1.0 - e_new / e_cur
-        explained = _explained(e_cur, e_new, noise_W)
-        ok = gain >= margin and explained >= min_explained
-        log.append({"step": len(chosen) + 1, "best": cands.label(best), "heldout_rmse_W": e_new,
-                    "gain_pct": 100 * gain, "explained_structure": explained,
-                    "accepted": bool(ok)})
+        rec = {"step": len(chosen) + 1, "best": " + ".join(cands.label(j) for j in add),
+               "heldout_rmse_W": e_new, "gain_pct": 100 * gain,
+               "explained_structure": _explained(e_cur, e_new, noise_W),
+               "explained_total": _explained(e0, e_new, noise_W), "accepted": bool(ok)}
+        log.append(rec if ok else {**rec, "rejected_by": "margin"})
         if not ok:
             break
-        chosen = chosen + (best,)
+        chosen = chosen + add
         e_cur = e_new
-    changed = True
-    while changed and len(chosen) > 1:
-        changed = False
-        for j in chosen:
-            rest = tuple(i for i in chosen if i != j)
-            if sel.cv(rest) * (1 - margin) < sel.cv(chosen):
-                chosen = rest
-                changed = True
-                log.append({"step": "prune", "dropped": cands.label(j)})
-                break
+    chosen = _prune(sel, cands, chosen, margin, log)
+    if chosen:
+        total = _explained(e0, sel.cv(chosen), noise_W)
+        ok = total >= min_explained
+        log.append({"step": "structure", "effects": [cands.label(j) for j in chosen],
+                    "explained_total": total, "accepted": bool(ok),
+                    **({} if ok else {"rejected_by": "structure"})})
+        if not ok:
+            chosen = ()
     return StepwiseResult(chosen, log)
 
 
@@ -409,7 +489,9 @@ class Selection:
     chosen : tuple of int
         Columns selected.
     log : list of dict
-        Forward and pruning steps.
+        Forward and pruning steps, and the structure check.
+    exclude : frozenset of str
+        Effects that were not selectable.
     """
 
     selector: LeaveOneRunOutSelector
@@ -419,11 +501,14 @@ class Selection:
     candidates: list[dict]
     chosen: tuple[int, ...]
     log: list[dict]
+    exclude: frozenset[str] = frozenset()
 
 
 def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
                    cands: Candidates, noise_W: float, margin: float, min_explained: float,
-                   max_effects: int) -> Selection:
+                   max_effects: int, exclude: frozenset[str] = frozenset(),
+                   hold: dict | None = None, selector: LeaveOneRunOutSelector | None = None
+                   ) -> Selection:
     """Lasso path, held-out scores and stepwise selection of the candidate columns.
 
     Parameters
@@ -433,7 +518,7 @@ def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
     residual : array, shape (n,)
         Residual of the calibration [W].
     run_code : array of int
-        Run of each sample.
+        Cross-validation group of each sample (the run by default).
     cands : Candidates
     noise_W : float
         Noise level [W].
@@ -441,13 +526,19 @@ def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
         Acceptance thresholds [-].
     max_effects : int
         Most effects accepted together.
+    exclude : frozenset of str
+        Effects not to select.
+    hold : dict, optional
+        Fold -> calibration columns held at zero (:class:`LeaveOneRunOutSelector`).
+    selector : LeaveOneRunOutSelector, optional
+        One already built on these data (its cache is reused).
 
     Returns
     -------
     Selection
     """
-    sel = LeaveOneRunOutSelector(jac, cands.columns, residual, run_code,
-                                 np.array(cands.nonneg, bool), cands.group)
+    sel = selector or LeaveOneRunOutSelector(jac, cands.columns, residual, run_code,
+                                             np.array(cands.nonneg, bool), cands.group, hold)
     e0 = sel.cv(())
     path = sel.lasso_path()
     entry: dict[str, float] = {}
@@ -458,5 +549,5 @@ def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
              for lam, sup in path]
     scored = score_alone(cands, sel, e0, noise_W, entry)
     steps = stepwise_selection(sel, cands, e0, entry, noise_W, margin, min_explained,
-                               max_effects)
-    return Selection(sel, e0, entry, lasso, scored, steps.chosen, steps.log)
+                               max_effects, exclude)
+    return Selection(sel, e0, entry, lasso, scored, steps.chosen, steps.log, frozenset(exclude))

@@ -3,7 +3,12 @@
 A delete-one-run jackknife [1] over the leave-one-run-out folds gives each
 parameter's variance; the oil-free baseline's own error, shared by every oil
 run of its T and so invisible to the jackknife, is propagated linearly and
-added [2]; the interval uses Student's t with (runs - 1) degrees of freedom.
+added [2]; the interval uses Student's t with (folds - 1) degrees of freedom.
+Parameters that must be positive (C, the scale) get their interval in log space
+(jackknife of ln C, then exponentiated: the interval never includes zero or
+negative values). A parameter some folds could not identify (held at its
+all-data value there) gets its interval from the other folds only, and none
+with fewer than 3.
 
 References
 ----------
@@ -21,7 +26,8 @@ from scipy import stats
 from oilgap.model.measured_data import Samples
 
 from .baseline import BaselineFit
-from .least_squares import BASE_PARAMS, BaseSpec, ModelFit
+from .least_squares import BaseSpec, ModelFit
+from .spec import LOG_PARAMS
 
 
 def jackknife_ci(full: np.ndarray, folds: np.ndarray, extra_var: np.ndarray | None = None,
@@ -80,8 +86,8 @@ def baseline_variance(fit: ModelFit, spec: BaseSpec, s: Samples,
     Returns
     -------
     array
-        Variances of C (not ln C) [-], the other free parameters [-] and the
-        effect coefficients (library unit squared).
+        Variances of C or the scale (not their logarithms) [-], the other free
+        parameters [-] and the effect coefficients (library unit squared).
     """
     p = fit.jac.shape[1] if fit.jac is not None else 0
     if not baselines or fit.jac is None:
@@ -96,40 +102,55 @@ def baseline_variance(fit: ModelFit, spec: BaseSpec, s: Samples,
         cov += B @ b.cov @ B.T
     var = np.diag(cov).copy()
     q = len(spec.free)
-    if "C" in spec.free:  # ln C -> C
-        i = spec.free.index("C")
-        var[i] *= spec.law(fit.x).C ** 2
+    vals = spec.values(fit.x)
+    for i, k in enumerate(spec.free):  # ln C -> C, ln scale -> scale
+        if k in LOG_PARAMS:
+            var[i] *= vals[k] ** 2
     var[q:] /= fit.scale ** 2
     return var
 
 
 def parameter_ci(spec: BaseSpec, fit: ModelFit, folds: list[ModelFit], s: Samples,
-                 baselines: dict[float, BaselineFit]) -> dict:
-    """95 % interval of each Eq. 8 parameter ("fixed" if not fitted).
+                 baselines: dict[float, BaselineFit],
+                 held: list[tuple[str, ...]] | None = None) -> dict:
+    """95 % interval of each base parameter ("fixed" if not fitted).
+
+    C and the scale are handled as ln C and ln scale (the solver's unknowns): the
+    jackknife and the baseline's variance (``var(C) / C^2``) in log space, the
+    bounds exponentiated [1], [2].
 
     Parameters
     ----------
     spec : BaseSpec
     fit : ModelFit
-        All-runs fit.
+        All-data fit.
     folds : list of ModelFit
-        Fit without each run.
+        Fit without each group.
     s : Samples
     baselines : dict
         T -> BaselineFit.
+    held : list of tuple of str, optional
+        Per fold, the parameters it held at the all-data value (left out of
+        that parameter's jackknife).
 
     Returns
     -------
     dict
-        C, alpha, beta, gamma -> [lo, hi] [-] or "fixed".
+        Parameter -> [lo, hi] [-] (NaN bounds: no interval), or "fixed".
     """
     vals = spec.values(fit.x)
-    full = np.array([vals[k] for k in spec.free])
-    fv = np.array([[spec.values(f.x)[k] for k in spec.free] for f in folds])
     extra = baseline_variance(fit, spec, s, baselines)[:len(spec.free)]
-    lo, hi = jackknife_ci(full, fv, extra)
-    return {k: ([float(lo[spec.free.index(k)]), float(hi[spec.free.index(k)])]
-                if k in spec.free else "fixed") for k in BASE_PARAMS}
+    held = held or [()] * len(folds)
+    out = {}
+    for i, k in enumerate(spec.free):
+        log = k in LOG_PARAMS
+        ev = extra[i] / vals[k] ** 2 if log else extra[i]
+        fv = np.array([[f.x[i]] for f, h in zip(folds, held, strict=True) if k not in h])
+        full = np.array([fit.x[i]])
+        lo, hi = jackknife_ci(full, fv, np.array([ev])) if len(fv) else (full * np.nan,) * 2
+        lo, hi = (np.exp(lo), np.exp(hi)) if log else (lo, hi)
+        out[k] = [float(lo[0]), float(hi[0])]
+    return {k: out.get(k, "fixed") for k in spec.params}
 
 
 def effect_ci(spec: BaseSpec, fit: ModelFit, folds: list[ModelFit], s: Samples,

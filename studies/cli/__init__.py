@@ -29,6 +29,7 @@ COMMANDS: dict[str, str] = {
     "study oil-grade": "oilgap.studies.cli.study_oil_grade",
     "study sweep": "oilgap.studies.cli.study_sweep",
     "loop": "oilgap.studies.cli.loop",
+    "predict": "oilgap.studies.cli.predict",
     "synth": "oilgap.studies.cli.synth",
 }
 """The one dispatch table: command -> module whose ``run(args)`` returns the exit code."""

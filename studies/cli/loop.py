@@ -20,7 +20,8 @@ def run(args: argparse.Namespace) -> int:
     data = load_measured(args.data, oils)
     effects = [e.strip() for e in args.effects.split(",") if e.strip()] if args.effects \
         else None
-    est = LoopEstimator(case=case, margin=args.margin, effects=effects).fit(data)
+    est = LoopEstimator(case=case, margin=args.margin, effects=effects,
+                        base=getattr(args, "base", "eq6"), cv_by=args.cv_by).fit(data)
     paths = write_report(est, args.out, figures=not args.no_figures)
     if args.json:
         print(json.dumps(loop_json(est), indent=2))

@@ -53,7 +53,7 @@ def build_parser() -> argparse.ArgumentParser:
         description="Viscous-loss design tool for oil-filled joints of deep-sea manipulators.")
     sub = parser.add_subparsers(dest="command_name", metavar="COMMAND")
     sub.required = True
-    for add in (add_evaluate, add_optimize, add_study, add_loop, add_synth):
+    for add in (add_evaluate, add_optimize, add_study, add_loop, add_predict, add_synth):
         add(sub)
     return parser
 
@@ -239,8 +239,41 @@ def add_loop(sub) -> None:
     p.add_argument("--margin", type=finite_float, default=0.10,
                    help="held-out RMSE fall an effect must bring (default 0.10)")
     p.add_argument("--effects", metavar="NAME,...", help="consider only these library effects")
+    p.add_argument("--base", choices=("eq6", "power-law"), default="eq6",
+                   help="base model: eq6 = the design tool's Eq. 6 x scale x T^gamma "
+                   "(default); power-law = a free C (delta/R)^alpha Re^beta T^gamma")
+    p.add_argument("--cv-by", metavar="COLUMN", default="run",
+                   help="leave-one-group-out validation over the values of this column of "
+                   "DATA (default: run; e.g. gap_mm, oil)")
     p.add_argument("--no-figures", action="store_true", help="skip the figures")
     p.set_defaults(command="loop")
+
+
+# --------------------------------------------------------------------------- predict
+
+
+def add_predict(sub) -> None:
+    """Register ``oilgap predict``."""
+    p = sub.add_parser(
+        "predict", help="predict the power of new rows with a model fitted by oilgap loop",
+        description="Predict with the model oilgap loop fitted (the 'model' block of its "
+        "loop.json): writes the rows of DATA with predicted_viscous_power_W added (and "
+        "predicted_power_W where an oil-free baseline was fitted: baseline + viscous). DATA "
+        "is in the loop's format without a power column (new operating conditions; without "
+        "time_s each row is a steady point). Rows that cannot be predicted are left empty "
+        "with the reason in prediction_note.")
+    p.add_argument("data", metavar="DATA.csv", help="rows to predict (CSV, or .parquet)")
+    p.add_argument("--model", metavar="loop.json", required=True,
+                   help="loop.json written by oilgap loop (or a bare model document)")
+    p.add_argument("--out", metavar="pred.csv", required=True,
+                   help="output table (CSV, or .parquet)")
+    p.add_argument("--stage", choices=("without_T", "with_T", "with_effect"),
+                   default="with_effect", help="which model (default: with the accepted "
+                   "effects)")
+    p.add_argument("--oils", metavar="OILS.csv", help="oils table for fluids the model does "
+                   "not hold")
+    p.add_argument("--force", action="store_true", help="overwrite an existing --out")
+    p.set_defaults(command="predict")
 
 
 # --------------------------------------------------------------------------- synth

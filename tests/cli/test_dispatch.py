@@ -21,7 +21,8 @@ def test_effect_names_are_the_library_keys():
 
 @pytest.mark.parametrize("argv", [["evaluate"], ["study", "smoothing"], ["study", "pareto"],
                                   ["study", "oil-grade"], ["study", "sweep", "g.csv"],
-                                  ["optimize"], ["loop", "d.csv"], ["synth"]])
+                                  ["optimize"], ["loop", "d.csv"], ["synth"],
+                                  ["predict", "d.csv", "--model", "m.json", "--out", "p.csv"]])
 def test_every_parser_names_a_module_with_run(argv):
     args = build_parser().parse_args(argv)
     assert args.command == " ".join(argv[:2] if argv[0] == "study" else argv[:1])
@@ -32,7 +33,8 @@ def test_every_table_entry_is_reachable_from_the_parser():
     parser = build_parser()
     keys = {parser.parse_args(a).command for a in (
         ["evaluate"], ["optimize"], ["study", "smoothing"], ["study", "pareto"],
-        ["study", "oil-grade"], ["study", "sweep", "g.csv"], ["loop", "d.csv"], ["synth"])}
+        ["study", "oil-grade"], ["study", "sweep", "g.csv"], ["loop", "d.csv"], ["synth"],
+        ["predict", "d.csv", "--model", "m.json", "--out", "p.csv"])}
     assert keys == set(COMMANDS)
 
 

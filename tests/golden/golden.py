@@ -31,6 +31,9 @@ _TIMING_MD = re.compile(r"\d+(?:\.\d+)?\s?(?:s|ms)\b")
 
 GRID_EVAL = "oil,oil_temp_C,depth_m,gap_mm,T\nVG22,2,3000,1.0,4\nVG32,10,1000,0.8,2\nVG15,,,1.2,\n"
 GRID_OPT = "oil,oil_temp_C,torque_min_Nm\nVG22,2,0.5\nVG46,20,0.45\n"
+NEW_POINTS = ("speed_rpm,temp_C,oil,roughness_T\n1000,30,VG150,4\n3000,40,VG320,2\n"
+              "-2000,25,VG680,4\n500,35,VG1000,2\n1500,30,none,4\n")
+"""Steady operating points for ``oilgap predict`` (no power column, one oil-free row)."""
 
 COMMANDS: list[tuple[str, list[str]]] = [
     ("evaluate.json", ["evaluate", "--json"]),
@@ -51,6 +54,8 @@ COMMANDS: list[tuple[str, list[str]]] = [
                          "--no-figures"]),
     ("loop_seal.json", ["loop", "synth_seal.csv", "--out", "loop_seal", "--json",
                         "--no-figures"]),
+    ("predict_seal.txt", ["predict", "new_points.csv", "--model", "loop_seal/loop.json",
+                          "--out", "predict_seal.csv"]),
 ]
 
 
@@ -61,6 +66,7 @@ def produce(out: Path) -> None:
     out.mkdir(parents=True, exist_ok=True)
     (out / "grid.csv").write_text(GRID_EVAL)
     (out / "grid_opt.csv").write_text(GRID_OPT)
+    (out / "new_points.csv").write_text(NEW_POINTS)
     cwd = os.getcwd()
     os.chdir(out)
     try:

@@ -1,18 +1,23 @@
 """The synthetic rig: format, physics from the model, thermal model, effects, noise."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 from scipy.integrate import quad
 
 from oilgap.model.case_io import seed_case
-from oilgap.model.effects import first_order_lag
+from oilgap.model.effects import end_face_disc_power, first_order_lag
 from oilgap.model.errors import InputError
 from oilgap.model.measured_data import REQUIRED_COLUMNS
 from oilgap.model.oils import get_oil
+from oilgap.model.regions import joint_geometry
 from oilgap.model.viscous_loss import clearance_power
 from oilgap.studies.synth import (
     BaselineTruth,
     SynthConfig,
+    fluid_table,
+    polymer_thickened,
     seed_truth_law,
     simulate_truth,
     synthesize,
@@ -139,3 +144,48 @@ def test_baseline_truth_terms_by_hand():
 def test_bad_configuration(bad):
     with pytest.raises(InputError):
         simulate_truth(SynthConfig(**bad))
+
+
+def test_the_truth_is_the_design_tools_smooth_eq6():
+    law = seed_truth_law(seed_case())
+    assert (law.form, law.laminar_law, law.scale, law.alpha) == ("smooth", "couette", 1.0, 0.3)
+    assert law.gamma == seed_case().friction.gamma
+
+
+def test_several_effects_at_once_add_their_terms():
+    # seal (tau |w|) and free end-face discs (k x Pyrhonen's disc loss) injected together:
+    # the injected power is the sum of the two terms at each run's own oil state
+    cfg = SynthConfig(effects={"seal_coulomb_friction": 0.04, "end_face_disc": 3.0},
+                      kind="viscous_power_W", n_samples=200)
+    tr = simulate_truth(cfg)
+    r_o, r_i = joint_geometry(seed_case()).disc_radii_m
+    for i, (name, oil, _) in enumerate(tr["runs"]):
+        nu, _, rho = get_oil(oil).properties(tr["temp_oil_C"][i] + 273.15, 0.0)
+        w = tr["omega"][i]
+        want = 0.04 * np.abs(w) + 3.0 * end_face_disc_power(w, nu, rho, r_o, r_i)
+        assert np.allclose(tr["effect_W"][i], want, rtol=1e-9, atol=1e-12), name
+    assert cfg.resolved().injected() == {"seal_coulomb_friction": 0.04, "end_face_disc": 3.0}
+    # a strength None takes the default; the old single-effect API is the one-entry case
+    one = SynthConfig(effects={"thermal_lag": None}).resolved()
+    assert one.injected() == {"thermal_lag": 4.0}
+    assert SynthConfig(effect="thermal_lag").resolved().injected() == one.injected()
+
+
+def test_effect_and_effects_together_are_refused():
+    with pytest.raises(InputError):
+        SynthConfig(effect="oil_inertia", effects={"thermal_lag": 1.0}).resolved()
+    with pytest.raises(InputError):
+        SynthConfig(effects={"warp_drive": 1.0}).resolved()
+
+
+def test_fluids_override_the_catalogue():
+    thick = polymer_thickened(("VG320",))
+    assert thick[0].polymer_thickened and thick[0].nu40_cSt == get_oil("VG320").nu40_cSt
+    cfg = SynthConfig(oils=("VG320",), fluids=thick)
+    assert cfg.oil("VG320") is thick[0] and cfg.oil("VG150") == get_oil("VG150")
+    table = fluid_table(cfg)
+    assert table["VG320"].polymer_thickened and not table["VG150"].polymer_thickened
+    # same Walther line, so the same simulated record as the plain oil
+    a = simulate_truth(replace(cfg, n_samples=50))
+    b = simulate_truth(SynthConfig(oils=("VG320",), n_samples=50))
+    assert np.array_equal(a["measured_W"], b["measured_W"])

@@ -12,7 +12,15 @@ from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.effects import EFFECTS
 from oilgap.model.viscous_loss import clearance_power
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, seed_truth_law, synthesize
+from oilgap.studies.synth import (
+    DEFAULT_STRENGTH,
+    SynthConfig,
+    fluid_table,
+    polymer_thickened,
+    power_law_truth,
+    seed_truth_law,
+    synthesize,
+)
 
 DATA = Path(__file__).resolve().parents[2] / "data"
 
@@ -30,8 +38,15 @@ WEAKEST_FOUND = {  # measured with benchmarks/detect_loop.py on seeds 0, 1, 2 (R
 
 @cache
 def _fit(cfg: SynthConfig, seed: int = 0, **kw) -> LoopEstimator:
-    case = cfg.case
-    return LoopEstimator(case=case, **kw).fit(synthesize(cfg, seed))
+    # a rig with its own fluids (e.g. polymer-thickened oils) gives the loop that table
+    oils = fluid_table(cfg) if cfg.fluids else None
+    return LoopEstimator(case=cfg.case, oils=oils, **kw).fit(synthesize(cfg, seed))
+
+
+def _config(name, strength):
+    # shear thinning is plausible only in a polymer-thickened oil: the rig's four oils so marked
+    fluids = polymer_thickened() if name == "shear_thinning" else ()
+    return SynthConfig(effect=name, strength=strength, fluids=fluids)
 
 
 def _cut(est):
@@ -42,7 +57,7 @@ def _cut(est):
 @pytest.mark.parametrize("name", list(EFFECTS))
 def test_each_library_effect_is_named_and_halves_the_heldout_error(name):
     strength = DEFAULT_STRENGTH[name]
-    est = _fit(SynthConfig(effect=name, strength=strength))
+    est = _fit(_config(name, strength))
     assert [e.name for e in est.effects_] == [name]
     assert _cut(est) >= 0.5
     e = est.effects_[0]
@@ -54,7 +69,7 @@ def test_each_library_effect_is_named_and_halves_the_heldout_error(name):
 
 @pytest.mark.parametrize("name", list(EFFECTS))
 def test_weakest_stated_strength_is_still_found(name):
-    est = _fit(SynthConfig(effect=name, strength=WEAKEST_FOUND[name]), seed=1)
+    est = _fit(_config(name, WEAKEST_FOUND[name]), seed=1)
     assert [e.name for e in est.effects_] == [name]
     assert _cut(est) >= est.margin
 
@@ -73,10 +88,15 @@ def test_table3_comparison_on_clean_data():
     est = _fit(cfg)
     truth = seed_truth_law(seed_case())
     assert est.effects_ == [] and est.unexplained_ is None
-    for k in ("C", "beta", "gamma"):
+    # the default base model (smooth Eq. 6 x scale x T^gamma) on data made with the
+    # published law: scale 1 and the case's gamma inside their intervals, no finding
+    assert truth.form == "smooth" and truth.scale == 1.0
+    for k in ("scale", "gamma"):
         lo, hi = est.calibration_ci_[k]
         assert lo < getattr(truth, k) < hi, k
-    assert est.calibration_ci_["alpha"] == "fixed"
+    assert est.calibration_["scale"] == pytest.approx(1.0, abs=0.01)
+    assert est.findings_ == []
+    assert est.calibration_ci_["alpha"] == "fixed" and "beta" not in est.calibration_ci_
     assert est.identifiability_["alpha"].startswith("not identifiable")
     assert est.identifiability_["gamma"].startswith("identified")
     # with T the error is the noise; without T it is the published law's
@@ -126,24 +146,42 @@ def test_rig_of_another_geometry_without_region_2():
     assert status["bearing_ball_churning"].startswith("not applicable")
 
 
-def test_gap_sweep_makes_alpha_identifiable():
-    # a rig run at three gaps (gap_mm column), viscous loss measured directly
+def _gap_sweep(case, truth, gaps=(0.8, 1.0, 1.4)):
+    """A rig run at several gaps (gap_mm column), viscous loss measured directly."""
     frames = []
-    base = seed_case()
-    for gap_mm in (0.8, 1.0, 1.4):
-        r1 = base.region1
+    for gap_mm in gaps:
+        r1 = case.region1
         d = gap_mm * 1e-3 - r1.gap
-        case = replace(base, region1=replace(r1, T3=r1.T3 + d, T4=r1.T4 + d, T4_unfilled=r1.T4 + d))
-        df = synthesize(SynthConfig(case=case, kind="viscous_power_W", n_samples=500,
-                                    truth=seed_truth_law(base)), seed=int(gap_mm * 10))
+        c = replace(case, region1=replace(r1, T3=r1.T3 + d, T4=r1.T4 + d, T4_unfilled=r1.T4 + d))
+        df = synthesize(SynthConfig(case=c, kind="viscous_power_W", n_samples=500, truth=truth),
+                        seed=int(gap_mm * 10))
         df["run"] = df["run"] + f"-g{gap_mm:g}"
         df["gap_mm"] = gap_mm
         frames.append(df)
-    est = LoopEstimator().fit(pd.concat(frames, ignore_index=True))
+    return pd.concat(frames, ignore_index=True)
+
+
+def test_gap_sweep_makes_alpha_identifiable():
+    # the power-law base on power-law data: alpha from the three region-1 gap ratios
+    base = seed_case()
+    est = LoopEstimator(base="power-law").fit(_gap_sweep(base, power_law_truth(base)))
     assert est.identifiability_["alpha"].startswith("identified")
     lo, hi = est.calibration_ci_["alpha"]
     assert lo < 0.3 < hi and hi - lo < 0.2
     assert est.effects_ == []
+    # the Eq. 6 base with the published laminar branch ("bilgen-boulos" laminar law): region
+    # 1 follows x^alpha, alpha is identified and its interval holds the published 0.3
+    bb = replace(base, friction=replace(base.friction, laminar_law="bilgen-boulos"))
+    est = LoopEstimator(case=bb).fit(_gap_sweep(bb, seed_truth_law(bb)))
+    assert est.identifiability_["alpha"].startswith("identified")
+    lo, hi = est.calibration_ci_["alpha"]
+    assert lo < 0.3 < hi and hi - lo < 0.1
+    # with the Couette laminar law region 1 is laminar Couette at these gaps (Eq. 6 lies
+    # 5-25 % below it): no alpha in it, so alpha is fixed and says why
+    est = LoopEstimator().fit(_gap_sweep(base, seed_truth_law(base)))
+    assert est.identifiability_["alpha"].startswith("not identifiable: region 1 follows the "
+                                                     "Couette bound")
+    assert est.calibration_ci_["alpha"] == "fixed" and est.effects_ == []
 
 
 def test_one_step_folds_agree_with_full_refits():
@@ -163,12 +201,14 @@ def test_predict_reproduces_the_fit_and_takes_new_data():
     cfg = SynthConfig(effect="sensor_delay")
     df = synthesize(cfg, 0)
     est = _fit(cfg)
-    p = est.predict(df)
-    assert np.allclose(p.to_numpy(), est.pred_["with_effect"], rtol=1e-10)
-    assert np.allclose(est.predict(df, "with_T").to_numpy(), est.pred_["with_T"])
-    # another seed of the same rig: the fitted model predicts it to the noise
+    p = est.predict(df)  # aligned with df's rows; oil-free rows NaN
+    rows = est.data_.frame["line"].to_numpy()[est.samples_.index] - 2
+    assert np.allclose(p.to_numpy()[rows], est.pred_["with_effect"], rtol=1e-10)
+    assert np.allclose(est.predict(df, "with_T").to_numpy()[rows], est.pred_["with_T"])
+    # another seed of the same rig: the fitted model (baseline + viscous) predicts its
+    # electrical power to the noise
     new = synthesize(cfg, 7)
-    est_new = est.predict(new)
-    md = est._as_data(new)
-    s = est._samples(md, est.baselines_)
-    assert np.sqrt(np.mean((s.viscous_W - est_new.to_numpy()) ** 2)) < 1.2 * cfg.noise_power_W
+    t = est.fitted_model().predict_table(new)
+    err = (new["power_W"] - t["predicted_power_W"]).dropna().to_numpy()
+    assert len(err) == 8 * cfg.n_samples
+    assert np.sqrt(np.mean(err ** 2)) < 1.2 * cfg.noise_power_W

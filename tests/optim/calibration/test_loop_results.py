@@ -130,3 +130,34 @@ def test_json_pieces():
                                                                  "eta2": 0.2}}}
     assert law_dict(LAW) == {"form": "power-law", "laminar_law": "couette", "gamma": 0.0,
                              "scale": 1.0, "C": 9.0, "alpha": 0.3, "beta": -1.0}
+
+
+def test_the_status_names_the_rule_that_rejected():
+    # issue 9: "held-out gain 16.4 % < margin 10 %" when the structure rule rejected
+    names = ["a", "b"]
+    c = Candidates(info=[], usable=names, columns=np.zeros((2, 2)), name=names,
+                   variant=[None] * 2, nonneg=[True] * 2)
+    scored = [{"name": "a", "status": "candidate", "heldout_gain_alone_pct": 16.4,
+               "explained_structure_alone": 0.3},
+              {"name": "b", "status": "candidate", "heldout_gain_alone_pct": 4.0,
+               "explained_structure_alone": 0.05}]
+    cv = {(): 10.0, (0,): 8.36}
+    log = [{"step": 1, "best": "a", "accepted": True},
+           {"step": "structure", "effects": ["a"], "explained_total": 0.3, "accepted": False,
+            "rejected_by": "structure"}]
+    sel = Selection(_Selector(cv), 10.0, {}, [], scored, (), log)
+    st = {d["name"]: d["status"] for d in candidate_statuses(c, sel, _final(2), 1.0, 0.1, 0.5)}
+    assert st["a"] == ("rejected: held-out gain 16.4 % alone, but the effects selected together "
+                       "(a) explain only 30 % of the held-out structure above the noise (< 50 %)")
+    assert st["b"] == "rejected: held-out gain 4.0 % < margin 10 %"
+    # the nonlinear refit's check
+    fin = _final(2)
+    fin.log.append({"step": "nonlinear check", "rejected": ["a"], "gain_pct": 6.0})
+    sel = Selection(_Selector(cv), 10.0, {}, [], scored, (), log[:1])
+    st = {d["name"]: d["status"] for d in candidate_statuses(c, sel, fin, 1.0, 0.1, 0.5)}
+    assert st["a"] == ("rejected: held-out gain 16.4 % alone, but the nonlinear refit of a "
+                       "lowers the held-out RMSE by only 6.0 % (< margin 10 %)")
+    # an implausible fit
+    st = {d["name"]: d["status"] for d in candidate_statuses(
+        c, sel, _final(2), 1.0, 0.1, 0.5, {"a": "k = 99 outside the plausible 0..3"})}
+    assert st["a"] == "implausible: k = 99 outside the plausible 0..3"

@@ -128,7 +128,10 @@ def test_forward_selection_stops_at_the_margin():
     sel = LeaveOneRunOutSelector(J, F, r, code, np.zeros(4, bool), np.arange(4))
     out = stepwise_selection(sel, c, sel.cv(()), {}, 0.05, 0.1, 0.5, 3)
     assert out.chosen == (1,)
-    assert [s["accepted"] for s in out.log] == [True, False]
+    assert [s["accepted"] for s in out.log] == [True, False, True]
+    assert out.log[1]["rejected_by"] == "margin"
+    # the set kept explains the structure above the noise: the last record says so
+    assert out.log[2]["step"] == "structure" and out.log[2]["effects"] == ["u"]
     assert out.log[0]["best"] == "u"
     assert out.log[0]["gain_pct"] == pytest.approx(100 * (1 - sel.cv((1,)) / sel.cv(())))
 
@@ -160,3 +163,27 @@ def test_select_effects_records_the_path_and_the_scores_alone():
     assert rec["sine"]["explained_structure_alone"] == pytest.approx(
         (e0 ** 2 - e1 ** 2) / (e0 ** 2 - 0.05 ** 2))
     assert rec["sine"]["best_column"] == "sine"
+
+
+def test_two_effects_that_only_show_together_are_taken_as_a_pair():
+    # a = u + 3s and b = v - 3s share a large part s that cancels in a + b: alone, each
+    # fits mostly s, which the data do not hold, and gains little; together they are exact
+    rng = np.random.default_rng(7)
+    code = np.repeat(np.arange(5), 80)
+    u, v, s, w = (rng.normal(size=code.size) for _ in range(4))
+    J = np.ones((code.size, 1))
+    F = np.column_stack([u + 3 * s, v - 3 * s, w])
+    r = F[:, 0] + F[:, 1] + 0.05 * rng.normal(size=code.size)
+    c = _cands(F, names=("a", "b", "c"))
+    sel = LeaveOneRunOutSelector(J, F, r, code, np.zeros(3, bool), np.arange(3))
+    e0 = sel.cv(())
+    # by hand: each alone gains less than the 10 % margin, the pair nearly all of it
+    assert 1 - sel.cv((0,)) / e0 < 0.1 and 1 - sel.cv((1,)) / e0 < 0.1
+    assert 1 - sel.cv((0, 1)) / e0 > 0.9
+    out = stepwise_selection(sel, c, e0, {}, 0.05, 0.1, 0.5, 3)
+    assert sorted(out.chosen) == [0, 1]
+    assert out.log[0]["best"] == "a + b" and out.log[0]["accepted"]
+    assert out.log[1]["rejected_by"] == "margin"  # c adds nothing
+    # with room for one effect only, no pair is tried: nothing is accepted
+    one = stepwise_selection(sel, c, e0, {}, 0.05, 0.1, 0.5, 1)
+    assert one.chosen == () and one.log[0]["rejected_by"] == "margin"

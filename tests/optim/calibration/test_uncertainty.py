@@ -98,9 +98,15 @@ def test_parameter_and_effect_intervals(samples_factory):
 
     folds = [fit_at(c) for c in (9.0, 10.0, 11.0, 14.0)]
     ci = parameter_ci(spec, fit_at(10.5), folds, s, {})
-    # folds' C: mean 11, squares 4 + 1 + 0 + 9 = 14 -> variance 10.5
-    assert ci["C"] == pytest.approx([10.5 - T_975_3 * math.sqrt(10.5),
-                                     10.5 + T_975_3 * math.sqrt(10.5)], abs=1e-10)
+    # C must be positive: the jackknife is taken on ln C, the bounds exponentiated.
+    # ln 9, ln 10, ln 11, ln 14: mean m, variance (g - 1)/g sum (ln C_i - m)^2, g = 4
+    logs = [math.log(c) for c in (9.0, 10.0, 11.0, 14.0)]
+    m = sum(logs) / 4
+    var = 3 / 4 * sum((v - m) ** 2 for v in logs)
+    half = T_975_3 * math.sqrt(var)
+    assert ci["C"] == pytest.approx([10.5 * math.exp(-half), 10.5 * math.exp(half)], rel=1e-12)
+    # the linear-space interval would reach below zero here; the log-space one cannot
+    assert 10.5 - T_975_3 * math.sqrt(10.5) < 0.2 and ci["C"][0] > 4.0
     assert ci["alpha"] == ci["beta"] == ci["gamma"] == "fixed"
     lo, hi = effect_ci(spec, fit_at(10.5), folds, s, {})
     assert lo.size == 0 and hi.size == 0

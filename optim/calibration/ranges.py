@@ -1,0 +1,275 @@
+"""Stage 3c of the calibration: the physical range of each calibrated parameter, and findings.
+
+Every parameter of the base model carries the range physics and published data
+allow (:data:`PARAM_RANGES`, each with its basis and source). A fitted value
+outside it, a parameter left on its numerical box, or data that show no viscous
+loss at all, is a *finding*: reported in ``loop.json`` and the report, and,
+for a range violation, used as evidence: the estimator holds the parameter at
+its range bound and lets the effect search explain what the free parameter had
+absorbed (:func:`held_values`).
+
+References
+----------
+.. [1] E. Bilgen, R. Boulos, "Functional dependence of torque coefficient of
+   coaxial cylinders on gap width and Reynolds numbers", ASME J. Fluids Eng.
+   95(1):122-126, 1973 (the correlation of seed Eq. 6 against the smooth-cylinder
+   torque data they compiled).
+.. [2] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power
+   for a Deep-Sea Electric Manipulator*, Eqs. 6-9 and Table 3 (gamma = 0.566).
+.. [3] ``shared/reference/physics-notes.md``: published smooth-cylinder
+   measurements disagree with Bilgen-Boulos by tens of percent at small delta/R;
+   Helmholtz's minimum-dissipation bound on grooved clearances.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from oilgap.model.skin_friction import FrictionLaw
+
+from .forward import ForwardModel
+from .least_squares import ModelFit
+from .spec import BaseSpec
+
+
+@dataclass(frozen=True)
+class ParamRange:
+    """Physical range of a calibrated parameter.
+
+    Attributes
+    ----------
+    low, high : float
+        Range [-].
+    basis : str
+        Why.
+    source : str
+        Where the numbers come from.
+    """
+
+    low: float
+    high: float
+    basis: str
+    source: str
+
+    def to_dict(self) -> dict:
+        """JSON form."""
+        return {"range": [self.low, self.high], "basis": self.basis, "source": self.source}
+
+
+PARAM_RANGES = {
+    "scale": ParamRange(
+        0.7, 1.4, "factor on the published Eq. 6 within the scatter of smooth-cylinder torque "
+        "data around the Bilgen-Boulos correlation (tens of percent at small delta/R)",
+        "Bilgen & Boulos 1973 (their correlation against the data they compiled); "
+        "physics notes"),
+    "beta": ParamRange(
+        -1.0, -0.2, "Reynolds slope within the Eq. 6 branches, laminar -1 to turbulent -0.2",
+        "seed Eq. 6; Bilgen & Boulos 1973"),
+    "gamma": ParamRange(
+        0.0, 1.0, "grooves do not lower the loss (gamma >= 0, the seed's grooved runs lose "
+        "more); above 1 the factor T^gamma would grow faster than T itself, about twice the "
+        "one published fit (0.566), which no groove mechanism of the seed supports (in "
+        "creeping flow grooves cannot raise the loss at all, so gamma > 0 is already a "
+        "calibration proxy)", "seed Table 3 and Eq. 8; physics notes (Helmholtz bound)"),
+    "alpha": ParamRange(
+        0.0, 0.5, "gap-ratio exponent near the 0.3 of every Eq. 6 branch: 0 for the exact "
+        "laminar Couette torque at narrow gaps, nothing in the compiled smooth-cylinder data "
+        "above 0.5", "Bilgen & Boulos 1973; seed Eq. 6"),
+}
+"""Physical range of each calibrated parameter, with its basis and source. The power-law
+base's C is judged through its effective scale on the data (:func:`effective_scale`)."""
+
+WHAT_IT_MEANS = {
+    ("scale", "high"): "an effect that scales like the laminar loss may be absorbed",
+    ("scale", "low"): "the loss is below the published law: a wrong viscosity, a baseline "
+                      "that takes too much, or a loss-reducing effect may be absorbed",
+    ("beta", "high"): "the free slope makes the loss grow faster with speed than any Eq. 6 "
+                      "branch: an effect growing faster with speed may be absorbed",
+    ("beta", "low"): "the free slope is steeper than the laminar branch: an effect that "
+                     "grows slower with speed (e.g. Coulomb friction) may be absorbed",
+    ("gamma", "high"): "a loss that grows with the roughness build may be absorbed by T^gamma",
+    ("gamma", "low"): "the grooved build loses less than the smooth one: the T factor may be "
+                      "absorbing a difference between the builds' runs",
+    ("alpha", "high"): "the gap dependence is steeper than the smooth-cylinder data: a loss "
+                       "that differs between gaps may be absorbed",
+    ("alpha", "low"): "the loss falls with a wider gap faster than laminar Couette flow: a "
+                      "loss that differs between gaps may be absorbed",
+}
+"""What a parameter outside its range may mean (parameter, side) -> text."""
+
+
+def effective_scale(model: ForwardModel, fit_law: FrictionLaw, laminar_law: str) -> float:
+    """Least-squares ratio of a fitted law's power to the published Eq. 6 power [-].
+
+    ``p_fit' p_pub / p_pub' p_pub`` with p_pub the smooth Eq. 6 (case's laminar
+    law, scale 1, alpha 0.3) at the fitted gamma: the scale a power-law fit
+    amounts to on these data.
+
+    Parameters
+    ----------
+    model : ForwardModel
+    fit_law : FrictionLaw
+        The fitted law.
+    laminar_law : str
+        The case's laminar law.
+
+    Returns
+    -------
+    float
+        Effective scale [-] (NaN if the published power vanishes).
+    """
+    p_fit = model.base_power(fit_law)
+    p_pub = model.base_power(FrictionLaw(form="smooth", laminar_law=laminar_law,
+                                         gamma=fit_law.gamma))
+    den = float(p_pub @ p_pub)
+    return float(p_fit @ p_pub) / den if den > 0 else float("nan")
+
+
+def _finding(name: str, value: float, shown: str, rng: ParamRange, held: float | None) -> dict:
+    side = "high" if value > rng.high else "low"
+    txt = (f"{shown} outside its physical range {rng.low:g}..{rng.high:g} ({rng.basis}; "
+           f"{rng.source}): {WHAT_IT_MEANS[(name, side)]}")
+    return {"kind": "out of range", "parameter": name, "value": value,
+            "range": [rng.low, rng.high], "basis": rng.basis, "source": rng.source,
+            "message": txt, "held_at": held}
+
+
+def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> list[dict]:
+    """Findings on a calibration: parameters outside their range or on their box.
+
+    Parameters
+    ----------
+    spec : BaseSpec
+    fit : ModelFit
+        The calibration (free parameters and law).
+    model : ForwardModel
+        The samples (for the power-law base's effective scale).
+
+    Returns
+    -------
+    list of dict
+        ``kind`` ("out of range", "at numerical limit"), ``parameter``, ``value``,
+        ``range`` [-], ``basis``, ``source``, ``message`` and ``held_at`` (the
+        bound it is held at for the evidence trial, or None).
+    """
+    vals = spec.values(fit.x)
+    out = []
+    limit = spec.at_limit(fit.x)
+    for k in limit:
+        out.append({"kind": "at numerical limit", "parameter": k, "value": vals[k],
+                    "message": f"{k} = {vals[k]:.3g} ran to the edge of the solver's box: the "
+                               "data do not identify it (no interval is given)",
+                    "held_at": None})
+    for k in spec.free:
+        if k in limit:
+            continue
+        if k == "C":
+            eff = effective_scale(model, fit.law, spec.laminar_law)
+            rng = PARAM_RANGES["scale"]
+            if np.isfinite(eff) and not rng.low <= eff <= rng.high:
+                bound = rng.high if eff > rng.high else rng.low
+                f = _finding("scale", eff, f"the fitted power law is {eff:.3g}x the published "
+                             "law's power on these data (effective scale)", rng,
+                             vals["C"] * bound / eff)
+                out.append({**f, "parameter": "C", "effective_scale": eff})
+            continue
+        rng = PARAM_RANGES[k]
+        v = vals[k]
+        if not rng.low <= v <= rng.high:
+            shown = (f"the scale is {v:.3g}x the published law" if k == "scale"
+                     else f"{k} = {v:.3g}")
+            out.append(_finding(k, v, shown, rng, rng.high if v > rng.high else rng.low))
+    return out
+
+
+def no_signal_finding(y: np.ndarray, pred: np.ndarray, noise_W: float) -> dict | None:
+    """A finding if the data show no viscous loss the base model can describe.
+
+    The calibrated power is below a tenth of the noise (RMS), or the measured
+    viscous power is not positive on average: the level is then pinned by the
+    noise, not identified, and no interval is given.
+
+    Parameters
+    ----------
+    y : array
+        Measured viscous power [W].
+    pred : array
+        Calibrated model power [W].
+    noise_W : float
+        Noise level [W].
+
+    Returns
+    -------
+    dict or None
+        ``kind`` "no viscous signal", ``message``; None if there is a signal.
+    """
+    p = float(np.sqrt(np.mean(pred * pred))) if len(pred) else 0.0
+    m = float(np.mean(y)) if len(y) else 0.0
+    if p >= 0.1 * noise_W and m > 0 and p > 0:
+        return None
+    return {"kind": "no viscous signal", "parameter": None, "value": p,
+            "message": f"no viscous signal: the calibrated loss is {p:.3g} W RMS against a "
+                       f"noise of {noise_W:.3g} W (mean measured viscous power {m:.3g} W); "
+                       "the calibration is not identified and no interval is given",
+            "held_at": None}
+
+
+def held_values(findings: list[dict]) -> dict[str, float]:
+    """Parameters to hold at their range bound for the evidence trial.
+
+    Parameters
+    ----------
+    findings : list of dict
+        From :func:`parameter_findings`.
+
+    Returns
+    -------
+    dict
+        Parameter -> bound [-]. The level (the scale; C for the power-law base:
+        the C whose effective scale is the bound) is held only if no exponent
+        is: with an exponent held, the level is refitted.
+    """
+    out = {f["parameter"]: float(f["held_at"]) for f in findings
+           if f.get("kind") == "out of range" and f.get("held_at") is not None}
+    if set(out) - {"C", "scale"}:
+        out = {k: v for k, v in out.items() if k not in ("C", "scale")}
+    return out
+
+
+def explained_findings(before: list[dict], after: list[dict], values_after: dict,
+                       accepted: list[str]) -> list[dict]:
+    """Range violations of the calibration without effects that the accepted effects resolve.
+
+    Parameters
+    ----------
+    before : list of dict
+        Findings on the calibration without effects.
+    after : list of dict
+        Findings on the calibration with the accepted effects.
+    values_after : dict
+        Parameters with the effects [-].
+    accepted : list of str
+        The accepted effects.
+
+    Returns
+    -------
+    list of dict
+        The ``before`` range violations whose parameter is in range after, kind
+        "out of range without effects", with what the refit gives.
+    """
+    if not accepted:
+        return []
+    still = {f["parameter"] for f in after}
+    out = []
+    for f in before:
+        k = f["parameter"]
+        if f["kind"] != "out of range" or k in still:
+            continue
+        v = values_after.get(k)
+        now = f"{v:.3g}" if v is not None else "within range"
+        out.append({**f, "kind": "out of range without effects", "held_at": None,
+                    "message": f"{f['message']}; refitted with {', '.join(accepted)} it is "
+                               f"{now}, within its range: the accepted effects explain it"})
+    return out

@@ -1,0 +1,346 @@
+"""Stage 3a of the calibration: the base model and which of its parameters the data identify.
+
+Two base models of the clearance loss (seed Eqs. 6-8):
+
+* ``"eq6"`` (default): the model the design tool uses, the Eq. 6 regime
+  structure in its smooth form (``FrictionLaw(form="smooth")`` with the case's
+  laminar law, as in the NLP) times one ``scale`` (1 = the published law) and
+  ``T^gamma``; the gap-ratio exponent ``alpha`` (0.3 in Eq. 6) is freed only
+  where several region-1 gap ratios identify it.
+* ``"power-law"``: one free power law ``C (delta/R)^alpha Re^beta T^gamma``
+  (Eq. 7/8 with a free slope beta), the model of the seed's Table 3 fit.
+
+Positive parameters (``C``, ``scale``) are fitted as their logarithm. Every
+parameter is kept inside a numerical box (:data:`PARAM_LIMITS`) so that no
+evaluation overflows; a fit that ends on that box is reported, never used as a
+number. :func:`decide_spec` decides from the data which parameters are free;
+:func:`fold_spec` does the same for the training data of one cross-validation
+fold, fixing at the all-data value what that fold cannot identify.
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power
+   for a Deep-Sea Electric Manipulator*, Eqs. 6-9, Table 3.
+.. [2] E. Bilgen, R. Boulos, ASME J. Fluids Eng. 95(1):122-126, 1973.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from oilgap.model.case import DesignCase
+from oilgap.model.measured_data import Samples
+from oilgap.model.regions import JointGeometry
+from oilgap.model.skin_friction import BILGEN_BOULOS_ALPHA, FrictionLaw
+from oilgap.model.taylor_couette import couette_reynolds
+
+BASES = ("eq6", "power-law")
+"""The base models of the calibration."""
+
+BASE_PARAMS = ("C", "alpha", "beta", "gamma")
+"""The parameters of the power-law base, in the order they are reported."""
+
+EQ6_PARAMS = ("scale", "alpha", "gamma")
+"""The parameters of the Eq. 6 base, in the order they are reported."""
+
+LOG_PARAMS = ("C", "scale")
+"""Parameters that must be positive: fitted, and given intervals, as their logarithm."""
+
+PARAM_LIMITS = {"C": (-50.0, 50.0), "scale": (-50.0, 50.0), "alpha": (-3.0, 3.0),
+                "beta": (-3.0, 3.0), "gamma": (-10.0, 10.0)}
+"""Numerical box of each parameter in the solver's unknown (ln C, ln scale) [-]: far
+outside every physical range, it keeps each evaluation finite (x^alpha, Re^beta, exp)."""
+
+START_VALUES = {"C": 10.0, "scale": 1.0, "alpha": BILGEN_BOULOS_ALPHA, "beta": -1.0,
+                "gamma": 0.0}
+"""Start of the free parameters before C (or the scale) is rescaled to the data."""
+
+BETA_MIN_SPREAD = 0.2
+"""Power-weighted standard deviation of ln Re_1 above which beta is identifiable [-]."""
+
+ALPHA_MIN_R2_GAP = 1e-6
+"""alpha is identifiable only if its Jacobian column is not (1 - this) explained by the
+others' (with the Couette laminar law, Eq. 6 may lie below Couette at every sample)."""
+
+
+def _clip(name: str, value: float) -> float:
+    lo, hi = PARAM_LIMITS[name]
+    return min(hi, max(lo, float(value)))
+
+
+@dataclass(frozen=True)
+class BaseSpec:
+    """Which base-model parameters are fitted and the values of the fixed ones.
+
+    Parameters
+    ----------
+    free : tuple of str
+        Fitted parameters, in the base's order (C and scale enter as logarithms).
+    fixed : dict
+        Values of the others [-].
+    base : {"power-law", "eq6"}
+        The base model (:data:`BASES`).
+    laminar_law : {"couette", "bilgen-boulos"}
+        Laminar law of the Eq. 6 base (the case's).
+    """
+
+    free: tuple[str, ...]
+    fixed: dict
+    base: str = "power-law"
+    laminar_law: str = field(default="couette")
+
+    @property
+    def params(self) -> tuple[str, ...]:
+        """All parameters of the base, in their reported order."""
+        return EQ6_PARAMS if self.base == "eq6" else BASE_PARAMS
+
+    def values(self, x: np.ndarray) -> dict:
+        """All parameters by name [-] (positive ones exponentiated, all within the box).
+
+        Parameters
+        ----------
+        x : array
+            Free parameters (C, scale as logarithms) [-].
+
+        Returns
+        -------
+        dict
+            Parameter -> value [-].
+        """
+        v = dict(self.fixed)
+        for name, val in zip(self.free, x, strict=True):
+            val = _clip(name, val)
+            v[name] = math.exp(val) if name in LOG_PARAMS else val
+        return {k: float(v[k]) for k in self.params}
+
+    def law(self, x: np.ndarray) -> FrictionLaw:
+        """Friction law at the free-parameter vector ``x`` [1], [2].
+
+        Parameters
+        ----------
+        x : array
+            Free parameters (C, scale as logarithms) [-].
+
+        Returns
+        -------
+        FrictionLaw
+            ``form="power-law"`` with C, alpha, beta, gamma, or ``form="smooth"`` (the
+            Eq. 6 regime structure) with scale, alpha, gamma.
+        """
+        v = self.values(x)
+        if self.base == "eq6":
+            return FrictionLaw(form="smooth", laminar_law=self.laminar_law, scale=v["scale"],
+                               alpha=v["alpha"], gamma=v["gamma"])
+        return FrictionLaw(form="power-law", C=v["C"], alpha=v["alpha"], beta=v["beta"],
+                           gamma=v["gamma"])
+
+    def start(self, values: dict) -> np.ndarray:
+        """Free-parameter vector from parameter values.
+
+        Parameters
+        ----------
+        values : dict
+            Parameter name -> value [-].
+
+        Returns
+        -------
+        array
+            Free parameters (C, scale as logarithms) [-].
+        """
+        return np.array([math.log(values[k]) if k in LOG_PARAMS else values[k]
+                         for k in self.free], dtype=float)
+
+    def bounds(self) -> tuple[np.ndarray, np.ndarray]:
+        """The numerical box of the free parameters (:data:`PARAM_LIMITS`).
+
+        Returns
+        -------
+        (lo, hi) : arrays
+            Bounds of the solver's unknowns [-].
+        """
+        return (np.array([PARAM_LIMITS[k][0] for k in self.free]),
+                np.array([PARAM_LIMITS[k][1] for k in self.free]))
+
+    def at_limit(self, x: np.ndarray) -> list[str]:
+        """Free parameters that sit on their numerical box (not identified by the data).
+
+        Parameters
+        ----------
+        x : array
+            Free parameters [-].
+
+        Returns
+        -------
+        list of str
+        """
+        lo, hi = self.bounds()
+        tol = 1e-6 * (hi - lo)
+        return [k for k, v, a, b, t in zip(self.free, x, lo, hi, tol, strict=True)
+                if v <= a + t or v >= b - t]
+
+    def holding(self, values: dict) -> BaseSpec:
+        """The same base with some parameters moved from free to fixed.
+
+        Parameters
+        ----------
+        values : dict
+            Parameter -> value it is held at [-].
+
+        Returns
+        -------
+        BaseSpec
+        """
+        return BaseSpec(tuple(k for k in self.free if k not in values),
+                        {**self.fixed, **values}, self.base, self.laminar_law)
+
+
+def cv_groups(s: Samples) -> np.ndarray:
+    """Group code of each sample for cross-validation (``cv_group``, else the run).
+
+    Parameters
+    ----------
+    s : Samples
+
+    Returns
+    -------
+    array of int
+        Group code [-]; samples of one group are left out together.
+    """
+    g = getattr(s, "cv_group", None)
+    return s.run_code if g is None else np.asarray(g)
+
+
+def _log_re_spread(s: Samples, radius1_m: float) -> tuple[float, float]:
+    """Power-weighted sd of ln Re_1 [-] and the largest Re_1 [-] of the samples."""
+    re = couette_reynolds(s.omega, radius1_m, s.gap1_m, s.nu_m2_s)
+    w = np.abs(s.omega) ** 2
+    ok = (re > 0) & (w > 0)
+    if ok.sum() < 2:
+        return 0.0, float(np.max(re, initial=0.0))
+    lre = np.log(re[ok])
+    sd = float(np.sqrt(np.average((lre - np.average(lre, weights=w[ok])) ** 2, weights=w[ok])))
+    return sd, float(re.max())
+
+
+def _distinct(a: np.ndarray, digits: int) -> list[float]:
+    return np.unique(np.round(np.asarray(a, float), digits)).tolist()
+
+
+def identifiable(s: Samples, radius1_m: float) -> dict[str, str | None]:
+    """For gamma, alpha and beta: None if the samples identify it, else the reason.
+
+    gamma needs two values of T, alpha two region-1 gap ratios, beta a spread of
+    ln Re_1 of :data:`BETA_MIN_SPREAD` (power-weighted).
+
+    Parameters
+    ----------
+    s : Samples
+        Samples (T [-], region-1 gap [m], speed [rad/s], nu [m^2/s]).
+    radius1_m : float
+        Region-1 radius [m].
+
+    Returns
+    -------
+    dict
+        gamma, alpha, beta -> None or the reason it is not identifiable.
+    """
+    Ts = _distinct(s.roughness_T, 9)
+    ratios = _distinct(s.gap1_m / radius1_m, 6)
+    sd, _ = _log_re_spread(s, radius1_m)
+    return {"gamma": None if len(Ts) >= 2 else f"one roughness (T = {Ts[0]:g})",
+            "alpha": None if len(ratios) >= 2 else f"one gap ratio (delta/R = {ratios[0]:.4g})",
+            "beta": None if sd >= BETA_MIN_SPREAD else f"Re hardly varies (sd of ln Re = "
+            f"{sd:.2f})"}
+
+
+def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
+                base: str = "power-law") -> tuple[BaseSpec, dict]:
+    """Which base-model parameters the data identify, with the reason for each.
+
+    The level (C or scale) is always fitted; gamma if the samples have two
+    values of T; alpha if they have two region-1 gap ratios; beta (power-law
+    base only) if ln Re_1 spreads by :data:`BETA_MIN_SPREAD`. Fixed ones take
+    the published values (alpha of Eq. 6, beta = -1, gamma = 0 at T = 1 else
+    the case's) [1].
+
+    Parameters
+    ----------
+    s : Samples
+        Oil-run samples.
+    geometry : JointGeometry
+        Rig regions (region 1's radius [m]).
+    case : DesignCase
+        Rig (its friction law's gamma and laminar law).
+    base : {"power-law", "eq6"}
+        Base model.
+
+    Returns
+    -------
+    (BaseSpec, dict)
+        The specification and a statement per parameter.
+    """
+    radius1 = geometry.regions[0].radius_m
+    why = identifiable(s, radius1)
+    level = "scale" if base == "eq6" else "C"
+    stmt = {level: "identified: the level of the loss" + (
+        " (1 = the published Eq. 6)" if base == "eq6" else "")}
+    free = [level]
+    fixed = {"scale": 1.0, "C": 10.0, "alpha": BILGEN_BOULOS_ALPHA, "beta": -1.0,
+             "gamma": case.friction.gamma}
+    Ts = _distinct(s.roughness_T, 9)
+    if why["gamma"] is None:
+        free.append("gamma")
+        stmt["gamma"] = f"identified from the runs at T = {', '.join(f'{t:g}' for t in Ts)}"
+    else:
+        fixed["gamma"] = 0.0 if Ts == [1.0] else case.friction.gamma
+        stmt["gamma"] = (f"not identifiable: every oil run has T = {Ts[0]:g}; fixed at "
+                         f"{fixed['gamma']:g} (only {level} T^gamma is identified)")
+    ratios = _distinct(s.gap1_m / radius1, 6)
+    if why["alpha"] is None:
+        free.append("alpha")
+        stmt["alpha"] = (f"identified from {len(ratios)} region-1 gap ratios "
+                         f"{ratios[0]:.4g}..{ratios[-1]:.4g}")
+    else:
+        stmt["alpha"] = (f"not identifiable: one region-1 gap ratio (delta/R = {ratios[0]:.4g});"
+                         f" fixed at {BILGEN_BOULOS_ALPHA:g} (Eq. 6), {level} absorbs "
+                         "(delta/R)^alpha")
+    if base == "power-law":
+        sd, re_max = _log_re_spread(s, radius1)
+        if why["beta"] is None:
+            free.append("beta")
+            stmt["beta"] = (f"identified from the spread of Re over the data (power-weighted sd"
+                            f" of ln Re_1 = {sd:.2f}; Re_1 up to {re_max:.3g})")
+        else:
+            stmt["beta"] = (f"not identifiable: Re hardly varies (sd of ln Re = {sd:.2f}); "
+                            "fixed at -1 (laminar)")
+    spec_params = EQ6_PARAMS if base == "eq6" else BASE_PARAMS
+    order = [p for p in spec_params if p in free]
+    return BaseSpec(tuple(order), {k: fixed[k] for k in spec_params if k not in order}, base,
+                    case.friction.laminar_law), stmt
+
+
+def fold_spec(spec: BaseSpec, s_train: Samples, radius1_m: float) -> tuple[str, ...]:
+    """Free parameters that the training samples of one fold cannot identify.
+
+    They are fixed at their all-data values in that fold (the level, C or
+    scale, is always identified).
+
+    Parameters
+    ----------
+    spec : BaseSpec
+        The all-data specification.
+    s_train : Samples
+        The fold's training samples.
+    radius1_m : float
+        Region-1 radius [m].
+
+    Returns
+    -------
+    tuple of str
+        Parameters of ``spec.free`` to hold in this fold.
+    """
+    why = identifiable(s_train, radius1_m)
+    return tuple(k for k in spec.free if why.get(k) is not None)

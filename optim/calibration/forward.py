@@ -7,7 +7,8 @@ gap, region 2 at T = 1) with the effects of the library added at given
 coefficients. The joint's regions, the bearing pitch diameter and the rotor's
 end-face radii come from :func:`~oilgap.model.regions.joint_geometry`; the
 effect features from :func:`~oilgap.model.effects.effect_context`; the exact
-shear-thinning form from :func:`~oilgap.model.effects.cross_region_ratios`.
+shear-thinning form evaluates each region's law at the Cross apparent viscosity
+(:func:`~oilgap.model.effects.cross_region_ratios`), in its Reynolds number too.
 
 References
 ----------
@@ -44,7 +45,7 @@ from oilgap.model.units import celsius_to_kelvin
 EXACT_FORMS = ("thermal_lag", "sensor_delay", "shear_thinning")
 """Effects refitted with their full nonlinear form (the regression feature is its first
 order): the first-order lag of the oil temperature, the time shift of the power
-record, the Cross viscosity ratio 1/(1 + lambda^2 gamma_dot^2)."""
+record, the clearance law at the Cross apparent viscosity nu/(1 + lambda^2 gamma_dot^2)."""
 
 SPEED_STEP = 1e-4
 """Relative speed step of the central difference dP/domega [-]."""
@@ -81,7 +82,8 @@ class ForwardModel:
     :meth:`power` gives Eq. 8 per region with the effects of ``coefs`` (name ->
     coefficient in the library's unit): thermal lag moves the oil temperature
     the viscosity follows (the oil's Walther line and density law are evaluated
-    there) [3], shear thinning scales each region by the Cross ratio [2], sensor
+    there) [3], shear thinning evaluates each region at its Cross apparent
+    viscosity (Reynolds number included: ``P mu/mu_0`` only for laminar Couette flow) [2], sensor
     delay shifts the whole record in time, and the others add their library term.
 
     Parameters
@@ -321,6 +323,15 @@ class ForwardModel:
             self._static[name] = EFFECTS[name].feature_values(ctx)
         return self._static[name]
 
+    def _thinned_powers(self, law: FrictionLaw, ctx: EffectContext, lam_s: float
+                        ) -> list[np.ndarray]:
+        """Region powers [W] at the Cross apparent viscosity of each region [2]: the
+        clearance law evaluated at ``nu mu/mu_0`` (its Reynolds number included), which
+        is ``P mu/mu_0`` only in laminar Couette flow."""
+        ratios = cross_region_ratios(ctx, lam_s)
+        return [region_power(r, ctx.omega_rad_s, ctx.nu_m2_s * q, ctx.density_kg_m3, law)
+                for r, q in zip(self.geometry.regions, ratios, strict=True)]
+
     def power(self, law: FrictionLaw, coefs: dict | None = None) -> np.ndarray:
         """Model viscous power [W] per sample.
 
@@ -348,9 +359,10 @@ class ForwardModel:
             pw = [r.power_W for r in ctx.regions]
         else:
             pw = self.region_powers(law, nu=nu, rho=rho)
-        ratios = cross_region_ratios(ctx, math.sqrt(lam2)) if lam2 else [1.0] * len(pw)
-        for p, ratio in zip(pw, ratios, strict=True):
-            total = total + p * ratio
+        if lam2:  # the thinned viscosity enters each region's Reynolds number too
+            pw = self._thinned_powers(law, ctx, math.sqrt(lam2))
+        for p in pw:
+            total = total + p
         for name, c in coefs.items():
             if name in EXACT_FORMS or c == 0.0:
                 continue

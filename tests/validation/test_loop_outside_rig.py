@@ -74,11 +74,6 @@ SINGLE_XFAIL = {
         "excess P ((Re/Re_c)^0.5 - 1); the forward selection then adds seal_coulomb_friction "
         "(tau_c = 0.015 N m, 32 % held-out gain as second step) to soak up the difference, so "
         "a false seal is named with Taylor (held-out cut 63-66 %)"),
-    "shear_thinning": (
-        "the rig's Carreau thinning (n = 0.6) is mostly absorbed by the calibrated scale "
-        "(0.74 instead of 1); the loop's Cross exact form names shear_thinning but the held-out "
-        "cut is 47-54 % and on seed 0 taylor_vortex_onset is added (10.5 % gain) for the "
-        "Carreau-Cross difference"),
 }
 """Effects the current loop does not name alone with a 50 % cut, and why."""
 

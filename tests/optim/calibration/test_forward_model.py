@@ -1,5 +1,7 @@
 """Stage 2, the forward model: Eq. 8 per region and each effect term, checked by hand."""
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -69,6 +71,20 @@ def test_shear_thinning_scales_each_region_by_the_cross_ratio(rig):
     g2 = np.abs(s.omega) * case.region2.radius / case.region2.gap
     want = p1 / (1 + lam2 * g1 ** 2) + p2 / (1 + lam2 * g2 ** 2)
     assert np.allclose(m.power(rig.law, {"shear_thinning": lam2}), want, rtol=1e-12)
+
+
+def test_shear_thinning_enters_the_reynolds_number_of_a_turbulent_law(rig):
+    # P = C Re^beta rho w^3 R^4 L ... with Re = w R delta / nu: thinning nu -> q nu (Cross
+    # q = 1/(1 + lambda^2 g^2)) multiplies P by q^-beta = q^0.5 at beta = -0.5, not by q
+    s, case = rig.samples, rig.case
+    law = replace(rig.law, beta=-0.5)
+    m = ForwardModel(s, case, rig.oils)
+    lam2 = 1e-8
+    p1, p2 = _by_hand(s, case, law)
+    q1 = 1 / (1 + lam2 * (np.abs(s.omega) * case.region1.radius / case.region1.gap) ** 2)
+    q2 = 1 / (1 + lam2 * (np.abs(s.omega) * case.region2.radius / case.region2.gap) ** 2)
+    assert np.allclose(m.power(law, {"shear_thinning": lam2}), p1 * q1 ** 0.5 + p2 * q2 ** 0.5,
+                       rtol=1e-12)
 
 
 def test_sensor_delay_of_one_sample_shifts_each_run_by_one_sample(rig):

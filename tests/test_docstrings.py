@@ -29,7 +29,7 @@ import oilgap.optim
 PACKAGES = (oilgap.model, oilgap.optim)
 
 LAW_MODULES = ["oil_properties", "taylor_couette", "skin_friction", "viscous_loss", "motor",
-               "regions", "thermal", "effects"]
+               "regions", "thermal", "effects", "film_heating"]
 
 UNIT_RE = re.compile(r"\[(-|[^\[\]\n]*[A-Za-z%][^\[\]\n]*)\]")
 """A unit in brackets: ``[-]`` or bracketed text with a letter (not a citation ``[1]``)."""

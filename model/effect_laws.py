@@ -19,7 +19,7 @@ the candidate-effect library (and re-exports them):
 * :func:`first_order_lag`, :func:`thermal_lag_power`: gap oil temperature as a
   first-order lag of the measured temperature [7].
 * :func:`taylor_excess_factor`, :func:`taylor_vortex_power`: torque excess above
-  the critical Taylor number [8], [9], [10].
+  the critical Taylor number [8], [9], [10], [13].
 * :func:`couette_shear_rate`, :func:`cross_viscosity_ratio`,
   :func:`shear_thinning_power`: Cross/Carreau shear thinning [11], [12].
 * :func:`sensor_delay_power`: a power reading that lags the speed reading.
@@ -51,6 +51,9 @@ References
    pseudoplastic systems", J. Colloid Sci. 20:417-437, 1965.
 .. [12] R. B. Bird, R. C. Armstrong, O. Hassager, *Dynamics of Polymeric
    Liquids*, vol. 1, 2nd ed., Wiley 1987, sec. 4.4 (Carreau model).
+.. [13] F. Wendt, "Turbulente Strömungen zwischen zwei rotierenden konaxialen
+   Zylindern", Ing.-Arch. 4:577-595, 1933 (torque ~ Re^1.5 well above onset
+   against the laminar ~ Re: an excess ~ (Ta/Ta_c)^0.5 - 1 in the seed's Ta).
 """
 
 from __future__ import annotations
@@ -382,11 +385,14 @@ def thermal_lag_power(dpower_dtemp_W_K, dtemp_dt_K_s, tau_s):
     return -tau_s * dpower_dtemp_W_K * dtemp_dt_K_s
 
 
-def taylor_excess_factor(taylor, critical=CRITICAL_TAYLOR_NUMBER):
-    """Supercriticality ``max(0, (Ta/Ta_c)^2 - 1)`` [-] of Taylor-vortex flow [8], [9].
+def taylor_excess_factor(taylor, critical=CRITICAL_TAYLOR_NUMBER, exponent=2.0):
+    """Supercriticality ``max(0, (Ta/Ta_c)^m - 1)`` [-] of Taylor-vortex flow [8], [9], [13].
 
-    Ta is the seed's Eq. 3 (``∝ omega``); its square is the classical Taylor
-    number, in which the torque excess grows linearly near onset [9], [10].
+    Ta is the seed's Eq. 3 (``∝ omega``). Two published shapes: near onset the
+    torque excess grows linearly in the classical Taylor number Ta^2 (Stuart
+    [9], Donnelly [10]): ``m = 2`` (the default); well above onset Wendt's
+    torque ~ Re^1.5 against the laminar ~ Re [13] makes the excess grow like
+    ``(Ta/Ta_c)^0.5``: ``m = 0.5``.
 
     Parameters
     ----------
@@ -394,6 +400,8 @@ def taylor_excess_factor(taylor, critical=CRITICAL_TAYLOR_NUMBER):
         Taylor number of the seed's Eq. 3 [-].
     critical : float
         Critical Taylor number [-] (41.3).
+    exponent : float
+        Shape exponent m [-] (> 0; 2: Stuart near onset, 0.5: Wendt).
 
     Returns
     -------
@@ -402,15 +410,19 @@ def taylor_excess_factor(taylor, critical=CRITICAL_TAYLOR_NUMBER):
 
     References
     ----------
-    Taylor [8]; Stuart [9]; Donnelly [10]; seed paper (Modeling and Optimization of
-    Compensating Oil Viscous Power for a Deep-Sea Electric Manipulator, Eq. 3).
+    Taylor [8]; Stuart [9]; Donnelly [10]; Wendt [13]; seed paper (Modeling and
+    Optimization of Compensating Oil Viscous Power for a Deep-Sea Electric
+    Manipulator, Eq. 3).
     """
     r = taylor / critical
-    return m.fmax(r * r - 1.0, 0.0)
+    if exponent == 2.0:
+        return m.fmax(r * r - 1.0, 0.0)
+    return m.fmax(m.fmax(r, 0.0) ** exponent - 1.0, 0.0)
 
 
-def taylor_vortex_power(power_laminar_W, taylor, k, critical=CRITICAL_TAYLOR_NUMBER):
-    """Extra loss [W] of Taylor vortices: ``k P_lam max(0, (Ta/Ta_c)^2 - 1)`` [8]-[10].
+def taylor_vortex_power(power_laminar_W, taylor, k, critical=CRITICAL_TAYLOR_NUMBER,
+                        exponent=2.0):
+    """Extra loss [W] of Taylor vortices: ``k P_lam max(0, (Ta/Ta_c)^m - 1)`` [8]-[13].
 
     Parameters
     ----------
@@ -422,6 +434,8 @@ def taylor_vortex_power(power_laminar_W, taylor, k, critical=CRITICAL_TAYLOR_NUM
         Torque excess per unit supercriticality [-].
     critical : float
         Critical Taylor number [-].
+    exponent : float
+        Shape exponent m [-] (2: Stuart near onset [9], 0.5: Wendt [13]).
 
     Returns
     -------
@@ -430,9 +444,9 @@ def taylor_vortex_power(power_laminar_W, taylor, k, critical=CRITICAL_TAYLOR_NUM
 
     References
     ----------
-    Taylor [8]; Stuart [9]; Donnelly [10].
+    Taylor [8]; Stuart [9]; Donnelly [10]; Wendt [13].
     """
-    return k * power_laminar_W * taylor_excess_factor(taylor, critical)
+    return k * power_laminar_W * taylor_excess_factor(taylor, critical, exponent)
 
 
 def couette_shear_rate(omega_rad_s, radius_m, gap_m):

@@ -293,8 +293,32 @@ def _f_thermal(c: EffectContext):
     return thermal_lag_power(d, c.dtemp_dt_K_s, 1.0)
 
 
+def taylor_feature(c: EffectContext, exponent: float = 2.0):
+    """Taylor-vortex power per unit k [W]: ``sum_i P_i max(0, (Ta_i/41.3)^m - 1)``.
+
+    Parameters
+    ----------
+    c : EffectContext
+        Regions' power [W] and Taylor number [-] per sample.
+    exponent : float
+        Shape exponent m [-] (2: Stuart 1958 near onset; 0.5: Wendt 1933).
+
+    Returns
+    -------
+    array
+        Feature [W per unit k].
+
+    References
+    ----------
+    Stuart, J. Fluid Mech. 4:1, 1958; Wendt, Ing.-Arch. 4:577, 1933 (through
+    :func:`~oilgap.model.effect_laws.taylor_vortex_power`).
+    """
+    return sum(taylor_vortex_power(r.power_W, r.taylor, 1.0, exponent=exponent)
+               for r in c.regions)
+
+
 def _f_taylor(c: EffectContext):
-    return sum(taylor_vortex_power(r.power_W, r.taylor, 1.0) for r in c.regions)
+    return taylor_feature(c)
 
 
 def _f_shear(c: EffectContext):

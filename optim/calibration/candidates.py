@@ -7,7 +7,8 @@ the calibration (R^2 > :data:`CONFOUNDED_R2` on its Jacobian) are set aside
 with the reason. An effect with an exact nonlinear form (thermal lag, sensor
 delay, shear thinning) also gets columns of that form at a grid of its
 parameter (:func:`exact_form_variants`), so that large lags, long delays and
-strong thinning are seen too.
+strong thinning are seen too; Taylor-vortex onset gets columns of its other
+published shapes (excess exponent m = 0.5 (Wendt 1933) and 1, beside Stuart's 2).
 
 References
 ----------
@@ -22,11 +23,11 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from oilgap.model.effects import EFFECTS
+from oilgap.model.effects import EFFECTS, taylor_feature
 from oilgap.model.measured_data import Samples
 from oilgap.model.regions import JointGeometry
 
-from .forward import ForwardModel
+from .forward import TAYLOR_SHAPES, ForwardModel
 from .least_squares import BaseSpec, ModelFit
 
 CONFOUNDED_R2 = 1.0 - 1e-6
@@ -53,9 +54,12 @@ def exact_form_variants(name: str, s: Samples, geometry: JointGeometry) -> tuple
     Returns
     -------
     tuple of float
-        Thermal lag tau [s], sensor delay d [s] or shear thinning lambda^2
-        [s^2] (at lambda gamma_dot_max = 0.5, 1, 2); empty for other effects.
+        Thermal lag tau [s], sensor delay d [s], shear thinning lambda^2
+        [s^2] (at lambda gamma_dot_max = 0.5, 1, 2) or the Taylor-vortex shape
+        exponent m [-] (other than the linear feature's 2); empty for other effects.
     """
+    if name == "taylor_vortex_onset":
+        return tuple(m for m in TAYLOR_SHAPES if m != 2.0)
     if name == "thermal_lag":
         return (-30.0, -10.0, -3.0, -1.0, 1.0, 3.0, 10.0, 30.0)
     if name == "sensor_delay":
@@ -102,7 +106,17 @@ class Candidates:
     def label(self, j: int) -> str:
         """Name of column ``j`` (with its exact-form parameter if it is a variant)."""
         v = self.variant[j]
-        return self.name[j] if v is None else f"{self.name[j]} (exact form, {v:.3g})"
+        if v is None:
+            return self.name[j]
+        return f"{self.name[j]} ({'shape m' if self.is_shape(j) else 'exact form'}, {v:.3g})"
+
+    def is_shape(self, j: int) -> bool:
+        """Whether column ``j`` is a shape variant (its coefficient is the linear one's)."""
+        return self.variant[j] is not None and self.name[j] == "taylor_vortex_onset"
+
+    def taylor_exponent(self, chosen) -> float:
+        """Taylor-vortex shape exponent m [-] of the columns ``chosen`` (2 if none)."""
+        return next((float(self.variant[j]) for j in chosen if self.is_shape(j)), 2.0)
 
     def columns_of(self, name: str) -> list[int]:
         """Columns of effect ``name``."""
@@ -166,7 +180,8 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
     -------
     Candidates
         One linear column per usable effect, then its exact-form variants
-        (``power(law, {name: v}) - power(law)`` [W]) that do not vanish.
+        (``power(law, {name: v}) - power(law)`` [W]; for Taylor-vortex onset the
+        feature at shape exponent v [W per unit k]) that do not vanish.
     """
     s = model.samples
     ctx = model.context(base.law)
@@ -181,6 +196,12 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
                              "nonnegative": eff.nonnegative, "status": STEADY_POINT_STATUS})
             continue
         f = EFFECTS[n].feature_values(ctx)
+        if f is not None and not np.all(np.isfinite(f)):
+            eff = EFFECTS[n]
+            out.info.append({"name": n, "title": eff.title, "formula": eff.formula,
+                             "nonnegative": eff.nonnegative,
+                             "status": "not usable: its feature is not finite on these data"})
+            continue
         info = _screen(n, f, base.jac_base, spec, ymax)
         out.info.append(info)
         if info["status"] != "candidate":
@@ -191,8 +212,11 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
         out.variant.append(None)
         out.nonneg.append(EFFECTS[n].nonnegative)
         for v in exact_form_variants(n, s, model.geometry):
-            fv = model.power(base.law, {n: v}) - p_base
-            if np.any(np.abs(fv) > 1e-9 * ymax):
+            fv = (taylor_feature(ctx, v) if n == "taylor_vortex_onset"
+                  else model.power(base.law, {n: v}) - p_base)
+            # a variant whose exact form leaves the fluid's law on these data (e.g. a long
+            # negative lag applied to a noisy temperature rate) is not a column
+            if np.all(np.isfinite(fv)) and np.any(np.abs(fv) > 1e-9 * ymax):
                 cols.append(fv)
                 out.name.append(n)
                 out.variant.append(v)

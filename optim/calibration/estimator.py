@@ -219,6 +219,7 @@ class LoopEstimator:
                                                 opts)
         self.identifiability_ = self._identifiability(stmt, free)
         final = replace(search.final, before=free.final.before)
+        model.taylor_exponent = search.refitter.model.taylor_exponent = final.taylor_exponent
         self._store_final(search, final)
         # 7. confidence intervals (jackknife over groups, log space for C and the scale)
         self._intervals(free, search, no_signal is not None)
@@ -279,6 +280,7 @@ class LoopEstimator:
                                 "after": sel.selector.cv(final.chosen)}
         self.final_fit_, self.law_ = final.fit, final.fit.law
         self.effect_coef_ = dict(zip(final.accepted, map(float, final.fit.theta), strict=True))
+        self.taylor_exponent_ = final.taylor_exponent
         self.heldout_pred_ = {"before": final.before.pred, "after": final.after.pred}
 
     def _intervals(self, free: EffectSearch, search: EffectSearch, no_signal: bool) -> None:

@@ -35,6 +35,7 @@ from oilgap.model.effects import (
     cross_region_ratios,
     effect_context,
     first_order_lag,
+    taylor_feature,
 )
 from oilgap.model.measured_data import TEMP_STEP_K, Samples
 from oilgap.model.oils import Oil, normalize_oil_name
@@ -46,6 +47,11 @@ EXACT_FORMS = ("thermal_lag", "sensor_delay", "shear_thinning")
 """Effects refitted with their full nonlinear form (the regression feature is its first
 order): the first-order lag of the oil temperature, the time shift of the power
 record, the clearance law at the Cross apparent viscosity nu/(1 + lambda^2 gamma_dot^2)."""
+
+TAYLOR_SHAPES = (0.5, 1.0, 2.0)
+"""Shape exponents m of the Taylor-vortex excess ``(Ta/Ta_c)^m - 1`` screened: Wendt
+1933's well-above-onset torque ~ Re^1.5 (m = 0.5), between, and Stuart 1958's near-onset
+form (m = 2, the library's default)."""
 
 SPEED_STEP = 1e-4
 """Relative speed step of the central difference dP/domega [-]."""
@@ -94,6 +100,8 @@ class ForwardModel:
         Rig geometry.
     oils : dict of str to Oil
         Oils by normalised name (their temperature laws serve the thermal lag).
+    taylor_exponent : float
+        Shape exponent m of the Taylor-vortex excess [-] (default 2: Stuart's form).
 
     Attributes
     ----------
@@ -105,10 +113,14 @@ class ForwardModel:
         Sample indices of each run.
     oil_groups : list of (array, Oil)
         Samples whose viscosity follows each oil's temperature law.
+    taylor_exponent : float
+        Shape exponent m of the Taylor-vortex excess (:data:`TAYLOR_SHAPES`) [-].
     """
 
-    def __init__(self, samples: Samples, case: DesignCase, oils: dict[str, Oil]):
+    def __init__(self, samples: Samples, case: DesignCase, oils: dict[str, Oil],
+                 taylor_exponent: float = 2.0):
         s = samples
+        self.taylor_exponent = float(taylor_exponent)
         self.samples = s
         self.case = case
         self.geometry = sample_geometry(case, s)
@@ -366,7 +378,7 @@ class ForwardModel:
         for name, c in coefs.items():
             if name in EXACT_FORMS or c == 0.0:
                 continue
-            f = EFFECTS[name].feature_values(ctx) if name == "taylor_vortex_onset" \
+            f = taylor_feature(ctx, self.taylor_exponent) if name == "taylor_vortex_onset" \
                 else self.static_feature(name)
             total = total + c * f
         d = coefs.get("sensor_delay", 0.0)

@@ -248,6 +248,9 @@ class FittedModel:
         Column of the fit's cross-validation groups.
     ranges : dict
         Fitted range of each operating variable (:func:`sample_ranges`).
+    taylor_exponent : float
+        Shape exponent m of the Taylor-vortex excess ``(Ta/Ta_c)^m - 1`` [-]
+        (written as ``shapes`` when the effect is in the model).
     """
 
     case: DesignCase
@@ -261,6 +264,7 @@ class FittedModel:
     has_time: bool = True
     cv_by: str = "run"
     ranges: dict = field(default_factory=dict)
+    taylor_exponent: float = 2.0
 
     @classmethod
     def from_estimator(cls, est) -> FittedModel:
@@ -281,7 +285,8 @@ class FittedModel:
         laws = dict(zip(STAGES, (est.law_without_T_, est.law_with_T_, est.law_), strict=True))
         return cls(est.case_, laws, {k: float(v) for k, v in est.effect_coef_.items()},
                    dict(est.baselines_), fluids, float(est.geometry_.regions[0].gap_m), 0.0,
-                   est.data_.kind, bool(s.has_time), str(s.cv_by), sample_ranges(s))
+                   est.data_.kind, bool(s.has_time), str(s.cv_by), sample_ranges(s),
+                   float(getattr(est, "taylor_exponent_", 2.0)))
 
     def to_dict(self) -> dict:
         """The ``model`` block of ``loop.json`` (JSON-safe; units in key names).
@@ -291,12 +296,15 @@ class FittedModel:
         dict
             format, version, case (TOML keys: mm, degC), laws, effects, baselines
             [W per basis function], fluids, region1_gap_m [m], pressure_gauge_Pa
-            [Pa], kind, has_time, cv_by, fitted_range.
+            [Pa], kind, has_time, cv_by, fitted_range; ``shapes`` (the Taylor-vortex
+            shape exponent m [-]) when that effect is in the model.
         """
+        shapes = ({"shapes": {"taylor_vortex_onset": {"exponent": self.taylor_exponent}}}
+                  if "taylor_vortex_onset" in self.effects else {})
         return {"format": MODEL_FORMAT, "version": MODEL_VERSION,
                 "case": _enc(_case_doc(self.case)),
                 "laws": {k: _law_to_dict(v) for k, v in self.laws.items()},
-                "effects": _enc(self.effects),
+                "effects": _enc(self.effects), **shapes,
                 "baselines": [_baseline_to_dict(b) for b in self.baselines.values()],
                 "fluids": {k: fluid_to_dict(f) for k, f in self.fluids.items()},
                 "region1_gap_m": _enc(self.region1_gap_m),
@@ -341,9 +349,13 @@ class FittedModel:
             gap = float(_dec(doc["region1_gap_m"]))
             ranges = {k: [float(x) for x in v] for k, v in _dec(doc.get("fitted_range", {}))
                       .items()}
+            m = float(doc.get("shapes", {}).get("taylor_vortex_onset", {}).get("exponent", 2.0))
+            if not m > 0:
+                raise InputError("model.shapes.taylor_vortex_onset.exponent", m, "> 0")
             return cls(case, laws, effects, {b.roughness_T: b for b in base}, fluids, gap,
                        float(doc.get("pressure_gauge_Pa", 0.0)), str(doc.get("kind", "")),
-                       bool(doc.get("has_time", True)), str(doc.get("cv_by", "run")), ranges)
+                       bool(doc.get("has_time", True)), str(doc.get("cv_by", "run")), ranges,
+                       m)
         except (KeyError, TypeError, ValueError, AttributeError) as e:
             raise InputError("model", f"{type(e).__name__}: {e}", "a complete model block "
                              "written by oilgap loop is required") from None
@@ -470,7 +482,7 @@ class FittedModel:
         coefs = dict(self.effects) if stage == "with_effect" else {}
         if not s.has_time:  # steady rows: no rates, no lag, no delay
             coefs = {k: v for k, v in coefs.items() if not EFFECTS[k].time_dependent}
-        model = ForwardModel(s, self.case, oils)
+        model = ForwardModel(s, self.case, oils, self.taylor_exponent)
         return np.asarray(model.power(self.laws[stage], coefs), dtype=float)
 
     def outside_range(self, s) -> np.ndarray:

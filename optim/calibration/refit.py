@@ -206,6 +206,8 @@ class FinalModel:
         Held-out RMSE before and after [W] and gain [%] of the nonlinear refit.
     log : list of dict
         The rejection by the nonlinear check, if any.
+    taylor_exponent : float
+        Shape exponent m of the Taylor-vortex excess of the final model [-].
     """
 
     fit: ModelFit
@@ -215,6 +217,7 @@ class FinalModel:
     after: HeldOut
     nonlinear_check: dict | None
     log: list[dict]
+    taylor_exponent: float = 2.0
 
 
 def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
@@ -222,7 +225,8 @@ def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
     """Nonlinear refit of the selected effects, checked on held-out runs.
 
     The coefficients start at the linearised amplitudes (times the variant's
-    parameter for an exact-form column). If the nonlinear held-out RMSE does
+    parameter for an exact-form column); a Taylor-vortex shape column sets the
+    forward model's shape exponent m. If the nonlinear held-out RMSE does
     not fall by ``margin``, the effects are rejected [1], [2].
 
     Parameters
@@ -250,8 +254,9 @@ def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
     start = []
     for j in chosen:  # coefficient start: linear amplitude, or amplitude x variant value
         a_j = float(lin_coef[j])
-        start.append(a_j if cands.variant[j] is None else a_j * cands.variant[j])
-    fit = refitter.fit(accepted, base.x, np.array(start))
+        exact = cands.variant[j] is not None and not cands.is_shape(j)
+        start.append(a_j * cands.variant[j] if exact else a_j)
+    fit, m = _fit_taylor_shape(refitter, base, cands, chosen, np.array(start))
     after = refitter.leave_one_run_out(accepted, fit.x, fit.theta, fit)
     ha = rmse(y - after.pred)
     check = {"heldout_before_W": hb, "heldout_after_W": ha, "gain_pct": 100 * (1 - ha / hb)}
@@ -260,7 +265,40 @@ def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
                 "gain_pct": 100 * (1 - ha / hb)}]
         return FinalModel(base, [], (), before, before, check, log)
     return _prune_nonlinear(refitter, FinalModel(fit, accepted, chosen, before, after, check,
-                                                 []), margin)
+                                                 [], m), margin)
+
+
+def _fit_taylor_shape(refitter: Refitter, base: ModelFit, cands: Candidates,
+                      chosen: tuple[int, ...], start: np.ndarray) -> tuple[ModelFit, float]:
+    """Nonlinear fit of the chosen columns; with Taylor-vortex onset among them, at each
+    screened shape exponent m, the one of least squared error kept (all other effects in).
+
+    The linearised selection picks a shape column before the other effects are in, so a
+    shape can stand in for an effect added later; the nonlinear refit with every
+    chosen effect present decides m (same number of coefficients at every m). The
+    forward model keeps the chosen m (its folds copy it).
+    """
+    accepted = [cands.name[j] for j in chosen]
+    j0 = next((j for j in chosen if cands.name[j] == "taylor_vortex_onset"), None)
+    if j0 is None:
+        refitter.model.taylor_exponent = 2.0
+        return refitter.fit(accepted, base.x, start), 2.0
+    i0 = chosen.index(j0)
+    y = refitter.model.samples.viscous_W
+    rms0 = float(np.sqrt(np.mean(cands.columns[:, j0] ** 2)))
+    best = None
+    for j in cands.columns_of("taylor_vortex_onset"):
+        m = cands.taylor_exponent((j,))
+        th = start.copy()  # the same rms Taylor power at this shape
+        th[i0] = start[i0] * rms0 / max(float(np.sqrt(np.mean(cands.columns[:, j] ** 2))),
+                                        1e-300)
+        refitter.model.taylor_exponent = m
+        f = refitter.fit(accepted, base.x, th)
+        sse = float(np.sum((y - f.pred) ** 2))
+        if best is None or sse < best[0]:
+            best = (sse, f, m)
+    refitter.model.taylor_exponent = best[2]
+    return best[1], best[2]
 
 
 def _prune_nonlinear(refitter: Refitter, final: FinalModel, margin: float) -> FinalModel:
@@ -288,7 +326,7 @@ def _prune_nonlinear(refitter: Refitter, final: FinalModel, margin: float) -> Fi
         check = {"heldout_before_W": hb, "heldout_after_W": ha,
                  "gain_pct": 100 * (1 - ha / hb)}
         final = FinalModel(fit, names, tuple(final.chosen[i] for i in keep), final.before,
-                           after, check, log)
+                           after, check, log, final.taylor_exponent)
     return final
 
 

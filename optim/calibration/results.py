@@ -48,6 +48,8 @@ class EffectResult:
         Held-out RMSE fall it brings in the final model [%].
     rms_power_W : float
         RMS of its power over the samples [W].
+    shape : dict or None
+        Chosen shape parameter (Taylor-vortex onset: ``{"exponent": m}`` [-]).
     """
 
     name: str
@@ -62,6 +64,7 @@ class EffectResult:
     strength_unit: str
     heldout_gain_pct: float
     rms_power_W: float
+    shape: dict | None = None
 
     def coefficient_label(self) -> str:
         """Symbol of the coefficient (e.g. ``tau_c``)."""
@@ -74,7 +77,8 @@ class EffectResult:
                 "heldout_gain_pct": self.heldout_gain_pct, "title": self.title,
                 "symbol": self.coefficient_label(),
                 "reference": self.reference, "unit": self.unit, "strength": self.strength,
-                "strength_unit": self.strength_unit, "rms_power_W": self.rms_power_W}
+                "strength_unit": self.strength_unit, "rms_power_W": self.rms_power_W,
+                **({"shape": self.shape} if self.shape else {})}
 
 
 def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray, np.ndarray],
@@ -105,10 +109,15 @@ def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray,
         c = float(fit.theta[i])
         only = model.power(fit.law, dict(coefs)) - model.power(
             fit.law, {m: v for m, v in coefs.items() if m != n})
+        formula, shape = eff.formula, None
+        if n == "taylor_vortex_onset":
+            m = final.taylor_exponent
+            shape = {"exponent": m}
+            formula = formula.replace(")^2 - 1)", f")^{m:g} - 1)")
         out.append(EffectResult(
-            n, eff.title, eff.formula, eff.reference, c, float(ci[0][i]), float(ci[1][i]),
+            n, eff.title, formula, eff.reference, c, float(ci[0][i]), float(ci[1][i]),
             eff.unit, float(eff.strength_from_coefficient(c)), eff.strength_unit, gains[n],
-            rmse(only)))
+            rmse(only), shape))
     return out
 
 

@@ -74,6 +74,17 @@ def test_taylor_excess_factor():
     assert fx.taylor_vortex_power(10.0, 2 * ta_c, 0.5) == pytest.approx(15.0)
 
 
+def test_taylor_excess_shape_exponent_by_hand():
+    # (Ta/Ta_c)^m - 1 at Ta = 4 Ta_c: m = 0.5 (Wendt 1933): 2 - 1 = 1; m = 1: 3;
+    # m = 2 (Stuart 1958, the default): 16 - 1 = 15; below onset 0 for every m
+    ta_c = fx.CRITICAL_TAYLOR_NUMBER
+    for m, want in ((0.5, 1.0), (1.0, 3.0), (2.0, 15.0)):
+        got = fx.taylor_excess_factor(np.array([0.5 * ta_c, ta_c, 4 * ta_c]), exponent=m)
+        assert np.allclose(got, [0.0, 0.0, want])
+    # 2.25 Ta_c, m = 0.5: 1.5 - 1 = 0.5; power k P x 0.5 = 0.4 x 10 W x 0.5 = 2 W
+    assert fx.taylor_vortex_power(10.0, 2.25 * ta_c, 0.4, exponent=0.5) == pytest.approx(2.0)
+
+
 def test_shear_models_small_rate_expansions():
     g = fx.couette_shear_rate(-314.16, 0.0254, 0.001)
     assert g == pytest.approx(314.16 * 25.4)

@@ -68,13 +68,7 @@ def _xfail(reason: str):
     return pytest.mark.xfail(strict=True, reason=reason)
 
 
-SINGLE_XFAIL = {
-    "taylor_vortex_onset": (
-        "the library's Taylor law k P ((Ta/Ta_c)^2 - 1) cannot follow the rig's Wendt-shaped "
-        "excess P ((Re/Re_c)^0.5 - 1); the forward selection then adds seal_coulomb_friction "
-        "(tau_c = 0.015 N m, 32 % held-out gain as second step) to soak up the difference, so "
-        "a false seal is named with Taylor (held-out cut 63-66 %)"),
-}
+SINGLE_XFAIL: dict[str, str] = {}
 """Effects the current loop does not name alone with a 50 % cut, and why."""
 
 

@@ -13,33 +13,6 @@ from oilgap.model.evaluation import (
     region_powers,
 )
 
-SEED_TOML = """
-name = "test joint"
-[region1]
-T1_mm = 23.9
-T2_mm = 25.4
-T3_mm = 26.4
-T4_mm = 27.9
-length_mm = 14.76
-[region2]
-radius_mm = 22.0
-length_mm = 14.24
-gap_mm = 5.0
-[oil]
-name = "VG22"
-[operating]
-depth_m = 0.0
-oil_temp_C = 40.0
-[friction]
-gamma = 0.5
-"""
-
-
-def write(tmp_path, text, name="case.toml"):
-    p = tmp_path / name
-    p.write_text(text)
-    return p
-
 
 def test_smoothing_lowers_loss_only_in_region1():
     a = evaluate_case(seed_case())
@@ -56,13 +29,13 @@ def test_untrusted_temperature_warns():
         evaluate_case(seed_case(), oil_temp_C=2.0)
 
 
-def test_rig_without_region2(tmp_path):
-    toml = SEED_TOML.replace("[region2]\nradius_mm = 22.0\nlength_mm = 14.24\ngap_mm = 5.0\n",
+def test_rig_without_region2(seed_toml, write_file):
+    toml = seed_toml.replace("[region2]\nradius_mm = 22.0\nlength_mm = 14.24\ngap_mm = 5.0\n",
                              "")
-    case = read_case_toml(write(tmp_path, toml))
+    case = read_case_toml(write_file(toml))
     assert case.region2 is None
     ev = evaluate_case(case)
-    full = evaluate_case(read_case_toml(write(tmp_path, SEED_TOML, "full.toml")))
+    full = evaluate_case(read_case_toml(write_file(seed_toml, "full.toml")))
     assert len(ev.regions) == 1
     assert ev.total_mean_power_W == pytest.approx(full.regions[0].mean_power_W, rel=1e-14)
 

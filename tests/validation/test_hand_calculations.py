@@ -11,7 +11,6 @@
 """
 
 import math
-from pathlib import Path
 
 import numpy as np
 import pytest
@@ -22,27 +21,6 @@ from oilgap.model.evaluation import evaluate_case
 from oilgap.model.regions import JointGeometry, Region, joint_regions, region_mean_power
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.thermal import steady_temperature
-
-SEED_TOML = """
-name = "test joint"
-[region1]
-T1_mm = 23.9
-T2_mm = 25.4
-T3_mm = 26.4
-T4_mm = 27.9
-length_mm = 14.76
-[region2]
-radius_mm = 22.0
-length_mm = 14.24
-gap_mm = 5.0
-[oil]
-name = "VG22"
-[operating]
-depth_m = 0.0
-oil_temp_C = 40.0
-[friction]
-gamma = 0.5
-"""
 
 
 def seed_speeds():
@@ -78,10 +56,8 @@ def hand_mean_power(R, gap, L, T, gamma, nu, rho, laminar="couette"):
 
 
 @pytest.mark.parametrize("laminar", ["couette", "bilgen-boulos"])
-def test_seed_region_powers_at_40C_against_hand_computation(tmp_path, laminar):
-    p = Path(tmp_path) / "case.toml"
-    p.write_text(SEED_TOML)
-    ev = evaluate_case(read_case_toml(p), laminar_law=laminar)
+def test_seed_region_powers_at_40C_against_hand_computation(seed_toml, write_file, laminar):
+    ev = evaluate_case(read_case_toml(write_file(seed_toml)), laminar_law=laminar)
     # at 40 degC and the surface the Walther line gives the catalogue 22 cSt exactly;
     # density 860 * exp(-6.5e-4 * 25) = 846.138 kg/m^3
     nu, rho = 22e-6, 860 * math.exp(-6.5e-4 * 25)

@@ -26,6 +26,13 @@ DPI = 110
 """Resolution of the loop's figures [dots per inch]."""
 
 
+def _cell(x: float, width: int) -> str:
+    """A number right-aligned in ``width`` columns with a separating space (3 decimals
+    while they fit, else 4 significant digits)."""
+    text = f"{x:.3f}" if abs(x) < 10 ** (width - 6) else f"{x:.4g}"
+    return f"{text:>{width}}"
+
+
 def _num(x: float, digits: int = 4) -> str:
     if x is None or (isinstance(x, float) and not math.isfinite(x)):
         return "-"
@@ -80,7 +87,8 @@ def format_summary(est: LoopEstimator) -> str:
     if est.findings_:
         lines.append("")
     if est.effects_:
-        lines.append("effects found (accepted by leave-one-run-out cross-validation)")
+        lines.append("effects found (accepted by cross-validation, one "
+                     f"{getattr(est, 'cv_by', 'run')} left out at a time)")
         for e in est.effects_:
             lines.append(f"  {e.name}: {e.formula}")
             unit = "" if e.unit == "-" else f" {e.unit}"
@@ -104,10 +112,11 @@ def format_summary(est: LoopEstimator) -> str:
         lines.append("unexplained: " + est.unexplained_["description"])
     h = est.heldout_rmse_
     r = est.rmse_
+    held = f"held-out (by {getattr(est, 'cv_by', 'run')})"[:21]
     lines += ["", f"{'RMSE W':<22}{'without T':>10}{'with T':>10}{'with effect':>13}",
-              f"{'in-sample':<22}{r['without_T']:>10.3f}{r['with_T']:>10.3f}"
-              f"{r['with_effect']:>13.3f}",
-              f"{'held-out (LORO)':<22}{'':>10}{h['before']:>10.3f}{h['after']:>13.3f}",
+              f"{'in-sample':<22}{_cell(r['without_T'], 10)}{_cell(r['with_T'], 10)}"
+              f"{_cell(r['with_effect'], 13)}",
+              f"{held:<22}{'':>10}{_cell(h['before'], 10)}{_cell(h['after'], 13)}",
               f"noise level {est.noise_W_:.3f} W; held-out RMSE "
               + (f"falls by {100 * (1 - h['after'] / h['before']):.1f} %"
                  if h["after"] < h["before"] else "unchanged (no effect accepted)")]

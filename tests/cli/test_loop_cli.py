@@ -47,7 +47,7 @@ def test_synth_then_loop(tmp_path, capsys):
     # the table form: error table, effects, before/after
     assert main(["loop", str(data), "--out", str(res), "--no-figures"]) == 0
     text = capsys.readouterr().out
-    assert "error table" in text and "oil_inertia" in text and "held-out (LORO)" in text
+    assert "error table" in text and "oil_inertia" in text and "held-out (by run)" in text
 
 
 def test_loop_on_clean_data_says_so(tmp_path, capsys):

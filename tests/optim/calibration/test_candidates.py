@@ -73,3 +73,14 @@ def test_feature_scale_is_the_rms_of_the_linear_column():
                    variant=[None, 2.0, None], nonneg=[True, True, False])
     assert c.feature_scale() == pytest.approx({"a": np.sqrt(12.5), "b": np.sqrt(2.0)})
     assert c.columns_of("a") == [0, 1] and c.label(1) == "a (exact form, 2)"
+
+
+def test_a_variant_that_leaves_the_fluids_law_is_set_aside(rig, samples_factory):
+    # temperature falling 12 K/s: the exact form of a -30 s lag puts the oil at
+    # T + 30 * (-12) = about -330 degC, below absolute zero, where the oil's law has no value
+    m, base = _calibrated(rig, samples_factory, dt=0.01, temp_rate_K_s=-12.0)
+    assert not np.all(np.isfinite(m.power(base.law, {"thermal_lag": -30.0})))
+    c = screen_candidates(m, SPEC, base, list(EFFECTS))
+    assert np.all(np.isfinite(c.columns))
+    lags = [c.variant[j] for j, n in enumerate(c.name) if n == "thermal_lag"]
+    assert -30.0 not in lags

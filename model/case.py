@@ -24,6 +24,7 @@ from typing import Any
 
 from .duty_cycle import DutyCycle
 from .errors import InputError, check_positive, check_range
+from .film_heating import WALL_CONDITIONS
 from .fluids import Fluid
 from .skin_friction import FrictionLaw, groove_roughness
 from .units import MM_TO_M
@@ -297,6 +298,59 @@ class MissionSegment:
         check_range("fraction", self.fraction, 0.0, 1.0, "mission")
 
 
+@dataclass(frozen=True)
+class ThermalSpec:
+    """Bulk heat balance of the oil: a lumped heat capacity cooled through one resistance
+    to the sea (the ``[thermal]`` table of a case).
+
+    Attributes
+    ----------
+    sea_temp_C : float
+        Sea temperature [degC], in [-60, 300].
+    resistance_K_W : float
+        Thermal resistance oil to sea [K/W], > 0.
+    heat_capacity_J_K : float
+        Heat capacity of the oil and what it is in contact with [J/K], > 0.
+    other_heat_W : float
+        Other heat deposited in the oil (motor losses) [W], >= 0.
+    walls : str
+        Thermal condition of the film's walls, one of ``WALL_CONDITIONS`` of
+        :mod:`oilgap.model.film_heating` [-].
+    conductivity_W_mK : float or None
+        Oil thermal conductivity [W/(m K)], > 0; None: the film model's default.
+
+    Raises
+    ------
+    InputError
+        A value out of range; the message names the TOML key.
+    """
+
+    sea_temp_C: float
+    resistance_K_W: float
+    heat_capacity_J_K: float
+    other_heat_W: float = 0.0
+    walls: str = "isothermal-walls"
+    conductivity_W_mK: float | None = None
+
+    def __post_init__(self):
+        where = "thermal"
+        check_range("sea_temp_C", self.sea_temp_C, -60.0, 300.0, where)
+        check_positive("resistance_K_per_W", self.resistance_K_W, where)
+        check_positive("heat_capacity_J_per_K", self.heat_capacity_J_K, where)
+        check_range("other_heat_W", self.other_heat_W, 0.0, None, where)
+        if self.walls not in WALL_CONDITIONS:
+            raise InputError("walls", self.walls, f"one of {', '.join(WALL_CONDITIONS)}", where)
+        if self.conductivity_W_mK is not None:
+            check_positive("conductivity_W_per_mK", self.conductivity_W_mK, where)
+
+
+THERMAL_TOML_KEYS = {  # TOML key of [thermal] -> ThermalSpec field (same unit, SI)
+    "sea_temp_C": "sea_temp_C", "resistance_K_per_W": "resistance_K_W",
+    "heat_capacity_J_per_K": "heat_capacity_J_K", "other_heat_W": "other_heat_W",
+    "walls": "walls", "conductivity_W_per_mK": "conductivity_W_mK"}
+"""``[thermal]`` key -> :class:`ThermalSpec` field."""
+
+
 @dataclass(frozen=True, eq=False)
 class DesignCase:
     """A joint to evaluate or optimize (all SI inside).
@@ -326,6 +380,8 @@ class DesignCase:
         Mission profile (depth [m], temperature [degC], fraction [-]); may be empty.
     oils_csv : str or None
         Path of the oils table a mineral oil came from, if any.
+    thermal : ThermalSpec or None
+        Bulk heat balance to the sea (``[thermal]``), if given.
     """
 
     name: str
@@ -339,6 +395,7 @@ class DesignCase:
     bounds: DesignBounds | None = None
     mission: tuple[MissionSegment, ...] = ()
     oils_csv: str | None = None
+    thermal: ThermalSpec | None = None
 
     def __post_init__(self):
         if self.bounds is None:

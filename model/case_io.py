@@ -25,6 +25,7 @@ from typing import Any
 from .case import (
     MOTOR_FIELD_TO_KEY,
     MOTOR_TOML_KEYS,
+    THERMAL_TOML_KEYS,
     BearingClearance,
     DesignBounds,
     DesignCase,
@@ -32,6 +33,7 @@ from .case import (
     Motor,
     OperatingPoint,
     RotorStatorClearance,
+    ThermalSpec,
     motor_value_in_toml_units,
 )
 from .duty_cycle import DutyCycle
@@ -61,6 +63,7 @@ _TABLES = {
               "gear_efficiency"},
     "bounds": {"gap_min_mm", "gap_max_mm", "radius_min_mm", "radius_max_mm", "length_min_mm",
                "length_max_mm", "inertia_max_ratio", "torque_min_Nm"},
+    "thermal": set(THERMAL_TOML_KEYS),
 }
 _ARRAY_TABLES = {"mission": {"depth_m", "oil_temp_C", "fraction"}}
 _OIL_KEYS = {  # [oil] keys of each kind of fluid
@@ -143,10 +146,18 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     motor = _motor_from(doc.get("motor", {}))
     bounds = _bounds_from(doc, region1)
     mission = _mission_from(doc.get("mission", []))
+    thermal = _thermal_from(doc["thermal"]) if "thermal" in doc else None
 
     name = str(doc.get("name", "unnamed case"))
     return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
-                      tuple(mission), oils_csv)
+                      tuple(mission), oils_csv, thermal)
+
+
+def _thermal_from(td: dict) -> ThermalSpec:
+    for k in ("sea_temp_C", "resistance_K_per_W", "heat_capacity_J_per_K"):
+        _require(td, k, "thermal")
+    return ThermalSpec(**{f: (str(td[k]) if k == "walls" else check_finite(k, td[k], "thermal"))
+                          for k, f in THERMAL_TOML_KEYS.items() if k in td})
 
 
 def _region1_from(doc: dict) -> RotorStatorClearance:
@@ -399,6 +410,9 @@ def case_to_dict(case: DesignCase) -> dict:
     if b.torque_min_Nm is not None:
         bd["torque_min_Nm"] = b.torque_min_Nm
     doc["bounds"] = bd
+    if case.thermal is not None:  # only when given: documents of other cases are unchanged
+        th = {k: getattr(case.thermal, f) for k, f in THERMAL_TOML_KEYS.items()}
+        doc["thermal"] = {k: v for k, v in th.items() if v is not None}
     if case.mission:
         doc["mission"] = [{"depth_m": s.depth_m, "oil_temp_C": s.oil_temp_C,
                            "fraction": s.fraction} for s in case.mission]

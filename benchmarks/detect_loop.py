@@ -4,7 +4,7 @@ Not a speed benchmark: for every effect of ``oilgap.model.effects.EFFECTS`` the
 synthetic rig (``oilgap.studies.synth``) injects it at its default strength,
 then at strengths smaller by sqrt(2) each step, and the loop (not told which)
 must accept exactly that effect on seeds 0, 1 and 2. Prints the table that
-``notes/README-loop.md`` quotes and writes it to ``out/detect_loop.json``.
+``docs/benchmarks.md`` quotes and writes it to ``out/detect_loop.json``.
 
     python benchmarks/detect_loop.py [EFFECT ...]
 """

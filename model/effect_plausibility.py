@@ -34,6 +34,10 @@ import numpy as np
 
 from .regions import JointGeometry
 
+FILM_CONDUCTIVITY_MIN_W_MK = 0.1
+"""Lowest thermal conductivity of a liquid lubricant [W/(m K)] (mineral oils 0.12-0.15,
+silicone oils 0.10-0.16; VDI Heat Atlas 2010 D3.1), for the film-heating bound."""
+
 
 @dataclass(frozen=True)
 class FluidFacts:
@@ -68,11 +72,15 @@ class RigFacts:
         Largest wetted radius of the joint (rotor radius plus clearance) [m].
     wetted_length_m : float
         Summed length of the clearance regions [m].
+    film_resistance_K_W : float
+        Largest conduction resistance ``delta/(k A)`` of a clearance's film, A = 2 pi R L
+        its wetted area, k = :data:`FILM_CONDUCTIVITY_MIN_W_MK` [K/W] (inf: unknown).
     """
 
     fluids: tuple[FluidFacts, ...]
     radius_max_m: float
     wetted_length_m: float
+    film_resistance_K_W: float = np.inf
 
     @classmethod
     def of(cls, geometry: JointGeometry, fluids) -> RigFacts:
@@ -92,7 +100,9 @@ class RigFacts:
         regions = geometry.regions
         r = max([float(np.max(g.radius_m + np.asarray(g.gap_m))) for g in regions]
                 + [geometry.disc_radii_m[0]])
-        return cls(tuple(fluids), r, float(sum(g.length_m for g in regions)))
+        film = max(float(np.max(g.gap_m)) / (FILM_CONDUCTIVITY_MIN_W_MK * 2.0 * np.pi
+                                            * g.radius_m * g.length_m) for g in regions)
+        return cls(tuple(fluids), r, float(sum(g.length_m for g in regions)), film)
 
 
 @dataclass(frozen=True)
@@ -202,6 +212,13 @@ def _inertia_bounds(f: RigFacts) -> tuple[float, float]:
     return 0.0, 24.0 * np.pi * f.radius_max_m ** 4 * f.wetted_length_m
 
 
+def _film_bounds(f: RigFacts) -> tuple[float, float]:
+    # uniform dissipation in a film of thickness delta and area A: mean rise P delta/(12 k A)
+    # with both walls at the measured temperature, P delta/(3 k A) with an insulated rotor;
+    # the bound delta/(k A) leaves three times that for the walls above the sensor
+    return 0.0, f.film_resistance_K_W
+
+
 PLAUSIBLE = {
     "end_face_disc": Plausibility(
         0.0, 50.0, "k = 1 is the free disc on both faces; an enclosed face in laminar "
@@ -237,6 +254,13 @@ PLAUSIBLE = {
         0.0, 2.0, "a power reading lags the speed by its averaging window and link latency: "
         "0.2 s for the IEC 61000-4-30 10/12-cycle interval, about 1 s for slow power "
         "analysers; 2 s is the bound", "IEC 61000-4-30:2015 sec. 5.2"),
+    "film_heating": Plausibility(
+        0.0, np.inf, "uniform dissipation in a film of thickness delta and wetted area "
+        "A = 2 pi R L raises its mean temperature by P delta/(12 k A) with both walls at the "
+        "measured temperature and by P delta/(3 k A) with an insulated rotor; c <= delta/(k A) "
+        f"(the largest of the clearances, k = {FILM_CONDUCTIVITY_MIN_W_MK} W/(m K)) leaves "
+        "three times the insulated film's rise for walls above the sensor",
+        "Bird, Stewart & Lightfoot 2002 sec. 10.4; Nahme 1940", bounds=_film_bounds),
 }
 """Plausible range of each library effect's coefficient, with its basis and reference."""
 

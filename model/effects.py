@@ -22,6 +22,8 @@ References
 .. [2] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for
    a Deep-Sea Electric Manipulator*, Eqs. 3 and 4.
 .. [3] The laws' own references: :mod:`oilgap.model.effect_laws`.
+.. [4] H. Nahme, "Beiträge zur hydrodynamischen Theorie der Lagerreibung",
+   Ing.-Arch. 11:191-209, 1940; the exact heated film: :mod:`oilgap.model.film_heating`.
 """
 
 from __future__ import annotations
@@ -73,6 +75,7 @@ __all__ = [
     "free_disc_moment_coefficient", "end_face_disc_power", "enclosed_disc_couette_power",
     "palmgren_viscous_moment", "ball_churning_power", "coulomb_friction_power",
     "oil_inertia_power", "first_order_lag", "thermal_lag_power", "taylor_excess_factor",
+    "film_temperature",
     "taylor_vortex_power", "couette_shear_rate", "cross_viscosity_ratio",
     "carreau_viscosity_ratio", "shear_thinning_power", "sensor_delay_power", "FluidFacts",
     "RigFacts", "Plausibility", "PLAUSIBLE", "TIME_DEPENDENT", "SEAL_TANGENTIAL_FORCE_N_M",
@@ -293,6 +296,47 @@ def _f_thermal(c: EffectContext):
     return thermal_lag_power(d, c.dtemp_dt_K_s, 1.0)
 
 
+def _f_film(c: EffectContext):
+    d = np.nan_to_num(np.asarray(c.dpower_dtemp_W_K, dtype=float), nan=0.0)
+    return d * c.power_W
+
+
+def film_temperature(temp_C, power_at: Callable[[np.ndarray], np.ndarray],
+                     coefficient_K_W: float, steps: int = 8) -> np.ndarray:
+    """Film temperature of the lumped heated film, ``T_f = T + c P(T_f)`` per sample [4].
+
+    Newton steps from ``T_f = T``: ``g(T_f) = T_f - T - c P(T_f)`` rises (P falls with
+    the temperature) and is concave (P is convex in it), so each step stays below the
+    root and the steps rise to it; the root is unique.
+
+    Parameters
+    ----------
+    temp_C : array
+        Measured (or lagged) oil temperature per sample [degC].
+    power_at : callable
+        Temperature [degC] per sample -> the clearance's viscous power [W] per sample.
+    coefficient_K_W : float
+        Film rise per watt of the clearance's loss, c [K/W] (>= 0).
+    steps : int
+        Most Newton steps; stops earlier at a change below 1e-9 K [-].
+
+    Returns
+    -------
+    ndarray
+        Film temperature per sample [degC].
+    """
+    T = np.asarray(temp_C, dtype=float)
+    Tf, h = T.copy(), 0.01
+    for _ in range(steps):
+        p = power_at(Tf)
+        dp = (power_at(Tf + h) - power_at(Tf - h)) / (2.0 * h)
+        step = (T + coefficient_K_W * p - Tf) / (1.0 - coefficient_K_W * np.minimum(dp, 0.0))
+        Tf = Tf + step
+        if not np.any(np.abs(step) > 1e-9):
+            break
+    return Tf
+
+
 def taylor_feature(c: EffectContext, exponent: float = 2.0):
     """Taylor-vortex power per unit k [W]: ``sum_i P_i max(0, (Ta_i/41.3)^m - 1)``.
 
@@ -348,7 +392,7 @@ class Effect:
     coefficient : str
         Symbol and meaning of the fitted coefficient.
     unit : str
-        Unit of the coefficient ("-", "N m", "m^5", "s", "s^2").
+        Unit of the coefficient ("-", "N m", "m^5", "s", "s^2", "K/W").
     nonnegative : bool
         True if physics demands coefficient >= 0 (dissipation, positive inertia,
         causality); False if either sign is physical.
@@ -459,6 +503,11 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            "first-order expansion of a time shift (dead time)",
            "d (delay of the power reading behind the speed reading)", "s", True, _f_delay,
            "s"),
+    Effect("film_heating", "viscous heating of the film",
+           "c P dP/dT  (T_film = T_meas + c P(T_film), first order)",
+           "Nahme 1940 (Ing.-Arch. 11:191), the lumped film of oilgap.model.film_heating",
+           "c (film temperature rise per watt of the clearance's loss)", "K/W", True,
+           _f_film, "K/W"),
 )}
 """The candidate-effect library, by stable name."""
 

@@ -45,6 +45,7 @@ from oilgap.model.effects import (
     EffectContext,
     cross_region_ratios,
     effect_context,
+    film_temperature,
     get_effect,
 )
 from oilgap.model.errors import InputError, SolverError, check_finite
@@ -65,6 +66,7 @@ DEFAULT_STRENGTH = {
     "taylor_vortex_onset": 1.0,
     "shear_thinning": 7.5e-5,
     "sensor_delay": 0.2,
+    "film_heating": 0.004,
 }
 """Strength of each effect when ``--strength`` is not given (unit: Effect.strength_unit)."""
 
@@ -288,7 +290,8 @@ def _effect_power(cfg: SynthConfig, ctx: EffectContext, dissipated: bool = False
     without the oil's inertia, which stores energy rather than heating the oil)."""
     total = np.zeros_like(np.asarray(ctx.power_W, dtype=float))
     for name, strength in cfg.injected().items():
-        if name in ("thermal_lag", "sensor_delay") or (dissipated and name == "oil_inertia"):
+        if name in ("thermal_lag", "sensor_delay", "film_heating") or (
+                dissipated and name == "oil_inertia"):
             continue
         eff = EFFECTS[name]
         if name == "shear_thinning":  # the full Cross law, not its first-order term
@@ -333,7 +336,19 @@ class _RigModel:
         self.w0 = rpm_to_rad_s(cfg.peak_speed_rpm)
         self.two_pi_f = 2.0 * np.pi * cfg.frequency_hz
         self.lag = cfg.injected().get("thermal_lag", 0.0)
+        self.film = cfg.injected().get("film_heating", 0.0)
         self.sol = None
+
+    def film_state(self, w, a, toil, has_oil, rough):
+        """(nu, rho) of the clearance's oil, ``toil`` [degC] raised by the film's heating
+        ``c P`` (solved per sample) when film heating is injected."""
+        def power_at(temp_C):
+            nu, rho = _oil_state(self.oils, has_oil, temp_C)
+            return _context(self.cfg, w, a, nu, rho, rough).power_W
+
+        if self.film:
+            toil = film_temperature(toil, power_at, self.film)
+        return _oil_state(self.oils, has_oil, toil)
 
     def speed(self, t):
         """Speed [rad/s] and acceleration [rad/s^2] at times t."""
@@ -355,7 +370,7 @@ class _RigModel:
         cfg, has_oil = self.cfg, self.has_oil
         w, a = self.speed(t)
         th, _, toil = self.split(y)
-        nu, rho = _oil_state(self.oils, has_oil, toil)
+        nu, rho = self.film_state(w, a, toil, has_oil, self.rough)
         ctx = _context(cfg, w, a, nu, rho, self.rough)
         p = (ctx.power_W + _effect_power(cfg, ctx, dissipated=True)) * has_oil
         return p + cfg.baseline.heat(w, a, th)
@@ -387,7 +402,7 @@ class _RigModel:
             self.sol.sol(max(tt, 0.0))
         w, a = self.speed(tt)
         th, tmeas, toil = self.split(yy)
-        nu, rho = _oil_state(self.oils, has_oil[:, None], toil)
+        nu, rho = self.film_state(w[None, :], a[None, :], toil, has_oil[:, None], rough[:, None])
         ctx = _context(cfg, w[None, :], a[None, :], nu, rho, rough[:, None])
         visc = ctx.power_W * has_oil[:, None]
         eff = _effect_power(cfg, ctx) * has_oil[:, None]

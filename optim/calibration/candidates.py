@@ -54,7 +54,8 @@ def exact_form_variants(name: str, s: Samples, geometry: JointGeometry) -> tuple
     Returns
     -------
     tuple of float
-        Thermal lag tau [s], sensor delay d [s], shear thinning lambda^2
+        Thermal lag tau [s], sensor delay d [s], film heating c [K/W] (film rises of
+        1-30 K at the largest loss), shear thinning lambda^2
         [s^2] (at lambda gamma_dot_max = 0.5, 1, 2) or the Taylor-vortex shape
         exponent m [-] (other than the linear feature's 2); empty for other effects.
     """
@@ -64,6 +65,9 @@ def exact_form_variants(name: str, s: Samples, geometry: JointGeometry) -> tuple
         return (-30.0, -10.0, -3.0, -1.0, 1.0, 3.0, 10.0, 30.0)
     if name == "sensor_delay":
         return (0.5, 1.0, 2.0, 5.0)
+    if name == "film_heating":  # film rises of 1, 3, 10 and 30 K at the largest loss
+        pmax = float(np.max(np.abs(np.nan_to_num(s.viscous_W))))
+        return tuple(dT / pmax for dT in (1.0, 3.0, 10.0, 30.0)) if pmax > 0 else ()
     if name == "shear_thinning":
         gmax = float(np.max(np.abs(s.omega) * geometry.regions[0].radius_m / s.gap1_m))
         return tuple((c / gmax) ** 2 for c in (0.5, 1.0, 2.0)) if gmax > 0 else ()
@@ -140,7 +144,8 @@ def _screen(name: str, f: np.ndarray | None, jc: np.ndarray, spec: BaseSpec, yma
     if not np.any(np.abs(f) > 1e-12 * ymax):
         info["status"] = ("inactive on these data" + (
             ": Ta never exceeds 41.3" if name == "taylor_vortex_onset" else
-            ": no temperature law for dP/dT" if name == "thermal_lag" else ""))
+            ": no temperature law for dP/dT" if name in ("thermal_lag", "film_heating")
+            else ""))
         return info
     coef, *_ = np.linalg.lstsq(jc, f, rcond=None)
     r2 = 1.0 - float(np.sum((f - jc @ coef) ** 2)) / float(np.sum(f * f))

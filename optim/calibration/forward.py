@@ -34,6 +34,7 @@ from oilgap.model.effects import (
     EffectContext,
     cross_region_ratios,
     effect_context,
+    film_temperature,
     first_order_lag,
     taylor_feature,
 )
@@ -43,7 +44,7 @@ from oilgap.model.regions import JointGeometry, joint_geometry, region_power
 from oilgap.model.skin_friction import FrictionLaw, groove_roughness_factor
 from oilgap.model.units import celsius_to_kelvin
 
-EXACT_FORMS = ("thermal_lag", "sensor_delay", "shear_thinning")
+EXACT_FORMS = ("thermal_lag", "sensor_delay", "shear_thinning", "film_heating")
 """Effects refitted with their full nonlinear form (the regression feature is its first
 order): the first-order lag of the oil temperature, the time shift of the power
 record, the clearance law at the Cross apparent viscosity nu/(1 + lambda^2 gamma_dot^2)."""
@@ -317,6 +318,17 @@ class ForwardModel:
             out[idx] = first_order_lag(s.time_s[idx], s.temp_C[idx], tau_s)
         return out
 
+    def _film_state(self, law: FrictionLaw, c_K_W: float, tau_s: float) -> tuple:
+        """(nu, rho) at the heated film's temperature ``T + c P(T_film)`` under ``law``
+        (T: measured, or lagged by ``tau_s``), solved per sample."""
+        T = self.lagged_temperature(tau_s) if tau_s else self.samples.temp_C
+
+        def power_at(temp_C):
+            nu, rho = self.oil_state_at(temp_C)
+            return sum(self.region_powers(law, nu=nu, rho=rho))
+
+        return self.oil_state_at(film_temperature(T, power_at, c_K_W))
+
     def static_feature(self, name: str) -> np.ndarray:
         """Feature of an effect that does not depend on the friction law (cached).
 
@@ -364,6 +376,8 @@ class ForwardModel:
         nu = rho = None
         if coefs.get("thermal_lag", 0.0):
             nu, rho = self._lagged_state(coefs["thermal_lag"])
+        if coefs.get("film_heating", 0.0) > 0.0:
+            nu, rho = self._film_state(law, coefs["film_heating"], coefs.get("thermal_lag", 0.0))
         total = 0.0
         lam2 = max(0.0, coefs.get("shear_thinning", 0.0))
         if lam2 or coefs.get("taylor_vortex_onset", 0.0):  # effects that need the context

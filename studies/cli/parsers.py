@@ -16,7 +16,7 @@ from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
 EFFECT_NAMES = ("end_face_disc", "bearing_ball_churning", "seal_coulomb_friction",
                 "oil_inertia", "thermal_lag", "taylor_vortex_onset", "shear_thinning",
-                "sensor_delay")
+                "sensor_delay", "film_heating")
 """The keys of :data:`oilgap.model.effects.EFFECTS`, in order (``synth --effect``
 choices). Written out because importing the effect library loads scipy.signal
 (about a second); ``tests/cli`` checks that the two agree."""

@@ -124,7 +124,8 @@ def test_casadi_and_numpy_agree():
 def test_library_entries_are_complete():
     assert set(fx.EFFECTS) == {"end_face_disc", "bearing_ball_churning",
                                "seal_coulomb_friction", "oil_inertia", "thermal_lag",
-                               "taylor_vortex_onset", "shear_thinning", "sensor_delay"}
+                               "taylor_vortex_onset", "shear_thinning", "sensor_delay",
+                               "film_heating"}
     for name, e in fx.EFFECTS.items():
         assert e.name == name and e.formula and e.reference and e.unit
         assert isinstance(e.nonnegative, bool)
@@ -168,5 +169,6 @@ def test_library_module_re_exports_the_laws():
         assert getattr(fx, name) is getattr(effect_laws, name)
     assert set(effect_laws.__dict__) >= {n for n in fx.__all__ if n not in (
         "RegionState", "EffectContext", "region_states", "effect_context",
-        "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect")
+        "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect",
+        "film_temperature")  # the film's fixed point on a power callable: its own here
         and n not in effect_plausibility.__dict__}  # the plausible ranges: their own module

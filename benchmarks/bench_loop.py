@@ -20,13 +20,14 @@ from pathlib import Path
 from oilgap.model.measured_data import load_measured
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.studies.loop_report import write_report
-from oilgap.studies.synth import SynthConfig, synthesize, write_synth_csv
+from oilgap.studies.reporting import write_data_csv
+from oilgap.studies.synth import SynthConfig, synthesize
 
 TARGET_S = 15.0
 
 
 def run(cfg: SynthConfig, cv: str, tmp: Path) -> dict:
-    csv = write_synth_csv(synthesize(cfg, seed=0), tmp / "data.csv")
+    csv = write_data_csv(synthesize(cfg, seed=0), tmp / "data.csv")
     t0 = time.perf_counter()
     data = load_measured(csv)
     t1 = time.perf_counter()

@@ -72,10 +72,11 @@ def child(csv: str, out: str) -> None:
 
 def make_data(n: int, effect: str | None, path: Path) -> Path:
     """The synthetic rig's experiment with ``n`` samples in all, as CSV."""
-    from oilgap.studies.synth import SynthConfig, synthesize, write_synth_csv
+    from oilgap.studies.reporting import write_data_csv
+    from oilgap.studies.synth import SynthConfig, synthesize
     per_run = n // RUNS
     cfg = SynthConfig(n_samples=per_run, sample_interval_s=RUN_S / per_run, effect=effect)
-    return write_synth_csv(synthesize(cfg, seed=0), path)
+    return write_data_csv(synthesize(cfg, seed=0), path)
 
 
 def run_size(n: int, effect: str | None, tmp: Path) -> dict:

@@ -450,10 +450,3 @@ def write_oils_csv(config: OutsideConfig, path: str | Path) -> Path:
     return path
 
 
-def write_csv(df: pd.DataFrame, path: str | Path) -> Path:
-    """Write rig data as CSV (7 significant digits, far below the noise)."""
-    path = Path(path)
-    if not path.parent.is_dir():
-        raise InputError("--out", str(path), f"directory {str(path.parent)!r} does not exist")
-    df.to_csv(path, index=False, float_format="%.7g")
-    return path

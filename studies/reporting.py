@@ -18,6 +18,8 @@ import pandas as pd
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
+from oilgap.model.errors import InputError
+
 DPI = 120
 """Resolution of the studies' PNG figures [dots per inch]."""
 
@@ -52,6 +54,19 @@ def write_tables(out: Path, tables: dict[str, pd.DataFrame]) -> list[Path]:
         df.to_csv(out / name, index=False)
         paths.append(out / name)
     return paths
+
+
+def write_data_csv(df: pd.DataFrame, path: str | Path) -> Path:
+    """Write simulated rig data as CSV (7 significant digits, far below the noise).
+
+    The one writer of both synthetic rigs (:mod:`oilgap.studies.synth`,
+    :mod:`oilgap.studies.outside_rig`); refuses a folder that does not exist.
+    """
+    path = Path(path)
+    if not path.parent.is_dir():
+        raise InputError("--out", str(path), f"directory {str(path.parent)!r} does not exist")
+    df.to_csv(path, index=False, float_format="%.7g")
+    return path
 
 
 def new_figure(width: float = 7.5, height: float = 4.8, ncols: int = 1, nrows: int = 1,

@@ -32,7 +32,6 @@ seeds of one configuration cost only the noise.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from pathlib import Path
 
 import numpy as np
 import pandas as pd
@@ -470,15 +469,6 @@ def synthesize(config: SynthConfig | None = None, seed: int = 0) -> pd.DataFrame
             "run": name, "time_s": np.round(t, 6), "speed_rpm": speed, "temp_C": temp,
             "oil": oil or "none", "roughness_T": T, cfg.kind: p}))
     return pd.concat(frames, ignore_index=True)
-
-
-def write_synth_csv(df: pd.DataFrame, path: str | Path) -> Path:
-    """Write synthetic data as CSV (6 significant digits is far below the noise)."""
-    path = Path(path)
-    if not path.parent.is_dir():
-        raise InputError("--out", str(path), f"directory {str(path.parent)!r} does not exist")
-    df.to_csv(path, index=False, float_format="%.7g")
-    return path
 
 
 def weakest_strength(effect: str, config: SynthConfig | None = None,

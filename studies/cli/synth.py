@@ -9,7 +9,8 @@ import sys
 from oilgap.model.case_io import read_case_toml
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
-from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize, write_synth_csv
+from oilgap.studies.reporting import write_data_csv
+from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize
 
 
 def run(args: argparse.Namespace) -> int:
@@ -31,7 +32,7 @@ def run(args: argparse.Namespace) -> int:
                       kind="viscous_power_W" if args.viscous else "power_W")
     df = synthesize(cfg, seed=args.seed)
     try:
-        path = write_synth_csv(df, args.out)
+        path = write_data_csv(df, args.out)
     except OSError as e:
         raise InputError("--out", args.out, f"cannot write the file ({e.strerror})") from None
     runs = df["run"].nunique()

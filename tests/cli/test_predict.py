@@ -19,7 +19,8 @@ from oilgap.optim.calibration.model_io import (
     load_model,
 )
 from oilgap.studies.cli import main
-from oilgap.studies.synth import SynthConfig, synthesize, write_synth_csv
+from oilgap.studies.reporting import write_data_csv
+from oilgap.studies.synth import SynthConfig, synthesize
 
 CFG = SynthConfig(n_samples=200, effect="seal_coulomb_friction")
 """A small synthetic rig (2 oil-free + 8 oil runs of 200 samples) with a seal torque."""
@@ -28,7 +29,7 @@ CFG = SynthConfig(n_samples=200, effect="seal_coulomb_friction")
 @pytest.fixture(scope="module")
 def rig(tmp_path_factory):
     d = tmp_path_factory.mktemp("rig")
-    csv = write_synth_csv(synthesize(CFG, seed=1), d / "rig.csv")
+    csv = write_data_csv(synthesize(CFG, seed=1), d / "rig.csv")
     est = LoopEstimator().fit(csv)
     return csv, est
 

@@ -29,8 +29,8 @@ from oilgap.studies.outside_rig import (
     simulate,
     steady_points,
     synthesize,
-    write_csv,
 )
+from oilgap.studies.reporting import write_data_csv
 
 ROOT = Path(__file__).resolve().parents[2]
 W0 = 3000 * 2 * math.pi / 60  # 314.159 rad/s
@@ -315,7 +315,7 @@ def test_gaps_silicone_and_steady_points(tmp_path):
     assert df.loc[df["oil"] == "VG22", "nu_cSt"].isna().all()
     assert sorted(df.loc[df["oil"] != "none", "gap_mm"].unique()) == [0.5, 1.0]
     assert validate(df).n_dropped == 0
-    write_csv(df, tmp_path / "rig.csv")
+    write_data_csv(df, tmp_path / "rig.csv")
     assert len(pd.read_csv(tmp_path / "rig.csv")) == len(df)
     st = steady_points(replace(NEWTONIAN, noise_power_W=0.0), speeds_rpm=(1000.0,),
                        temps_C=(25.0,))

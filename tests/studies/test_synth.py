@@ -13,6 +13,7 @@ from oilgap.model.measured_data import REQUIRED_COLUMNS
 from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_geometry
 from oilgap.model.viscous_loss import clearance_power
+from oilgap.studies.reporting import write_data_csv
 from oilgap.studies.synth import (
     BaselineTruth,
     SynthConfig,
@@ -21,7 +22,6 @@ from oilgap.studies.synth import (
     seed_truth_law,
     simulate_truth,
     synthesize,
-    write_synth_csv,
 )
 
 
@@ -35,7 +35,7 @@ def test_format_and_no_hint_of_the_effect(tmp_path):
     assert sorted(clean["roughness_T"].unique()) == [2.0, 4.0]
     t = clean.loc[clean["run"] == "VG150-T4", "time_s"].to_numpy()
     assert t[0] == 0.0 and np.allclose(np.diff(t), 0.2)
-    p = write_synth_csv(lag, tmp_path / "lag.csv")
+    p = write_data_csv(lag, tmp_path / "lag.csv")
     text = p.read_text()
     assert "lag" not in text and "thermal" not in text and "effect" not in text
 

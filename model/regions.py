@@ -22,6 +22,7 @@ from __future__ import annotations
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
+from .film_cycle import FilmHeating, film_factors
 from .skin_friction import FrictionLaw, groove_roughness
 from .viscous_loss import clearance_power, weighted_mean
 
@@ -170,7 +171,7 @@ def region_power(region: Region, omega_rad_s, nu_m2_s, density_kg_m3, law: Frict
 
 
 def region_mean_power(region: Region, nodes_rad_s, weights, nu_m2_s, density_kg_m3,
-                      law: FrictionLaw):
+                      law: FrictionLaw, film: FilmHeating | None = None, b_1_K=None):
     """Mean viscous power [W] of one region over a duty cycle's speed distribution.
 
     ``sum_i w_i P(omega_i)`` over the nodes and weights of
@@ -193,6 +194,11 @@ def region_mean_power(region: Region, nodes_rad_s, weights, nu_m2_s, density_kg_
         Oil density [kg/m^3].
     law : FrictionLaw
         How C_m is computed.
+    film : FilmHeating, optional
+        Apply the film-heating correction (:func:`~oilgap.model.film_cycle.film_factors`)
+        node by node; None (default): the isothermal film.
+    b_1_K : float, array or CasADi symbol, optional
+        ``-d ln(mu)/dT`` at the bulk temperature [1/K]; required with ``film``.
 
     Returns
     -------
@@ -204,9 +210,13 @@ def region_mean_power(region: Region, nodes_rad_s, weights, nu_m2_s, density_kg_
     Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
     Deep-Sea Electric Manipulator, Eqs. 5 and 10) [1]: the
     mean over the cycle's 1500 samples, reduced exactly to its speed distribution.
+    Film heating: Nahme (1940), Gavis & Laurence (1968) (:mod:`.film_cycle`).
     """
-    return weighted_mean(region_power(region, nodes_rad_s, nu_m2_s, density_kg_m3, law),
-                         weights)
+    power = region_power(region, nodes_rad_s, nu_m2_s, density_kg_m3, law)
+    if film is not None:
+        power = power * film_factors(nodes_rad_s, weights, region.radius_m, region.gap_m,
+                                     nu_m2_s, density_kg_m3, b_1_K, film)
+    return weighted_mean(power, weights)
 
 
 def rotor_stator_radii(R_m, delta_m, rotor_groove_m, stator_groove_m):

@@ -1,0 +1,233 @@
+"""A joint's viscous loss under a thermal mode: the one composition of film and bulk.
+
+Three modes, the same for every command and study:
+
+``none``
+    The seed paper's isothermal model: the film at the given oil temperature.
+``film``
+    The film-heating correction (:mod:`.film_cycle`) at the given oil temperature.
+``full``
+    The film correction at the bulk oil temperature that balances the joint's heat:
+    ``T = T_sea + R (P(T) + Q)`` (:func:`~oilgap.model.thermal.joint_steady_temperature`,
+    the case's ``[thermal]`` table).
+
+The default is the best physics the case allows: ``full`` with a ``[thermal]`` table,
+``film`` without (:func:`default_thermal_mode`).
+
+Functions accept floats and numpy arrays of temperatures; :func:`joint_mean_power`
+also CasADi symbols (the design NLP differentiates it).
+
+References
+----------
+.. [1] Seed paper, *Modeling and Optimization of Compensating Oil Viscous Power for a
+   Deep-Sea Electric Manipulator*, Eqs. 5 and 10 (the isothermal loss).
+.. [2] R. Nahme, 1940; J. Gavis, R. L. Laurence, 1968 (the heated film).
+.. [3] T. L. Bergman et al., *Fundamentals of Heat and Mass Transfer*, 7th ed., Wiley
+   2011, sec. 3.1 (the bulk balance).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import casadi as ca
+import numpy as np
+
+from . import _math as m
+from .errors import InputError
+from .film_cycle import FilmHeating, film_heating_for
+from .oil_properties import seawater_gauge_pressure
+from .regions import joint_regions, region_mean_power
+from .thermal import joint_steady_temperature
+from .units import celsius_to_kelvin
+
+if TYPE_CHECKING:  # pragma: no cover - typing only
+    from .case import DesignCase
+
+THERMAL_MODES = ("none", "film", "full")
+"""Thermal modes: isothermal, film heating at the given temperature, film plus bulk
+balance [-]."""
+
+
+@dataclass(frozen=True)
+class OperatingTemperature:
+    """The bulk oil temperature a thermal mode gives, and the loss there.
+
+    Attributes
+    ----------
+    mode : str
+        One of :data:`THERMAL_MODES`.
+    oil_temp_C : float
+        Bulk oil temperature [degC] (the case's, or the balance's under ``full``).
+    sea_temp_C : float or None
+        Sea temperature [degC] under ``full``; None otherwise.
+    mean_power_W : float
+        Mean viscous loss over the duty cycle at ``oil_temp_C`` under the mode [W].
+    """
+
+    mode: str
+    oil_temp_C: float
+    sea_temp_C: float | None
+    mean_power_W: float
+
+
+def default_thermal_mode(case: DesignCase) -> str:
+    """The best physics the case allows: ``"full"`` with ``[thermal]``, else ``"film"``.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case.
+
+    Returns
+    -------
+    str
+        A mode of :data:`THERMAL_MODES`.
+    """
+    return "full" if case.thermal is not None else "film"
+
+
+def resolve_thermal_mode(case: DesignCase, mode: str | None) -> str:
+    """Check a requested mode against the case (None: :func:`default_thermal_mode`).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case.
+    mode : str or None
+        Requested mode.
+
+    Returns
+    -------
+    str
+        The mode to use.
+
+    Raises
+    ------
+    InputError
+        An unknown mode, or ``"full"`` for a case without a ``[thermal]`` table.
+    """
+    if mode is None:
+        return default_thermal_mode(case)
+    if mode not in THERMAL_MODES:
+        raise InputError("thermal", mode, f"one of {', '.join(THERMAL_MODES)}")
+    if mode == "full" and case.thermal is None:
+        raise InputError("thermal", mode, "'none' or 'film': the case has no [thermal] "
+                         "table (sea_temp_C, resistance_K_per_W, heat_capacity_J_per_K)")
+    return mode
+
+
+def case_film(case: DesignCase) -> FilmHeating:
+    """The case's film settings (walls and k from ``[thermal]`` if given; the duty
+    cycle's heating spectrum), cached on the case's duty cycle.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case.
+
+    Returns
+    -------
+    FilmHeating
+        Walls, k [W/(m K)], alpha [m^2/s], heating spectrum [rad/s], [-].
+    """
+    cache = case.duty_cycle.__dict__.setdefault("_film_cache", {})
+    key = (case.thermal.walls, case.thermal.conductivity_W_mK) if case.thermal else None
+    if key not in cache:
+        cache[key] = film_heating_for(case.duty_cycle, case.thermal)
+    return cache[key]
+
+
+def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | None = None,
+                     regions=None):
+    """Mean viscous loss [W] of all regions over the duty cycle at a bulk temperature.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The joint, oil, friction law, duty cycle (and ``[thermal]`` for the film's walls).
+    oil_temp_C : float, array or CasADi symbol
+        Bulk oil temperature(s) [degC]; an array gives one loss per temperature.
+    mode : str
+        ``"none"`` (isothermal) or ``"film"``/``"full"`` (film correction at this
+        temperature; the bulk balance is :func:`operating_temperature`'s).
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+    regions : sequence of Region, optional
+        The regions (default: :func:`~oilgap.model.regions.joint_regions` of the case;
+        the design NLP passes region 1 with symbolic geometry).
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Mean loss [W] (Eq. 10 with the film factor per node).
+
+    References
+    ----------
+    Seed paper [1]_ (Eqs. 5, 10); Nahme, Gavis & Laurence [2]_.
+    """
+    d = case.operating.depth_m if depth_m is None else depth_m
+    p = seawater_gauge_pressure(d)
+    symbolic = m.is_symbolic(oil_temp_C)
+    t = oil_temp_C if symbolic else np.asarray(oil_temp_C, dtype=float)
+    t_k = celsius_to_kelvin(t)
+    nu, _, rho = case.oil.properties(t_k, p)
+    nodes, weights = case.duty_cycle.speed_distribution()
+    if symbolic:
+        nodes = ca.DM(nodes)
+    elif np.ndim(t):
+        nu, rho = np.asarray(nu)[..., None], np.asarray(rho)[..., None]
+    film = b = None
+    if mode != "none":
+        film = case_film(case)
+        b = case.oil.temperature_slope(t_k, p)
+        if not symbolic and np.ndim(t):
+            b = np.asarray(b)[..., None]
+    regions = joint_regions(case) if regions is None else regions
+    return sum(region_mean_power(r, nodes, weights, nu, rho, case.friction, film, b)
+               for r in regions)
+
+
+def operating_temperature(case: DesignCase, mode: str | None = None,
+                          depth_m: float | None = None) -> OperatingTemperature:
+    """The bulk oil temperature and loss of a case under a thermal mode.
+
+    ``none``/``film``: the case's oil temperature. ``full``: the unique root of
+    ``T = T_sea + R (P(T) + Q)`` (:func:`~oilgap.model.thermal.joint_steady_temperature`).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case.
+    mode : str, optional
+        A mode of :data:`THERMAL_MODES` (default: :func:`default_thermal_mode`).
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+
+    Returns
+    -------
+    OperatingTemperature
+        Mode, T_oil [degC], T_sea [degC] or None, mean loss [W].
+
+    Raises
+    ------
+    InputError
+        An unknown mode or ``full`` without ``[thermal]``.
+    SolverError
+        The balance did not converge.
+
+    References
+    ----------
+    Bergman et al. [3]_, sec. 3.1.
+    """
+    mode = resolve_thermal_mode(case, mode)
+    if mode != "full":
+        t = float(case.operating.oil_temp_C)
+        return OperatingTemperature(mode, t, None,
+                                    float(joint_mean_power(case, t, mode, depth_m)))
+    temps, power = joint_steady_temperature(
+        lambda ts: np.asarray(joint_mean_power(case, ts, mode, depth_m), dtype=float),
+        case.thermal, 1)
+    return OperatingTemperature(mode, float(temps[0]), float(case.thermal.sea_temp_C),
+                                float(power[0]))

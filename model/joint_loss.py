@@ -148,15 +148,17 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
     case : DesignCase
         The joint, oil, friction law, duty cycle (and ``[thermal]`` for the film's walls).
     oil_temp_C : float, array or CasADi symbol
-        Bulk oil temperature(s) [degC]; an array gives one loss per temperature.
+        Bulk oil temperature(s) [degC]; an array gives one loss per temperature
+        (broadcast with ``depth_m`` and the regions' leading axes).
     mode : str
         ``"none"`` (isothermal) or ``"film"``/``"full"`` (film correction at this
         temperature; the bulk balance is :func:`operating_temperature`'s).
-    depth_m : float, optional
+    depth_m : float or array, optional
         Sea depth [m] (default: the case's).
     regions : sequence of Region, optional
         The regions (default: :func:`~oilgap.model.regions.joint_regions` of the case;
-        the design NLP passes region 1 with symbolic geometry).
+        the design NLP passes region 1 with symbolic geometry, a sweep regions whose
+        R, delta, L, T have shape (n, 1)).
 
     Returns
     -------
@@ -174,16 +176,16 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
     t_k = celsius_to_kelvin(t)
     nu, _, rho = case.oil.properties(t_k, p)
     nodes, weights = case.duty_cycle.speed_distribution()
-    if symbolic:
-        nodes = ca.DM(nodes)
-    elif np.ndim(t):
-        nu, rho = np.asarray(nu)[..., None], np.asarray(rho)[..., None]
     film = b = None
     if mode != "none":
         film = case_film(case)
         b = case.oil.temperature_slope(t_k, p)
-        if not symbolic and np.ndim(t):
-            b = np.asarray(b)[..., None]
+    if symbolic:
+        nodes = ca.DM(nodes)
+    elif np.ndim(nu) or np.ndim(rho) or np.ndim(b):
+        shape = np.broadcast_shapes(np.shape(nu), np.shape(rho), np.shape(b))
+        nu, rho = (np.broadcast_to(v, shape)[..., None] for v in (nu, rho))
+        b = None if b is None else np.broadcast_to(b, shape)[..., None]
     regions = joint_regions(case) if regions is None else regions
     return sum(region_mean_power(r, nodes, weights, nu, rho, case.friction, film, b)
                for r in regions)

@@ -46,6 +46,20 @@ def positive_int(text: str) -> int:
     return v
 
 
+THERMAL_MODES = ("none", "film", "full")
+"""The thermal modes (:data:`oilgap.model.joint_loss.THERMAL_MODES`, written out for the
+same reason as :data:`EFFECT_NAMES`)."""
+
+
+def add_thermal_argument(p) -> None:
+    """The one ``--thermal`` option of every command that reports a loss."""
+    p.add_argument("--thermal", choices=THERMAL_MODES, default=None,
+                   help="none: isothermal oil (the seed paper's model); film: the film's "
+                   "own shear heating at the given oil temperature; full: film heating and "
+                   "the bulk oil temperature from the heat balance to the sea (needs the "
+                   "case's [thermal] table). Default: full with [thermal], else film")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The top-level parser with every command."""
     parser = argparse.ArgumentParser(
@@ -75,6 +89,7 @@ def add_evaluate(sub) -> None:
                    help="law below the critical Taylor number (default: the case's)")
     p.add_argument("--smoothed", action="store_true",
                    help="without CASE: the seed joint smoothed with epoxy (T = 2)")
+    add_thermal_argument(p)
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(command="evaluate")
 

@@ -9,7 +9,8 @@ import sys
 import pytest
 
 from oilgap.model.effects import EFFECTS
-from oilgap.studies.cli import COMMANDS, build_parser
+from oilgap.model.joint_loss import THERMAL_MODES
+from oilgap.studies.cli import COMMANDS, build_parser, parsers
 from oilgap.studies.cli.parsers import EFFECT_NAMES
 
 HEAVY = ("pandas", "matplotlib", "cvxpy", "scipy.signal", "oilgap.optim")
@@ -17,6 +18,10 @@ HEAVY = ("pandas", "matplotlib", "cvxpy", "scipy.signal", "oilgap.optim")
 
 def test_effect_names_are_the_library_keys():
     assert EFFECT_NAMES == tuple(EFFECTS)
+
+
+def test_thermal_modes_are_the_models():
+    assert parsers.THERMAL_MODES == THERMAL_MODES
 
 
 @pytest.mark.parametrize("argv", [["evaluate"], ["study", "smoothing"], ["study", "pareto"],

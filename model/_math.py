@@ -18,7 +18,10 @@ _CASADI_TYPES = (ca.SX, ca.MX, ca.DM)
 
 def is_symbolic(*args: Any) -> bool:
     """Return True if any argument is a CasADi matrix (SX, MX or DM)."""
-    return any(isinstance(a, _CASADI_TYPES) for a in args)
+    for a in args:  # a plain loop: this runs in every law's every call
+        if isinstance(a, _CASADI_TYPES):
+            return True
+    return False
 
 
 def exp(x):

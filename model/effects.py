@@ -67,6 +67,7 @@ from .errors import InputError
 from .regions import JointGeometry, region_power
 from .skin_friction import FrictionLaw
 from .taylor_couette import couette_reynolds, taylor_number
+from .thermal import steady_temperature
 
 __all__ = [
     "RegionState", "EffectContext", "region_states", "effect_context", "cross_region_ratios",
@@ -302,39 +303,46 @@ def _f_film(c: EffectContext):
 
 
 def film_temperature(temp_C, power_at: Callable[[np.ndarray], np.ndarray],
-                     coefficient_K_W: float, steps: int = 8) -> np.ndarray:
+                     coefficient_K_W: float) -> np.ndarray:
     """Film temperature of the lumped heated film, ``T_f = T + c P(T_f)`` per sample [4].
 
-    Newton steps from ``T_f = T``: ``g(T_f) = T_f - T - c P(T_f)`` rises (P falls with
-    the temperature) and is concave (P is convex in it), so each step stays below the
-    root and the steps rise to it; the root is unique.
+    The same fixed point as the bulk balance ``T = T_base + R P(T)`` with ``T_base = T``
+    and ``R = c``, solved by its one solver,
+    :func:`~oilgap.model.thermal.steady_temperature` (safeguarded Newton, vectorised
+    over the samples): ``g(T_f) = T_f - T - c P(T_f)`` rises (P falls with the
+    temperature), so the root is unique, between ``T`` and ``T + c P(T)``.
 
     Parameters
     ----------
     temp_C : array
-        Measured (or lagged) oil temperature per sample [degC].
+        Measured (or lagged) oil temperature per sample [degC] (any shape).
     power_at : callable
-        Temperature [degC] per sample -> the clearance's viscous power [W] per sample.
+        Temperature [degC] per sample (shape of ``temp_C``) -> the clearance's viscous
+        power [W] per sample.
     coefficient_K_W : float
         Film rise per watt of the clearance's loss, c [K/W] (>= 0).
-    steps : int
-        Most Newton steps; stops earlier at a change below 1e-9 K [-].
 
     Returns
     -------
     ndarray
-        Film temperature per sample [degC].
+        Film temperature per sample [degC], to 1e-9 K on the residual.
+
+    Raises
+    ------
+    SolverError
+        The fixed point did not converge.
     """
     T = np.asarray(temp_C, dtype=float)
-    Tf, h = T.copy(), 0.01
-    for _ in range(steps):
-        p = power_at(Tf)
-        dp = (power_at(Tf + h) - power_at(Tf - h)) / (2.0 * h)
-        step = (T + coefficient_K_W * p - Tf) / (1.0 - coefficient_K_W * np.minimum(dp, 0.0))
-        Tf = Tf + step
-        if not np.any(np.abs(step) > 1e-9):
-            break
-    return Tf
+    n = T.size
+    if n == 0 or coefficient_K_W == 0:
+        return T.copy()
+
+    def stacked(temps):  # k temperatures of every sample, sample index fastest
+        return np.concatenate([np.broadcast_to(power_at(part.reshape(T.shape)), T.shape)
+                               .ravel() for part in temps.reshape(-1, n)])
+
+    tf, _ = steady_temperature(stacked, T.ravel(), coefficient_K_W, n)
+    return tf.reshape(T.shape)
 
 
 def taylor_feature(c: EffectContext, exponent: float = 2.0):

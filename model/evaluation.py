@@ -3,7 +3,12 @@
 Thin layer over the physics functions: the fluid's properties at the operating
 condition (any fluid of the case: :mod:`oil_properties`, :mod:`fluids`), Re and Ta
 (:mod:`taylor_couette`), C_m (:mod:`skin_friction`) and the power of each region
-(:mod:`viscous_loss`), averaged over the duty cycle by its exact speed distribution.
+(:mod:`viscous_loss`), averaged over the duty cycle by its exact speed distribution,
+under a thermal mode of :mod:`.joint_loss` (``none``: the seed paper's isothermal
+model; ``film``: the film-heating factor at the given oil temperature; ``full``: the
+film factor at the bulk temperature of the heat balance to the sea). Under every mode
+the film at the peak speed (Nahme number, factor, temperature rise) is reported; under
+``none`` it is a diagnostic of the heating the model leaves out, not applied.
 
 References
 ----------
@@ -19,7 +24,16 @@ from dataclasses import asdict, dataclass, replace
 import numpy as np
 
 from .case import DesignCase
+from .errors import InputError
+from .film_cycle import film_peak
 from .fluids import warn_if_untrusted_state
+from .joint_loss import (
+    joint_mean_power,
+    mode_film,
+    operating_temperature,
+    region_mean_powers,
+    resolve_thermal_mode,
+)
 from .oil_properties import seawater_gauge_pressure
 from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
@@ -41,15 +55,28 @@ class RegionResult:
     roughness_T : float
         Clearance roughness T [-].
     Re_peak, Ta_peak : float
-        Couette Reynolds and Taylor numbers at the peak speed [-].
+        Couette Reynolds and Taylor numbers at the peak speed and the operating
+        temperature [-].
     regimes : tuple of str
         Flow regimes the cycle visits (Bilgen-Boulos names), in Re order.
     Cm_peak : float
-        Moment coefficient at the peak speed [-].
+        Isothermal moment coefficient at the peak speed [-] (the film factor
+        multiplies it under ``film``/``full``).
     mean_power_W : float
-        Mean viscous power over the cycle [W].
+        Mean viscous power over the cycle under the thermal mode [W].
     torque_peak_Nm : float
-        Viscous torque at the peak speed [N m].
+        Viscous torque at the peak speed under the thermal mode [N m].
+    nahme_peak : float
+        Nahme-Griffith number b mu U^2/k at the peak speed and the operating
+        temperature (plane film, rotor surface speed) [-].
+    film_factor_peak : float
+        Heated/isothermal torque ratio at the peak speed [-]: the factor the
+        ``film``/``full`` modes apply there. Under ``none`` it is not applied: a
+        diagnostic of the film heating the isothermal model leaves out.
+    film_temp_rise_peak_K : float or None
+        Hottest point of the film above the bulk at the peak speed [K] (laminar
+        solution; under ``none`` a diagnostic as above); None when the flow there has
+        Taylor vortices (the film correction is laminar-only).
     """
 
     name: str
@@ -63,6 +90,9 @@ class RegionResult:
     Cm_peak: float
     mean_power_W: float
     torque_peak_Nm: float
+    nahme_peak: float
+    film_factor_peak: float
+    film_temp_rise_peak_K: float | None
 
 
 @dataclass(frozen=True)
@@ -73,14 +103,24 @@ class CaseEvaluation:
     ----------
     case_name, oil : str
         Names of the case and the oil.
+    thermal_mode : str
+        ``"none"``, ``"film"`` or ``"full"`` (:mod:`.joint_loss`).
+    thermal_mode_default : bool
+        True when the mode is the default (the user did not choose it).
     oil_temp_C : float
-        Oil temperature [degC].
+        Operating bulk oil temperature [degC]: the case's (or the given) one, or the
+        heat balance's under ``full``.
+    sea_temp_C : float or None
+        Sea temperature of the heat balance [degC] under ``full``; None otherwise.
+    resistance_K_per_W, other_heat_W : float or None
+        The balance's resistance oil to sea [K/W] and other heat [W] under ``full``;
+        None otherwise.
     depth_m : float
         Sea depth [m].
     nu_cSt : float
-        Kinematic viscosity at the condition [cSt].
+        Kinematic viscosity at the operating condition [cSt].
     density_kg_m3 : float
-        Oil density at the condition [kg/m^3].
+        Oil density at the operating condition [kg/m^3].
     laminar_law, form : str
         The friction law's laminar law and form.
     peak_speed_rpm : float
@@ -88,7 +128,10 @@ class CaseEvaluation:
     regions : tuple of RegionResult
         Region 1, then region 2 if any.
     total_mean_power_W : float
-        Mean viscous power of all regions (Eq. 10) [W].
+        Mean viscous power of all regions under the thermal mode (Eq. 10) [W].
+    isothermal_total_mean_power_W : float
+        The seed paper's isothermal model (mode ``none``) at the case's own oil
+        temperature [W]: what the heating changed.
     viscous_torque_peak_Nm : float
         Viscous torque of all regions at the peak speed [N m].
     cycle_energy_J : float
@@ -97,7 +140,12 @@ class CaseEvaluation:
 
     case_name: str
     oil: str
+    thermal_mode: str
+    thermal_mode_default: bool
     oil_temp_C: float
+    sea_temp_C: float | None
+    resistance_K_per_W: float | None
+    other_heat_W: float | None
     depth_m: float
     nu_cSt: float
     density_kg_m3: float
@@ -106,6 +154,7 @@ class CaseEvaluation:
     peak_speed_rpm: float
     regions: tuple[RegionResult, ...]
     total_mean_power_W: float
+    isothermal_total_mean_power_W: float
     viscous_torque_peak_Nm: float
     cycle_energy_J: float
 
@@ -175,7 +224,9 @@ def region_powers(case: DesignCase, omega_rad_s, nu_m2_s, rho_kg_m3) -> dict[str
 
 def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
                        depth_m: float | None = None) -> float:
-    """Mean viscous power [W] of all regions over the case's duty cycle (Eq. 10).
+    """Mean viscous power [W] of all regions over the case's duty cycle (Eq. 10),
+    isothermal (thermal mode ``none``; the other modes:
+    :func:`~oilgap.model.joint_loss.joint_mean_power`).
 
     Parameters
     ----------
@@ -202,62 +253,120 @@ def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
                      for r in joint_regions(case)))
 
 
+def _region_result(case: DesignCase, region, p_mean: float, nu, rho, b, film,
+                   apply_film: bool) -> RegionResult:
+    """One region's numbers at the operating state (film applied or only reported)."""
+    cycle = case.duty_cycle
+    nodes, weights = cycle.speed_distribution()
+    w_peak = cycle.peak_omega_rad_s
+    R, gap = region.radius_m, region.gap_m
+    re_peak = float(couette_reynolds(w_peak, R, gap, nu))
+    peak = film_peak(nodes, weights, R, gap, nu, rho, b, film)
+    tq = float(viscous_torque(float(region_power(region, w_peak, nu, rho, case.friction)),
+                              w_peak))
+    if apply_film:
+        tq *= peak["film_factor_peak"]
+    re_nodes = couette_reynolds(nodes, R, gap, nu)
+    visited = set(flow_regime(re_nodes[weights > 0]))
+    regimes = tuple(r for r in ("laminar", "laminar with vortices",
+                                "turbulent with vortices", "turbulent") if r in visited)
+    return RegionResult(
+        region.name, R, gap, region.length_m, float(region.roughness_T), re_peak,
+        float(taylor_number(re_peak, gap, R)), regimes,
+        float(moment_coefficient(re_peak, gap / R, case.friction, region.roughness_T)),
+        float(p_mean), tq, peak["nahme_peak"], peak["film_factor_peak"],
+        peak["film_temp_rise_peak_K"])
+
+
+def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regions):
+    """Operating temperature [degC], nu [m^2/s], rho [kg/m^3] and each region's mean loss
+    [W] under the mode (today's isothermal path, unchanged, under ``none``)."""
+    t = t_case
+    if mode == "full":
+        op = operating_temperature(case, mode, d)
+        t, means = op.oil_temp_C, op.region_mean_powers_W
+    with warnings.catch_warnings():
+        warnings.simplefilter("default")
+        nu, _, rho = oil_state(case, t, d)
+    if mode == "none":
+        nodes, weights = case.duty_cycle.speed_distribution()
+        means = [region_mean_power(r, nodes, weights, nu, rho, case.friction) for r in regions]
+    elif mode == "film":
+        means = region_mean_powers(case, t, mode, d)
+    return t, nu, rho, means
+
+
 def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
-                  depth_m: float | None = None, laminar_law: str | None = None) -> CaseEvaluation:
-    """Evaluate a case region by region over its duty cycle.
+                  depth_m: float | None = None, laminar_law: str | None = None,
+                  thermal: str | None = None) -> CaseEvaluation:
+    """Evaluate a case region by region over its duty cycle under a thermal mode.
+
+    ``none``: the seed paper's isothermal model at the oil temperature. ``film``: the
+    film-heating factor (:mod:`.film_cycle`) at that temperature. ``full``: the film
+    factor at the bulk temperature of the heat balance to the sea
+    (:func:`~oilgap.model.joint_loss.operating_temperature`, the case's ``[thermal]``).
+    Under every mode the film's Nahme number, factor and temperature rise at the peak
+    speed are reported (under ``none`` as diagnostics, not applied).
 
     Parameters
     ----------
     case : DesignCase
         The joint, oil, condition, duty cycle and friction law.
     oil_temp_C : float, optional
-        Oil temperature [degC] (default: the case's).
+        Oil temperature [degC] (default: the case's); refused under ``full``, where
+        the heat balance sets it.
     depth_m : float, optional
         Sea depth [m] (default: the case's).
     laminar_law : {"couette", "bilgen-boulos"}, optional
         Override of the friction law's laminar law.
+    thermal : {"none", "film", "full"}, optional
+        Thermal mode (default: the best physics the case allows,
+        :func:`~oilgap.model.joint_loss.default_thermal_mode`).
 
     Returns
     -------
     CaseEvaluation
-        Oil state, and per region Re, Ta, C_m at the peak speed, the regimes
-        visited and the mean power [W]; totals [W], [N m], [J].
+        Mode, operating oil state, and per region Re, Ta, C_m at the peak speed, the
+        regimes visited, the mean power [W] and the film at the peak; totals [W],
+        [N m], [J] and the isothermal total [W].
+
+    Raises
+    ------
+    InputError
+        An unknown mode, ``full`` without ``[thermal]``, or ``oil_temp_C`` under
+        ``full``.
+    SolverError
+        The heat balance did not converge.
 
     References
     ----------
     Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 3-6 and 8-10) [1].
+    Deep-Sea Electric Manipulator, Eqs. 3-6 and 8-10) [1]; Nahme (1940), Gavis &
+    Laurence (1968) (the heated film).
     """
+    mode = resolve_thermal_mode(case, thermal)
     if laminar_law is not None:
         case = replace(case, friction=replace(case.friction, laminar_law=laminar_law))
-    t = case.operating.oil_temp_C if oil_temp_C is None else float(oil_temp_C)
+    t_case = case.operating.oil_temp_C if oil_temp_C is None else float(oil_temp_C)
     d = case.operating.depth_m if depth_m is None else float(depth_m)
-    with warnings.catch_warnings():
-        warnings.simplefilter("default")
-        nu, _, rho = oil_state(case, t, d)
-    cycle = case.duty_cycle
-    nodes, weights = cycle.speed_distribution()
-    w_peak = cycle.peak_omega_rad_s
-    results = []
-    total_torque = 0.0
-    for region in joint_regions(case):
-        name, R, gap, L, T = (region.name, region.radius_m, region.gap_m, region.length_m,
-                              region.roughness_T)
-        re_nodes = couette_reynolds(nodes, R, gap, nu)
-        p_mean = region_mean_power(region, nodes, weights, nu, rho, case.friction)
-        re_peak = float(couette_reynolds(w_peak, R, gap, nu))
-        p_peak = float(region_power(region, w_peak, nu, rho, case.friction))
-        tq = float(viscous_torque(p_peak, w_peak))
-        total_torque += tq
-        visited = set(flow_regime(re_nodes[weights > 0]))
-        regimes = tuple(r for r in ("laminar", "laminar with vortices",
-                                    "turbulent with vortices", "turbulent") if r in visited)
-        results.append(RegionResult(
-            name, R, gap, L, float(T), re_peak, float(taylor_number(re_peak, gap, R)), regimes,
-            float(moment_coefficient(re_peak, gap / R, case.friction, T)),
-            float(p_mean), tq))
+    spec = case.thermal if mode == "full" else None
+    if spec is not None and oil_temp_C is not None:
+        raise InputError("oil_temp_C", oil_temp_C, "not given under thermal mode 'full': the "
+                         "heat balance sets the oil temperature (change [thermal] "
+                         "sea_temp_C, or choose thermal 'film' or 'none')")
+    regions = joint_regions(case)
+    t, nu, rho, means = _operating_state(case, mode, t_case, d, regions)
+    film, b = mode_film(case, "film", celsius_to_kelvin(t), seawater_gauge_pressure(d))
+    results = tuple(_region_result(case, r, p, nu, rho, b, film, mode != "none")
+                    for r, p in zip(regions, means, strict=True))
     total = sum(r.mean_power_W for r in results)
-    return CaseEvaluation(case.name, case.oil.name, t, d, m2_s_to_cst(nu), float(rho),
-                          case.friction.laminar_law, case.friction.form,
-                          rad_s_to_rpm(w_peak), tuple(results), total, total_torque,
-                          total * cycle.duration_s)
+    iso = total if mode == "none" else float(joint_mean_power(case, t_case, "none", d))
+    cycle = case.duty_cycle
+    return CaseEvaluation(
+        case.name, case.oil.name, mode, thermal is None, t,
+        None if spec is None else float(spec.sea_temp_C),
+        None if spec is None else float(spec.resistance_K_W),
+        None if spec is None else float(spec.other_heat_W), d, m2_s_to_cst(nu), float(rho),
+        case.friction.laminar_law, case.friction.form, rad_s_to_rpm(cycle.peak_omega_rad_s),
+        results, total, iso, sum(r.torque_peak_Nm for r in results),
+        total * cycle.duration_s)

@@ -15,9 +15,9 @@ angular frequencies and variance fractions of the fluctuation of omega^2 over th
 on that spectrum: g = 1 is the quasi-steady film (Phi at every instant's Na, t1 -> 0),
 g = 0 the frozen film (Phi at the mean Na, t1 -> oo). Against a transient
 finite-difference solution of the film over 20 s cycles (sine and offset sine, Na_peak 1
-and 7.7, both wall conditions) the cycle-mean factor is within 0.9 % (0.2 % with
-isothermal walls), where the quasi-steady factor errs by up to 14 % and the frozen one
-by up to 11 % (docs/thermal.md).
+and 8, both wall conditions; tests/validation/test_film_cycle_transient.py) the
+cycle-mean factor is within 0.9 % (0.2 % with isothermal walls), where the quasi-steady
+factor errs by up to 14 % and the frozen one by up to 13 % (docs/thermal.md).
 
 The correction multiplies the laminar torque only. Above Taylor-vortex onset the core
 is mixed and the heating sits in thin wall layers, for which no validated torque

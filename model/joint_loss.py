@@ -38,7 +38,7 @@ from . import _math as m
 from .errors import InputError
 from .film_cycle import FilmHeating, film_heating_for
 from .oil_properties import seawater_gauge_pressure
-from .regions import joint_regions, region_mean_power
+from .regions import Region, joint_regions, region_mean_power
 from .thermal import joint_steady_temperature
 from .units import celsius_to_kelvin
 
@@ -48,7 +48,6 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
 THERMAL_MODES = ("none", "film", "full")
 """Thermal modes: isothermal, film heating at the given temperature, film plus bulk
 balance [-]."""
-
 
 @dataclass(frozen=True)
 class OperatingTemperature:
@@ -64,12 +63,15 @@ class OperatingTemperature:
         Sea temperature [degC] under ``full``; None otherwise.
     mean_power_W : float
         Mean viscous loss over the duty cycle at ``oil_temp_C`` under the mode [W].
+    region_mean_powers_W : tuple of float
+        The same per region, region 1 first (:func:`region_mean_powers`) [W].
     """
 
     mode: str
     oil_temp_C: float
     sea_temp_C: float | None
     mean_power_W: float
+    region_mean_powers_W: tuple[float, ...] = ()
 
 
 def default_thermal_mode(case: DesignCase) -> str:
@@ -139,6 +141,36 @@ def case_film(case: DesignCase) -> FilmHeating:
     return cache[key]
 
 
+def mode_film(case: DesignCase, mode: str, temp_K, pressure_gauge_Pa):
+    """The film correction a mode applies: the case's film and the oil's ``b`` there.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (oil, duty cycle, ``[thermal]``).
+    mode : str
+        A mode of :data:`THERMAL_MODES`.
+    temp_K : float, array or CasADi symbol
+        Bulk oil temperature [K].
+    pressure_gauge_Pa : float, array or CasADi symbol
+        Gauge pressure of the oil [Pa].
+
+    Returns
+    -------
+    film : FilmHeating or None
+        :func:`case_film` under ``film``/``full``; None under ``none``.
+    b_1_K : float, array, CasADi expression or None
+        ``-d ln(mu)/dT`` at (T, p) [1/K] (the oil's own law); None under ``none``.
+
+    References
+    ----------
+    Nahme, Gavis & Laurence [2]_ (Na = b mu U^2/k needs b at the wall temperature).
+    """
+    if mode == "none":
+        return None, None
+    return case_film(case), case.oil.temperature_slope(temp_K, pressure_gauge_Pa)
+
+
 def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | None = None,
                      regions=None):
     """Mean viscous loss [W] of all regions over the duty cycle at a bulk temperature.
@@ -176,10 +208,7 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
     t_k = celsius_to_kelvin(t)
     nu, _, rho = case.oil.properties(t_k, p)
     nodes, weights = case.duty_cycle.speed_distribution()
-    film = b = None
-    if mode != "none":
-        film = case_film(case)
-        b = case.oil.temperature_slope(t_k, p)
+    film, b = mode_film(case, mode, t_k, p)
     if symbolic:
         nodes = ca.DM(nodes)
     elif np.ndim(nu) or np.ndim(rho) or np.ndim(b):
@@ -191,12 +220,70 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
                for r in regions)
 
 
+def _stacked_regions(case: DesignCase) -> Region:
+    """The case's regions as one Region whose R, delta, L, T have shape (n_regions, 1)."""
+    regions = joint_regions(case)
+    cols = (np.array([getattr(r, f) for r in regions], dtype=float)[:, None]
+            for f in ("radius_m", "gap_m", "length_m", "roughness_T"))
+    return Region("stacked", *cols)
+
+
+def region_mean_powers(case: DesignCase, oil_temp_C, mode: str,
+                       depth_m: float | None = None) -> np.ndarray:
+    """Mean viscous loss [W] of each region at bulk temperature(s), numpy only.
+
+    :func:`joint_mean_power` with the regions stacked along one axis (one evaluation
+    of the laws for all regions: the fast path of the heat balance and of
+    :func:`~oilgap.model.evaluation.evaluate_case`).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The joint, oil, friction law, duty cycle (and ``[thermal]`` for the film).
+    oil_temp_C : float or array
+        Bulk oil temperature(s) [degC].
+    mode : str
+        A mode of :data:`THERMAL_MODES` (``film`` and ``full`` apply the film factor).
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+
+    Returns
+    -------
+    ndarray
+        Shape ``np.shape(oil_temp_C) + (n_regions,)``: region 1 first [W].
+
+    References
+    ----------
+    Seed paper [1]_ (Eqs. 5, 10); Nahme, Gavis & Laurence [2]_.
+    """
+    return _stacked_powers(case, oil_temp_C, mode, depth_m, _stacked_regions(case))
+
+
+def _stacked_powers(case: DesignCase, oil_temp_C, mode: str, depth_m: float | None,
+                    stacked: Region) -> np.ndarray:
+    """:func:`region_mean_powers` with the stacked regions given (built once per solve)."""
+    t = np.asarray(oil_temp_C, dtype=float)
+    p = joint_mean_power(case, t.reshape(-1, 1), mode, depth_m, (stacked,))
+    return np.asarray(p, dtype=float).reshape(t.shape + (-1,))
+
+
+def _balance(case: DesignCase, depth_m: float | None) -> tuple[float, np.ndarray]:
+    """``T = T_sea + R (P(T) + Q)`` by :func:`~oilgap.model.thermal.joint_steady_temperature`
+    (the one solver of the lumped balance), with the losses per region at the root."""
+    stacked = _stacked_regions(case)
+    temps, powers = joint_steady_temperature(
+        lambda ts: _stacked_powers(case, ts, "full", depth_m, stacked), case.thermal, 1)
+    return float(temps[0]), powers[0]
+
+
 def operating_temperature(case: DesignCase, mode: str | None = None,
                           depth_m: float | None = None) -> OperatingTemperature:
     """The bulk oil temperature and loss of a case under a thermal mode.
 
     ``none``/``film``: the case's oil temperature. ``full``: the unique root of
-    ``T = T_sea + R (P(T) + Q)`` (:func:`~oilgap.model.thermal.joint_steady_temperature`).
+    ``T = T_sea + R (P(T) + Q)`` (the balance of
+    :func:`~oilgap.model.thermal.joint_steady_temperature`, whose uniqueness argument
+    holds; three evaluations of the loss on the seed joint).
 
     Parameters
     ----------
@@ -210,7 +297,8 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
     Returns
     -------
     OperatingTemperature
-        Mode, T_oil [degC], T_sea [degC] or None, mean loss [W].
+        Mode, T_oil [degC], T_sea [degC] or None, mean loss [W] in total and per
+        region.
 
     Raises
     ------
@@ -226,10 +314,9 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
     mode = resolve_thermal_mode(case, mode)
     if mode != "full":
         t = float(case.operating.oil_temp_C)
-        return OperatingTemperature(mode, t, None,
-                                    float(joint_mean_power(case, t, mode, depth_m)))
-    temps, power = joint_steady_temperature(
-        lambda ts: np.asarray(joint_mean_power(case, ts, mode, depth_m), dtype=float),
-        case.thermal, 1)
-    return OperatingTemperature(mode, float(temps[0]), float(case.thermal.sea_temp_C),
-                                float(power[0]))
+        return OperatingTemperature(
+            mode, t, None, float(joint_mean_power(case, t, mode, depth_m)),
+            tuple(float(v) for v in region_mean_powers(case, t, mode, depth_m)))
+    t, powers = _balance(case, depth_m)
+    return OperatingTemperature(mode, float(t), float(case.thermal.sea_temp_C),
+                                float(powers.sum()), tuple(float(v) for v in powers))

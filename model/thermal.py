@@ -15,6 +15,18 @@ Because the viscous loss falls as the oil warms (dP/dT < 0), the steady
 residual ``g(T) = T - T_amb - R_th P(T)`` rises strictly and has exactly one
 root between ``T_amb`` and ``T_amb + R_th P(T_amb)``.
 
+Uniqueness needs only ``dg/dT = 1 - R_th dP/dT > 0``, i.e. ``dP/dT < 1/R_th``. The
+isothermal loss always falls with T. With the film-heating factor
+(:mod:`.film_cycle`) the loss of a laminar film tends to ``P ~ k ln(Na)/b`` at large
+Na, which rises with T wherever b = -d ln(mu)/dT falls fast enough, and the fade of
+the correction across Taylor onset raises a region's loss with T. For the seed joint
+(VG10 to VG1000) the total loss still falls everywhere from -2 to 150 degC with either
+wall condition (isothermal walls: from -30 degC); with an insulated rotor it rises
+below -14 degC (VG10) and below -19 to -30 degC (VG320 to VG1000), and the bearing
+region alone rises by at most 0.44 W/K across onset: far from 1/R_th. The solver
+scans, where the residual fell on the way, for a lower root and returns the lowest it
+finds (the bracket always holds a rising sign change of g, a stable balance).
+
 References
 ----------
 .. [1] T. L. Bergman, A. S. Lavine, F. P. Incropera, D. P. DeWitt, *Fundamentals
@@ -29,6 +41,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 from scipy.integrate import solve_ivp
+from scipy.special import lambertw
 
 from .errors import InputError, SolverError
 
@@ -74,11 +87,19 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
                        ) -> tuple[np.ndarray, np.ndarray]:
     """Solve the steady balance ``T = T_base + R_th P(T)`` of ``n`` cases at once [1].
 
-    ``g(T) = T - T_base - R_th P(T)`` rises strictly (P falls as the oil warms),
+    ``g(T) = T - T_base - R_th P(T)`` rises strictly where P falls as the oil warms,
     with ``g(T_base) <= 0 <= g(T_base + R_th P(T_base))``: exactly one root in
-    that bracket. Vectorised safeguarded Newton (forward-difference slope; a step
-    that leaves the bracket is replaced by bisection). A case whose root lies
-    above ``max_temp_C`` is returned at that cap.
+    that bracket; generally, one root while ``dP/dT < 1/R_th``. Where P rose between
+    ``T_base`` and the bracket's top (``g < 0`` there) the bracket is extended to
+    ``max_temp_C``. Vectorised safeguarded Newton (forward-difference slope; a step
+    leaving the bracket, a non-positive slope and every third iteration bisect, so the
+    bracket always shrinks). Converged where ``|g| < tol_K`` or the bracket is narrower
+    than ``tol_K``: a piecewise friction law (Eq. 6) gives P small steps where a speed
+    node crosses a regime boundary, and a root on a downward step is the step itself.
+    Where the residual was seen to fall (P rose) on the way, g is scanned at 15
+    temperatures between ``T_base`` and the root; a lower sign change is solved in
+    turn, so the root returned is the lowest found, where oil warming from ``T_base``
+    stops. A case whose root lies above ``max_temp_C`` is returned at that cap.
 
     Parameters
     ----------
@@ -110,7 +131,7 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
     InputError
         ``resistance_K_W`` < 0.
     SolverError
-        No convergence to ``tol_K`` in ``max_iter`` iterations.
+        No convergence in ``max_iter`` iterations.
 
     References
     ----------
@@ -120,26 +141,168 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
     rth = float(resistance_K_W)
     if not rth >= 0:
         raise InputError("resistance_K_W", rth, "must be >= 0", "heat balance")
-    p_lo = power_at(tb)
     if rth == 0.0:
-        return tb, p_lo
-    lo = tb.copy()
-    hi = np.minimum(tb + rth * p_lo, max_temp_C)
-    capped = (hi >= max_temp_C) & (max_temp_C - tb - rth * power_at(hi) <= 0)
-    t = np.where(capped, max_temp_C, 0.5 * (lo + hi))
-    h = 1e-4
+        return tb, power_at(tb)
+    st = _Newton(tb, rth, max_temp_C)
     for _ in range(max_iter):
-        p = power_at(np.concatenate([t, t + h]))
+        p = power_at(np.concatenate([st.t, st.t + _SLOPE_STEP_K]))
         p0, p1 = p[:n], p[n:]
-        g = np.where(capped, 0.0, t - tb - rth * p0)
-        if np.all(np.abs(g) < tol_K):
-            return t, p0
-        lo = np.where(g < 0, t, lo)
-        hi = np.where(g > 0, t, hi)
-        t_new = t - g / (1.0 - rth * (p1 - p0) / h)
-        t = np.where(capped, t, np.where((t_new > lo) & (t_new < hi), t_new, 0.5 * (lo + hi)))
+        done, t_out, p_out = st.update(_total(p0), _total(p1), p0, p1, tol_K)
+        if np.all(done):
+            lower = _lower_sign_change(power_at, tb, rth, t_out, st.suspect & ~st.capped,
+                                       tol_K)
+            if lower is None:
+                return t_out, p_out
+            st.rebracket(*lower)
+        st.extend_unverified(power_at, tol_K)
     raise SolverError(f"steady oil temperature did not converge to {tol_K:g} K "
                       f"in {max_iter} iterations", "max_iter")
+
+
+_SLOPE_STEP_K = 1e-4
+"""Forward-difference step of dP/dT in :func:`steady_temperature` [K]."""
+
+_FAST_STEP_K = 1e-4
+"""Largest last step taken without another evaluation [K]: a step of the loss (Eq. 6 is
+piecewise) hidden inside it can move the root by no more than this."""
+
+
+def _total(p):
+    """Total loss of each case: ``power_at`` may give one column per region."""
+    return p.sum(axis=-1) if p.ndim == 2 else p
+
+
+class _Newton:
+    """State of the vectorised safeguarded iteration of :func:`steady_temperature`.
+
+    Each step jumps to the root of an exponential model of P through (T, P, dP/dT),
+    ``P = P0 exp(-beta (T - T0))``, whose root is ``T_b + W(beta R P0 exp(beta (T0 -
+    T_b)))/beta`` (W: Lambert's function; near-exact for a Walther oil); where P does not
+    fall, a Newton step; outside the bracket, or where the bracket did not halve in two
+    steps, bisection. The bracket starts at ``[T_b, T_b + R P(T_b)]``; its top is
+    verified (g > 0 seen) before a collapsed bracket counts as converged, else it is
+    extended to the cap. A step s is taken without another evaluation when its a
+    posteriori error ``R |P''| (s^2 + h |s|)/2`` (P'' from the last two slopes) is
+    below tol/10.
+    """
+
+    def __init__(self, tb, rth, max_temp_C):
+        self.tb, self.rth, self.cap = tb, rth, max_temp_C
+        self.t = tb.copy()
+        self.lo, self.hi = tb.copy(), np.full(tb.shape, np.nan)
+        self.hi_ok = np.zeros(tb.shape, bool)
+        self.capped = np.zeros(tb.shape, bool)
+        self.suspect = np.zeros(tb.shape, bool)
+        self.width = [np.full(tb.shape, np.inf)] * 2
+        self.last = None
+        self.done = np.zeros(tb.shape, bool)
+        self.t_out = np.full(tb.shape, np.nan)
+        self.p_out = None
+
+    def update(self, P0, P1, p0, p1, tol_K):
+        """One step from the losses at t and t + h; returns (done, T, P) of all cases."""
+        t, r, h = self.t, self.rth, _SLOPE_STEP_K
+        if self.p_out is None:
+            self.p_out = np.full(p0.shape, np.nan)
+            self.hi = np.minimum(self.tb + r * P0, self.cap)
+        g = t - self.tb - r * P0
+        dP = (P1 - P0) / h
+        self.lo = np.where(g < 0, t, self.lo)
+        self.hi_ok |= g > 0
+        self.hi = np.where(g > 0, t, self.hi)
+        slope = 1.0 - r * dP
+        self.suspect |= slope <= 0
+        step = -g / np.where(slope > 0, slope, np.inf)
+        collapsed = (self.hi - self.lo <= tol_K) & self.hi_ok
+        conv = (np.abs(g) < tol_K) | collapsed
+        fast = self.capped & False
+        if self.last is not None:
+            t_l, dP_l = self.last
+            curv = np.abs((dP - dP_l) / np.where(t != t_l, t - t_l, np.inf))
+            fast = (~conv & (slope > 0) & (np.abs(step) < _FAST_STEP_K)
+                    & (t + step > self.lo) & (t + step < self.hi)
+                    & (10.0 * r * curv * (step * step + h * np.abs(step)) < 2.0 * tol_K))
+        self.last = (t, dP)
+        new = ~self.done & (conv | fast | self.capped)
+        if new.any():
+            ext = np.where(fast, step / h, 0.0)
+            ext = ext[:, None] if p0.ndim == 2 else ext
+            self.t_out = np.where(new, np.where(fast, t + step, t), self.t_out)
+            self.p_out = np.where(new[:, None] if p0.ndim == 2 else new,
+                                  p0 + (p1 - p0) * ext, self.p_out)
+            self.done |= new
+        if not self.done.all():
+            self._next(t, P0, dP, step, slope)
+        return self.done, self.t_out, self.p_out
+
+    def _next(self, t, P0, dP, step, slope):
+        """The next iterate of every case not yet done."""
+        with np.errstate(all="ignore"):
+            beta = -dP / P0
+            falls = (dP < 0) & (P0 > 0)
+            arg = beta * self.rth * P0 * np.exp(np.minimum(beta * (t - self.tb), 700.0))
+            model = self.tb + np.real(lambertw(np.where(falls, arg, 0.0))) / beta
+        t_new = np.where(falls & np.isfinite(model), model, t + step)
+        inside = (t_new > self.lo) & (t_new < self.hi) & (slope > 0)
+        width = self.hi - self.lo
+        slow = width > 0.5 * self.width[0]
+        self.width = [self.width[1], width]
+        mid = 0.5 * (self.lo + self.hi)
+        self.t = np.where(self.done, t, np.where(inside & ~slow, t_new, mid))
+
+    def rebracket(self, mask, lo, hi):
+        """Restart the cases of ``mask`` in the verified bracket [lo, hi] (g(lo) < 0 <
+        g(hi)) below the root they had found."""
+        self.done &= ~mask
+        self.suspect &= ~mask
+        self.lo = np.where(mask, lo, self.lo)
+        self.hi = np.where(mask, hi, self.hi)
+        self.hi_ok |= mask
+        self.t = np.where(mask, 0.5 * (lo + hi), self.t)
+        self.last = None
+        self.width = [np.where(mask, np.inf, w) for w in self.width]
+
+    def extend_unverified(self, power_at, tol_K):
+        """Where the bracket collapsed onto an unverified top, check g there: a top
+        with g <= 0 at the cap is the capped answer; below the cap the bracket is
+        extended to the cap (P rose on the way)."""
+        todo = ~self.done & ~self.hi_ok & (self.hi - self.lo <= tol_K)
+        if not np.any(todo):
+            return
+        p_hi = power_at(self.hi)
+        g_hi = self.hi - self.tb - self.rth * _total(p_hi)
+        at_cap = todo & (g_hi <= 0) & (self.hi >= self.cap)
+        self.capped |= at_cap
+        self.done |= at_cap
+        self.t_out = np.where(at_cap, self.cap, self.t_out)
+        self.p_out = np.where(at_cap[:, None] if p_hi.ndim == 2 else at_cap, p_hi,
+                              self.p_out)
+        grow = todo & (g_hi <= 0) & ~at_cap
+        self.suspect |= grow
+        self.lo = np.where(grow, self.hi, self.lo)
+        self.hi = np.where(grow, self.cap, self.hi)
+        self.hi_ok |= todo & (g_hi > 0)
+        self.t = np.where(grow, 0.5 * (self.lo + self.hi), self.t)
+        self.width = [np.where(grow, np.inf, w) for w in self.width]
+
+
+def _lower_sign_change(power_at, tb, rth, t, suspect, tol_K, points=16):
+    """Where the residual was seen to fall on the way (``suspect``: P rose), scan g on
+    ``points`` - 1 temperatures between T_base and the root found; return (mask, lo, hi)
+    of the cases with a lower rise of g through 0 (a lower root, where oil warming from
+    T_base stops first), or None."""
+    if not np.any(suspect):
+        return None
+    found = np.zeros(t.shape, bool)
+    lo, hi = tb.copy(), t.copy()
+    for f in np.arange(1, points) / points:
+        tt = tb + f * (t - tb)
+        g = tt - tb - rth * _total(power_at(tt))
+        first = suspect & ~found & (g > tol_K)
+        hi = np.where(first, tt, hi)
+        found |= first
+        lo = np.where(suspect & ~found & (g < 0), tt, lo)
+    return (found, lo, hi) if np.any(found) else None
 
 
 def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec: ThermalSpec,
@@ -151,7 +314,9 @@ def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec:
     residual ``g(T) = T - T_base - R P(T)`` rises strictly because the viscous
     loss P falls as the oil warms (dP/dT < 0, so dg/dT >= 1), and
     ``g(T_base) = -R P(T_base) <= 0 <= g(T_base + R P(T_base))``: the fixed point
-    exists and is unique, between ``T_base`` and ``T_base + R P(T_base)``.
+    exists and is unique, between ``T_base`` and ``T_base + R P(T_base)``. The
+    condition is ``dP/dT < 1/R`` (module docstring: where the film-corrected loss can
+    rise with T); an iterate that breaks it raises :class:`SolverError`.
 
     Parameters
     ----------
@@ -173,7 +338,8 @@ def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec:
     Raises
     ------
     SolverError
-        The safeguarded Newton iteration did not converge.
+        The safeguarded Newton iteration did not converge, or the residual is not
+        monotone (``dP/dT >= 1/R`` at an iterate: the root may not be unique).
 
     References
     ----------

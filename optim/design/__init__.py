@@ -7,19 +7,32 @@ One module per responsibility:
 * :mod:`.objective`: the one objective (mean power, torque, inertia; CasADi and numpy);
 * :mod:`.feasibility`: the feasibility check before IPOPT and its message;
 * :mod:`.results`: design points, multipliers (converted to physical units), the optimum;
-* :mod:`.problem`: the NLP built once per case and its solves (IPOPT, multi-start, warm start).
+* :mod:`.problem`: the NLP built once per case and its solves (IPOPT, multi-start, warm start);
+* :mod:`.thermal`: the NLP under a thermal mode (film factor; oil temperature and heat
+  balance as a variable and an equality);
+* :mod:`.heating`: the optimum with and without heating, side by side.
 """
 
 from .feasibility import check_feasible, infeasibility_message
+from .heating import HeatingComparison, compare_heating
 from .objective import DesignObjective, region1_mean_power
 from .parameters import DesignParameters, resolve_parameters
 from .problem import DesignProblem, solve_design
-from .results import DesignPoint, DesignResult, Multiplier, convert_multipliers, design_point
+from .results import (
+    DesignPoint,
+    DesignResult,
+    Multiplier,
+    ThermalDesignResult,
+    convert_multipliers,
+    design_point,
+)
+from .thermal import ThermalDesignProblem
 from .variables import VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 __all__ = [
     "VARIABLES", "VARIABLE_LABELS", "DesignParameters", "DesignPoint", "DesignProblem",
     "DesignResult", "Multiplier", "region1_mean_power", "solve_design", "DesignObjective",
     "resolve_parameters", "check_feasible", "infeasibility_message", "convert_multipliers",
-    "design_point", "to_nlp", "from_nlp",
+    "design_point", "to_nlp", "from_nlp", "ThermalDesignProblem", "ThermalDesignResult",
+    "HeatingComparison", "compare_heating",
 ]

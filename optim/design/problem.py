@@ -29,6 +29,12 @@ The NLP is built once per case (:class:`DesignProblem`); the oil state
 :mod:`.parameters`), so studies re-solve it without rebuilding. Infeasible
 limits are caught before IPOPT is called (:mod:`.feasibility`).
 
+Built with a thermal mode (``thermal="film"`` or ``"full"``, :mod:`oilgap.model.joint_loss`)
+the problem's :meth:`DesignProblem.solve` solves the NLP of :mod:`.thermal` instead,
+which carries the oil temperature as a variable and the heat balance as an equality;
+:meth:`DesignProblem.solve_isothermal` still solves the one above (the optimum without
+heating, :func:`~oilgap.optim.design.heating.compare_heating`).
+
 References
 ----------
 .. [1] *Modeling and Optimization of Compensating Oil Viscous Power for a Deep-Sea
@@ -54,6 +60,7 @@ import numpy as np
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import oil_state
+from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import joint_regions, region_mean_power
 from oilgap.model.units import MM_TO_M
@@ -62,6 +69,7 @@ from .feasibility import check_feasible
 from .objective import DesignObjective, region1_mean_power
 from .parameters import DesignParameters, resolve_parameters
 from .results import DesignPoint, DesignResult, convert_multipliers, design_point
+from .thermal import ThermalDesignProblem
 from .variables import (
     LOG_VARIABLES,
     QUIET_OPTIONS,
@@ -87,9 +95,18 @@ class DesignProblem:
         inertia reference.
     verbose : bool
         Let IPOPT print its iterations.
+    thermal : str or None
+        Thermal mode (:mod:`oilgap.model.joint_loss`): ``"none"`` (default, the
+        isothermal NLP above), ``"film"`` or ``"full"`` (:meth:`solve` solves the NLP
+        of :mod:`.thermal`, which carries the oil temperature), None for the best the
+        case allows.
 
     Attributes
     ----------
+    thermal_mode : str
+        The thermal mode.
+    heated : ThermalDesignProblem or None
+        The thermal NLP (None under ``none``).
     x_case_m : ndarray
         The case's design (R, delta, d_r, d_s, L) [m].
     nodes_rad_s, weights : ndarray
@@ -112,8 +129,9 @@ class DesignProblem:
     >>> res2 = prob.solve(x0=res, torque_min_Nm=0.45)  # warm start  # doctest: +SKIP
     """
 
-    def __init__(self, case: DesignCase, verbose: bool = False):
+    def __init__(self, case: DesignCase, verbose: bool = False, thermal: str | None = "none"):
         t0 = time.perf_counter()
+        self.thermal_mode = resolve_thermal_mode(case, thermal)
         self.case = case
         self.verbose = bool(verbose)
         self.law = case.friction.smooth()
@@ -139,6 +157,8 @@ class DesignProblem:
         self._build()
         self._p2_cache: dict[tuple[float, float], float] = {}
         self._point_cache: dict[tuple, DesignPoint] = {}
+        self.heated = (None if self.thermal_mode == "none" else
+                       ThermalDesignProblem(self, self.thermal_mode, verbose))
         self.build_time_s = time.perf_counter() - t0
 
     def _build(self) -> None:
@@ -293,10 +313,34 @@ class DesignProblem:
 
     # ----------------------------------------------------------------- solve
 
-    def solve(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None, *,
-              warm_start_duals: bool = True, starts: int = 1, seed: int = 0,
-              **overrides: Any) -> DesignResult:
-        """Solve the NLP; return the optimum or raise.
+    def solve(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None,
+              **kwargs: Any) -> DesignResult:
+        """Solve the problem's NLP (its thermal mode's); return the optimum or raise.
+
+        Parameters
+        ----------
+        x0 : DesignResult, DesignPoint, sequence of (R, delta, d_r, d_s, L) [m], or None
+            Start point (default: the case's design).
+        **kwargs
+            As :meth:`solve_isothermal` (mode ``none``) or
+            :meth:`ThermalDesignProblem.solve <.thermal.ThermalDesignProblem.solve>`
+            (``film``, ``full``: also ``sea_temp_C`` [degC], ``resistance_K_W`` [K/W],
+            ``other_heat_W`` [W]).
+
+        Returns
+        -------
+        DesignResult
+            The optimum (a ThermalDesignResult under ``film``/``full``): powers [W],
+            lengths [m].
+        """
+        if self.heated is not None:
+            return self.heated.solve(x0, **kwargs)
+        return self.solve_isothermal(x0, **kwargs)
+
+    def solve_isothermal(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None,
+                         *, warm_start_duals: bool = True, starts: int = 1, seed: int = 0,
+                         **overrides: Any) -> DesignResult:
+        """Solve the isothermal NLP (the seed's model); return the optimum or raise.
 
         Parameters
         ----------
@@ -465,7 +509,8 @@ class DesignProblem:
         return c
 
 
-def solve_design(case: DesignCase, verbose: bool = False, **overrides: Any) -> DesignResult:
+def solve_design(case: DesignCase, verbose: bool = False, thermal: str | None = "none",
+                 **overrides: Any) -> DesignResult:
     """One-shot: build the NLP of ``case`` and solve it.
 
     Parameters
@@ -474,6 +519,9 @@ def solve_design(case: DesignCase, verbose: bool = False, **overrides: Any) -> D
         The joint.
     verbose : bool
         Let IPOPT print its iterations.
+    thermal : str or None
+        Thermal mode (``"none"`` default, ``"film"``, ``"full"``; None: the best the
+        case allows).
     **overrides
         As :meth:`DesignProblem.solve` (``x0``, ``starts``, the parameters).
 
@@ -482,7 +530,7 @@ def solve_design(case: DesignCase, verbose: bool = False, **overrides: Any) -> D
     DesignResult
         The optimum: mean powers [W], design lengths [m], multipliers.
     """
-    return DesignProblem(case, verbose=verbose).solve(**overrides)
+    return DesignProblem(case, verbose=verbose, thermal=thermal).solve(**overrides)
 
 
 __all__ = ["DesignProblem", "solve_design"]

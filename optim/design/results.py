@@ -21,9 +21,10 @@ from typing import Any
 
 import numpy as np
 
-from oilgap.model.case import DesignBounds, DesignCase, Motor, RotorStatorClearance
+from oilgap.model.case import DesignBounds, DesignCase, Motor, RotorStatorClearance, ThermalSpec
 from oilgap.model.errors import OilgapWarning
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
+from oilgap.model.joint_loss import OperatingTemperature, operating_temperature
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import rotor_stator_radii
 from oilgap.model.skin_friction import groove_roughness
@@ -229,7 +230,8 @@ def _bound_multipliers(params: DesignParameters, x_m: tuple, lam_x: list, p1: fl
 
 
 def convert_multipliers(params: DesignParameters, opt: DesignPoint, lam_x: np.ndarray,
-                lam_g: np.ndarray) -> tuple[dict[str, Multiplier], tuple[str, ...]]:
+                        lam_g: np.ndarray, objective_W: float | None = None
+                        ) -> tuple[dict[str, Multiplier], tuple[str, ...]]:
     """Sensitivities d(P*)/d(bound), converted to physical units [1].
 
     IPOPT minimizes F = ln P1 in y; at the optimum dF*/d(bound of y_i) = -lam_x[i]
@@ -249,6 +251,9 @@ def convert_multipliers(params: DesignParameters, opt: DesignPoint, lam_x: np.nd
         IPOPT's bound multipliers of the scaled variables y [-].
     lam_g : ndarray of 2 floats
         IPOPT's multipliers of g = (ln tau/tau_ref, ln J/J_ref) [-].
+    objective_W : float, optional
+        The power whose logarithm IPOPT minimized [W] (default: P1, the isothermal
+        NLP's; the thermal NLP minimizes ln(P1 + P2)).
 
     Returns
     -------
@@ -263,7 +268,7 @@ def convert_multipliers(params: DesignParameters, opt: DesignPoint, lam_x: np.nd
     x_m = (opt.R_m, opt.delta_m, opt.rotor_groove_depth_m, opt.stator_groove_depth_m,
            opt.L_m)
     lam_x, lam_g = lam_x.tolist(), lam_g.tolist()
-    p1 = opt.region1_power_W
+    p1 = opt.region1_power_W if objective_W is None else float(objective_W)
     _bound_multipliers(params, x_m, lam_x, p1, out, active)
     tmin, jmax = params.torque_min_Nm, params.inertia_max_kgm2
     t_act = opt.torque_capability_Nm - tmin <= ACTIVE_RTOL * tmin
@@ -389,12 +394,13 @@ class DesignResult:
                        region1=r1, bounds=bounds)
 
     def evaluate(self) -> tuple[CaseEvaluation, CaseEvaluation]:
-        """The initial and the optimal design evaluated with the case's own (exact) C_m.
+        """The initial and the optimal design evaluated with the case's own (exact) C_m,
+        isothermal (thermal mode ``none``, the seed's model).
 
         Returns
         -------
         initial, optimal : CaseEvaluation
-            What ``oilgap evaluate`` prints for the two designs (powers [W]).
+            What ``oilgap evaluate --thermal none`` prints for the two designs (powers [W]).
         """
         i = self.initial
         start = self.case.with_region1(
@@ -404,7 +410,86 @@ class DesignResult:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)
             opt = self.to_case()
-        return evaluate_case(start), evaluate_case(opt)
+        return evaluate_case(start, thermal="none"), evaluate_case(opt, thermal="none")
 
 
-__all__ = ["DesignPoint", "DesignResult", "Multiplier", "convert_multipliers", "design_point"]
+@dataclass(frozen=True, eq=False)
+class ThermalDesignResult(DesignResult):
+    """An optimum of the design NLP under a thermal mode (``film`` or ``full``).
+
+    The powers of ``initial`` and ``optimal`` are the heated ones (film factor at
+    their oil temperature, smooth C_m). Fields beyond :class:`DesignResult`:
+
+    Parameters
+    ----------
+    thermal_mode : str
+        ``"film"`` or ``"full"``.
+    initial_oil_temp_C : float
+        Bulk oil temperature of the start design [degC] (its own balance under full).
+    oil_temp_C : float
+        Bulk oil temperature at the optimum [degC] (the balance's under full).
+    sea_temp_C : float or None
+        Sea temperature [degC] (full), else None.
+    thermal : ThermalSpec or None
+        The balance solved (full), else None.
+    sea_temp_cost_W_per_K : float or None
+        ``dP*/dT_sea`` from the balance's multiplier [W/K] (full), else None.
+    oil_temp_cost_W_per_K : float or None
+        ``dP*/dT_oil`` at a fixed oil temperature from its bound multiplier [W/K]
+        (film), else None.
+    balance_residual_K : float or None
+        ``T - T_sea - R (P + Q)`` at IPOPT's last iterate [K] (full), else None.
+    """
+
+    thermal_mode: str = "film"
+    initial_oil_temp_C: float = float("nan")
+    oil_temp_C: float = float("nan")
+    sea_temp_C: float | None = None
+    thermal: ThermalSpec | None = field(default=None, repr=False)
+    sea_temp_cost_W_per_K: float | None = None
+    oil_temp_cost_W_per_K: float | None = None
+    balance_residual_K: float | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """Plain dict for JSON: :meth:`DesignResult.to_dict` and the thermal fields.
+
+        Returns
+        -------
+        dict
+            Adds ``thermal_mode``, ``initial_oil_temp_C`` and ``oil_temp_C`` [degC],
+            ``sea_temp_C`` [degC], ``sea_temp_cost_W_per_K`` and
+            ``oil_temp_cost_W_per_K`` [W/K], ``balance_residual_K`` [K] (None where
+            the mode has none).
+        """
+        d = super().to_dict()
+        d.update(thermal_mode=self.thermal_mode, initial_oil_temp_C=self.initial_oil_temp_C,
+                 oil_temp_C=self.oil_temp_C, sea_temp_C=self.sea_temp_C,
+                 sea_temp_cost_W_per_K=self.sea_temp_cost_W_per_K,
+                 oil_temp_cost_W_per_K=self.oil_temp_cost_W_per_K,
+                 balance_residual_K=self.balance_residual_K)
+        return d
+
+    def operating(self) -> tuple[OperatingTemperature, OperatingTemperature]:
+        """The initial and optimal designs under the mode with the case's own (exact) C_m.
+
+        Returns
+        -------
+        initial, optimal : OperatingTemperature
+            :func:`~oilgap.model.joint_loss.operating_temperature` of each design
+            (oil temperature [degC], mean loss [W]), as ``oilgap evaluate`` gives it.
+        """
+        i = self.initial
+        base = self.case if self.thermal is None else replace(self.case, thermal=self.thermal)
+        start = base.with_region1(
+            T1=i.T1_m, T2=i.T2_m, T3=i.T3_m, T4=i.T4_m, length=i.L_m,
+            T1_unfilled=i.R_m - self.machined_rotor_groove_m,
+            T4_unfilled=i.T3_m + self.machined_stator_groove_m)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", OilgapWarning)
+            opt = replace(self.to_case(), thermal=base.thermal)
+        return (operating_temperature(start, self.thermal_mode),
+                operating_temperature(opt, self.thermal_mode))
+
+
+__all__ = ["DesignPoint", "DesignResult", "Multiplier", "ThermalDesignResult",
+           "convert_multipliers", "design_point"]

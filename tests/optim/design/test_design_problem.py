@@ -18,7 +18,7 @@ from oilgap.optim.design import DesignProblem
 def test_initial_point_equals_evaluate_with_smooth_law(seed_opt):
     """The NLP objective at the seed design equals oilgap's evaluation (smooth C_m)."""
     c = seed_case()
-    ev = evaluate_case(replace(c, friction=c.friction.smooth()))
+    ev = evaluate_case(replace(c, friction=c.friction.smooth()), thermal="none")
     assert seed_opt.initial.mean_power_W == pytest.approx(ev.total_mean_power_W, rel=1e-12)
     assert seed_opt.initial.region1_power_W == pytest.approx(ev.regions[0].mean_power_W,
                                                              rel=1e-12)
@@ -144,9 +144,9 @@ def test_evaluate_gives_the_exact_law_of_both_designs(seed_opt):
     """DesignResult.evaluate equals evaluate_case of the case and of to_case()."""
     start, opt = seed_opt.evaluate()
     assert start.total_mean_power_W == pytest.approx(
-        evaluate_case(seed_case()).total_mean_power_W, rel=1e-12)
+        evaluate_case(seed_case(), thermal="none").total_mean_power_W, rel=1e-12)
     assert opt.total_mean_power_W == pytest.approx(
-        evaluate_case(seed_opt.to_case()).total_mean_power_W, rel=1e-12)
+        evaluate_case(seed_opt.to_case(), thermal="none").total_mean_power_W, rel=1e-12)
 
 
 def test_infeasible_is_a_solver_error_with_its_status(prob):

@@ -1,8 +1,9 @@
 """Choosing the oil grade: ISO VG 10 to 1000 over the operating envelope.
 
 For each grade the study evaluates the joint's mean viscous power over its duty
-cycle on a grid over the envelope (sea depth x oil temperature, default
-0-7000 m x 0-40 degC) through :func:`oilgap.studies.grid.runner.run_grid`, then:
+cycle on a grid over the envelope (sea depth x oil temperature, or sea temperature
+under the thermal mode ``full``; default 0-7000 m x 0-40 degC) through
+:func:`oilgap.studies.grid.runner.run_grid`, then:
 
 * **Lubrication limit** (harmonic reducer and bearings): the lowest viscosity in
   the envelope (hottest, shallowest point) must stay at or above ``nu_min_cSt``.
@@ -25,6 +26,26 @@ cycle on a grid over the envelope (sea depth x oil temperature, default
   mission energy; the runner-up is the next. Every other grade gets the reason
   it fails or loses.
 
+Thermal modes (``thermal``, :mod:`oilgap.model.joint_loss`):
+
+* ``none`` (the Python default): the seed's isothermal model, as above.
+* ``film``: the losses (envelope, mission, rated view) carry the film-heating
+  correction at the given oil temperatures; the limits are as under ``none`` (the
+  bulk oil is at the given temperature).
+* ``full`` (the case's ``[thermal]`` table): the temperature axis of the envelope,
+  the mission rows' and the rated view's temperatures are the **sea's**; at every
+  point each grade's bulk oil temperature is the heat balance's
+  ``T = T_sea + R (P(T) + Q)``, a result, and so is its operating viscosity.
+  Lubrication: the lowest operating viscosity over the envelope (the hottest
+  operating point). Cold start: the oil at the sea temperature before it warms
+  (no heating: the isothermal viscosity at the coldest sea, deepest point). Mission
+  energy with the balance. The ISO tolerance is applied to the operating viscosity
+  as it is (conservative: a thinner batch also heats a little less).
+
+Under ``film`` and ``full`` the isothermal study over the same temperatures runs as
+well: the result names both recommendations, whether the grade changes and why
+(:mod:`oilgap.studies.oil_grade_thermal`).
+
 References
 ----------
 .. [1] ISO 3448:1992, Industrial liquid lubricants - ISO viscosity classification.
@@ -44,11 +65,19 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint
 from oilgap.model.case_io import seed_case
-from oilgap.model.errors import InputError, check_finite, check_positive, check_range
+from oilgap.model.errors import (
+    InputError,
+    SolverError,
+    check_finite,
+    check_positive,
+    check_range,
+)
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
 from oilgap.studies.grid.runner import run_grid
-from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_tables
+from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
+from oilgap.studies.oil_grade_thermal import compare_recommendations
 
 ISO_GRADES = ("VG10", "VG15", "VG22", "VG32", "VG46", "VG68", "VG100", "VG150", "VG220",
               "VG320", "VG460", "VG680", "VG1000")
@@ -62,13 +91,17 @@ DEFAULT_ISO_TOLERANCE = 0.10
 """ISO 3448 tolerance on nu at 40 degC, applied at its worst to both limits [-]."""
 DEFAULT_DEPTH_RANGE_M = (0.0, 7000.0)
 DEFAULT_TEMP_RANGE_C = (0.0, 40.0)
+"""Envelope temperatures [degC]: the oil's (none, film) or the sea's (full). The same
+0-40 degC for the sea, so that the thermal and isothermal answers differ by the physics
+only (the surface end stands for deck checks in warm air)."""
 DEFAULT_MISSION_HOURS = 8.0
 """Mission duration for the mission energy [h] (one working dive)."""
 SEED_MISSION = (MissionSegment(0.0, 20.0, 0.05), MissionSegment(1500.0, 4.0, 0.10),
                 MissionSegment(3000.0, 2.0, 0.85))
 """Default mission of the seed joint (it has none): fractions of the joint's running
-time at (depth [m], oil temperature [degC]): deck checks at 0 m and 20 degC (5 %),
-work on the way at 1500 m and 4 degC (10 %), work at the rated 3000 m and 2 degC (85 %)."""
+time at (depth [m], oil temperature [degC]; the sea's under the thermal mode ``full``):
+deck checks at 0 m and 20 degC (5 %), work on the way at 1500 m and 4 degC (10 %), work
+at the rated 3000 m and 2 degC (85 %)."""
 
 
 def parse_mission(mission) -> tuple[MissionSegment, ...]:
@@ -140,13 +173,21 @@ class OilGradeResult:
 
     Attributes
     ----------
-    table : one row per grade (limits, mission energy, rank, verdict, reason)
-    envelope : the grid over depth x temperature for every grade
-    rated : loss against grade at the rated depth for a few oil temperatures
+    table : one row per grade (limits, mission energy, rank, verdict, reason) under the
+        thermal mode
+    envelope : the grid over depth x temperature (the sea's under ``full``) for every grade
+    rated : loss against grade at the rated depth for a few temperatures
     recommended, runner_up : grade names (None if no grade passes)
     mission : the mission profile used
-    settings : the limits and ranges used
+    settings : the limits, ranges and thermal mode used
     files : files written
+    thermal_mode : "none", "film" or "full"
+    isothermal_table : the grade table of the isothermal study over the same
+        temperatures (the same as ``table`` under ``none``)
+    recommended_isothermal, runner_up_isothermal : its answer
+    comparison : the two recommendations, whether the grade changes and why
+        (:func:`oilgap.studies.oil_grade_thermal.compare_recommendations`); None under
+        ``none``
     """
 
     table: pd.DataFrame
@@ -158,6 +199,11 @@ class OilGradeResult:
     mission_source: str
     settings: dict
     files: tuple[Path, ...] = ()
+    thermal_mode: str = "none"
+    isothermal_table: pd.DataFrame | None = None
+    recommended_isothermal: str | None = None
+    runner_up_isothermal: str | None = None
+    comparison: dict | None = None
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
@@ -165,70 +211,141 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         nu_min_cSt: float = DEFAULT_NU_MIN_CST, nu_max_cSt: float = DEFAULT_NU_MAX_CST,
         iso_tolerance: float = DEFAULT_ISO_TOLERANCE,
         depth_range_m: Sequence[float] = DEFAULT_DEPTH_RANGE_M,
-        temp_range_C: Sequence[float] = DEFAULT_TEMP_RANGE_C, n_depth: int = 29,
+        temp_range_C: Sequence[float] | None = None, n_depth: int = 29,
         n_temp: int = 21, mission_hours: float = DEFAULT_MISSION_HOURS,
         rated_temps_C: Sequence[float] | None = None, workers: int | None = None,
-        progress: bool | None = False) -> OilGradeResult:
-    """Run the oil-grade study; with ``out_dir`` write CSVs, figures and ``summary.md``.
+        progress: bool | None = False, thermal: str | None = "none",
+        sea_temp_range_C: Sequence[float] | None = None) -> OilGradeResult:
+    """Run the oil-grade study; with ``out_dir`` write CSVs, JSON, figures and ``summary.md``.
 
     Parameters
     ----------
     out_dir : path, optional
     case : DesignCase, optional
         The joint (default: the seed joint); its geometry, friction law, duty
-        cycle, rated depth and mission rows are used; its oil is replaced.
+        cycle, rated depth, mission rows and ``[thermal]`` are used; its oil is replaced.
     mission : optional
         Mission profile (see :func:`parse_mission`); default the case's rows, or
-        :data:`SEED_MISSION` if it has none.
+        :data:`SEED_MISSION` if it has none. Under ``full`` each row's temperature is
+        the sea's.
     grades : oil names (default ISO VG10..VG1000 of the catalogue)
     nu_min_cSt, nu_max_cSt : lubrication and cold limits [cSt]
     iso_tolerance : grade tolerance applied at its worst [-] (0 to switch off)
-    depth_range_m, temp_range_C : the envelope [m], [degC]
+    depth_range_m : the envelope's depths [m]
+    temp_range_C : the envelope's oil temperatures [degC] (none, film; default 0-40)
     n_depth, n_temp : grid points over the envelope (>= 2 each)
     mission_hours : mission duration [h]
-    rated_temps_C : oil temperatures of the loss-vs-grade view at the rated depth
-        (default: envelope min, the case's temperature, 20 degC, envelope max)
+    rated_temps_C : temperatures of the loss-vs-grade view at the rated depth
+        (default: envelope min, the case's oil (or sea) temperature, 20 degC, envelope max)
     workers, progress : passed to :func:`~oilgap.studies.grid.runner.run_grid`
+    thermal : {"none", "film", "full"} or None
+        Thermal mode (default ``"none"``, the isothermal study; None: the best physics
+        the case allows, the command line's default).
+    sea_temp_range_C : the envelope's sea temperatures [degC] (``full`` only; default
+        :data:`DEFAULT_TEMP_RANGE_C`)
 
     Raises
     ------
     InputError
-        Bad limits, ranges, grid sizes, mission or grade names.
+        Bad limits, ranges, grid sizes, mission or grade names; a thermal mode the case
+        does not allow; ``temp_range_C`` under ``full`` or ``sea_temp_range_C`` without it.
     """
     base = case if case is not None else seed_case()
-    settings = _settings(nu_min_cSt, nu_max_cSt, iso_tolerance, depth_range_m, temp_range_C,
-                         n_depth, n_temp, mission_hours)
+    mode = resolve_thermal_mode(base, thermal)
+    settings = _settings(nu_min_cSt, nu_max_cSt, iso_tolerance, depth_range_m,
+                         _temp_axis(mode, temp_range_C, sea_temp_range_C), n_depth, n_temp,
+                         mission_hours)
+    settings.update(thermal_mode=mode, thermal_default=thermal is None,
+                    temp_axis="sea" if mode == "full" else "oil")
+    catalogue, grades = _grades(base, grades)
+    segs, source = _mission(base, mission)
+    settings["rated_depth_m"] = base.operating.depth_m
+    settings["rated_temp_C"] = _case_temp(base, mode)
+    if rated_temps_C is None:
+        t_lo, t_hi = settings["temp_range_C"]
+        rated_temps_C = sorted({t_lo, settings["rated_temp_C"], 20.0, t_hi})
+    settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated_temps_C]
+    grid = _grid(grades, segs, settings)
+    out = Path(out_dir) if out_dir is not None else None
+    frames_iso = _evaluate(grid, base, catalogue, "none", out, mode, workers, progress)
+    frames = frames_iso if mode == "none" else _evaluate(grid, base, catalogue, mode, out, mode,
+                                                         workers, progress)
+    table, recommended, runner_up = _decide(base, catalogue, grades, frames,
+                                            frames_iso["envelope"], segs, settings, mode)
+    t_iso, rec_iso, run_iso = (table, recommended, runner_up) if mode == "none" else _decide(
+        base, catalogue, grades, frames_iso, frames_iso["envelope"], segs, settings, "none")
+    comparison = None if mode == "none" else compare_recommendations(
+        table, t_iso, recommended, rec_iso, runner_up, run_iso, mode, base, settings)
+    result = OilGradeResult(table, frames["envelope"], frames["rated"], recommended, runner_up,
+                            segs, source, settings, (), mode, t_iso, rec_iso, run_iso,
+                            comparison)
+    if out is not None:
+        result = replace(result, files=write_outputs(out, result, base))
+    return result
+
+
+def _grades(base: DesignCase, grades: Sequence[str]) -> tuple[dict, list[str]]:
+    """The oil catalogue (built-in and the case's table) and the grades' names."""
     if not grades:
         raise InputError("grades", list(grades), "needs at least one oil", WHERE)
     catalogue = builtin_oils()
     if base.oils_csv:
         catalogue.update(read_oils_csv(base.oils_csv))
-    grades = [get_oil(g, catalogue).name for g in grades]
-    segs, source = _mission(base, mission)
-    settings["rated_depth_m"] = base.operating.depth_m
-    if rated_temps_C is None:
-        t_lo, t_hi = settings["temp_range_C"]
-        rated_temps_C = sorted({t_lo, base.operating.oil_temp_C, 20.0, t_hi})
-    settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated_temps_C]
-    grid = _grid(grades, segs, settings)
-    res = run_grid(grid, base, out_dir=Path(out_dir) / "grid" if out_dir else None,
-                   workers=workers, progress=progress, label="oil-grade", catalogue=catalogue)
+    return catalogue, [get_oil(g, catalogue).name for g in grades]
+
+
+def _temp_axis(mode: str, temp_range_C, sea_temp_range_C) -> Sequence[float]:
+    """The envelope's temperature range: the oil's (none, film) or the sea's (full)."""
+    if mode == "full":
+        if temp_range_C is not None:
+            raise InputError("temp_range_C", tuple(temp_range_C), "under thermal mode 'full' "
+                             "the oil temperature is a result; give sea_temp_range_C", WHERE)
+        return DEFAULT_TEMP_RANGE_C if sea_temp_range_C is None else sea_temp_range_C
+    if sea_temp_range_C is not None:
+        raise InputError("sea_temp_range_C", tuple(sea_temp_range_C), "only under thermal "
+                         f"mode 'full' (the heat balance); the mode is '{mode}'", WHERE)
+    return DEFAULT_TEMP_RANGE_C if temp_range_C is None else temp_range_C
+
+
+def _case_temp(base: DesignCase, mode: str) -> float:
+    """The case's own temperature on the envelope's axis: its sea's under ``full``."""
+    return float(base.thermal.sea_temp_C if mode == "full" else base.operating.oil_temp_C)
+
+
+def _axis(mode: str) -> str:
+    """The grid column of the envelope's temperature axis."""
+    return "sea_temp_C" if mode == "full" else "oil_temp_C"
+
+
+def _evaluate(grid: pd.DataFrame, base: DesignCase, catalogue: dict, mode: str,
+              out: Path | None, study_mode: str, workers, progress) -> dict[str, pd.DataFrame]:
+    """The grid under one thermal mode: the envelope, mission and rated frames. Points
+    are stored under ``out/grid`` (the study's mode) or ``out/grid_isothermal``."""
+    sub = "grid" if mode == study_mode else "grid_isothermal"
+    res = run_grid(grid.rename(columns={"oil_temp_C": _axis(mode)}), base,
+                   out_dir=out / sub if out is not None else None, workers=workers,
+                   progress=progress, label="oil-grade", catalogue=catalogue, thermal=mode)
     failed = res[res["status"] != "ok"]
     if len(failed):
-        raise InputError("grid point", failed.iloc[0][["oil", "depth_m", "oil_temp_C"]].to_dict(),
-                         f"failed: {failed['error'].iloc[0]}", WHERE)
-    envelope = res[res["label"] == "envelope"].reset_index(drop=True)
-    mres = res[res["label"] == "mission"].reset_index(drop=True)
-    rated = res[res["label"] == "rated"].reset_index(drop=True)
-    table = _grade_table(base, catalogue, grades, envelope, mres, rated, segs, settings)
+        where = failed.iloc[0][["oil", "depth_m", _axis(mode)]].to_dict()
+        err = failed["error"].iloc[0]
+        if str(err).startswith("SolverError"):  # the heat balance: exit 4, not bad input
+            raise SolverError(f"{WHERE}: {len(failed)} grid point(s) failed under thermal "
+                              f"mode '{mode}', first {where}: {err}", "grid point")
+        raise InputError("grid point", where, f"failed: {err}", WHERE)
+    return {k: res[res["label"] == lab].reset_index(drop=True)
+            for k, lab in (("envelope", "envelope"), ("mission", "mission"), ("rated", "rated"))}
+
+
+def _decide(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
+            cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: dict,
+            mode: str) -> tuple[pd.DataFrame, str | None, str | None]:
+    """The grade table under ``mode``, ranked, with verdicts; (table, recommended,
+    runner-up)."""
+    table = _grade_table(base, catalogue, grades, frames, cold_env, segs, settings, mode)
     recommended, runner_up, best_e = _rank(table)
-    _verdicts(table, recommended, runner_up, best_e, settings)
-    result = OilGradeResult(table, envelope, rated, recommended, runner_up, segs, source,
-                            settings)
-    if out_dir is not None:
-        files = write_outputs(Path(out_dir), result, base)
-        result = replace(result, files=files)
-    return result
+    _verdicts(table, recommended, runner_up, best_e, settings, mode)
+    return table, recommended, runner_up
 
 
 def _settings(nu_min_cSt: float, nu_max_cSt: float, iso_tolerance: float,
@@ -261,7 +378,8 @@ def _mission(base: DesignCase, mission) -> tuple[tuple[MissionSegment, ...], str
 
 
 def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> pd.DataFrame:
-    """One grid for every grade: the envelope, the mission rows and the rated-depth view."""
+    """One grid for every grade: the envelope, the mission rows and the rated-depth view
+    (temperatures in ``oil_temp_C``; renamed to ``sea_temp_C`` under ``full``)."""
     depths = np.linspace(*settings["depth_range_m"], settings["n_depth"])
     temps = np.linspace(*settings["temp_range_C"], settings["n_temp"])
     rated_temps = settings["rated_temps_C"]
@@ -278,41 +396,54 @@ def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> 
     return pd.concat([env, mis, rat], ignore_index=True)
 
 
-def _grade_table(base: DesignCase, catalogue: dict, grades: list[str], envelope: pd.DataFrame,
-                 mres: pd.DataFrame, rated: pd.DataFrame, segs: Sequence[MissionSegment],
-                 settings: dict) -> pd.DataFrame:
-    """One row per grade: the envelope's extreme viscosities, the limits' checks, the
-    cold peak torque, the powers and the mission energy."""
-    tol = settings["iso_tolerance"]
+def _grade_row(base: DesignCase, oil, e: pd.DataFrame, c: pd.DataFrame, m: pd.DataFrame,
+               r: pd.DataFrame, fr: np.ndarray, settings: dict, mode: str) -> dict:
+    """One grade's row: lowest operating viscosity over the envelope ``e``, cold-start
+    viscosity over the isothermal envelope ``c``, mission ``m`` and rated ``r`` rows."""
+    tol, axis = settings["iso_tolerance"], _axis(mode)
+    i_lo, i_hi = e["nu_cSt"].idxmin(), c["nu_cSt"].idxmax()
+    lo_nu, hi_nu = float(e.loc[i_lo, "nu_cSt"]), float(c.loc[i_hi, "nu_cSt"])
+    mean_p = float(m["mean_power_W"].to_numpy() @ fr)
+    cold_case = replace(base, oil=oil, operating=OperatingPoint(
+        float(c.loc[i_hi, "depth_m"]), float(c.loc[i_hi, "oil_temp_C"])))
+    r_case = r[np.isclose(r[axis], settings["rated_temp_C"])]
+
+    def rated(k: str) -> float:
+        return float(r_case[k].iloc[0]) if len(r_case) else float("nan")
+
+    return {
+        "oil": oil.name, "nu40_cSt": oil.nu40_cSt,
+        "nu_min_envelope_cSt": lo_nu, "nu_min_at_C": float(e.loc[i_lo, "oil_temp_op_C"]),
+        "nu_min_at_m": float(e.loc[i_lo, "depth_m"]),
+        "nu_max_envelope_cSt": hi_nu, "nu_max_at_C": float(c.loc[i_hi, "oil_temp_C"]),
+        "nu_max_at_m": float(c.loc[i_hi, "depth_m"]),
+        "passes_lubrication": bool((1 - tol) * lo_nu >= settings["nu_min_cSt"]),
+        "passes_cold": bool((1 + tol) * hi_nu <= settings["nu_max_cSt"]),
+        "peak_viscous_torque_cold_Nm": evaluate_case(  # a start: not yet heated
+            cold_case, thermal="none").viscous_torque_peak_Nm,
+        "envelope_min_power_W": float(e["mean_power_W"].min()),
+        "envelope_max_power_W": float(e["mean_power_W"].max()),
+        "rated_power_W": rated("mean_power_W"),
+        "mission_mean_power_W": mean_p,
+        "mission_energy_Wh": mean_p * settings["mission_hours"],
+        "thermal_mode": mode,
+        "nu_min_at_sea_C": float(e.loc[i_lo, axis]) if mode == "full" else float("nan"),
+        "oil_temp_op_max_C": float(e["oil_temp_op_C"].max()),
+        "rated_oil_temp_op_C": rated("oil_temp_op_C"),
+        "mission_oil_temp_op_max_C": float(m["oil_temp_op_C"].max())}
+
+
+def _grade_table(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
+                 cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: dict,
+                 mode: str) -> pd.DataFrame:
+    """One row per grade (:func:`_grade_row`): the limits' checks, the cold peak torque,
+    the powers and the mission energy under ``mode``."""
     fr = np.array([s.fraction for s in segs])
-    rows = []
-    for g in grades:
-        e = envelope[envelope["oil"] == g]
-        i_lo, i_hi = e["nu_cSt"].idxmin(), e["nu_cSt"].idxmax()
-        lo_nu, hi_nu = float(e.loc[i_lo, "nu_cSt"]), float(e.loc[i_hi, "nu_cSt"])
-        m = mres[mres["oil"] == g]["mean_power_W"].to_numpy()
-        mean_p = float(m @ fr)
-        cold_case = replace(base, oil=get_oil(g, catalogue),
-                            operating=OperatingPoint(float(e.loc[i_hi, "depth_m"]),
-                                                     float(e.loc[i_hi, "oil_temp_C"])))
-        r_at_case = rated[(rated["oil"] == g)
-                          & np.isclose(rated["oil_temp_C"], base.operating.oil_temp_C)]
-        rows.append({
-            "oil": g, "nu40_cSt": get_oil(g, catalogue).nu40_cSt,
-            "nu_min_envelope_cSt": lo_nu, "nu_min_at_C": float(e.loc[i_lo, "oil_temp_C"]),
-            "nu_min_at_m": float(e.loc[i_lo, "depth_m"]),
-            "nu_max_envelope_cSt": hi_nu, "nu_max_at_C": float(e.loc[i_hi, "oil_temp_C"]),
-            "nu_max_at_m": float(e.loc[i_hi, "depth_m"]),
-            "passes_lubrication": bool((1 - tol) * lo_nu >= settings["nu_min_cSt"]),
-            "passes_cold": bool((1 + tol) * hi_nu <= settings["nu_max_cSt"]),
-            "peak_viscous_torque_cold_Nm": evaluate_case(cold_case).viscous_torque_peak_Nm,
-            "envelope_min_power_W": float(e["mean_power_W"].min()),
-            "envelope_max_power_W": float(e["mean_power_W"].max()),
-            "rated_power_W": (float(r_at_case["mean_power_W"].iloc[0]) if len(r_at_case)
-                              else float("nan")),
-            "mission_mean_power_W": mean_p,
-            "mission_energy_Wh": mean_p * settings["mission_hours"]})
-    return pd.DataFrame(rows)
+    env, mres, rated = frames["envelope"], frames["mission"], frames["rated"]
+    return pd.DataFrame([_grade_row(base, get_oil(g, catalogue), env[env["oil"] == g],
+                                    cold_env[cold_env["oil"] == g], mres[mres["oil"] == g],
+                                    rated[rated["oil"] == g], fr, settings, mode)
+                         for g in grades])
 
 
 def _rank(table: pd.DataFrame) -> tuple[str | None, str | None, float]:
@@ -329,25 +460,35 @@ def _rank(table: pd.DataFrame) -> tuple[str | None, str | None, float]:
     return recommended, runner_up, best_e
 
 
-def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | None,
-              best_e: float, settings: dict) -> None:
-    """Add ``verdict`` and ``reason``: why each grade fails, loses or wins."""
+def _why_fails(r: pd.Series, settings: dict, mode: str) -> list[str]:
+    """The limits a grade fails, each with its numbers."""
     tol, nu_min, nu_max = (settings[k] for k in ("iso_tolerance", "nu_min_cSt", "nu_max_cSt"))
+    why = []
+    if not r["passes_lubrication"]:
+        where = (f"its operating {r['nu_min_at_C']:.1f} degC (sea {r['nu_min_at_sea_C']:g} "
+                 f"degC)" if mode == "full" else f"{r['nu_min_at_C']:g} degC")
+        why.append(f"too thin: nu = {r['nu_min_envelope_cSt']:.1f} cSt at {where}, "
+                   f"{r['nu_min_at_m']:g} m"
+                   + (f" ({(1 - tol) * r['nu_min_envelope_cSt']:.1f} at -{100 * tol:g} %"
+                      " ISO tolerance)" if tol else "")
+                   + f" < lubrication limit {nu_min:g} cSt")
+    if not r["passes_cold"]:
+        where = (f"a cold start in a {r['nu_max_at_C']:g} degC sea (oil not yet warmed)"
+                 if mode == "full" else f"{r['nu_max_at_C']:g} degC")
+        why.append(f"too thick when cold: nu = {r['nu_max_envelope_cSt']:.0f} cSt at "
+                   f"{where}, {r['nu_max_at_m']:g} m"
+                   + (f" ({(1 + tol) * r['nu_max_envelope_cSt']:.0f} at +{100 * tol:g} %)"
+                      if tol else "")
+                   + f" > cold-start limit {nu_max:g} cSt")
+    return why
+
+
+def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | None,
+              best_e: float, settings: dict, mode: str = "none") -> None:
+    """Add ``verdict`` and ``reason``: why each grade fails, loses or wins."""
     verdicts, reasons = [], []
     for _, r in table.iterrows():
-        why = []
-        if not r["passes_lubrication"]:
-            why.append(f"too thin: nu = {r['nu_min_envelope_cSt']:.1f} cSt at "
-                       f"{r['nu_min_at_C']:g} degC, {r['nu_min_at_m']:g} m"
-                       + (f" ({(1 - tol) * r['nu_min_envelope_cSt']:.1f} at -{100 * tol:g} %"
-                          " ISO tolerance)" if tol else "")
-                       + f" < lubrication limit {nu_min:g} cSt")
-        if not r["passes_cold"]:
-            why.append(f"too thick when cold: nu = {r['nu_max_envelope_cSt']:.0f} cSt at "
-                       f"{r['nu_max_at_C']:g} degC, {r['nu_max_at_m']:g} m"
-                       + (f" ({(1 + tol) * r['nu_max_envelope_cSt']:.0f} at +{100 * tol:g} %)"
-                          if tol else "")
-                       + f" > cold-start limit {nu_max:g} cSt")
+        why = _why_fails(r, settings, mode)
         if why:
             verdicts.append("fails")
             reasons.append("; ".join(why))
@@ -366,143 +507,14 @@ def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | Non
 def oil_grade_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
     """The oil-grade study as one call: one row per grade (see :func:`run`).
 
-    ``attrs`` carries ``recommended`` and ``runner_up``.
+    ``attrs`` carries ``recommended``, ``runner_up``, ``thermal_mode`` and
+    ``recommended_isothermal``.
     """
     r = run(out_dir, **kwargs)
     t = r.table.copy()
-    t.attrs.update(recommended=r.recommended, runner_up=r.runner_up)
+    t.attrs.update(recommended=r.recommended, runner_up=r.runner_up,
+                   thermal_mode=r.thermal_mode, recommended_isothermal=r.recommended_isothermal)
     return t
 
-
-# --------------------------------------------------------------------------- outputs
-
-
-def _figure_heatmap(result: OilGradeResult, base: DesignCase, path: Path) -> Path:
-    g = result.recommended or result.table.sort_values("mission_energy_Wh")["oil"].iloc[0]
-    e = result.envelope[result.envelope["oil"] == g]
-    depths = np.unique(e["depth_m"])
-    temps = np.unique(e["oil_temp_C"])
-    P = e.pivot_table(index="depth_m", columns="oil_temp_C", values="mean_power_W",
-                      aggfunc="first").loc[depths, temps].to_numpy()
-    fig, ax = new_figure(7.5, 5.2)
-    cs = ax.contourf(temps, depths, P, levels=20, cmap="viridis")
-    cl = ax.contour(temps, depths, P, levels=8, colors="white", linewidths=0.6)
-    ax.clabel(cl, fmt="%.0f W", fontsize=7)
-    fig.colorbar(cs, ax=ax, label="mean viscous power over the duty cycle [W]")
-    ax.plot([s.oil_temp_C for s in result.mission], [s.depth_m for s in result.mission],
-            "wo", mec="k", ms=7, label="mission profile rows")
-    ax.plot(base.operating.oil_temp_C, base.operating.depth_m, "r*", ms=15, mec="k",
-            label=f"seed design's rated condition ({base.operating.depth_m:g} m, "
-                  f"{base.operating.oil_temp_C:g} degC)")
-    ax.invert_yaxis()
-    ax.set_xlabel("oil temperature [degC]")
-    ax.set_ylabel("sea depth [m]")
-    tag = "recommended" if result.recommended else "lowest-loss (no grade passes)"
-    ax.set_title(f"{base.name}: loss with {g} ({tag}) over the envelope", fontsize=10)
-    ax.legend(fontsize=7.5, loc="lower left")
-    return save_figure(fig, path)
-
-
-def _figure_vs_grade(result: OilGradeResult, base: DesignCase, path: Path) -> Path:
-    t = result.table
-    x = np.arange(len(t))
-    fig, ax = new_figure(8.5, 5.0)
-    for k, temp in enumerate(result.settings["rated_temps_C"]):
-        r = result.rated[np.isclose(result.rated["oil_temp_C"], temp)]
-        r = r.set_index("oil").loc[t["oil"]]
-        ax.semilogy(x, r["mean_power_W"], "o-", color=f"C{k}", ms=4,
-                    label=f"{temp:g} degC at {result.settings['rated_depth_m']:g} m")
-    for i, row in t.iterrows():
-        if not row["passes_lubrication"]:
-            ax.axvspan(i - 0.5, i + 0.5, color="#f4cccc", zorder=0)
-        if not row["passes_cold"]:
-            ax.axvspan(i - 0.5, i + 0.5, color="#cfe2f3", zorder=0)
-    ax.axvspan(0, 0, color="#f4cccc", label="fails the lubrication limit")
-    ax.axvspan(0, 0, color="#cfe2f3", label="fails the cold-start limit")
-    seed_oil = base.oil.name
-    if seed_oil in list(t["oil"]):
-        i = list(t["oil"]).index(seed_oil)
-        ax.plot(i, t.loc[i, "rated_power_W"], "ks", mfc="none", ms=12, mew=1.5,
-                label=f"seed design ({seed_oil}, {base.operating.oil_temp_C:g} degC)")
-    if result.recommended:
-        i = list(t["oil"]).index(result.recommended)
-        ax.plot(i, t.loc[i, "rated_power_W"], "r*", ms=16, mec="k",
-                label=f"recommended ({result.recommended})")
-    ax.set_xticks(x, list(t["oil"]), rotation=45)
-    ax.set_xlabel("ISO VG grade (cSt at 40 degC)")
-    ax.set_ylabel("mean viscous power over the duty cycle [W]")
-    ax.set_title(f"Loss against oil grade at the rated depth ({result.settings['rated_depth_m']:g}"
-                 " m)")
-    ax.grid(alpha=0.3, which="both")
-    ax.legend(fontsize=7.5, loc="upper left")
-    return save_figure(fig, path)
-
-
-def summary_markdown(result: OilGradeResult, base: DesignCase) -> str:
-    """The study's short Markdown summary."""
-    s = result.settings
-    t = result.table
-    show = t[["oil", "nu_min_envelope_cSt", "nu_max_envelope_cSt", "rated_power_W",
-              "mission_mean_power_W", "mission_energy_Wh", "verdict", "reason"]].rename(
-        columns={"nu_min_envelope_cSt": "nu min [cSt]", "nu_max_envelope_cSt": "nu max [cSt]",
-                 "rated_power_W": f"P at {s['rated_depth_m']:g} m, "
-                                  f"{base.operating.oil_temp_C:g} degC [W]",
-                 "mission_mean_power_W": "mission mean P [W]",
-                 "mission_energy_Wh": f"mission energy ({s['mission_hours']:g} h) [Wh]"})
-    mis = pd.DataFrame([{"depth_m": m.depth_m, "oil_temp_C": m.oil_temp_C,
-                         "fraction": m.fraction} for m in result.mission])
-    if result.recommended:
-        r = t.set_index("oil")
-        rec = r.loc[result.recommended]
-        head = (f"**Recommended: {result.recommended}** (mission energy "
-                f"{rec['mission_energy_Wh']:.0f} Wh, mean {rec['mission_mean_power_W']:.2f} W)"
-                + (f"; runner-up **{result.runner_up}** ("
-                   f"{r.loc[result.runner_up, 'mission_energy_Wh']:.0f} Wh)"
-                   if result.runner_up else "; no runner-up passes both limits") + ".")
-        if base.oil.name in r.index and base.oil.name != result.recommended:
-            so = r.loc[base.oil.name]
-            head += (f" The case's own {base.oil.name}: {so['mission_energy_Wh']:.0f} Wh "
-                     f"({so['verdict']}).")
-    else:
-        head = "**No grade passes both limits**: see the reasons below."
-    lines = [
-        f"# Oil grade for {base.name}",
-        "",
-        head,
-        "",
-        f"Envelope: depth {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m, oil "
-        f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC ({s['n_depth']} x "
-        f"{s['n_temp']} grid). Lubrication limit: nu >= {s['nu_min_cSt']:g} cSt at the "
-        f"thinnest point; cold-start limit: nu <= {s['nu_max_cSt']:g} cSt at the thickest; "
-        f"both with the ISO 3448 +-{100 * s['iso_tolerance']:g} % grade tolerance at its "
-        "worst. Loss: mean viscous power over the case's duty cycle "
-        f"({base.duty_cycle.description}), friction form `{base.friction.form}`, laminar law "
-        f"`{base.friction.laminar_law}`, gamma = {base.friction.gamma:g}.",
-        "",
-        f"Mission profile ({result.mission_source}), {s['mission_hours']:g} h:",
-        "",
-        markdown_table(mis, 2),
-        "",
-        markdown_table(show, 1),
-    ]
-    return "\n".join(lines) + "\n"
-
-
-def write_outputs(out: Path, result: OilGradeResult, base: DesignCase) -> tuple[Path, ...]:
-    """Write ``oil_grade_table.csv``, ``oil_grade_envelope.csv``, ``oil_grade_rated.csv``,
-    the two PNG figures and ``summary.md`` into ``out``."""
-    files = write_tables(out, {
-        "oil_grade_table.csv": result.table,
-        "oil_grade_envelope.csv": result.envelope,
-        "oil_grade_rated.csv": result.rated,
-    })
-    files.append(_figure_heatmap(result, base, out / "oil_grade_heatmap.png"))
-    files.append(_figure_vs_grade(result, base, out / "oil_grade_loss_vs_grade.png"))
-    md = out / "summary.md"
-    md.write_text(summary_markdown(result, base), encoding="utf-8")
-    files.append(md)
-    return tuple(files)
-
-
 __all__ = ["ISO_GRADES", "SEED_MISSION", "OilGradeResult", "oil_grade_study", "parse_mission",
-           "read_mission_csv", "run"]
+           "read_mission_csv", "run", "summary_markdown", "write_outputs"]

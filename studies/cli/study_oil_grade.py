@@ -9,7 +9,28 @@ import argparse
 from oilgap.model.errors import InfeasibleError
 from oilgap.studies import oil_grade
 from oilgap.studies.cli.common import case_or_seed, file_list, study_out
-from oilgap.studies.oil_grade import read_mission_csv
+from oilgap.studies.grid.evaluate import thermal_description
+from oilgap.studies.oil_grade import DEFAULT_TEMP_RANGE_C, OilGradeResult, read_mission_csv
+
+
+def _temp_range(args: argparse.Namespace) -> tuple[float, float] | None:
+    """--temp-min-c/--temp-max-c (None when neither is given; default 0-40 degC)."""
+    if args.temp_min_c is None and args.temp_max_c is None:
+        return None
+    lo, hi = DEFAULT_TEMP_RANGE_C
+    return (lo if args.temp_min_c is None else args.temp_min_c,
+            hi if args.temp_max_c is None else args.temp_max_c)
+
+
+def _print_table(r: OilGradeResult) -> None:
+    full = r.thermal_mode == "full"
+    print(f"{'oil':<8}{'nu min':>9}" + (f"{'T oil max':>10}" if full else "")
+          + f"{'nu max':>10}{'mission W':>11}{'energy Wh':>11}  verdict")
+    for _, row in r.table.iterrows():
+        print(f"{row['oil']:<8}{row['nu_min_envelope_cSt']:>9.1f}"
+              + (f"{row['oil_temp_op_max_C']:>10.1f}" if full else "")
+              + f"{row['nu_max_envelope_cSt']:>10.0f}{row['mission_mean_power_W']:>11.2f}"
+              f"{row['mission_energy_Wh']:>11.1f}  {row['verdict']}: {row['reason']}")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -20,19 +41,25 @@ def run(args: argparse.Namespace) -> int:
     r = oil_grade.run(out, case, mission, nu_min_cSt=args.nu_min_cst,
                       nu_max_cSt=args.nu_max_cst, iso_tolerance=args.iso_tolerance,
                       depth_range_m=(args.depth_min_m, args.depth_max_m),
-                      temp_range_C=(args.temp_min_c, args.temp_max_c),
+                      temp_range_C=_temp_range(args), sea_temp_range_C=args.sea_temp_range_c,
                       mission_hours=args.mission_hours, workers=args.workers,
-                      progress=args.progress)
-    t = r.table
+                      progress=args.progress, thermal=args.thermal)
+    s = r.settings
+    print(f"thermal     {thermal_description(case, r.thermal_mode, s['thermal_default'])}")
+    axis = "sea" if r.thermal_mode == "full" else "oil"
+    print(f"envelope    {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m x {axis} "
+          f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC\n")
     if r.recommended is not None:
         print(f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}\n")
-    print(f"{'oil':<8}{'nu min':>9}{'nu max':>10}{'mission W':>11}{'energy Wh':>11}  verdict")
-    for _, row in t.iterrows():
-        print(f"{row['oil']:<8}{row['nu_min_envelope_cSt']:>9.1f}"
-              f"{row['nu_max_envelope_cSt']:>10.0f}{row['mission_mean_power_W']:>11.2f}"
-              f"{row['mission_energy_Wh']:>11.1f}  {row['verdict']}: {row['reason']}")
+    _print_table(r)
     print(f"\nmission: {r.mission_source}; " + ", ".join(
-        f"{m.depth_m:g} m/{m.oil_temp_C:g} degC/{m.fraction:g}" for m in r.mission))
+        f"{m.depth_m:g} m/{'sea ' if axis == 'sea' else ''}{m.oil_temp_C:g} degC/"
+        f"{m.fraction:g}" for m in r.mission))
+    if r.comparison is not None:
+        c = r.comparison
+        print(f"\nisothermal recommendation: {c['recommended_isothermal'] or 'none'}; under "
+              f"{r.thermal_mode}: {c['recommended'] or 'none'} "
+              f"({'changed' if c['changed'] else 'unchanged'})\nwhy: {c['why']}")
     print(f"wrote {out}/:\n" + file_list(r.files))
     if r.recommended is None:
         raise InfeasibleError("no oil grade meets both the lubrication limit "

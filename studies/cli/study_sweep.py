@@ -12,16 +12,18 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from oilgap.model.evaluation import mean_viscous_power
+from oilgap.model.joint_loss import operating_temperature
 from oilgap.model.oils import read_oils_csv
 from oilgap.studies.cli.common import case_or_seed, file_list, study_out
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
+from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid_csv
 from oilgap.studies.reporting import markdown_table, new_figure, save_figure
 
 
-def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Path):
+def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Path,
+                  thermal: str = "none"):
     ok = res[res["status"] == "ok"]
     params = [c for c in res.columns if c in _param_names() and c != "label"]
     num = [c for c in params if pd.api.types.is_numeric_dtype(res[c])
@@ -41,7 +43,7 @@ def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Pa
     ax.axhline(base_power, color="k", ls="--", lw=1,
                label=f"base case ({base_name}): {base_power:.2f} W")
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
-    ax.set_title(f"Sweep: {len(ok)}/{len(res)} points")
+    ax.set_title(f"Sweep: {len(ok)}/{len(res)} points (thermal mode {thermal})")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
     return save_figure(fig, path)
@@ -57,6 +59,14 @@ def _param_names() -> set[str]:
     return set(PARAM_COLUMNS) | set(OPTIMIZE_COLUMNS)
 
 
+def _base_line(case, thermal: str) -> tuple[float, str]:
+    """The base case's loss under the mode [W] and where it was taken."""
+    op = operating_temperature(case, thermal)
+    where = (f"oil {op.oil_temp_C:.2f} degC from the balance with the sea at "
+             f"{op.sea_temp_C:g} degC" if thermal == "full" else "its operating point")
+    return op.mean_power_W, where
+
+
 def run(args: argparse.Namespace) -> int:
     """``oilgap study sweep GRID.csv``: run a grid (resumable); returns the exit code."""
     grid = read_grid_csv(args.grid)
@@ -66,14 +76,19 @@ def run(args: argparse.Namespace) -> int:
     t0 = time.perf_counter()
     res = run_grid(grid, case, mode=args.mode, out_dir=out, workers=args.workers,
                    chunk_size=args.chunk_size, progress=args.progress, catalogue=cat,
-                   retry_failed=args.retry_failed)
+                   retry_failed=args.retry_failed, thermal=args.thermal)
     dt = time.perf_counter() - t0
+    thermal = res.attrs["thermal_mode"]
+    why = ("the design NLP is isothermal so far" if args.mode == "optimize"
+           and thermal == "none" and case.thermal is not None else None)
+    header = thermal_description(case, thermal, res.attrs["thermal_default"], why)
     ok = res[res["status"] == "ok"]
     bad = res[res["status"] != "ok"]
-    base_p = mean_viscous_power(case)
-    fig = _sweep_figure(res, base_p, case.name, out / "sweep.png")
+    base_p, base_where = _base_line(case, thermal)
+    fig = _sweep_figure(res, base_p, case.name, out / "sweep.png", thermal)
     lines = [f"# Sweep of {Path(args.grid).name} ({args.mode})", "",
-             f"Base case: {case.name} ({base_p:.3f} W at its operating point). "
+             f"Thermal mode: {header}.", "",
+             f"Base case: {case.name} ({base_p:.3f} W at {base_where}). "
              f"{len(res)} points: {len(ok)} ok, {len(bad)} failed; "
              f"{res.attrs.get('computed', len(res))} computed this run, "
              f"{res.attrs.get('reused', 0)} taken from {out}/points_{args.mode}.csv; "
@@ -81,13 +96,15 @@ def run(args: argparse.Namespace) -> int:
     if len(ok):
         best = ok.loc[ok["mean_power_W"].idxmin()]
         worst = ok.loc[ok["mean_power_W"].idxmax()]
-        cols = [c for c in grid.columns] + ["mean_power_W"]
+        cols = [c for c in grid.columns] + ["mean_power_W"] + (
+            ["oil_temp_op_C"] if thermal == "full" and "oil_temp_op_C" in ok.columns else [])
         lines += ["", "Lowest and highest mean power:", "",
                   markdown_table(pd.DataFrame([best[cols], worst[cols]]), 3)]
     if len(bad):
         lines += ["", f"First failure (row {bad.index[0]}): {bad['error'].iloc[0]}"]
     md = out / "summary.md"
     md.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    print(f"thermal     {header}")
     print(f"{len(res)} points: {len(ok)} ok, {len(bad)} failed "
           f"({res.attrs.get('computed', len(res))} computed, {res.attrs.get('reused', 0)} "
           f"reused) in {dt:.2f} s")

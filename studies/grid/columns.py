@@ -4,7 +4,7 @@ Plain data, no imports: the command line's ``study sweep`` help text lists these
 columns without loading pandas or the engine.
 """
 
-ENGINE_VERSION = "1"
+ENGINE_VERSION = "2"
 """Part of every point key: bump it when a result column changes meaning."""
 
 PARAM_COLUMNS: dict[str, str] = {
@@ -28,6 +28,9 @@ PARAM_COLUMNS: dict[str, str] = {
     "region2_radius_mm": "bearing annulus radius [mm]",
     "region2_length_mm": "bearing annulus length [mm]",
     "region2_gap_mm": "bearing annulus gap [mm]",
+    "sea_temp_C": "sea temperature [degC] (thermal full only; replaces the case's [thermal] "
+                  "sea_temp_C; the oil temperature is then a result)",
+    "resistance_K_per_W": "thermal resistance oil to sea [K/W] (thermal full only)",
     "label": "free text carried through to the results (not a parameter)",
 }
 """Columns a grid may hold in ``mode="evaluate"`` (and ``"optimize"``)."""
@@ -40,20 +43,29 @@ OPTIMIZE_COLUMNS: dict[str, str] = {
 }
 """Extra columns a grid may hold in ``mode="optimize"`` (passed to the design NLP)."""
 
+THERMAL_COLUMNS = ("sea_temp_C", "resistance_K_per_W")
+"""Columns of the heat balance: only under the thermal mode ``full``."""
+
 OPERATING_COLUMNS = ("oil", "oil_temp_C", "depth_m")
 """In optimize mode these are parameters of the NLP (no rebuild of the problem)."""
 
 STRING_COLUMNS = ("oil", "laminar_law", "form", "label")
 
-EVALUATE_NUMBERS = ("mean_power_W", "region1_power_W", "region2_power_W", "nu_cSt",
+EVALUATE_NUMBERS = ("mean_power_W", "region1_power_W", "region2_power_W",
+                    "isothermal_power_W", "oil_temp_op_C", "sea_temp_C", "nu_cSt",
                     "density_kg_m3", "Re1_peak", "Re2_peak", "T_res", "delta_mm_res",
                     "R_mm_res", "L_mm_res")
-"""The numbers of one evaluated point (see :func:`oilgap.studies.grid.evaluate.evaluate_cases`)."""
+"""The numbers of one evaluated point (see :func:`oilgap.studies.grid.evaluate.evaluate_cases`):
+``mean_power_W`` under the thermal mode, ``isothermal_power_W`` the seed's isothermal loss
+at the row's given temperature (the oil's, or the sea's under ``full``),
+``oil_temp_op_C`` the operating bulk temperature (a result under ``full``),
+``sea_temp_C`` (``full`` only), ``nu_cSt`` and ``density_kg_m3`` at ``oil_temp_op_C``."""
 
-EVALUATE_RESULTS = ("status", "error", "warning", *EVALUATE_NUMBERS)
+EVALUATE_RESULTS = ("status", "error", "warning", "thermal_mode", *EVALUATE_NUMBERS)
 """Result columns of ``mode="evaluate"``; ``*_res`` are the resolved geometry of the row."""
 
-OPTIMIZE_RESULTS = ("status", "error", "warning", "mean_power_W", "mean_power_exact_W",
+OPTIMIZE_RESULTS = ("status", "error", "warning", "thermal_mode", "mean_power_W",
+                    "mean_power_exact_W", "oil_temp_op_C",
                     "initial_mean_power_W", "region1_power_W", "region2_power_W", "delta_mm",
                     "R_mm", "L_mm", "T1_mm", "T2_mm", "T3_mm", "T4_mm", "T",
                     "torque_capability_Nm", "inertia_kgm2", "inertia_ratio",
@@ -61,7 +73,7 @@ OPTIMIZE_RESULTS = ("status", "error", "warning", "mean_power_W", "mean_power_ex
                     "iterations", "solve_time_s")
 """Result columns of ``mode="optimize"``: the optimal design; ``mean_power_W`` is the
 NLP objective (smooth C_m), ``mean_power_exact_W`` the same design with the case's
-exact C_m form."""
+exact C_m form under the thermal mode, ``oil_temp_op_C`` its operating bulk temperature."""
 
 MODES = ("evaluate", "optimize")
 

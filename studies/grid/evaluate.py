@@ -1,11 +1,21 @@
 """Vectorised evaluation of many cases: the mean viscous power over each duty cycle.
 
-Cases that share an oil, a friction law and a duty cycle are evaluated in one
-call per region of :func:`oilgap.model.regions.region_mean_power` over a
-(cases x speed nodes) array. Physics is never re-written here: oil state,
-regions and power come from :func:`oilgap.model.evaluation.oil_state`,
-:func:`~oilgap.model.regions.joint_regions` and
-:func:`~oilgap.model.regions.region_mean_power`.
+Cases that share an oil, a friction law, a duty cycle and a heat path are evaluated
+together: their regions are stacked (R, delta, L, T of shape (cases, 1)) and the loss
+is :func:`oilgap.model.joint_loss.joint_mean_power` over a (cases x speed nodes)
+array, the same composition as ``oilgap evaluate``. Physics is never re-written here.
+
+Thermal modes (:data:`oilgap.model.joint_loss.THERMAL_MODES`):
+
+``none``
+    the seed's isothermal loss at each row's oil temperature;
+``film``
+    the film-heating correction at each row's oil temperature;
+``full``
+    the film correction at the bulk temperature that balances each row's heat,
+    ``T = T_sea + R (P(T) + Q)``: one vectorised fixed point for the whole group
+    (:func:`oilgap.model.thermal.steady_temperature`, one base temperature
+    ``T_sea + R Q`` per row).
 """
 
 from __future__ import annotations
@@ -20,31 +30,51 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import oil_state
 from oilgap.model.fluids import warn_if_untrusted_state
+from oilgap.model.joint_loss import THERMAL_MODES, joint_mean_power
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.oils import Oil
-from oilgap.model.regions import Region, joint_regions, region_mean_power
+from oilgap.model.regions import Region, joint_regions
 from oilgap.model.taylor_couette import couette_reynolds
+from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
 from oilgap.studies.grid.columns import EVALUATE_NUMBERS
-from oilgap.studies.grid.schema import apply_params
+from oilgap.studies.grid.schema import WHERE, apply_params
+
+
+def _heat_path(case: DesignCase) -> tuple | None:
+    """What the film and the balance share within a group (the sea temperature excepted)."""
+    th = case.thermal
+    if th is None:
+        return None
+    return (th.resistance_K_W, th.other_heat_W, th.walls, th.conductivity_W_mK)
 
 
 def _group_by_law(cases: list[DesignCase]) -> list[list[int]]:
-    """Indices of the cases sharing an oil, a friction law and a duty cycle."""
+    """Indices of the cases sharing an oil, a friction law, a duty cycle and a heat path."""
     groups: dict[tuple, list[int]] = {}
     for i, c in enumerate(cases):
-        key = (c.oil, c.friction, id(c.duty_cycle), c.region2 is None)
+        key = (c.oil, c.friction, id(c.duty_cycle), c.region2 is None, _heat_path(c))
         groups.setdefault(key, []).append(i)
     return list(groups.values())
 
 
-def _oil_states(cases: list[DesignCase], idx: list[int], warn_col: list[str | None]
-                ) -> tuple[np.ndarray, np.ndarray]:
-    """Viscosity [m^2/s] and density [kg/m^3] of the group's cases; a temperature outside
-    the oil's trusted range puts its warning in ``warn_col``."""
-    c0 = cases[idx[0]]
-    temps = np.array([cases[i].operating.oil_temp_C for i in idx])
-    depths = np.array([cases[i].operating.depth_m for i in idx])
+def _stacked_regions(cases: list[DesignCase], idx: list[int], repeat: int = 1
+                     ) -> list[Region]:
+    """The group's regions, one per region index, with R, delta, L, T of shape
+    (repeat * cases, 1) (the cases repeated ``repeat`` times, case index fastest)."""
+    geos = [joint_regions(cases[i]) for i in idx]
+    out = []
+    for r in range(len(geos[0])):
+        R, d, L, T = (np.tile([getattr(g[r], k) for g in geos], repeat)[:, None]
+                      for k in ("radius_m", "gap_m", "length_m", "roughness_T"))
+        out.append(Region(geos[0][r].name, R, d, L, T))
+    return out
+
+
+def _oil_states(c0: DesignCase, idx: list[int], temps: np.ndarray, depths: np.ndarray,
+                warn_col: list[str | None]) -> tuple[np.ndarray, np.ndarray]:
+    """Viscosity [m^2/s] and density [kg/m^3] at the rows' (operating) temperatures; a
+    temperature outside the oil's trusted range puts its warning in ``warn_col``."""
     with warnings.catch_warnings(record=True) as rec:
         warnings.simplefilter("always", OilgapWarning)
         nu, _, rho = oil_state(c0, temps, depths)
@@ -54,80 +84,157 @@ def _oil_states(cases: list[DesignCase], idx: list[int], warn_col: list[str | No
                 warnings.simplefilter("always", OilgapWarning)
                 warn_if_untrusted_state(c0.oil, t, seawater_gauge_pressure(dep))
             if r1:
-                warn_col[i] = str(r1[0].message)
+                warn_col[i] = "; ".join(w for w in (warn_col[i], str(r1[0].message)) if w)
     nu = np.broadcast_to(np.asarray(nu, dtype=float), temps.shape)
     rho = np.broadcast_to(np.asarray(rho, dtype=float), temps.shape)
     return nu, rho
 
 
-def _evaluate_group(cases: list[DesignCase], idx: list[int], nu: np.ndarray, rho: np.ndarray,
-                    out: dict[str, np.ndarray]) -> None:
-    """Fill ``out`` at ``idx``: the regions' mean powers, peak Reynolds numbers and the
-    resolved region-1 geometry of the group's cases."""
+def _balance(c0: DesignCase, cases: list[DesignCase], idx: list[int], depths: np.ndarray,
+             warn_col: list[str | None]) -> tuple[np.ndarray, np.ndarray]:
+    """Bulk temperature [degC] of each row under ``full`` (``T = T_sea + R (P(T) + Q)``,
+    one vectorised fixed point) and its sea temperature [degC]."""
+    th = c0.thermal
+    sea = np.array([cases[i].thermal.sea_temp_C for i in idx])
+    n = len(idx)
+    regs = {1: _stacked_regions(cases, idx, 1), 2: _stacked_regions(cases, idx, 2)}
+
+    def power_at(ts: np.ndarray) -> np.ndarray:
+        k = len(ts) // n
+        return np.asarray(joint_mean_power(c0, ts, "full", np.tile(depths, k), regs[k]),
+                          dtype=float)
+
+    temps, _ = steady_temperature(power_at, sea + th.resistance_K_W * th.other_heat_W,
+                                  th.resistance_K_W, n)
+    for j in np.flatnonzero(temps >= MAX_OIL_TEMP_C):
+        warn_col[idx[j]] = (f"heat balance held at its cap {MAX_OIL_TEMP_C:g} degC (no "
+                            "root below it)")
+    return temps, sea
+
+
+def _group_temperatures(cases: list[DesignCase], idx: list[int], mode: str,
+                        depths: np.ndarray, warn_col: list[str | None]
+                        ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(operating bulk temperatures, the rows' given temperatures, sea temperatures or
+    NaN) [degC]: the given temperature is the oil's under none/film, the sea's under full
+    (the isothermal reference is taken there: the loss without any heating)."""
+    c0 = cases[idx[0]]
+    if mode != "full":
+        temps = np.array([cases[i].operating.oil_temp_C for i in idx], dtype=float)
+        return temps, temps, np.full(len(idx), np.nan)
+    if c0.thermal is None:
+        raise InputError("thermal", mode, "'none' or 'film': the case has no [thermal] "
+                         "table", WHERE)
+    temps, sea = _balance(c0, cases, idx, depths, warn_col)
+    return temps, sea, sea
+
+
+def _evaluate_group(cases: list[DesignCase], idx: list[int], mode: str,
+                    out: dict[str, np.ndarray], warn_col: list[str | None]) -> None:
+    """Fill ``out`` at ``idx``: operating temperature, the regions' mean powers under
+    ``mode``, the isothermal loss, peak Reynolds numbers and the resolved geometry."""
     c0 = cases[idx[0]]
     ii = np.asarray(idx)
-    nodes, weights = c0.duty_cycle.speed_distribution()
+    depths = np.array([cases[i].operating.depth_m for i in idx], dtype=float)
+    temps, given, sea = _group_temperatures(cases, idx, mode, depths, warn_col)
+    nu, rho = _oil_states(c0, idx, temps, depths, warn_col)
+    nodes, _ = c0.duty_cycle.speed_distribution()
     w_peak = float(nodes.max())
-    geos = [joint_regions(cases[i]) for i in idx]
+    regions = _stacked_regions(cases, idx)
     total = np.zeros(len(idx))
-    for r in range(len(geos[0])):
-        R, d, L, T = (np.array([getattr(g[r], k) for g in geos])
-                      for k in ("radius_m", "gap_m", "length_m", "roughness_T"))
-        stacked = Region(geos[0][r].name, R[:, None], d[:, None], L[:, None], T[:, None])
-        mean = region_mean_power(stacked, nodes[None, :], weights, nu[:, None],
-                                 rho[:, None], c0.friction)
+    for r, reg in enumerate(regions):
+        mean = np.asarray(joint_mean_power(c0, temps, mode, depths, [reg]), dtype=float)
         total += mean
         out[f"region{r + 1}_power_W"][ii] = mean
-        out[f"Re{r + 1}_peak"][ii] = couette_reynolds(w_peak, R, d, nu)
-        if r == 0:
-            out["T_res"][ii] = T
-            out["delta_mm_res"][ii] = d / MM_TO_M
-            out["R_mm_res"][ii] = R / MM_TO_M
-            out["L_mm_res"][ii] = L / MM_TO_M
+        out[f"Re{r + 1}_peak"][ii] = couette_reynolds(w_peak, reg.radius_m[:, 0],
+                                                      reg.gap_m[:, 0], nu)
+    r1 = regions[0]
+    out["T_res"][ii] = r1.roughness_T[:, 0]
+    out["delta_mm_res"][ii] = r1.gap_m[:, 0] / MM_TO_M
+    out["R_mm_res"][ii] = r1.radius_m[:, 0] / MM_TO_M
+    out["L_mm_res"][ii] = r1.length_m[:, 0] / MM_TO_M
     out["mean_power_W"][ii] = total
+    out["isothermal_power_W"][ii] = total if mode == "none" else np.asarray(
+        joint_mean_power(c0, given, "none", depths, regions), dtype=float)
+    out["oil_temp_op_C"][ii] = temps
+    out["sea_temp_C"][ii] = sea
     out["nu_cSt"][ii] = m2_s_to_cst(nu)
     out["density_kg_m3"][ii] = rho
 
 
-def evaluate_arrays(cases: list[DesignCase]) -> tuple[dict[str, np.ndarray], list[str | None]]:
+def check_mode(thermal: str) -> str:
+    """The thermal mode, checked against :data:`THERMAL_MODES`."""
+    if thermal not in THERMAL_MODES:
+        raise InputError("thermal", thermal, f"one of {', '.join(THERMAL_MODES)}", WHERE)
+    return thermal
+
+
+def evaluate_arrays(cases: list[DesignCase], thermal: str = "none"
+                    ) -> tuple[dict[str, np.ndarray], list[str | None]]:
     """The numbers of :func:`evaluate_cases` as a dict of arrays, and the warnings."""
+    mode = check_mode(thermal)
     n = len(cases)
     out = {k: np.full(n, np.nan) for k in EVALUATE_NUMBERS}
     warn_col: list[str | None] = [None] * n
     for idx in _group_by_law(cases):
-        nu, rho = _oil_states(cases, idx, warn_col)
-        _evaluate_group(cases, idx, nu, rho, out)
+        _evaluate_group(cases, idx, mode, out, warn_col)
     return out, warn_col
 
 
-def evaluate_cases(cases: list[DesignCase]) -> pd.DataFrame:
+def evaluate_cases(cases: list[DesignCase], thermal: str = "none") -> pd.DataFrame:
     """Evaluate many cases at their own operating points, vectorised.
 
-    Cases that share an oil, a friction law and a duty cycle are evaluated in
-    one call of :func:`~oilgap.model.viscous_loss.clearance_power` on a
-    (cases x speed nodes) array; the mean over the duty cycle is the
-    speed-distribution quadrature of :meth:`DutyCycle.speed_distribution`, as
-    in :func:`oilgap.model.evaluation.mean_viscous_power` (which this equals
-    row by row to rounding).
+    Cases that share an oil, a friction law, a duty cycle and a heat path are
+    evaluated together by :func:`oilgap.model.joint_loss.joint_mean_power` on a
+    (cases x speed nodes) array (stacked regions); the mean over the duty cycle is
+    the speed-distribution quadrature of :meth:`DutyCycle.speed_distribution`, as in
+    :func:`oilgap.model.joint_loss.operating_temperature` (which this equals row by
+    row to rounding; under ``none`` it equals
+    :func:`oilgap.model.evaluation.mean_viscous_power`).
+
+    Parameters
+    ----------
+    cases : list of DesignCase
+    thermal : {"none", "film", "full"}
+        Thermal mode (default ``"none"``, the seed's isothermal model; ``"full"``
+        needs every case's ``[thermal]`` table).
 
     Returns
     -------
     DataFrame
         One row per case: ``mean_power_W``, ``region1_power_W``,
-        ``region2_power_W`` [W], ``nu_cSt``, ``density_kg_m3``, ``Re1_peak``,
+        ``region2_power_W`` [W] under the mode, ``isothermal_power_W`` (the
+        isothermal loss at the row's given temperature: the oil's under
+        none/film, the sea's under full) [W], ``oil_temp_op_C`` (the operating
+        bulk temperature) and ``sea_temp_C`` (full only) [degC], ``nu_cSt``,
+        ``density_kg_m3`` at the operating temperature, ``Re1_peak``,
         ``Re2_peak`` (at the peak speed) and the resolved ``T_res``,
-        ``delta_mm_res``, ``R_mm_res``, ``L_mm_res``; ``warning`` holds any
-        OilgapWarning of the row.
+        ``delta_mm_res``, ``R_mm_res``, ``L_mm_res``; ``thermal_mode``;
+        ``warning`` holds any OilgapWarning of the row.
     """
-    out, warn_col = evaluate_arrays(cases)
+    out, warn_col = evaluate_arrays(cases, thermal)
     df = pd.DataFrame(out)
+    df["thermal_mode"] = thermal
     df["warning"] = warn_col
     return df
 
 
+def _records(cases: list[DesignCase], thermal: str) -> list[dict]:
+    """The rows of :func:`evaluate_cases` as records; where the call fails, the cases are
+    halved until the failing row(s) are isolated (each carries its error)."""
+    try:
+        return evaluate_cases(cases, thermal).to_dict("records")
+    except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
+        if len(cases) == 1:
+            return [{"error": f"{type(e).__name__}: {e}"}]
+        mid = len(cases) // 2
+        return _records(cases[:mid], thermal) + _records(cases[mid:], thermal)
+
+
 def evaluate_chunk(base: DesignCase, rows: list[dict],
-                   catalogue: Mapping[str, Oil] | None) -> list[dict]:
-    """Evaluate one chunk of grid rows; a row that fails carries its error."""
+                   catalogue: Mapping[str, Oil] | None, thermal: str = "none") -> list[dict]:
+    """Evaluate one chunk of grid rows under a thermal mode; a row that fails carries
+    its error."""
     results: list[dict] = [{} for _ in rows]
     cases, where = [], []
     for i, row in enumerate(rows):
@@ -137,16 +244,7 @@ def evaluate_chunk(base: DesignCase, rows: list[dict],
         except (InputError, ValueError) as e:
             results[i] = {"status": "error", "error": str(e)}
     if cases:
-        try:
-            df = evaluate_cases(cases)
-            recs = df.to_dict("records")
-        except Exception:  # isolate the failing row(s): evaluate one by one
-            recs = []
-            for c in cases:
-                try:
-                    recs.append(evaluate_cases([c]).to_dict("records")[0])
-                except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
-                    recs.append({"error": f"{type(e).__name__}: {e}"})
+        recs = _records(cases, thermal)
         for i, rec in zip(where, recs, strict=True):
             if "error" in rec:
                 results[i] = {"status": "error", "error": rec["error"]}
@@ -156,3 +254,32 @@ def evaluate_chunk(base: DesignCase, rows: list[dict],
             else:
                 results[i] = dict(rec, status="ok", error=None)
     return results
+
+
+MODE_TEXT = {
+    "none": "isothermal oil, the seed paper's model",
+    "film": "the film's own shear heating at the given oil temperature",
+    "full": "film heating at the oil temperature of the heat balance to the sea",
+}
+"""What each thermal mode computes (the words of ``oilgap evaluate``'s header line)."""
+
+
+def thermal_description(case: DesignCase, thermal: str, by_default: bool,
+                        why: str | None = None) -> str:
+    """The text after ``thermal`` in the studies' header lines, as ``oilgap evaluate``'s:
+    the mode, whether it is the default, what it computes and, under ``full``, the heat
+    path, e.g. ``full (default: the best physics this case allows; film heating at the
+    oil temperature of the heat balance to the sea; R 0.5 K/W, Q 0 W, isothermal-walls;
+    --thermal none for the seed's isothermal model)``.
+
+    ``why`` replaces "the best physics this case allows" (e.g. the design NLP's modes)."""
+    text = f"{thermal} ("
+    if by_default:
+        text += f"default: {why or 'the best physics this case allows'}; "
+    text += MODE_TEXT[thermal]
+    th = case.thermal
+    if thermal == "full" and th is not None:
+        text += f"; R {th.resistance_K_W:g} K/W, Q {th.other_heat_W:g} W, {th.walls}"
+    if thermal != "none":
+        text += "; --thermal none for the seed's isothermal model"
+    return text + ")"

@@ -9,6 +9,7 @@ solve (no rebuild).
 
 from __future__ import annotations
 
+import inspect
 import time
 import warnings
 from collections.abc import Mapping
@@ -17,6 +18,7 @@ from typing import Any
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import OilgapWarning
+from oilgap.model.joint_loss import THERMAL_MODES
 from oilgap.model.oils import Oil, get_oil
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
@@ -35,27 +37,37 @@ _OVERRIDE_MAP = {"torque_min_Nm": ("torque_min_Nm", 1.0),
                  "inertia_max_ratio": ("inertia_max_ratio", 1.0)}
 
 
+def nlp_thermal_modes() -> tuple[str, ...]:
+    """The thermal modes the design NLP carries: all of them once
+    :class:`~oilgap.optim.design.DesignProblem` takes a ``thermal`` argument, else
+    only ``"none"`` (the isothermal NLP)."""
+    params = inspect.signature(DesignProblem.__init__).parameters
+    return THERMAL_MODES if "thermal" in params else ("none",)
+
+
 def clear_problems() -> None:
     """Empty this process's cache of DesignProblems (the next solve builds its NLP)."""
     PROBLEMS.clear()
 
 
-def design_problem(case: DesignCase, problems: dict | None = None
+def design_problem(case: DesignCase, problems: dict | None = None, thermal: str = "none"
                    ) -> tuple[str, DesignProblem]:
-    """(key, DesignProblem) of ``case``, built once and kept in ``problems`` (default:
-    :data:`PROBLEMS`, at most :data:`MAX_PROBLEMS`, the oldest dropped first)."""
+    """(key, DesignProblem) of ``case`` under a thermal mode, built once and kept in
+    ``problems`` (default: :data:`PROBLEMS`, at most :data:`MAX_PROBLEMS`, the oldest
+    dropped first)."""
     cache = PROBLEMS if problems is None else problems
-    key = case_fingerprint(case)
+    key = case_fingerprint(case) + ("" if thermal == "none" else f":{thermal}")
     if key not in cache:
         if len(cache) >= MAX_PROBLEMS:
             cache.pop(next(iter(cache)))
-        cache[key] = DesignProblem(case)
+        cache[key] = (DesignProblem(case) if thermal == "none"
+                      else DesignProblem(case, thermal=thermal))
     return key, cache[key]
 
 
 def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None,
-                       problems: dict | None = None, operating: Mapping[str, Any] | None = None
-                       ) -> tuple[dict, Any]:
+                       problems: dict | None = None, operating: Mapping[str, Any] | None = None,
+                       thermal: str = "none") -> tuple[dict, Any]:
     """Solve the design NLP of ``case`` with grid overrides; return (record, warm start).
 
     Parameters
@@ -72,6 +84,9 @@ def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None
         from the same problem, primal only otherwise).
     operating : mapping, optional
         ``oil`` (name), ``oil_temp_C``, ``depth_m``: NLP parameters, no rebuild.
+    thermal : str
+        Thermal mode of the NLP and of ``mean_power_exact_W`` (default ``"none"``;
+        others need a design NLP that carries them, :func:`nlp_thermal_modes`).
 
     Returns
     -------
@@ -85,7 +100,7 @@ def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None
     InputError, InfeasibleError, SolverError
         As :meth:`DesignProblem.solve`.
     """
-    key, prob = design_problem(case, problems)
+    key, prob = design_problem(case, problems, thermal)
     kw: dict[str, Any] = {}
     for k, v in overrides.items():
         name, f = _OVERRIDE_MAP[k]
@@ -102,9 +117,11 @@ def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None
     o = res.optimal
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
-        exact = float(evaluate_arrays([res.to_case()])[0]["mean_power_W"][0])
+        arrays = evaluate_arrays([res.to_case()], thermal)[0]
     rec = dict(o.to_dict(), initial_mean_power_W=res.initial.mean_power_W,
-               mean_power_exact_W=exact, solve_time_s=dt, iterations=res.iterations,
+               mean_power_exact_W=float(arrays["mean_power_W"][0]), thermal_mode=thermal,
+               oil_temp_op_C=float(arrays["oil_temp_op_C"][0]), solve_time_s=dt,
+               iterations=res.iterations,
                active_constraints=" ".join(res.active_constraints),
                torque_min_Nm_used=res.parameters.torque_min_Nm,
                inertia_max_kgm2_used=res.parameters.inertia_max_kgm2)
@@ -112,7 +129,7 @@ def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None
 
 
 def optimize_chunk(base: DesignCase, rows: list[dict],
-                   catalogue: Mapping[str, Oil] | None) -> list[dict]:
+                   catalogue: Mapping[str, Oil] | None, thermal: str = "none") -> list[dict]:
     """Optimize each row (one design NLP each), warm-starting from the previous success.
 
     The rows' structural parameters give the case (one DesignProblem per distinct
@@ -133,7 +150,8 @@ def optimize_chunk(base: DesignCase, rows: list[dict],
             if "oil" in operating:
                 operating["oil"] = get_oil(str(operating["oil"]), catalogue).name
                 case = replace(case, oil=get_oil(operating.pop("oil"), catalogue))
-            rec, x_prev = solve_design_point(case, overrides, x0=x_prev, operating=operating)
+            rec, x_prev = solve_design_point(case, overrides, x0=x_prev, operating=operating,
+                                             thermal=thermal)
             results.append(dict(rec, status="ok", error=None, warning=None))
         except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
             results.append({"status": "error", "error": f"{type(e).__name__}: {e}"})

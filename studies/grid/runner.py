@@ -34,11 +34,12 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.joint_loss import default_thermal_mode, resolve_thermal_mode
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
-from oilgap.studies.grid.columns import result_columns
+from oilgap.studies.grid.columns import THERMAL_COLUMNS, result_columns
 from oilgap.studies.grid.evaluate import evaluate_chunk
-from oilgap.studies.grid.optimize import optimize_chunk
-from oilgap.studies.grid.schema import WHERE, validate_grid
+from oilgap.studies.grid.optimize import nlp_thermal_modes, optimize_chunk
+from oilgap.studies.grid.schema import WHERE, check_thermal_columns, validate_grid
 from oilgap.studies.grid.store import append_points, finished_points, point_keys, points_path
 
 DEFAULT_EVAL_CHUNK = 1000
@@ -99,14 +100,42 @@ def chunks(items: list, size: int) -> Iterable[list]:
 
 
 def run_chunk(mode: str, base: DesignCase, rows: list[dict],
-              catalogue: Mapping[str, Oil] | None) -> list[dict]:
-    """One task: evaluate or optimize a chunk of rows (OilgapWarnings silenced; they are
-    reported per row in ``warning``)."""
+              catalogue: Mapping[str, Oil] | None, thermal: str = "none") -> list[dict]:
+    """One task: evaluate or optimize a chunk of rows under a thermal mode (OilgapWarnings
+    silenced; they are reported per row in ``warning``)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         if mode == "evaluate":
-            return evaluate_chunk(base, rows, catalogue)
-        return optimize_chunk(base, rows, catalogue)
+            return evaluate_chunk(base, rows, catalogue, thermal)
+        return optimize_chunk(base, rows, catalogue, thermal)
+
+
+def resolve_grid_thermal(base: DesignCase, mode: str, thermal: str | None
+                         ) -> tuple[str, bool]:
+    """(thermal mode, whether it is the default) of a grid run.
+
+    ``None`` asks for the best physics: in evaluate mode the case's
+    (:func:`~oilgap.model.joint_loss.default_thermal_mode`: ``full`` with ``[thermal]``,
+    else ``film``); in optimize mode the best the design NLP carries
+    (:func:`~oilgap.studies.grid.optimize.nlp_thermal_modes`).
+
+    Raises
+    ------
+    InputError
+        An unknown mode, ``full`` without ``[thermal]``, or a mode the design NLP does
+        not carry (optimize mode).
+    """
+    if mode == "optimize":
+        carried = nlp_thermal_modes()
+        if thermal is None:
+            best = default_thermal_mode(base)
+            return (best if best in carried else "none"), True
+        resolved = resolve_thermal_mode(base, thermal)
+        if resolved not in carried:
+            raise InputError("thermal", thermal, "optimize mode: the design NLP carries only "
+                             f"{', '.join(carried)} so far", WHERE)
+        return resolved, False
+    return resolve_thermal_mode(base, thermal), thermal is None
 
 
 def _check_workers(workers: int | None) -> int:
@@ -165,17 +194,18 @@ def _todo(keys: list[str], grid: pd.DataFrame, done: Mapping[str, dict]
 
 def _execute(tasks: list[tuple[list[str], list[dict]]], mode: str, base: DesignCase,
              catalogue: Mapping[str, Oil] | None, workers: int,
-             finish: Callable[[list[str], list[dict]], None]) -> None:
+             finish: Callable[[list[str], list[dict]], None], thermal: str = "none") -> None:
     """Run the tasks here (one worker or one task) or on a process pool; ``finish`` each
     chunk as it completes."""
     if not tasks:
         return
     if workers == 1 or len(tasks) == 1:
         for ks, rows in tasks:
-            finish(ks, run_chunk(mode, base, rows, catalogue))
+            finish(ks, run_chunk(mode, base, rows, catalogue, thermal))
         return
     with ProcessPoolExecutor(max_workers=min(workers, len(tasks))) as ex:
-        futs = {ex.submit(run_chunk, mode, base, rows, catalogue): ks for ks, rows in tasks}
+        futs = {ex.submit(run_chunk, mode, base, rows, catalogue, thermal): ks
+                for ks, rows in tasks}
         pending = set(futs)
         while pending:
             fin, pending = wait(pending, return_when=FIRST_COMPLETED)
@@ -190,6 +220,10 @@ def _assemble(grid: pd.DataFrame, keys: list[str], done: Mapping[str, dict],
     res = pd.DataFrame([{c: done[k].get(c) for c in cols} for k in keys], columns=list(cols))
     for c in ("error", "warning"):
         res[c] = res[c].astype(object).where(res[c].notna(), None)
+    grid = grid.copy()
+    for c in THERMAL_COLUMNS:  # a grid cell left empty shows the base case's value used
+        if c in grid.columns and c in res.columns:
+            grid[c] = grid[c].where(grid[c].notna(), res[c])
     res = res.drop(columns=[c for c in res.columns if c in grid.columns and c != "status"])
     result = pd.concat([grid, res], axis=1)
     result["point_key"] = keys
@@ -199,12 +233,50 @@ def _assemble(grid: pd.DataFrame, keys: list[str], done: Mapping[str, dict],
 # --------------------------------------------------------------------------- the engine
 
 
+def _bar(total: int, todo: int, label: str, progress: bool | None) -> Progress:
+    """The progress line (default: shown when stderr is a terminal), ``total - todo``
+    points already done."""
+    if progress is None:
+        progress = bool(getattr(sys.stderr, "isatty", lambda: False)())
+    bar = Progress(total, label, progress)
+    bar.done = total - todo
+    return bar
+
+
+def _finisher(done: dict, store: Path | None, mode: str, bar: Progress,
+              on_chunk: Callable[[int], None] | None
+              ) -> Callable[[list[str], list[dict]], None]:
+    """What happens to each finished chunk: kept, appended to the store, counted."""
+
+    def finish(ks: list[str], recs: list[dict]) -> None:
+        for k, r in zip(ks, recs, strict=True):
+            done[k] = r
+        if store is not None:
+            append_points(store, ks, recs, mode)
+        bar.update(len(ks))
+        if on_chunk is not None:
+            on_chunk(len(ks))
+
+    return finish
+
+
+def _checked(grid: pd.DataFrame, case: DesignCase | None, mode: str, thermal: str | None
+             ) -> tuple[pd.DataFrame, DesignCase, str, bool]:
+    """(grid checked, base case, thermal mode, whether it is the default)."""
+    grid = validate_grid(grid, mode)
+    base = case if case is not None else seed_case()
+    thermal, by_default = resolve_grid_thermal(base, mode, thermal)
+    check_thermal_columns(grid, thermal, base)
+    return grid, base, thermal, by_default
+
+
 def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "evaluate",
              out_dir: str | Path | None = None, workers: int | None = None,
              chunk_size: int | None = None, progress: bool | None = None,
              catalogue: Mapping[str, Oil] | None = None,
              label: str = "sweep", retry_failed: bool = False,
-             on_chunk: Callable[[int], None] | None = None) -> pd.DataFrame:
+             on_chunk: Callable[[int], None] | None = None,
+             thermal: str | None = "none") -> pd.DataFrame:
     """Evaluate or optimize every row of a grid of parameter combinations.
 
     Parameters
@@ -233,48 +305,44 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
         the built-in ISO VG catalogue).
     retry_failed : bool
         Recompute points stored as errors (default: they count as finished).
+    thermal : {"none", "film", "full"} or None
+        Thermal mode (:mod:`oilgap.model.joint_loss`; default ``"none"``, the
+        isothermal model; None: the best physics, :func:`resolve_grid_thermal`).
+        Under ``full`` the grid may hold ``sea_temp_C``, ``resistance_K_per_W``
+        and not ``oil_temp_C`` (a result: ``oil_temp_op_C``).
 
     Returns
     -------
     DataFrame
         The grid's columns, then ``status`` ("ok"/"error"), ``error``,
-        ``warning`` and the result columns (:data:`EVALUATE_RESULTS` or
-        :data:`OPTIMIZE_RESULTS`); ``point_key`` identifies the point.
+        ``warning``, ``thermal_mode`` and the result columns
+        (:data:`EVALUATE_RESULTS` or :data:`OPTIMIZE_RESULTS`); ``point_key``
+        identifies the point. ``attrs``: ``thermal_mode``, ``thermal_default``,
+        ``computed``, ``reused``, ``elapsed_s``.
 
     Raises
     ------
     InputError
-        Bad grid (see :func:`validate_grid`), unknown oil, bad ``workers``.
+        Bad grid (:func:`validate_grid`), unknown oil, bad ``workers``, a thermal
+        mode or column the case refuses (:func:`check_thermal_columns`).
     """
-    grid = validate_grid(grid, mode)
-    base = case if case is not None else seed_case()
+    grid, base, thermal, by_default = _checked(grid, case, mode, thermal)
     catalogue = _catalogue(grid, base, catalogue)
     workers = _check_workers(workers)
-    keys = point_keys(grid, base, mode)
+    keys = point_keys(grid, base, mode, {"thermal": thermal})
     store, done = _open_store(out_dir, mode, retry_failed)
     todo_keys, todo_rows = _todo(keys, grid, done)
     n = len(todo_rows)
     chunk_size = _chunk_size(chunk_size, mode, n, workers)
-    if progress is None:
-        progress = bool(getattr(sys.stderr, "isatty", lambda: False)())
-    bar = Progress(len(keys), label, progress)
-    bar.done = len(keys) - n
-
-    def finish(ks: list[str], recs: list[dict]) -> None:
-        for k, r in zip(ks, recs, strict=True):
-            done[k] = r
-        if store is not None:
-            append_points(store, ks, recs, mode)
-        bar.update(len(ks))
-        if on_chunk is not None:
-            on_chunk(len(ks))
-
+    bar = _bar(len(keys), n, label, progress)
+    finish = _finisher(done, store, mode, bar, on_chunk)
     tasks = list(zip(chunks(todo_keys, chunk_size), chunks(todo_rows, chunk_size),
                      strict=True))
-    _execute(tasks, mode, base, catalogue, workers, finish)
+    _execute(tasks, mode, base, catalogue, workers, finish, thermal)
     bar.close()
     result = _assemble(grid, keys, done, mode)
-    result.attrs.update(computed=n, reused=len(keys) - n, elapsed_s=time.perf_counter() - bar.t0)
+    result.attrs.update(thermal_mode=thermal, thermal_default=by_default, computed=n,
+                        reused=len(keys) - n, elapsed_s=time.perf_counter() - bar.t0)
     if out_dir is not None:
         result.to_csv(Path(out_dir) / "results.csv", index=False)
     return result

@@ -28,10 +28,11 @@ from oilgap.studies.grid.columns import (
     OPTIMIZE_COLUMNS,
     PARAM_COLUMNS,
     STRING_COLUMNS,
+    THERMAL_COLUMNS,
 )
 
 __all__ = ["MODES", "OPTIMIZE_COLUMNS", "PARAM_COLUMNS", "STRING_COLUMNS", "apply_params",
-           "is_missing", "read_grid_csv", "validate_grid"]
+           "check_thermal_columns", "is_missing", "read_grid_csv", "validate_grid"]
 
 WHERE = "trade study"
 """Context named by every InputError of the engine."""
@@ -106,6 +107,34 @@ def validate_grid(grid: pd.DataFrame, mode: str = "evaluate") -> pd.DataFrame:
     return out
 
 
+def check_thermal_columns(grid: pd.DataFrame, thermal: str, case: DesignCase) -> None:
+    """Refuse columns that mean nothing under the thermal mode.
+
+    Under ``full`` the oil temperature is a result of the heat balance: a given
+    ``oil_temp_C`` is refused (vary ``sea_temp_C``). Under ``none``/``film`` there is
+    no balance: ``sea_temp_C`` and ``resistance_K_per_W`` are refused.
+
+    Raises
+    ------
+    InputError
+        Naming the column, the mode and what to do instead.
+    """
+    given = [c for c in grid.columns if grid[c].map(lambda v: not is_missing(v)).any()]
+    if thermal == "full":
+        if "oil_temp_C" in given:
+            raise InputError("oil_temp_C", "a grid column", "under thermal mode 'full' the "
+                             "oil temperature is a result of the heat balance; vary "
+                             "sea_temp_C instead (or choose --thermal none/film)", WHERE)
+        if case.thermal is None:
+            raise InputError("thermal", thermal, "'none' or 'film': the case has no "
+                             "[thermal] table", WHERE)
+        return
+    for c in THERMAL_COLUMNS:
+        if c in given:
+            raise InputError(c, "a grid column", "only under thermal mode 'full' (the heat "
+                             f"balance); the mode is '{thermal}'", WHERE)
+
+
 def read_grid_csv(path: str | Path) -> pd.DataFrame:
     """Read a grid CSV (one column per parameter, see :data:`PARAM_COLUMNS`)."""
     p = Path(path)
@@ -127,7 +156,8 @@ def read_grid_csv(path: str | Path) -> pd.DataFrame:
 
 _DUTY_CACHE: dict[tuple, DutyCycle] = {}
 _POSITIVE = ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm", "R_mm", "gap_mm",
-             "region2_radius_mm", "region2_length_mm", "region2_gap_mm", "peak_speed_rpm")
+             "region2_radius_mm", "region2_length_mm", "region2_gap_mm", "peak_speed_rpm",
+             "resistance_K_per_W")
 _GEOMETRY = ("T1_mm", "T2_mm", "T3_mm", "T4_mm", "length_mm", "R_mm", "gap_mm", "T")
 
 
@@ -177,6 +207,18 @@ def _apply_geometry(case: DesignCase, p: Mapping[str, Any]) -> DesignCase:
     return replace(case, region1=replace(r1, **g))
 
 
+def _apply_thermal(case: DesignCase, p: Mapping[str, Any]) -> DesignCase:
+    """A row's ``sea_temp_C`` and ``resistance_K_per_W`` in the case's ``[thermal]``."""
+    tkw = {f: float(p[k]) for k, f in (("sea_temp_C", "sea_temp_C"),
+                                       ("resistance_K_per_W", "resistance_K_W")) if k in p}
+    if not tkw:
+        return case
+    if case.thermal is None:
+        k0 = next(k for k in THERMAL_COLUMNS if k in p)
+        raise InputError(k0, p[k0], "the base case has no [thermal] table", WHERE)
+    return replace(case, thermal=replace(case.thermal, **tkw))
+
+
 def apply_params(case: DesignCase, params: Mapping[str, Any],
                  catalogue: Mapping[str, Oil] | None = None) -> DesignCase:
     """The base case with one grid row's parameters applied (validated by the case).
@@ -210,6 +252,7 @@ def apply_params(case: DesignCase, params: Mapping[str, Any],
         case = replace(case, friction=replace(case.friction, **fkw))
     if "peak_speed_rpm" in p:
         case = replace(case, duty_cycle=_sine_with_peak(case, float(p["peak_speed_rpm"])))
+    case = _apply_thermal(case, p)
     r2kw = {k[len("region2_"):-3]: float(p[k]) * MM_TO_M
             for k in ("region2_radius_mm", "region2_length_mm", "region2_gap_mm") if k in p}
     if r2kw:

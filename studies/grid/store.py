@@ -84,7 +84,7 @@ def load_points(path: Path, mode: str) -> pd.DataFrame:
         return pd.DataFrame(columns=["point_key", *result_columns(mode)])
     try:
         df = pd.read_csv(path, dtype={"point_key": str, "status": str, "error": str,
-                                      "warning": str})
+                                      "warning": str, "thermal_mode": str})
     except pd.errors.EmptyDataError:
         return pd.DataFrame(columns=["point_key", *result_columns(mode)])
     if "point_key" not in df.columns:
@@ -104,9 +104,17 @@ def finished_points(path: Path, mode: str, retry_failed: bool = False) -> dict[s
 
 
 def append_points(path: Path, keys: list[str], recs: list[dict], mode: str) -> None:
-    """Append finished points (one chunk) to the points file, with a header if new."""
+    """Append finished points (one chunk) to the points file, with a header if new; a file
+    written by an older engine (other columns) is rewritten with today's columns first."""
     cols = result_columns(mode)
     df = pd.DataFrame([{c: r.get(c) for c in cols} for r in recs], columns=list(cols))
     df.insert(0, "point_key", keys)
     new = not path.is_file() or path.stat().st_size == 0
+    if not new:
+        with path.open(encoding="utf-8") as f:
+            header = f.readline().strip().split(",")
+        if header != list(df.columns):
+            old = load_points(path, mode).reindex(columns=df.columns)
+            df = pd.concat([old, df], ignore_index=True)
+            new = True
     df.to_csv(path, mode="w" if new else "a", header=new, index=False)

@@ -144,14 +144,16 @@ def test_cli_sweep_writes_results_and_resumes(tmp_path, capsys):
     g = tmp_path / "grid.csv"
     pd.DataFrame({"T": [1.0, 2.0, 4.0], "oil": ["VG22", "VG22", "VG32"]}).to_csv(g, index=False)
     out = tmp_path / "out"
-    assert main(["study", "sweep", str(g), "--out", str(out), "--workers", "1"]) == 0
+    assert main(["study", "sweep", str(g), "--out", str(out), "--workers", "1",
+                 "--thermal", "none"]) == 0
     res = read_grid_csv(out / "results.csv")
     expect = mean_viscous_power(replace(seed_case(), oil=get_oil("VG32")))
     assert res["mean_power_W"].iloc[2] == pytest.approx(expect, rel=1e-12)
     for f in ("sweep.png", "summary.md", "points_evaluate.csv"):
         assert (out / f).stat().st_size > 0
     capsys.readouterr()
-    assert main(["study", "sweep", str(g), "--out", str(out), "--workers", "1"]) == 0
+    assert main(["study", "sweep", str(g), "--out", str(out), "--workers", "1",
+                 "--thermal", "none"]) == 0
     assert "0 computed, 3 reused" in capsys.readouterr().out
 
 

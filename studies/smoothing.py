@@ -27,6 +27,14 @@ solved exactly (one root: P_visc falls as the oil warms). Two ways to set it:
   gamma depends on that choice.
 * ``"shared"``: one ``T_base`` and one ``R_th`` for all eight runs, fitted
   (a single steady temperature-rise model for the rig).
+* ``"heat-balance"`` (thermal mode ``full``): ``"shared"`` with the film-heated loss,
+  ``T_run = T_0 + R_th P_film(T_run)``; gamma, T_0 and R_th are the only parameters.
+
+:func:`fit_comparison` sets these side by side with the paper's own model (Table 4's
+brackets: reductions within RMS 2.02 W, worst 2.73 W): free parameters, RMS and worst
+error of the eight powers and of the four reductions, run temperatures. The default
+stays ``per-oil`` with the isothermal loss: the heat balance, with or without film
+heating, fits worse (docs/studies.md).
 
 ``gamma`` (Eq. 8) is ONE model parameter for all oils; it and the temperature
 parameters are fitted by nonlinear least squares
@@ -63,6 +71,8 @@ from oilgap.studies.smoothing_fit import (
     SmoothingFit,
     fit_smoothing,
     load_table4,
+    measured_runs,
+    resolve_fit_mode,
     rig_case,
     run_base_temps,
     steady_temperatures,
@@ -79,8 +89,10 @@ class SmoothingResult:
     Attributes
     ----------
     table : Table 4 with the model next to the paper (one row per group)
-    fit : the fit used (method chosen by the caller)
-    checks : the alternative heating assumptions and their gamma (sensitivity)
+    fit : the fit used (method and thermal mode chosen by the caller)
+    checks : the comparison (:func:`fit_comparison`): the paper's model and every fit
+    run_temps : each fit's run temperatures and powers (one row per fit and run)
+    thermal_default : whether the thermal mode is the default (not chosen by the caller)
     loss_vs_T : mean loss against T for each oil (and the case at its rated point)
     plateau : per curve, where the loss stops falling (criterion in the summary)
     files : files written (empty without ``out_dir``)
@@ -92,6 +104,8 @@ class SmoothingResult:
     loss_vs_T: pd.DataFrame
     plateau: pd.DataFrame
     files: tuple[Path, ...] = ()
+    run_temps: pd.DataFrame | None = None
+    thermal_default: bool = True
 
 
 def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
@@ -101,7 +115,8 @@ def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
     grid = pd.DataFrame({"oil": [o for o, _ in runs], "T": [t for _, t in runs],
                          "oil_temp_C": [fit.temps_C[r] for r in runs],
                          "depth_m": RIG_DEPTH_M, "gamma": fit.gamma})
-    res = run_grid(grid, base, out_dir=out_dir, workers=1, progress=False, label="smoothing")
+    res = run_grid(grid, base, out_dir=out_dir, workers=1, progress=False, label="smoothing",
+                   thermal=fit.loss_mode)
     bad = res[res["status"] != "ok"]
     if len(bad):
         raise SolverError(f"smoothing run failed: {bad['error'].iloc[0]}", "evaluation")
@@ -109,7 +124,7 @@ def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
     rows = []
     for _, t4 in table4.iterrows():
         row = {"group": int(t4["group"]), "oil": t4["oil"],
-               "oil_nu40_cSt": t4["oil_nu40_cSt"]}
+               "oil_nu40_cSt": t4["oil_nu40_cSt"], "thermal_mode": fit.thermal_mode}
         if t4["group"] == 0:
             row.update(measured_before_W=t4["measured_before_W"],
                        measured_after_W=t4["measured_after_W"],
@@ -135,31 +150,89 @@ def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
     return pd.DataFrame(rows)
 
 
-def _checks(base: DesignCase, table4: pd.DataFrame, main: SmoothingFit,
-            resistances: tuple[float, ...]) -> pd.DataFrame:
+PAPER_LABEL = "paper's model"
+"""The comparison's row of the seed's own model: Table 4's brackets."""
+
+
+def paper_row(table4: pd.DataFrame) -> dict:
+    """The paper's own model as Table 4 prints it (its brackets): its errors."""
+    t = table4[table4["group"] > 0]
+    res = np.r_[t["paper_model_before_W"] - t["measured_before_W"],
+                t["paper_model_after_W"] - t["measured_after_W"]]
+    red = (t["paper_model_change_W"] - t["measured_change_W"]).to_numpy(dtype=float)
+    return {"variant": PAPER_LABEL, "method": "paper", "thermal_mode": "none",
+            "resistance_K_W": np.nan, "resistance_fitted": False, "gamma": np.nan,
+            "gamma_se": np.nan, "temperatures": "measured on the motor coil (not published)",
+            "rms_W": float(np.sqrt(np.mean(res ** 2))), "max_abs_W": float(np.abs(res).max()),
+            "reduction_rms_W": float(np.sqrt(np.mean(red ** 2))),
+            "reduction_max_abs_W": float(np.abs(red).max()), "n_params": 1,
+            "used": False, "aic": np.nan,
+            "description": "gamma fitted (value not published); each run at the viscosity "
+                           "of its measured coil temperature (Sec. IV.B, Fig. 9)"}
+
+
+def _temperatures(f: SmoothingFit) -> str:
+    if f.method == "per-oil":
+        s = "per oil " + "/".join(f"{v:.1f}" for v in f.base_temp_C.values()) + " degC"
+        return s + (f" + {f.resistance_K_W:g} K/W x P" if f.resistance_K_W else "")
+    return (f"T_0 {f.base_temp_C['all']:.2f} degC + R_th {f.resistance_K_W:.4f} K/W x P"
+            + (" (R_th at its bound 0)" if f.resistance_K_W == 0.0 else ""))
+
+
+def fit_comparison(base: DesignCase, table4: pd.DataFrame, main: SmoothingFit,
+                   resistances: tuple[float, ...] = ()) -> tuple[pd.DataFrame, pd.DataFrame]:
+    """The paper's model and the fits side by side, and each fit's run temperatures.
+
+    Fits: the one used (``main``); per-oil effective temperatures with the isothermal and
+    with the film-heated loss (5 parameters); the shared isothermal balance and the
+    heat balance with film heating (3 parameters); per-oil with each fixed R_th of
+    ``resistances`` (sensitivity of gamma). The paper's row is Table 4's brackets.
+
+    Returns
+    -------
+    comparison : DataFrame
+        ``variant, method, thermal_mode, resistance_K_W, resistance_fitted, gamma,
+        gamma_se, temperatures, rms_W, max_abs_W`` (eight powers),
+        ``reduction_rms_W, reduction_max_abs_W`` (four reductions), ``n_params, used,
+        aic`` (over the powers), ``description``.
+    run_temps : DataFrame
+        ``variant, oil, T, oil_temp_C, model_W, measured_W`` (one row per fit and run).
+    """
+    wanted = [("per-oil", "none", 0.0), ("per-oil", "film", 0.0), ("shared", "none", 0.0),
+              ("heat-balance", "full", 0.0)] + [("per-oil", "none", r) for r in resistances]
     fits = [main]
-    if main.method != "shared":
-        fits.append(fit_smoothing("shared", base=base, table4=table4))
-    for r in resistances:
-        if main.method == "per-oil" and r == main.resistance_K_W:
+    for method, thermal, r in wanted:
+        if any(f.method == method and f.thermal_mode == thermal
+               and (method != "per-oil" or f.resistance_K_W == r) for f in fits):
             continue
-        fits.append(fit_smoothing("per-oil", r, base=base, table4=table4))
-    rows = []
+        fits.append(fit_smoothing(method, r, base, table4, thermal))
+    rows, temps = [paper_row(table4)], []
+    runs, meas = measured_runs(table4)
     for f in fits:
-        rows.append({"method": f.method, "resistance_K_W": f.resistance_K_W,
-                     "resistance_fitted": f.method == "shared", "gamma": f.gamma,
-                     "gamma_se": f.gamma_se, "rms_W": f.rms_W, "max_abs_W": f.max_abs_W,
-                     "n_params": f.n_params, "used": f is main,
+        variant = f.label + (f" R_th {f.resistance_K_W:g}" if f.method == "per-oil"
+                             and f.resistance_K_W else "")
+        rows.append({"variant": variant, "method": f.method, "thermal_mode": f.thermal_mode,
+                     "resistance_K_W": f.resistance_K_W,
+                     "resistance_fitted": f.method != "per-oil", "gamma": f.gamma,
+                     "gamma_se": f.gamma_se, "temperatures": _temperatures(f),
+                     "rms_W": f.rms_W, "max_abs_W": f.max_abs_W,
+                     "reduction_rms_W": f.reduction_rms_W,
+                     "reduction_max_abs_W": f.reduction_max_abs_W, "n_params": f.n_params,
+                     "used": f is main,
                      "aic": f.n_data * np.log(f.rms_W ** 2) + 2 * f.n_params,
                      "description": f.describe()})
-    return pd.DataFrame(rows)
+        temps += [{"variant": variant, "oil": o, "T": t, "oil_temp_C": f.temps_C[(o, t)],
+                   "model_W": f.powers_W[(o, t)], "measured_W": m}
+                  for (o, t), m in zip(runs, meas, strict=True)]
+    return pd.DataFrame(rows), pd.DataFrame(temps)
 
 
 def loss_vs_T(fit: SmoothingFit, base: DesignCase | None = None,
               T_values: np.ndarray | None = None, include_rated: bool = True,
               table4: pd.DataFrame | None = None) -> pd.DataFrame:
     """Mean loss against roughness T for each rig oil (at its fitted run temperature
-    model) and, with ``include_rated``, the base case at its own operating point.
+    model) and, with ``include_rated``, the base case at its own operating point; the
+    loss isothermal or film-heated as in the fit (:attr:`SmoothingFit.loss_mode`).
 
     Returns
     -------
@@ -180,7 +253,7 @@ def loss_vs_T(fit: SmoothingFit, base: DesignCase | None = None,
     frames = []
     for oil, tb in zip(oils, run_base_temps(fit, oils), strict=True):
         cases = [rig_case(oil, t, fit.gamma, base) for t in T_values]
-        temps, _ = steady_temperatures(cases, tb, fit.resistance_K_W)
+        temps, _ = steady_temperatures(cases, tb, fit.resistance_K_W, thermal=fit.thermal_mode)
         frames.append(pd.DataFrame({"curve": f"{oil} on the rig (0 m)", "oil": oil,
                                     "T": T_values, "oil_temp_C": temps,
                                     "depth_m": RIG_DEPTH_M}))
@@ -192,7 +265,7 @@ def loss_vs_T(fit: SmoothingFit, base: DesignCase | None = None,
             "depth_m": op.depth_m}))
     grid = pd.concat(frames, ignore_index=True)
     res = run_grid(grid[["oil", "T", "oil_temp_C", "depth_m"]].assign(gamma=fit.gamma), base,
-                   workers=1, progress=False, label="smoothing")
+                   workers=1, progress=False, label="smoothing", thermal=fit.loss_mode)
     bad = res[res["status"] != "ok"]
     if len(bad):
         raise SolverError(f"loss-vs-T point failed: {bad['error'].iloc[0]}", "evaluation")
@@ -242,9 +315,10 @@ def plateau_table(curves: pd.DataFrame, tol: float = PLATEAU_TOL) -> pd.DataFram
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
-        method: str = "per-oil", resistance_K_W: float = 0.0,
+        method: str | None = None, resistance_K_W: float = 0.0,
         T_values: np.ndarray | None = None, plateau_tol: float = PLATEAU_TOL,
-        sensitivity_K_W: tuple[float, ...] = (0.05, 0.1, 0.2)) -> SmoothingResult:
+        sensitivity_K_W: tuple[float, ...] = (0.05, 0.1, 0.2),
+        thermal: str | None = None) -> SmoothingResult:
     """Run the smoothing study; with ``out_dir`` write its CSVs, figures and summary.
 
     Parameters
@@ -252,7 +326,9 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     out_dir : path, optional
     case : DesignCase, optional
         Base joint (default: the seed joint); T = 4 and T = 2 are set on it.
-    method, resistance_K_W : see :func:`fit_smoothing`
+    method, resistance_K_W, thermal : see :func:`fit_smoothing`
+        (method None and thermal None: ``per-oil`` with the isothermal loss, the
+        default; ``thermal="full"`` is the heat-balance fit).
     T_values : array, optional
         Roughness values of the design-space view (default 1 to 5 by 0.05; all >= 1).
     plateau_tol : float
@@ -264,26 +340,30 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     base = case if case is not None else seed_case()
     if not (0.0 < plateau_tol < 1.0):
         raise InputError("plateau_tol", plateau_tol, "must lie in (0, 1)", "smoothing study")
+    method, thermal, default = resolve_fit_mode(method, thermal)
     table4 = load_table4()
-    fit = fit_smoothing(method, resistance_K_W, base, table4)
+    fit = fit_smoothing(method, resistance_K_W, base, table4, thermal)
     out = Path(out_dir) if out_dir is not None else None
     table = _table(fit, base, table4, out / "grid" if out else None)
-    checks = _checks(base, table4, fit, tuple(sensitivity_K_W))
+    checks, run_temps = fit_comparison(base, table4, fit, tuple(sensitivity_K_W))
     curves = loss_vs_T(fit, base, T_values, True, table4)
     plateau = plateau_table(curves, plateau_tol)
     files: tuple[Path, ...] = ()
     if out is not None:
-        files = write_outputs(out, table, fit, checks, curves, plateau, base)
-    return SmoothingResult(table, fit, checks, curves, plateau, files)
+        files = write_outputs(out, table, fit, checks, curves, plateau, base, run_temps,
+                              default)
+    return SmoothingResult(table, fit, checks, curves, plateau, files, run_temps, default)
 
 
 def smoothing_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
     """The smoothing study as one call: the Table-4-shaped DataFrame (see :func:`run`).
 
-    ``attrs`` carries the fitted ``gamma``, its standard error and the method.
+    ``attrs`` carries the fitted ``gamma``, its standard error, the method, the thermal
+    mode and the RMS of the powers and of the reductions.
     """
     r = run(out_dir, **kwargs)
     t = r.table.copy()
     t.attrs.update(gamma=r.fit.gamma, gamma_se=r.fit.gamma_se, method=r.fit.method,
-                   rms_W=r.fit.rms_W)
+                   thermal_mode=r.fit.thermal_mode, rms_W=r.fit.rms_W,
+                   reduction_rms_W=r.fit.reduction_rms_W)
     return t

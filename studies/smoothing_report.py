@@ -1,4 +1,5 @@
-"""The smoothing study's outputs: Table 4 and loss-vs-T figures, ``summary.md``, the CSVs."""
+"""The smoothing study's outputs: Table 4 and loss-vs-T figures, ``summary.md``, the CSVs;
+the thermal-mode line and the comparison of the thermal models (shared with the CLI)."""
 
 from __future__ import annotations
 
@@ -10,6 +11,82 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_tables
 from oilgap.studies.smoothing_fit import T_GROOVED, T_SMOOTHED, SmoothingFit
+
+THERMAL_TEXT = {
+    "none": "isothermal oil at the fitted run temperatures, the seed paper's model",
+    "film": "the film's own shear heating at the fitted run temperatures",
+    "full": "film heating at the oil temperature of the rig's heat balance "
+            "T_run = T_0 + R_th P(T_run), T_0 and R_th fitted",
+}
+"""What each thermal mode of the smoothing fit computes."""
+
+
+def thermal_line(fit: SmoothingFit, default: bool) -> str:
+    """The text after ``thermal`` in the header: mode, whether it is the default, what it
+    computes and the method."""
+    text = f"{fit.thermal_mode} ("
+    if default:
+        text += "default: the heat balance does not fit Table 4 better, see the comparison; "
+    text += THERMAL_TEXT[fit.thermal_mode] + f"; method {fit.method}"
+    if fit.thermal_mode != "full":
+        text += "; --thermal full for the heat-balance fit"
+    return text + ")"
+
+
+COMPARISON_HEADERS = {
+    "variant": "fit", "n_params": "free parameters", "rms_W": "powers RMS [W]",
+    "max_abs_W": "powers worst [W]", "reduction_rms_W": "reductions RMS [W]",
+    "reduction_max_abs_W": "reductions worst [W]", "gamma": "gamma", "gamma_se": "+-",
+    "temperatures": "run temperatures"}
+"""Columns of the comparison table (in this order) and their headers."""
+
+
+def comparison_view(checks: pd.DataFrame) -> pd.DataFrame:
+    """The comparison table with readable headers (paper first, then the fits)."""
+    return checks[list(COMPARISON_HEADERS)].rename(columns=COMPARISON_HEADERS)
+
+
+def run_temps_view(run_temps: pd.DataFrame) -> pd.DataFrame:
+    """Each fit's run temperatures [degC], one column per run (``VG150 T=4`` ...)."""
+    t = run_temps.assign(run=run_temps["oil"] + " T=" + run_temps["T"].map("{:g}".format))
+    wide = t.pivot(index="variant", columns="run", values="oil_temp_C")
+    wide = wide[list(dict.fromkeys(t["run"]))].loc[list(dict.fromkeys(t["variant"]))]
+    return wide.reset_index()
+
+
+def verdict(checks: pd.DataFrame) -> str:
+    """What the comparison says: does the heat balance beat the paper's model and the
+    per-oil default, with fewer parameters?"""
+    by = checks.set_index("variant")
+    paper = checks.iloc[0]
+    hb = checks[checks["method"] == "heat-balance"].iloc[0]
+    po = checks[(checks["method"] == "per-oil") & (checks["thermal_mode"] == "none")
+                & (checks["resistance_K_W"] == 0.0)].iloc[0]
+    pof = by.loc["per-oil/film"] if "per-oil/film" in by.index else None
+    beats = (hb["reduction_rms_W"] <= paper["reduction_rms_W"]
+             and hb["reduction_max_abs_W"] <= paper["reduction_max_abs_W"])
+    text = (f"The heat balance with film heating ({hb['n_params']} free parameters: gamma, "
+            f"T_0, R_th) puts the reductions within RMS {hb['reduction_rms_W']:.2f} W, worst "
+            f"{hb['reduction_max_abs_W']:.2f} W, and the powers within RMS "
+            f"{hb['rms_W']:.2f} W; the paper's model (gamma, with the run temperatures "
+            f"measured) {paper['reduction_rms_W']:.2f} W / "
+            f"{paper['reduction_max_abs_W']:.2f} W; one effective temperature per oil "
+            f"({po['n_params']} parameters) {po['reduction_rms_W']:.2f} W / "
+            f"{po['reduction_max_abs_W']:.2f} W (powers {po['rms_W']:.2f} W). ")
+    text += ("It beats the paper's model with fewer free parameters." if beats else
+             "The data do not allow it to beat the paper's model: ")
+    if not beats:
+        if hb["resistance_K_W"] == 0.0:
+            text += ("the fit drives R_th to its bound 0, i.e. every run at one "
+                     "temperature. ")
+        if pof is not None:
+            text += ("With the film-heated loss the per-oil fit needs bulk temperatures "
+                     + pof["temperatures"].removeprefix("per oil ")
+                     + " (VG150/320/680/1000): the oil with the largest loss would have to "
+                     "run coolest, which no heat balance T_0 + R_th P can give. ")
+        text += ("Table 4 gives no run temperatures; the paper's model had them (measured "
+                 "on the motor coil), the fits must infer them from the powers.")
+    return text
 
 
 def _figure_table4(table: pd.DataFrame, path: Path) -> Path:
@@ -56,7 +133,7 @@ def _figure_loss_vs_T(curves: pd.DataFrame, plateau: pd.DataFrame, fit: Smoothin
     ax.set_xlabel("clearance roughness T = (T4 - T1)/(T3 - T2) [-]")
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
     ax.set_title(f"Mean loss against roughness T (gamma = {fit.gamma:.3f}, {fit.method} "
-                 "temperatures)")
+                 f"temperatures, thermal {fit.thermal_mode})")
     ax.set_xlim(curves["T"].min(), curves["T"].max())
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3)
@@ -84,15 +161,15 @@ _TABLE4_HEADERS = {
 
 
 def summary_markdown(table: pd.DataFrame, fit: SmoothingFit, checks: pd.DataFrame,
-                     plateau: pd.DataFrame, base: DesignCase) -> str:
+                     plateau: pd.DataFrame, base: DesignCase,
+                     run_temps: pd.DataFrame | None = None, default: bool = True) -> str:
     """The study's short Markdown summary."""
     rows = table[table["group"] > 0]
     dchg = rows["model_minus_measured_change_W"].abs()
     worst = rows.loc[dchg.idxmax()]
     paper = rows["paper_model_minus_measured_change_W"].abs()
     show = table[["group", "oil", *_TABLE4_HEADERS]].rename(columns=_TABLE4_HEADERS)
-    ck = checks[["method", "resistance_K_W", "resistance_fitted", "gamma", "gamma_se",
-                 "rms_W", "max_abs_W", "n_params", "aic"]]
+    ck = comparison_view(checks)
     pl = plateau[["curve", "P_T1_W", "P_T2_W", "P_T4_W", "P_T5_W",
                   "saving_per_unit_T_at_T4_W", "saving_per_unit_T_at_T2_W",
                   "share_of_possible_saving_4_to_2", "T_stop"]]
@@ -108,6 +185,8 @@ def summary_markdown(table: pd.DataFrame, fit: SmoothingFit, checks: pd.DataFram
                  f"within the tolerance of its floor below T = {t_stop:.2f}.")
     lines = [
         "# Smoothing study: seed joint grooved (T = 4) vs smoothed (T = 2)",
+        "",
+        f"Thermal mode: {thermal_line(fit, default)}",
         "",
         f"**Fitted gamma = {f.gamma:.3f} +- {f.gamma_se:.3f}** (Eq. 8 exponent; one value "
         f"for all four oils; friction form `{base.friction.form}`, laminar law "
@@ -129,17 +208,23 @@ def summary_markdown(table: pd.DataFrame, fit: SmoothingFit, checks: pd.DataFram
         f"{dchg.drop(dchg.idxmax()).max():.2f} W. Table 4's VG680 row is inconsistent as "
         "printed (53.27 - 75.08 = -21.81, the table says -22.25).",
         "",
-        "## How gamma depends on the temperature assumption",
+        "## Thermal models compared",
         "",
+        "Errors over the eight measured powers and over the four reductions (model "
+        "after - before against Table 4's printed change); the paper's row is Table 4's "
+        "brackets. `per-oil`: one effective temperature per oil (with R_th > 0 each oil's "
+        "smoothed run is colder by R_th x its lower power); `shared`: one T_base and one "
+        "R_th for all runs, isothermal loss; `heat-balance`: the rig's balance "
+        "T_run = T_0 + R_th P(T_run) with the film-heated loss (thermal mode `full`). "
         "gamma is tied to how much colder the smoothed runs were than the grooved ones "
-        "(no temperatures are published). Fits with other heating assumptions:",
+        "(no temperatures are published): larger R_th needs a larger gamma.",
         "",
         markdown_table(ck, 3),
         "",
-        "`per-oil` with R_th > 0: each oil's smoothed run is colder by R_th x (its lower "
-        "power); `shared`: one T_base and one R_th for all runs. The data favour equal "
-        "temperatures within an oil (lowest RMS and AIC at R_th = 0); larger R_th needs a "
-        "larger gamma.",
+        *([] if run_temps is None else
+          ["Run temperatures [degC] each fit implies:", "",
+           markdown_table(run_temps_view(run_temps), 1), ""]),
+        verdict(checks),
         "",
         "## Loss against T (design-space view)",
         "",
@@ -155,18 +240,19 @@ def summary_markdown(table: pd.DataFrame, fit: SmoothingFit, checks: pd.DataFram
 
 
 def write_outputs(out: Path, table: pd.DataFrame, fit: SmoothingFit, checks: pd.DataFrame,
-                  curves: pd.DataFrame, plateau: pd.DataFrame, base: DesignCase
+                  curves: pd.DataFrame, plateau: pd.DataFrame, base: DesignCase,
+                  run_temps: pd.DataFrame | None = None, default: bool = True
                   ) -> tuple[Path, ...]:
     """Write the study's CSVs, PNG figures and ``summary.md`` into ``out``."""
-    files = write_tables(out, {
-        "smoothing_table4.csv": table,
-        "smoothing_fits.csv": checks,
-        "smoothing_loss_vs_T.csv": curves,
-        "smoothing_plateau.csv": plateau,
-    })
+    tables = {"smoothing_table4.csv": table, "smoothing_fits.csv": checks,
+              "smoothing_loss_vs_T.csv": curves, "smoothing_plateau.csv": plateau}
+    if run_temps is not None:
+        tables["smoothing_run_temps.csv"] = run_temps
+    files = write_tables(out, tables)
     files.append(_figure_table4(table, out / "smoothing_table4.png"))
     files.append(_figure_loss_vs_T(curves, plateau, fit, out / "smoothing_loss_vs_T.png"))
     md = out / "summary.md"
-    md.write_text(summary_markdown(table, fit, checks, plateau, base), encoding="utf-8")
+    md.write_text(summary_markdown(table, fit, checks, plateau, base, run_temps, default),
+                  encoding="utf-8")
     files.append(md)
     return tuple(files)

@@ -12,6 +12,7 @@ from oilgap.model.errors import InputError
 from oilgap.studies import smoothing
 from oilgap.studies.cli.common import file_list, study_out
 from oilgap.studies.smoothing import SmoothingResult
+from oilgap.studies.smoothing_report import thermal_line
 
 
 def _t_values(args: argparse.Namespace) -> np.ndarray:
@@ -33,11 +34,25 @@ def _t_values(args: argparse.Namespace) -> np.ndarray:
                            if args.t_min <= 2.0 <= args.t_max else []])
 
 
+def _print_comparison(r: SmoothingResult) -> None:
+    """The thermal models side by side: parameters, errors of powers and reductions."""
+    print(f"\n{'fit':<26}{'params':>7}{'powers RMS':>12}{'worst':>7}{'reductions RMS':>16}"
+          f"{'worst':>7}{'gamma':>8}  run temperatures")
+    for _, c in r.checks.iterrows():
+        gamma = "" if np.isnan(c["gamma"]) else f"{c['gamma']:.3f}"
+        print(f"{c['variant'][:25]:<26}{c['n_params']:>7d}{c['rms_W']:>12.2f}"
+              f"{c['max_abs_W']:>7.2f}{c['reduction_rms_W']:>16.2f}"
+              f"{c['reduction_max_abs_W']:>7.2f}{gamma:>8}  {c['temperatures']}")
+
+
 def _print(r: SmoothingResult, plateau_tol: float) -> None:
     f = r.fit
     t = r.table[r.table["group"] > 0]
-    print(f"fitted gamma = {f.gamma:.3f} +- {f.gamma_se:.3f}   <- candidate calibrated default "
-          "for the seed case")
+    print(f"thermal     {thermal_line(f, r.thermal_default)}")
+    print(f"fitted gamma = {f.gamma:.3f} +- {f.gamma_se:.3f}"
+          + ("   <- candidate calibrated default for the seed case"
+             if (f.method, f.thermal_mode, f.resistance_K_W) == ("per-oil", "none", 0.0)
+             else ""))
     print(f"effective temperature: {f.describe()}")
     print()
     print(f"{'oil':<8}{'T_oil':>7}{'model T=4':>11}{'T=2':>8}{'change':>9}"
@@ -51,6 +66,8 @@ def _print(r: SmoothingResult, plateau_tol: float) -> None:
     d = t["model_minus_measured_change_W"].abs()
     print(f"\nreductions within {d.max():.2f} W of measured (paper's model: "
           f"{t['paper_model_minus_measured_change_W'].abs().max():.2f} W)")
+    _print_comparison(r)
+    print()
     pl = r.plateau
     print(f"loss vs T: within {100 * plateau_tol:g} % of P(T=1) only for T <= "
           f"{pl['T_stop'].min():.2f}..{pl['T_stop'].max():.2f}; 4 -> 2 takes "
@@ -62,7 +79,7 @@ def run(args: argparse.Namespace) -> int:
     T = _t_values(args)
     out = study_out(args, "smoothing")
     r = smoothing.run(out, method=args.method, resistance_K_W=args.r_th_k_per_w, T_values=T,
-                      plateau_tol=args.plateau_tol)
+                      plateau_tol=args.plateau_tol, thermal=args.thermal)
     _print(r, args.plateau_tol)
     print(f"\nwrote {out}/:\n" + file_list(r.files))
     return 0

@@ -61,7 +61,8 @@ def test_steady_temperature_solves_the_heat_balance():
     temps, powers = steady_temperatures(cases, tb, rth)
     for c, t, p in zip(cases, temps, powers, strict=True):
         p_ind = mean_viscous_power(c, t, 0.0)
-        assert p == pytest.approx(p_ind, rel=1e-12)
+        # the solver's last step (< 1e-4 K) may carry the loss to the root linearly
+        assert p == pytest.approx(p_ind, rel=1e-10)
         assert t - tb - rth * p_ind == pytest.approx(0.0, abs=1e-8)
     # less power, colder oil: each smoothed run is colder than its grooved run
     assert temps[1] < temps[0] and temps[3] < temps[2]

@@ -1,48 +1,127 @@
-"""``oilgap evaluate``: the viscous loss of a joint, region by region (arguments in
-:func:`oilgap.studies.cli.parsers.add_evaluate`)."""
+"""``oilgap evaluate``: the viscous loss of a joint, region by region, under a thermal mode
+(arguments in :func:`oilgap.studies.cli.parsers.add_evaluate`)."""
 
 from __future__ import annotations
 
 import argparse
 import json
+from dataclasses import replace
 
+from oilgap.model.case import DesignCase
+from oilgap.model.errors import InputError
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
+from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.units import m_to_mm
 from oilgap.studies.cli.common import load_case
+
+MODE_TEXT = {
+    "none": "isothermal oil: the seed paper's model",
+    "film": "film heating at the given oil temperature",
+    "full": "film heating at the oil temperature of the heat balance to the sea",
+}
+"""What each thermal mode computes, for the header line."""
+
+
+def _header(ev: CaseEvaluation) -> list[str]:
+    """The case, thermal-mode, balance, oil and friction lines."""
+    if ev.thermal_mode_default:
+        mode = (f"thermal     {ev.thermal_mode} (default: the best physics this case allows; "
+                "--thermal none for the seed's isothermal model")
+    else:
+        mode = f"thermal     {ev.thermal_mode} ({MODE_TEXT[ev.thermal_mode]}"
+    lines = [f"case        {ev.case_name}", mode + ")"]
+    temp = f"{ev.oil_temp_C:g} degC"
+    if ev.sea_temp_C is not None:
+        temp = f"{ev.oil_temp_C:.2f} degC (heat balance)"
+        lines.append(
+            f"balance     sea {ev.sea_temp_C:g} degC, R_th = {ev.resistance_K_per_W:g} K/W, "
+            f"Q = {ev.other_heat_W:g} W: oil at {ev.oil_temp_C:.2f} degC, "
+            f"{ev.oil_temp_C - ev.sea_temp_C:.2f} K above the sea")
+    lines += [
+        f"oil         {ev.oil} at {temp}, {ev.depth_m:g} m: "
+        f"nu = {ev.nu_cSt:.4g} cSt, rho = {ev.density_kg_m3:.1f} kg/m^3",
+        f"friction    C_m form {ev.form}, laminar law {ev.laminar_law}; "
+        f"peak speed {ev.peak_speed_rpm:g} rpm",
+    ]
+    return lines
+
+
+def _film_notes(ev: CaseEvaluation) -> list[str]:
+    """What the film columns mean under the mode."""
+    notes = []
+    if ev.thermal_mode == "none":
+        notes.append("Na_peak, film, rise K: the film heating at the peak speed that "
+                     "--thermal none leaves out (not applied; --thermal film applies it)")
+    else:
+        notes.append("Na_peak, film, rise K: Nahme number, heated/isothermal torque and the "
+                     "film's hottest point above the bulk, at the peak speed")
+    if any(r.film_temp_rise_peak_K is None for r in ev.regions):
+        notes.append("rise K '-': Taylor vortices at the peak speed (the film correction is "
+                     "laminar-only and fades out there)")
+    return notes
 
 
 def format_evaluation(ev: CaseEvaluation) -> str:
     """Human-readable table of an evaluation."""
-    lines = [
-        f"case        {ev.case_name}",
-        f"oil         {ev.oil} at {ev.oil_temp_C:g} degC, {ev.depth_m:g} m: "
-        f"nu = {ev.nu_cSt:.4g} cSt, rho = {ev.density_kg_m3:.1f} kg/m^3",
-        f"friction    C_m form {ev.form}, laminar law {ev.laminar_law}; "
-        f"peak speed {ev.peak_speed_rpm:g} rpm",
+    lines = _header(ev) + [
         "",
         f"{'region':<14}{'R mm':>7}{'gap mm':>8}{'L mm':>7}{'T':>6}{'Re_peak':>10}"
-        f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}  regimes visited",
+        f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}{'Na_peak':>9}{'film':>7}{'rise K':>8}"
+        "  regimes visited",
     ]
     for r in ev.regions:
+        rise = "-" if r.film_temp_rise_peak_K is None else f"{r.film_temp_rise_peak_K:.2f}"
         lines.append(
             f"{r.name:<14}{m_to_mm(r.radius_m):>7.2f}{m_to_mm(r.gap_m):>8.3f}{m_to_mm(r.length_m):>7.2f}"
             f"{r.roughness_T:>6.2f}{r.Re_peak:>10.4g}{r.Ta_peak:>10.4g}{r.Cm_peak:>11.4g}"
-            f"{r.mean_power_W:>9.3f}  {', '.join(r.regimes)}")
+            f"{r.mean_power_W:>9.3f}{r.nahme_peak:>9.3g}{r.film_factor_peak:>7.3f}{rise:>8}"
+            f"  {', '.join(r.regimes)}")
     share = ", ".join(f"{r.name} {100 * r.mean_power_W / ev.total_mean_power_W:.0f} %"
                       for r in ev.regions) if ev.total_mean_power_W > 0 else ""
+    lines += ["", f"total mean viscous power   {ev.total_mean_power_W:.3f} W   ({share})"]
+    if ev.thermal_mode != "none":
+        iso = ev.isothermal_total_mean_power_W
+        where = " at [operating] oil_temp_C" if ev.thermal_mode == "full" else ""
+        change = (f"; the heating changes the loss by "
+                  f"{100 * (ev.total_mean_power_W / iso - 1):+.1f} %") if iso > 0 else ""
+        lines.append(f"isothermal (seed model)    {iso:.3f} W   (--thermal none{where}{change})")
     lines += [
-        "",
-        f"total mean viscous power   {ev.total_mean_power_W:.3f} W   ({share})",
         f"viscous torque at peak     {ev.viscous_torque_peak_Nm:.4f} N m",
         f"energy per cycle           {ev.cycle_energy_J:.1f} J",
-    ]
+        "",
+    ] + _film_notes(ev)
     return "\n".join(lines)
+
+
+def _thermal_case(case: DesignCase, args: argparse.Namespace) -> DesignCase:
+    """Check --thermal, --temp-c and --sea-temp-c together; apply --sea-temp-c."""
+    try:
+        mode = resolve_thermal_mode(case, args.thermal)
+    except InputError as e:
+        raise InputError("--thermal", e.value, e.allowed) from None
+    if mode == "full" and args.temp_c is not None:
+        how = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
+        raise InputError("--temp-c", args.temp_c, f"not with {how}: the heat balance sets the "
+                         "oil temperature; give --sea-temp-c, or choose --thermal film")
+    sea = getattr(args, "sea_temp_c", None)
+    if sea is None:
+        return case
+    if case.thermal is None:
+        raise InputError("--sea-temp-c", sea, "needs the case's [thermal] table (the heat "
+                         "balance to the sea)")
+    if mode != "full":
+        raise InputError("--sea-temp-c", sea, "only under --thermal full (the heat balance "
+                         f"to the sea); the mode is '{mode}'")
+    try:
+        return replace(case, thermal=replace(case.thermal, sea_temp_C=sea))
+    except InputError as e:
+        raise InputError("--sea-temp-c", sea, e.allowed) from None
 
 
 def run(args: argparse.Namespace) -> int:
     """Evaluate the case and print the table (or JSON); returns the exit code."""
-    case = load_case(args)
-    ev = evaluate_case(case, laminar_law=args.laminar_law)
+    case = _thermal_case(load_case(args), args)
+    ev = evaluate_case(case, laminar_law=args.laminar_law, thermal=args.thermal)
     if args.json:
         print(json.dumps(ev.to_dict(), indent=2))
     else:

@@ -1,11 +1,15 @@
 """``oilgap optimize``: the region-1 clearance geometry of least mean viscous power.
 
-Thin layer over :class:`oilgap.optim.design.DesignProblem`: loads the case
+Thin layer over :class:`oilgap.optim.design.DesignProblem` (``--thermal none``) and
+:class:`oilgap.optim.design.ThermalDesignProblem` (``film``, ``full``): loads the case
 (or the seed joint), applies the oil/operating overrides, solves the design NLP
 and prints the initial and optimal designs side by side, the active constraints
-and what each constraint costs (its multiplier in physical units). Exit codes:
-2 bad input, 3 infeasible problem, 4 solver failure (from ``oilgap.studies.cli``).
-Arguments in :func:`oilgap.studies.cli.parsers.add_optimize`.
+and what each constraint costs (its multiplier in physical units). Under a thermal
+mode the optimum without heating (``none`` at the case's oil temperature) is solved
+too and shown beside it, with what heating changed and, under ``full``, what a kelvin
+of sea temperature costs. Exit codes: 2 bad input, 3 infeasible problem, 4 solver
+failure (from ``oilgap.studies.cli``). Arguments in
+:func:`oilgap.studies.cli.parsers.add_optimize`.
 """
 
 from __future__ import annotations
@@ -13,13 +17,29 @@ from __future__ import annotations
 import argparse
 import json
 import warnings
+from dataclasses import replace
 from pathlib import Path
 
+from oilgap.model.case import DesignCase
 from oilgap.model.case_io import write_case_toml
 from oilgap.model.errors import InputError, OilgapWarning, check_finite, check_positive
+from oilgap.model.evaluation import oil_state
+from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.units import m2_s_to_cst
-from oilgap.optim.design import DesignProblem, DesignResult
+from oilgap.optim.design import (
+    DesignProblem,
+    DesignResult,
+    HeatingComparison,
+    compare_heating,
+)
 from oilgap.studies.cli.common import load_case
+
+MODE_TEXT = {
+    "none": "isothermal oil, the seed paper's model",
+    "film": "the film's own shear heating at the given oil temperature",
+    "full": "film heating at the oil temperature of the heat balance to the sea",
+}
+"""What each thermal mode computes, for the header line."""
 
 
 def _number(args: argparse.Namespace, attr: str, field: str,
@@ -41,11 +61,19 @@ def _fmt(v: float) -> str:
     return f"{v:.4e}"
 
 
-def format_result(res: DesignResult, exact: tuple | None = None) -> str:
-    """Side-by-side table of the initial and optimal designs, with the multipliers."""
-    prm = res.parameters
-    i, o = res.initial.to_dict(), res.optimal.to_dict()
-    rows = [
+def thermal_line(mode: str, default: bool) -> str:
+    """The header line naming the thermal mode (as ``oilgap evaluate``'s)."""
+    text = f"thermal     {mode} ("
+    if default:
+        text += "default: the best physics this case allows; "
+    text += MODE_TEXT[mode]
+    if mode != "none":
+        text += "; --thermal none for the seed's isothermal model"
+    return text + ")"
+
+
+def _rows(prm) -> list[tuple[str, str]]:
+    return [
         ("delta_mm", "clearance delta = T3 - T2 (magnetic gap)"),
         ("R_mm", "radius R = T2"),
         ("L_mm", "length L"),
@@ -64,26 +92,17 @@ def format_result(res: DesignResult, exact: tuple | None = None) -> str:
         ("inertia_kgm2", f"rotor inertia (<= {prm.inertia_max_kgm2:.5g})"),
         ("inertia_ratio", "inertia / the case's unfilled rotor"),
     ]
-    lines = [
-        f"case        {res.case.name}",
-        f"oil         {prm.oil} at {prm.oil_temp_C:g} degC, {prm.depth_m:g} m: "
-        f"nu = {m2_s_to_cst(prm.nu_m2_s):.4g} cSt, rho = {prm.rho_kg_m3:.1f} kg/m^3",
-        f"solver      IPOPT {res.status} in {res.iterations} iterations, "
-        f"{res.solve_time_s * 1e3:.1f} ms" + (f" (best of {res.starts} starts)"
-                                               if res.starts > 1 else ""),
-        "",
-        f"{'quantity':<24}{'initial':>13}{'optimal':>13}{'change':>11}  meaning",
-    ]
-    for key, meaning in rows:
-        a, b = i[key], o[key]
-        pct = 100 * (b - a) / a if a != 0 else None
-        ch = "" if pct is None else ("0.0 %" if abs(pct) < 0.05 else f"{pct:+.1f} %")
-        lines.append(f"{key:<24}{_fmt(a):>13}{_fmt(b):>13}{ch:>11}  {meaning}")
-    if exact is not None:
-        a, b = exact[0].total_mean_power_W, exact[1].total_mean_power_W
-        lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>13}{_fmt(b):>13}"
-                     f"{100 * (b - a) / a:>+9.1f} %  same, case's exact C_m (oilgap evaluate)")
-    lines += ["", "active constraints and what they cost (d optimal power / d bound):"]
+
+
+def _change(a: float, b: float) -> str:
+    pct = 100 * (b - a) / a if a != 0 else None
+    return "" if pct is None else ("0.0 %" if abs(pct) < 0.05 else f"{pct:+.1f} %")
+
+
+def _costs(res: DesignResult) -> list[str]:
+    """The active constraints with their multipliers, and the inactive ones."""
+    prm = res.parameters
+    lines = []
     act = [res.multipliers[n] for n in res.active_constraints]
     if not act:
         lines.append("  none (unconstrained optimum)")
@@ -96,7 +115,145 @@ def format_result(res: DesignResult, exact: tuple | None = None) -> str:
     inactive = [n for n, mu in res.multipliers.items() if not mu.active]
     if inactive:
         lines.append("inactive: " + ", ".join(inactive))
+    return lines
+
+
+def format_result(res: DesignResult, exact: tuple | None = None,
+                  thermal: str | None = None) -> str:
+    """Side-by-side table of the initial and optimal designs, with the multipliers
+    (``thermal``: the header line naming the mode)."""
+    prm = res.parameters
+    i, o = res.initial.to_dict(), res.optimal.to_dict()
+    lines = [f"case        {res.case.name}"] + ([thermal] if thermal else []) + [
+        f"oil         {prm.oil} at {prm.oil_temp_C:g} degC, {prm.depth_m:g} m: "
+        f"nu = {m2_s_to_cst(prm.nu_m2_s):.4g} cSt, rho = {prm.rho_kg_m3:.1f} kg/m^3",
+        f"solver      IPOPT {res.status} in {res.iterations} iterations, "
+        f"{res.solve_time_s * 1e3:.1f} ms" + (f" (best of {res.starts} starts)"
+                                               if res.starts > 1 else ""),
+        "",
+        f"{'quantity':<24}{'initial':>13}{'optimal':>13}{'change':>11}  meaning",
+    ]
+    for key, meaning in _rows(prm):
+        a, b = i[key], o[key]
+        lines.append(f"{key:<24}{_fmt(a):>13}{_fmt(b):>13}{_change(a, b):>11}  {meaning}")
+    if exact is not None:
+        a, b = exact[0].total_mean_power_W, exact[1].total_mean_power_W
+        lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>13}{_fmt(b):>13}"
+                     f"{100 * (b - a) / a:>+9.1f} %  same, case's exact C_m (oilgap evaluate)")
+    lines += ["", "active constraints and what they cost (d optimal power / d bound):"]
+    return "\n".join(lines + _costs(res))
+
+
+def _oil_lines(cmp: HeatingComparison) -> list[str]:
+    """The balance and oil lines of a comparison's header."""
+    h, prm = cmp.heated, cmp.heated.parameters
+    case = h.case
+    nu_h = m2_s_to_cst(float(oil_state(case, h.oil_temp_C, prm.depth_m)[0]))
+    lines = []
+    if h.thermal is not None:
+        s = h.thermal
+        lines.append(f"balance     sea {s.sea_temp_C:g} degC, R = {s.resistance_K_W:g} K/W, "
+                     f"Q = {s.other_heat_W:g} W: oil at {h.oil_temp_C:.2f} degC at the "
+                     f"optimum ({h.initial_oil_temp_C:.2f} degC at the initial design)")
+        where = f"{h.oil_temp_C:.2f} degC (heat balance at the optimum)"
+    else:
+        where = f"{h.oil_temp_C:g} degC"
+    lines.append(f"oil         {prm.oil}, {prm.depth_m:g} m: at {where} nu = {nu_h:.4g} cSt; "
+                 f"without heating at {cmp.isothermal_oil_temp_C:g} degC nu = "
+                 f"{m2_s_to_cst(cmp.isothermal.parameters.nu_m2_s):.4g} cSt")
+    return lines
+
+
+def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str) -> str:
+    """The optimum with heating beside the one without, what changed, and the costs.
+
+    ``exact``: (initial, optimal) OperatingTemperature of the heated designs with the
+    case's exact C_m, and the isothermal optimum's CaseEvaluation."""
+    h, iso = cmp.heated, cmp.isothermal
+    prm = h.parameters
+    i, o, n = h.initial.to_dict(), h.optimal.to_dict(), iso.optimal.to_dict()
+    starts = f" (best of {h.starts} starts)" if h.starts > 1 else ""
+    lines = [f"case        {h.case.name}", thermal] + _oil_lines(cmp) + [
+        f"solver      IPOPT {h.status} in {h.iterations} iterations, "
+        f"{h.solve_time_s * 1e3:.1f} ms{starts}; without heating {iso.status} in "
+        f"{iso.iterations} iterations, {iso.solve_time_s * 1e3:.1f} ms",
+        "",
+        f"{'quantity':<24}{'initial':>12}{'optimal':>12}{'change':>9}{'no heating':>12}"
+        f"{'heating':>10}  meaning",
+        f"{'':<24}{'(' + h.thermal_mode + ')':>12}{'(' + h.thermal_mode + ')':>12}{'':>9}"
+        f"{'(none)':>12}{'vs none':>10}",
+    ]
+    for key, meaning in _rows(prm):
+        a, b, c = i[key], o[key], n[key]
+        lines.append(f"{key:<24}{_fmt(a):>12}{_fmt(b):>12}{_change(a, b):>9}{_fmt(c):>12}"
+                     f"{_change(c, b):>10}  {meaning}")
+    t0, t1, tn = h.initial_oil_temp_C, h.oil_temp_C, cmp.isothermal_oil_temp_C
+    lines.append(f"{'oil_temp_C':<24}{_fmt(t0):>12}{_fmt(t1):>12}{t1 - t0:>+7.2f} K"
+                 f"{_fmt(tn):>12}{t1 - tn:>+8.2f} K  bulk oil temperature")
+    a, b, c = exact[0].mean_power_W, exact[1].mean_power_W, exact[2].total_mean_power_W
+    lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>12}{_fmt(b):>12}{_change(a, b):>9}"
+                 f"{_fmt(c):>12}{_change(c, b):>10}  same, case's exact C_m (oilgap evaluate)")
+    lines += ["", f"active constraints with heating ({h.thermal_mode}) and what they cost "
+              "(d optimal power / d bound):"] + _costs(h)
+    act = cmp.active()
+    if act["only_with_heating"] or act["only_without_heating"]:
+        lines.append("heating changes the active set: "
+                     f"only with heating: {', '.join(act['only_with_heating']) or '-'}; "
+                     f"only without: {', '.join(act['only_without_heating']) or '-'}")
+    else:
+        lines.append("the same constraints are active without heating")
+    if h.sea_temp_cost_W_per_K is not None:
+        c = h.sea_temp_cost_W_per_K
+        lines.append(f"sea temperature: dP*/dT_sea = {c:+.4g} W/K (the heat balance's "
+                     f"multiplier): a sea 1 K warmer {'saves' if c < 0 else 'costs'} "
+                     f"{abs(c):.4g} W at the optimum")
+    if h.oil_temp_cost_W_per_K is not None:
+        c = h.oil_temp_cost_W_per_K
+        lines.append(f"oil temperature: dP*/dT_oil = {c:+.4g} W/K at the fixed oil "
+                     "temperature (its bound's multiplier)")
     return "\n".join(lines)
+
+
+def _mode(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase, str]:
+    """The thermal mode (checked against the case, --temp-c and --sea-temp-c) and the
+    case with --sea-temp-c applied."""
+    try:
+        mode = resolve_thermal_mode(case, args.thermal)
+    except InputError as e:
+        raise InputError("--thermal", e.value, e.allowed) from None
+    if mode == "full" and args.temp_c is not None:
+        how = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
+        raise InputError("--temp-c", args.temp_c, f"not with {how}: the heat balance sets the "
+                         "oil temperature; give --sea-temp-c, or choose --thermal film")
+    sea = _number(args, "sea_temp_c", "--sea-temp-c")
+    if sea is None:
+        return case, mode
+    if mode != "full":
+        raise InputError("--sea-temp-c", sea, "only under --thermal full (the heat balance "
+                         f"to the sea); the mode is '{mode}'")
+    try:
+        return replace(case, thermal=replace(case.thermal, sea_temp_C=sea)), mode
+    except InputError as e:
+        raise InputError("--sea-temp-c", sea, e.allowed) from None
+
+
+def _starts(args: argparse.Namespace) -> int:
+    try:
+        starts = int(args.starts)
+    except ValueError:
+        raise InputError("--starts", args.starts, "an integer >= 1 is required") from None
+    if starts < 1:
+        raise InputError("--starts", args.starts, "an integer >= 1 is required")
+    return starts
+
+
+def _write(res: DesignResult, args: argparse.Namespace):
+    if not args.out:
+        return None
+    try:
+        return write_case_toml(res.to_case(), args.out)
+    except OSError as e:
+        raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -105,32 +262,50 @@ def run(args: argparse.Namespace) -> int:
     args.depth_m = _number(args, "depth_m", "--depth-m")
     torque_min = _number(args, "torque_min_nm", "--torque-min-nm", positive=True)
     inertia_ratio = _number(args, "inertia_max_ratio", "--inertia-max-ratio", positive=True)
-    try:
-        starts = int(args.starts)
-    except ValueError:
-        raise InputError("--starts", args.starts, "an integer >= 1 is required") from None
-    if starts < 1:
-        raise InputError("--starts", args.starts, "an integer >= 1 is required")
-    case = load_case(args)
-    res = DesignProblem(case, verbose=args.verbose).solve(
-        torque_min_Nm=torque_min, inertia_max_ratio=inertia_ratio, starts=starts)
+    starts = _starts(args)
+    case, mode = _mode(load_case(args), args)
+    header = thermal_line(mode, args.thermal is None)
+    limits = {"torque_min_Nm": torque_min, "inertia_max_ratio": inertia_ratio}
+    if mode == "none":
+        res = DesignProblem(case, verbose=args.verbose).solve(starts=starts, **limits)
+        return _report_none(res, args, header)
+    cmp = compare_heating(DesignProblem(case, verbose=args.verbose, thermal=mode),
+                          starts=starts, **limits)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OilgapWarning)
+        exact = (*cmp.heated.operating(), cmp.isothermal.evaluate()[1])
+    out_path = _write(cmp.heated, args)
+    if args.json:
+        d = cmp.to_dict()
+        for k, ex in (("initial", exact[0]), ("optimal", exact[1])):
+            d[k]["mean_power_exact_W"] = ex.mean_power_W
+            d[k]["oil_temp_exact_C"] = ex.oil_temp_C
+        d["without_heating"]["optimal"]["mean_power_exact_W"] = exact[2].total_mean_power_W
+        d["out"] = str(out_path) if out_path else None
+        print(json.dumps(d, indent=2))
+    else:
+        print(format_comparison(cmp, exact, header))
+        if out_path:
+            print(f"\nwrote {Path(out_path)}")
+    return 0
+
+
+def _report_none(res: DesignResult, args: argparse.Namespace, header: str) -> int:
+    """Print the isothermal optimum (today's output, with the thermal header)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         exact = res.evaluate()
-    out_path = None
-    if args.out:
-        try:
-            out_path = write_case_toml(res.to_case(), args.out)
-        except OSError as e:
-            raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
+    out_path = _write(res, args)
     if args.json:
         d = res.to_dict()
         d["initial"]["mean_power_exact_W"] = exact[0].total_mean_power_W
         d["optimal"]["mean_power_exact_W"] = exact[1].total_mean_power_W
+        d.update(thermal_mode="none", oil_temp_C=res.parameters.oil_temp_C, sea_temp_C=None,
+                 sea_temp_cost_W_per_K=None, without_heating=None)
         d["out"] = str(out_path) if out_path else None
         print(json.dumps(d, indent=2))
     else:
-        print(format_result(res, exact))
+        print(format_result(res, exact, header))
         if out_path:
             print(f"\nwrote {Path(out_path)}")
     return 0

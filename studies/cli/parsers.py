@@ -90,6 +90,8 @@ def add_evaluate(sub) -> None:
     p.add_argument("--smoothed", action="store_true",
                    help="without CASE: the seed joint smoothed with epoxy (T = 2)")
     add_thermal_argument(p)
+    p.add_argument("--sea-temp-c", type=finite_float, help="sea temperature [degC] of the "
+                   "heat balance (overrides [thermal] sea_temp_C; --thermal full only)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(command="evaluate")
 
@@ -122,6 +124,9 @@ def add_optimize(sub) -> None:
                    "the Re = 64/500 regime breaks)")
     p.add_argument("--smoothed", action="store_true",
                    help="without CASE: start from the seed joint smoothed with epoxy (T = 2)")
+    add_thermal_argument(p)
+    p.add_argument("--sea-temp-c", metavar="X", help="sea temperature [degC] of the heat "
+                   "balance (overrides [thermal] sea_temp_C; --thermal full only)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
@@ -154,9 +159,15 @@ def _add_smoothing(ss) -> None:
                       "grooved T = 4 vs smoothed T = 2 with ISO VG150/320/680/1000 at 0 m; fit "
                       "gamma and the runs' effective oil temperatures; then loss against T.")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/smoothing/)")
-    s.add_argument("--method", choices=("per-oil", "shared"), default="per-oil",
-                   help="effective temperature: one per oil (default) or one shared steady "
-                   "heat balance T = T_base + R_th P")
+    s.add_argument("--method", choices=("per-oil", "shared", "heat-balance"), default=None,
+                   help="run temperatures: one per oil (default), one shared steady balance "
+                   "T = T_base + R_th P (isothermal loss), or heat-balance (the same with "
+                   "the film-heated loss: --thermal full)")
+    s.add_argument("--thermal", choices=THERMAL_MODES, default=None,
+                   help="the loss at the runs' temperatures: none (default), isothermal oil "
+                   "(the seed paper's model); film, the film's own shear heating; full, "
+                   "film heating with the rig's heat balance T_run = T_0 + R_th P fitted "
+                   "(the heat-balance method)")
     s.add_argument("--r-th-k-per-w", type=finite_float, default=0.0, metavar="K_PER_W",
                    help="per-oil method: fixed R_th [K/W] making smoothed runs colder "
                    "(default 0)")
@@ -203,11 +214,17 @@ def _add_oil_grade(ss) -> None:
                    help="ISO 3448 grade tolerance applied at its worst (default 0.10)")
     s.add_argument("--depth-min-m", type=finite_float, default=0.0)
     s.add_argument("--depth-max-m", type=finite_float, default=7000.0)
-    s.add_argument("--temp-min-c", type=finite_float, default=0.0)
-    s.add_argument("--temp-max-c", type=finite_float, default=40.0)
+    s.add_argument("--temp-min-c", type=finite_float,
+                   help="oil temperature range, thermal none/film [degC] (default 0)")
+    s.add_argument("--temp-max-c", type=finite_float, help="(default 40)")
+    s.add_argument("--sea-temp-range-c", type=finite_float, nargs=2, metavar=("MIN", "MAX"),
+                   help="thermal full: the envelope's sea temperatures [degC]; the oil's "
+                   "operating temperature is a result (default 0 40, the same as the oil's "
+                   "under none, so that the answers differ by the heating only)")
     s.add_argument("--mission-hours", type=finite_float, default=8.0,
                    help="mission duration for the energy [h] (default 8)")
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
+    add_thermal_argument(s)
     _progress(s)
     s.set_defaults(command="study oil-grade")
 
@@ -228,6 +245,7 @@ def _add_sweep(ss) -> None:
     s.add_argument("--chunk-size", type=positive_int, help="rows per task")
     s.add_argument("--retry-failed", action="store_true",
                    help="recompute points stored as failed")
+    add_thermal_argument(s)
     _progress(s)
     s.set_defaults(command="study sweep")
 

@@ -20,6 +20,9 @@ def run(args: argparse.Namespace) -> int:
     g, i = r.gap_front, r.inertia_front
     gok = g[g["status"] == "ok"]
     iok = i[i["status"] == "ok"]
+    print("thermal     none (isothermal oil at the case's temperature, the seed paper's "
+          "model: the fronts do not take --thermal yet; `oilgap optimize --thermal` "
+          "gives the heated optimum)")
     print(f"gap front: {len(gok)}/{len(g)} points, delta {gok['delta_mm'].min():.3f}.."
           f"{gok['delta_mm'].max():.3f} mm, loss {gok['mean_power_W'].max():.2f}.."
           f"{gok['mean_power_W'].min():.2f} W; sweep {r.sweep_time_s:.2f} s "

@@ -26,7 +26,7 @@ def run_json(capsys, *argv):
 
 
 def test_json_has_the_issue_keys_and_the_api_numbers(capsys, api_result):
-    d = run_json(capsys)
+    d = run_json(capsys, "--thermal", "none")
     assert {"status", "initial", "optimal", "active_constraints", "multipliers"} <= set(d)
     for k in ("initial", "optimal"):
         assert POINT_KEYS <= set(d[k])
@@ -45,7 +45,7 @@ def test_json_has_the_issue_keys_and_the_api_numbers(capsys, api_result):
 
 
 def test_table_shows_both_designs_and_costs(capsys, api_result):
-    assert main(["optimize", "--starts", "1"]) == 0
+    assert main(["optimize", "--starts", "1", "--thermal", "none"]) == 0
     out = capsys.readouterr().out
     for needle in ("initial", "optimal", "delta_mm", "T4_mm", "region2_power_W",
                    "torque_capability_Nm", "inertia_kgm2", "active constraints",

@@ -40,6 +40,16 @@ COMMANDS: list[tuple[str, list[str]]] = [
     ("evaluate_smoothed_bb.json", ["evaluate", "--smoothed", "--laminar-law", "bilgen-boulos",
                                    "--json"]),
     ("optimize.json", ["optimize", "--json"]),
+    # --thermal none: the seed paper's isothermal model, today's numbers before issue 10
+    ("evaluate_none.json", ["evaluate", "--thermal", "none", "--json"]),
+    ("evaluate_smoothed_bb_none.json", ["evaluate", "--smoothed", "--laminar-law",
+                                        "bilgen-boulos", "--thermal", "none", "--json"]),
+    ("optimize_none.json", ["optimize", "--thermal", "none", "--json"]),
+    ("oil-grade_none.txt", ["study", "oil-grade", "--thermal", "none", "--out",
+                            "oil-grade_none"]),
+    # a case with a [thermal] table: film heating and the bulk balance (mode full)
+    ("evaluate_thermal.json", ["evaluate", "seed_thermal.toml", "--json"]),
+    ("optimize_thermal.json", ["optimize", "seed_thermal.toml", "--json"]),
     ("smoothing.txt", ["study", "smoothing", "--out", "smoothing"]),
     ("pareto.txt", ["study", "pareto", "--out", "pareto"]),
     ("oil-grade.txt", ["study", "oil-grade", "--out", "oil-grade"]),
@@ -59,6 +69,15 @@ COMMANDS: list[tuple[str, list[str]]] = [
 ]
 
 
+def seed_thermal_toml() -> str:
+    """The seed joint with a ``[thermal]`` table: sea 2 degC, R 0.5 K/W, C 5e4 J/K."""
+    from oilgap.model.case_io import case_to_dict, dumps_toml, seed_case
+
+    return dumps_toml(case_to_dict(seed_case())) + (
+        "\n[thermal]\nsea_temp_C = 2.0\nresistance_K_per_W = 0.5\n"
+        "heat_capacity_J_per_K = 50000.0\n")
+
+
 def produce(out: Path) -> None:
     """Run every golden command in ``out`` (in-process), writing stdout to files."""
     from oilgap.studies.cli import main
@@ -67,6 +86,7 @@ def produce(out: Path) -> None:
     (out / "grid.csv").write_text(GRID_EVAL)
     (out / "grid_opt.csv").write_text(GRID_OPT)
     (out / "new_points.csv").write_text(NEW_POINTS)
+    (out / "seed_thermal.toml").write_text(seed_thermal_toml())
     cwd = os.getcwd()
     os.chdir(out)
     try:

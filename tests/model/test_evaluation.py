@@ -42,7 +42,7 @@ def test_rig_without_region2(seed_toml, write_file):
 
 def test_totals_are_consistent():
     case = seed_case()
-    ev = evaluate_case(case)
+    ev = evaluate_case(case, thermal="none")
     assert ev.total_mean_power_W == pytest.approx(sum(r.mean_power_W for r in ev.regions),
                                                   rel=1e-14)
     assert ev.total_mean_power_W == pytest.approx(mean_viscous_power(case), rel=1e-14)

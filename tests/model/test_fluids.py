@@ -362,7 +362,7 @@ def test_bad_oil_tables_refused_naming_the_key(tmp_path, text, field):
 
 def test_evaluate_json_on_a_gas_case(tmp_path, capsys):
     p = write_case(tmp_path, 'kind = "gas"\nname = "air"\n')
-    assert main(["evaluate", str(p), "--json"]) == 0
+    assert main(["evaluate", str(p), "--json", "--thermal", "none"]) == 0
     out = json.loads(capsys.readouterr().out)
     # air at 20 degC, 1 atm by hand: mu = 1.716e-5 (293.15/273)^1.5 (384/404.15)
     # = 1.81425e-5 Pa s; rho = 101325 * 0.02897 / (8.314462618 * 293.15) = 1.204318

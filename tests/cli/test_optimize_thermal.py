@@ -1,0 +1,118 @@
+"""``oilgap optimize --thermal``: the mode named, with and without heating side by side,
+``--thermal none`` reproducing the golden (pre-heating) output, bad combinations exit 2."""
+
+import json
+from dataclasses import replace
+from pathlib import Path
+
+import pytest
+
+from oilgap.model.case import ThermalSpec
+from oilgap.model.case_io import seed_case, write_case_toml
+from oilgap.studies.cli import main
+
+GOLDEN = Path(__file__).resolve().parents[1] / "golden" / "data" / "optimize_none.json"
+
+
+@pytest.fixture(scope="module")
+def thermal_toml(tmp_path_factory):
+    case = replace(seed_case(), name="seed with [thermal]",
+                   thermal=ThermalSpec(sea_temp_C=2.0, resistance_K_W=0.5,
+                                       heat_capacity_J_K=5e4))
+    return str(write_case_toml(case, tmp_path_factory.mktemp("cases") / "thermal.toml"))
+
+
+def run_json(capsys, *argv):
+    assert main(["optimize", "--json", "--starts", "1", *argv]) == 0
+    return json.loads(capsys.readouterr().out)
+
+
+def _same_numbers(a, b, path=""):
+    """Differences of the keys both documents have (numbers to 1e-12 relative)."""
+    if isinstance(a, dict):
+        return [d for k in set(a) & set(b) if k != "solve_time_s"
+                for d in _same_numbers(a[k], b[k], f"{path}.{k}")]
+    if isinstance(a, list):
+        return [d for i, (x, y) in enumerate(zip(a, b, strict=True))
+                for d in _same_numbers(x, y, f"{path}[{i}]")]
+    if isinstance(a, float) and isinstance(b, float):
+        return [] if abs(a - b) <= 1e-12 * max(abs(a), abs(b), 1e-300) else [path]
+    return [] if a == b else [path]
+
+
+def test_thermal_none_reproduces_the_golden_numbers(capsys):
+    """The golden ``optimize --thermal none --json`` (default 8 starts), checked equal to
+    the output recorded before the thermal modes existed."""
+    assert main(["optimize", "--json", "--thermal", "none"]) == 0
+    d = json.loads(capsys.readouterr().out)
+    gold = json.loads(GOLDEN.read_text())
+    assert _same_numbers(gold, d) == []
+    assert set(gold) <= set(d)
+    assert d["thermal_mode"] == "none" and d["oil_temp_C"] == 2.0
+    assert d["sea_temp_C"] is None and d["without_heating"] is None
+
+
+def test_default_on_the_seed_is_film_beside_the_isothermal_optimum(capsys):
+    d = run_json(capsys)
+    none = run_json(capsys, "--thermal", "none")
+    assert d["thermal_mode"] == "film" and d["oil_temp_C"] == 2.0
+    assert d["sea_temp_cost_W_per_K"] is None and d["oil_temp_cost_W_per_K"] < 0
+    w = d["without_heating"]
+    assert w["optimal"]["mean_power_W"] == none["optimal"]["mean_power_W"]
+    assert w["active_constraints"] == none["active_constraints"]
+    # the film thins the oil where it is sheared: less loss at the same temperature
+    assert d["optimal"]["mean_power_W"] < w["optimal"]["mean_power_W"]
+    ch = d["heating_changes"]["mean_power_W"]
+    assert ch["change"] == pytest.approx(d["optimal"]["mean_power_W"]
+                                         - w["optimal"]["mean_power_W"], rel=1e-12)
+
+
+def test_full_json_has_the_balance_and_the_sea_temperature_cost(capsys, thermal_toml):
+    d = run_json(capsys, thermal_toml)
+    assert d["thermal_mode"] == "full" and d["sea_temp_C"] == 2.0
+    w = d["without_heating"]
+    assert w["oil_temp_C"] == 2.0
+    # the balance holds at the optimum (R = 0.5 K/W, Q = 0)
+    assert d["oil_temp_C"] - 2.0 == pytest.approx(0.5 * d["optimal"]["mean_power_W"],
+                                                  abs=1e-8)
+    assert d["initial_oil_temp_C"] > d["oil_temp_C"]  # a design that loses less runs colder
+    assert d["sea_temp_cost_W_per_K"] < 0
+    warm = run_json(capsys, thermal_toml, "--sea-temp-c", "3")
+    assert warm["sea_temp_C"] == 3.0
+    slope = warm["optimal"]["mean_power_W"] - d["optimal"]["mean_power_W"]
+    assert slope == pytest.approx(d["sea_temp_cost_W_per_K"], rel=0.02)  # 1 K difference
+
+
+def test_text_names_the_mode_and_shows_both_optima(capsys, thermal_toml):
+    assert main(["optimize", thermal_toml, "--starts", "1"]) == 0
+    out = capsys.readouterr().out
+    lines = out.splitlines()
+    assert lines[1].startswith("thermal     full (default")
+    assert lines[2].startswith("balance     sea 2 degC")
+    for needle in ("no heating", "vs none", "oil_temp_C", "dP*/dT_sea", "W/K",
+                   "active constraints with heating (full)", "mean_power_exact_W"):
+        assert needle in out
+    assert main(["optimize", "--starts", "1", "--thermal", "none"]) == 0
+    assert capsys.readouterr().out.splitlines()[1].startswith("thermal     none (isothermal")
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["--thermal", "full"], "--thermal"),
+    (["--sea-temp-c", "5"], "--sea-temp-c"),
+    (["--thermal", "none", "--sea-temp-c", "5"], "--sea-temp-c"),
+])
+def test_bad_combinations_exit_2_with_one_line(capsys, argv, needle):
+    assert main(["optimize", *argv]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and needle in err[0]
+
+
+@pytest.mark.parametrize("argv, needle", [
+    (["--temp-c", "10"], "--temp-c"),
+    (["--sea-temp-c", "warm"], "--sea-temp-c"),
+    (["--sea-temp-c", "400"], "--sea-temp-c"),
+])
+def test_bad_balance_input_exits_2(capsys, thermal_toml, argv, needle):
+    assert main(["optimize", thermal_toml, *argv]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and needle in err[0]

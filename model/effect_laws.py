@@ -12,8 +12,10 @@ the candidate-effect library (and re-exports them):
   Not a candidate of the loop: it scales as ``mu omega^2`` and does not depend
   on T, exactly like the bearing region's laminar loss, so on any data it is
   absorbed into the fitted C (see :data:`oilgap.model.effects.CONFOUNDED_FORMS`).
-* :func:`palmgren_viscous_moment`, :func:`ball_churning_power`: load-independent
-  (viscous) friction moment of a rolling bearing in oil [4], [5].
+* :func:`ball_churning_power`: load-independent (viscous) friction moment of a rolling
+  bearing in oil [4], [5], through :func:`oilgap.model.bearing_laws.palmgren_viscous_moment`
+  (re-exported here with ``PALMGREN_MIN_NU_N``): the one Palmgren law, shared with the
+  ``palmgren`` bearing model, so a fitted coefficient is Palmgren's f_0.
 * :func:`coulomb_friction_power`: seal (lip or face) Coulomb friction [6].
 * :func:`oil_inertia_power`: kinetic-energy rate of entrained oil.
 * :func:`first_order_lag`, :func:`thermal_lag_power`: gap oil temperature as a
@@ -62,14 +64,13 @@ import numpy as np
 from scipy.signal import lfilter
 
 from . import _math as m
+from .bearing_laws import PALMGREN_MIN_NU_N, palmgren_viscous_moment  # noqa: F401 (re-export)
 from .taylor_couette import CRITICAL_TAYLOR_NUMBER
 from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
 
 FREE_DISC_TRANSITION_RE = 3.0e5
 """Disc Reynolds number of the laminar-turbulent change of the free-disc law [1]."""
 
-PALMGREN_MIN_NU_N = 2000.0
-"""Below ``nu n = 2000`` [cSt rpm] Palmgren's viscous moment is constant [5]."""
 
 
 def disc_reynolds(omega_rad_s, radius_m, nu_m2_s):
@@ -187,42 +188,12 @@ def enclosed_disc_couette_power(omega_rad_s, mu_Pa_s, r_outer_m, r_inner_m, axia
     return faces * np.pi * mu_Pa_s * w * w * (r_outer_m**4 - r_inner_m**4) / (2.0 * axial_gap_m)
 
 
-def palmgren_viscous_moment(nu_cSt, speed_rpm, pitch_diameter_mm, f0=1.0):
-    """Palmgren's load-independent bearing friction moment [N mm] [4], [5].
-
-    ``M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3`` for ``nu n >= 2000``; below, the value at
-    ``nu n = 2000`` (Palmgren writes 160e-7 f_0 d_m^3; 2000^(2/3) = 158.7 keeps it
-    continuous). f_0 is the bearing-type and lubrication factor (deep-groove
-    ball bearing in an oil bath: about 2).
-
-    Parameters
-    ----------
-    nu_cSt : float, array or CasADi symbol
-        Kinematic viscosity [cSt].
-    speed_rpm : float, array or CasADi symbol
-        Bearing speed n [rpm] (sign ignored).
-    pitch_diameter_mm : float
-        Pitch diameter d_m [mm].
-    f0 : float
-        Palmgren factor [-].
-
-    Returns
-    -------
-    float, array or CasADi expression
-        Friction moment M_0 [N mm].
-
-    References
-    ----------
-    Palmgren [4]; Harris & Kotzalas [5], ch. 9.
-    """
-    nn = m.fmax(nu_cSt * m.fabs(speed_rpm), PALMGREN_MIN_NU_N)
-    return 1.0e-7 * f0 * nn ** (2.0 / 3.0) * pitch_diameter_mm**3
-
-
 def ball_churning_power(omega_rad_s, nu_m2_s, pitch_diameter_m, f0=1.0):
     """Viscous (churning) loss [W] of a rolling bearing in oil: ``M_0 |omega|`` [4], [5].
 
-    :func:`palmgren_viscous_moment` converted to SI; ``∝ nu^(2/3) |omega|^(5/3)``.
+    :func:`oilgap.model.bearing_laws.palmgren_viscous_moment` (the one Palmgren law) converted
+    to SI; ``∝ nu^(2/3) |omega|^(5/3)``. With ``f0 = 1`` a fitted coefficient is f_0,
+    i.e. a correction factor on the ``palmgren`` bearing model.
 
     Parameters
     ----------

@@ -29,7 +29,8 @@ import oilgap.optim
 PACKAGES = (oilgap.model, oilgap.optim)
 
 LAW_MODULES = ["oil_properties", "taylor_couette", "skin_friction", "viscous_loss", "motor",
-               "regions", "thermal", "effects", "film_heating"]
+               "regions", "thermal", "effects", "film_heating", "film_cycle", "joint_loss",
+               "bearing", "bearing_laws", "bearing_catalogue"]
 
 UNIT_RE = re.compile(r"\[(-|[^\[\]\n]*[A-Za-z%][^\[\]\n]*)\]")
 """A unit in brackets: ``[-]`` or bracketed text with a letter (not a citation ``[1]``)."""

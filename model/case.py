@@ -3,7 +3,8 @@
 A :class:`DesignCase` holds region 1 (rotor-stator clearance, radii T1-T4 and
 length), region 2 (bearing annulus, optional), the motor data, the oil, the
 friction law, the operating condition, the duty cycle, the design bounds and
-the mission profile. Everything inside is SI; the TOML file carries units in
+the mission profile, and optionally a heat balance to the sea and a rolling bearing.
+Everything inside is SI; the TOML file carries units in
 its key names (``T1_mm``, ``depth_m``, ``peak_speed_rpm``).
 
 Radii of Fig. 5 of the seed paper (not defined in its text), as oilgap reads
@@ -22,6 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
+from .bearing import BearingSpec
 from .duty_cycle import DutyCycle
 from .errors import InputError, check_positive, check_range
 from .film_heating import WALL_CONDITIONS
@@ -382,6 +384,10 @@ class DesignCase:
         Path of the oils table a mineral oil came from, if any.
     thermal : ThermalSpec or None
         Bulk heat balance to the sea (``[thermal]``), if given.
+    bearing : BearingSpec or None
+        The rolling bearing (``[bearing]``, :mod:`oilgap.model.bearing`), if given: its
+        friction and drag are added to the regions' loss (region 2, the annulus, keeps
+        its own term).
     """
 
     name: str
@@ -396,6 +402,7 @@ class DesignCase:
     mission: tuple[MissionSegment, ...] = ()
     oils_csv: str | None = None
     thermal: ThermalSpec | None = None
+    bearing: BearingSpec | None = None
 
     def __post_init__(self):
         if self.bounds is None:

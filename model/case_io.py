@@ -36,6 +36,7 @@ from .case import (
     ThermalSpec,
     motor_value_in_toml_units,
 )
+from .case_bearing import BEARING_TABLE, bearing_from_doc, bearing_to_doc
 from .duty_cycle import DutyCycle
 from .errors import InputError, check_finite, check_range
 from .fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
@@ -125,7 +126,7 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     base_dir = base_dir or Path.cwd()
     if not isinstance(doc, dict):
         raise InputError("case", doc, "must be a TOML table")
-    allowed_top = _TOP_KEYS | set(_TABLES) | set(_ARRAY_TABLES)
+    allowed_top = _TOP_KEYS | set(_TABLES) | set(_ARRAY_TABLES) | {BEARING_TABLE}
     _check_keys(doc, allowed_top, "")
     for t in _TABLES:
         if t in doc and not isinstance(doc[t], dict):
@@ -150,7 +151,7 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
 
     name = str(doc.get("name", "unnamed case"))
     return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
-                      tuple(mission), oils_csv, thermal)
+                      tuple(mission), oils_csv, thermal, bearing_from_doc(doc))
 
 
 def _thermal_from(td: dict) -> ThermalSpec:
@@ -413,6 +414,8 @@ def case_to_dict(case: DesignCase) -> dict:
     if case.thermal is not None:  # only when given: documents of other cases are unchanged
         th = {k: getattr(case.thermal, f) for k, f in THERMAL_TOML_KEYS.items()}
         doc["thermal"] = {k: v for k, v in th.items() if v is not None}
+    if case.bearing is not None:  # what the user gave; without one, the document is unchanged
+        doc[BEARING_TABLE] = bearing_to_doc(case.bearing)
     if case.mission:
         doc["mission"] = [{"depth_m": s.depth_m, "oil_temp_C": s.oil_temp_C,
                            "fraction": s.fraction} for s in case.mission]

@@ -75,12 +75,16 @@ class RigFacts:
     film_resistance_K_W : float
         Largest conduction resistance ``delta/(k A)`` of a clearance's film, A = 2 pi R L
         its wetted area, k = :data:`FILM_CONDUCTIVITY_MIN_W_MK` [K/W] (inf: unknown).
+    bearing : BearingSpec or None
+        The case's rolling bearing (``[bearing]``), if any: the churning coefficient is
+        then a correction factor on its model.
     """
 
     fluids: tuple[FluidFacts, ...]
     radius_max_m: float
     wetted_length_m: float
     film_resistance_K_W: float = np.inf
+    bearing: object = None
 
     @classmethod
     def of(cls, geometry: JointGeometry, fluids) -> RigFacts:
@@ -102,7 +106,8 @@ class RigFacts:
                 + [geometry.disc_radii_m[0]])
         film = max(float(np.max(g.gap_m)) / (FILM_CONDUCTIVITY_MIN_W_MK * 2.0 * np.pi
                                             * g.radius_m * g.length_m) for g in regions)
-        return cls(tuple(fluids), r, float(sum(g.length_m for g in regions)), film)
+        return cls(tuple(fluids), r, float(sum(g.length_m for g in regions)), film,
+                   getattr(geometry, "bearing", None))
 
 
 @dataclass(frozen=True)
@@ -212,6 +217,30 @@ def _inertia_bounds(f: RigFacts) -> tuple[float, float]:
     return 0.0, 24.0 * np.pi * f.radius_max_m ** 4 * f.wetted_length_m
 
 
+PALMGREN_F0_MAX = 12.0
+"""Largest plausible Palmgren factor f0 [-]: about 0.7-4 for ball bearings (grease to oil
+bath), up to 8 submerged, about 12 for full-complement roller bearings (Harris &
+Kotzalas 2006 ch. 9)."""
+
+SKF_CORRECTION_MAX = 30.0
+"""Largest plausible correction factor on SKF's model of a submerged deep-groove ball
+bearing [-]: the published models of one bearing differ by this much at the viscosity
+ratios of an oil-filled joint (kappa 10-120, outside both models' range). Palmgren's M_0
+with f0 = 8 is 13-29x SKF's rolling + V_M drag for a 61809 at 3000 rpm and 150-1000 cSt
+(docs/notes/bearing-friction-models.md sec. 5; docs/bearing.md)."""
+
+
+def _churning_bounds(f: RigFacts) -> tuple[float, float]:
+    # without [bearing] the coefficient is Palmgren's f0; with one it multiplies the
+    # bearing's model: c f0 <= 12 for Palmgren's, c <= 30 for SKF's
+    b = f.bearing
+    if b is None:
+        return 0.0, PALMGREN_F0_MAX
+    if b.model == "palmgren":
+        return 0.0, PALMGREN_F0_MAX / b.f0
+    return 0.0, SKF_CORRECTION_MAX
+
+
 def _film_bounds(f: RigFacts) -> tuple[float, float]:
     # uniform dissipation in a film of thickness delta and area A: mean rise P delta/(12 k A)
     # with both walls at the measured temperature, P delta/(3 k A) with an insulated rotor;
@@ -225,9 +254,13 @@ PLAUSIBLE = {
         "regime I has C_M = 2 pi/((s/a) Re_r), 1.6/((s/a) Re_r^0.5) times the free disc, "
         "below 50 for s/a >= 0.01 and Re_r >= 10", "Daily & Nece 1960, J. Basic Eng. 82:217"),
     "bearing_ball_churning": Plausibility(
-        0.0, 12.0, "Palmgren's f0 is about 0.7-4 for ball bearings (grease to oil bath) and "
-        "up to about 12 for full-complement roller bearings",
-        "Harris & Kotzalas 2006 ch. 9; Palmgren 1959"),
+        0.0, PALMGREN_F0_MAX, "Palmgren's f0 is about 0.7-4 for ball bearings (grease to "
+        "oil bath) and up to about 12 for full-complement roller bearings; with [bearing] "
+        "the coefficient multiplies the case's bearing model: c f0 <= 12 for Palmgren's, "
+        f"c <= {SKF_CORRECTION_MAX:g} for SKF's (the published models of one submerged "
+        "bearing differ this much)",
+        "Harris & Kotzalas 2006 ch. 9; Palmgren 1959; SKF catalogue 'Friction'",
+        bounds=_churning_bounds),
     "seal_coulomb_friction": Plausibility(
         0.0, np.inf, "a lip seal's torque is bounded by its size: at most "
         f"{SEAL_TANGENTIAL_FORCE_N_M / 1000:g} N/mm of circumference (radial lip load "

@@ -10,6 +10,13 @@ The physical laws live in :mod:`oilgap.model.effect_laws` (end-face discs,
 bearing churning, seal friction, oil inertia, first-order lags, Taylor
 vortices, shear thinning, sensor delay) and are re-exported here.
 
+``bearing_ball_churning`` is the rolling bearing's friction and drag. For a case with a
+``[bearing]`` its feature is that bearing's power under the case's model
+(:func:`oilgap.model.bearing.bearing_power`, SKF's or Palmgren's [5]_), so the fitted
+coefficient c is a correction factor on the bearing model: c = 1 means the model is
+right. For a case without one it is Palmgren's load-independent loss with f0 = 1 at
+the annulus' pitch diameter, and the coefficient is f0.
+
 The library (:data:`EFFECTS`) maps each stable name to an :class:`Effect`
 carrying its formula, reference, coefficient unit, sign constraint and the
 function that turns an :class:`EffectContext` (per-sample arrays of a run set)
@@ -24,15 +31,19 @@ References
 .. [3] The laws' own references: :mod:`oilgap.model.effect_laws`.
 .. [4] H. Nahme, "Beiträge zur hydrodynamischen Theorie der Lagerreibung",
    Ing.-Arch. 11:191-209, 1940; the exact heated film: :mod:`oilgap.model.film_heating`.
+.. [5] SKF's frictional-moment model; Palmgren's load-independent/load-dependent pair:
+   :mod:`oilgap.model.bearing` and its references.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
 import numpy as np
 
+from .bearing import bearing_power
 from .effect_laws import (
     CRITICAL_TAYLOR_NUMBER,
     FREE_DISC_TRANSITION_RE,
@@ -68,6 +79,9 @@ from .regions import JointGeometry, region_power
 from .skin_friction import FrictionLaw
 from .taylor_couette import couette_reynolds, taylor_number
 from .thermal import steady_temperature
+
+if TYPE_CHECKING:  # pragma: no cover - typing only
+    from .bearing import BearingSpec
 
 __all__ = [
     "RegionState", "EffectContext", "region_states", "effect_context", "cross_region_ratios",
@@ -144,6 +158,9 @@ class EffectContext:
         Rotor end-face outer and inner radius [m].
     bearing_pitch_diameter_m : float or None
         Pitch diameter of the bearing [m]; None for a rig without a bearing region.
+    bearing : BearingSpec or None
+        The case's rolling bearing (``[bearing]``), if any: the ``bearing_ball_churning``
+        feature is its power under its model.
     """
 
     omega_rad_s: np.ndarray
@@ -156,6 +173,7 @@ class EffectContext:
     regions: tuple[RegionState, ...]
     disc_radii_m: tuple[float, float]
     bearing_pitch_diameter_m: float | None
+    bearing: BearingSpec | None = None
 
     @property
     def power_W(self) -> np.ndarray:
@@ -206,7 +224,8 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
     Parameters
     ----------
     geometry : JointGeometry
-        Regions, end-face radii and bearing pitch diameter of the joint.
+        Regions, end-face radii, bearing pitch diameter and rolling bearing (if any) of
+        the joint.
     omega_rad_s : float or array
         Rotor speed per sample [rad/s].
     domega_dt_rad_s2 : float or array
@@ -243,7 +262,7 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
         zeros if dpower_dt_W_s is None else dpower_dt_W_s,
         zeros if dpower_dtemp_W_K is None else dpower_dtemp_W_K,
         region_states(geometry, omega, nu_m2_s, powers_W), geometry.disc_radii_m,
-        geometry.bearing_pitch_diameter_m)
+        geometry.bearing_pitch_diameter_m, getattr(geometry, "bearing", None))
 
 
 def cross_region_ratios(ctx: EffectContext, lam_s: float) -> list[np.ndarray]:
@@ -279,6 +298,8 @@ def _f_disc(c: EffectContext):
 
 
 def _f_churning(c: EffectContext):
+    if c.bearing is not None:  # the case's bearing model: the coefficient corrects it
+        return bearing_power(c.bearing, c.omega_rad_s, c.nu_m2_s)
     if c.bearing_pitch_diameter_m is None:
         return None
     return ball_churning_power(c.omega_rad_s, c.nu_m2_s, c.bearing_pitch_diameter_m, 1.0)
@@ -483,8 +504,11 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
     Effect("bearing_ball_churning", "bearing ball churning",
            "M_0 |w|, M_0 = 1e-7 f0 (nu[cSt] n[rpm])^(2/3) d_m[mm]^3 N mm, "
            "d_m = 2 R2 + delta2",
-           "Palmgren 1959; Harris & Kotzalas 2006 ch. 9",
-           "f0 (Palmgren factor)", "-", True, _f_churning, "-"),
+           "Palmgren 1959; Harris & Kotzalas 2006 ch. 9; with [bearing]: SKF catalogue "
+           "'Friction' (10000 EN) or Palmgren",
+           "f0 or c (Palmgren factor; with [bearing]: c multiplies the case's bearing "
+           "model P_bearing(w, nu) of oilgap.model.bearing, 1 = the model is right)", "-",
+           True, _f_churning, "-"),
     Effect("seal_coulomb_friction", "seal / Coulomb friction", "tau_c |w|",
            "Coulomb friction; Müller & Nau 1998 ch. 5 (lip-seal torque)",
            "tau_c (friction torque)", "N m", True, _f_seal, "N m"),

@@ -8,7 +8,9 @@ under a thermal mode of :mod:`.joint_loss` (``none``: the seed paper's isotherma
 model; ``film``: the film-heating factor at the given oil temperature; ``full``: the
 film factor at the bulk temperature of the heat balance to the sea). Under every mode
 the film at the peak speed (Nahme number, factor, temperature rise) is reported; under
-``none`` it is a diagnostic of the heating the model leaves out, not applied.
+``none`` it is a diagnostic of the heating the model leaves out, not applied. A case's
+rolling bearing (``[bearing]``, :mod:`.bearing`) is its own row beside the regions, at
+the bulk oil's viscosity under every mode, and in the totals.
 
 References
 ----------
@@ -23,7 +25,15 @@ from dataclasses import asdict, dataclass, replace
 
 import numpy as np
 
+from .bearing import (
+    BearingSpec,
+    bearing_mean_power,
+    bearing_moment_terms,
+    bearing_torque,
+    bearing_validity,
+)
 from .case import DesignCase
+from .case_bearing import bearing_default_notes, bearing_defaults
 from .errors import InputError
 from .film_cycle import film_peak
 from .fluids import warn_if_untrusted_state
@@ -39,7 +49,7 @@ from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
 from .taylor_couette import couette_reynolds, flow_regime, taylor_number
 from .units import celsius_to_kelvin, m2_s_to_cst, rad_s_to_rpm
-from .viscous_loss import viscous_torque
+from .viscous_loss import viscous_torque, weighted_mean
 
 
 @dataclass(frozen=True)
@@ -96,6 +106,56 @@ class RegionResult:
 
 
 @dataclass(frozen=True)
+class BearingResult:
+    """Result for the case's rolling bearing over the duty cycle (its own row).
+
+    Attributes
+    ----------
+    name : str
+        The bearing's name (its designation, or ``[bearing] name``).
+    model : str
+        ``"skf"`` or ``"palmgren"`` (:mod:`oilgap.model.bearing`).
+    kind : str
+        Bearing type (``"deep-groove-ball"``).
+    pitch_diameter_m : float
+        Pitch diameter d_m = (d + D)/2 [m].
+    mean_power_W : float
+        Mean power of its friction and drag over the cycle at the bulk oil's viscosity
+        [W] (:func:`~oilgap.model.bearing.bearing_mean_power`; no film factor).
+    torque_peak_Nm : float
+        Its moment at the peak speed [N m].
+    terms : dict
+        Model term (``rolling``, ``sliding``, ``drag_vm``, ``drag_rs``;
+        ``load_independent``, ``load_dependent``) -> its mean power over the cycle [W];
+        they sum to ``mean_power_W``.
+    defaults : dict
+        ``[bearing]`` key -> the value the tool filled in, in the key's unit (the
+        designation's geometry, the model's constants): what the user did not give.
+    default_notes : tuple of str
+        The same, one ``"key = value (basis)"`` line each.
+    kappa_peak : float
+        Viscosity ratio nu/nu_1 at the peak speed [-] (normal bearing practice 1-4).
+    speed_factor_peak_mm_rpm : float
+        Speed factor n d_m at the peak speed [mm rpm].
+    validity_notes : tuple of str
+        One sentence per range of validity of the model the point is outside.
+    """
+
+    name: str
+    model: str
+    kind: str
+    pitch_diameter_m: float
+    mean_power_W: float
+    torque_peak_Nm: float
+    terms: dict
+    defaults: dict
+    default_notes: tuple[str, ...]
+    kappa_peak: float
+    speed_factor_peak_mm_rpm: float
+    validity_notes: tuple[str, ...]
+
+
+@dataclass(frozen=True)
 class CaseEvaluation:
     """Result of :func:`evaluate_case`.
 
@@ -128,14 +188,17 @@ class CaseEvaluation:
     regions : tuple of RegionResult
         Region 1, then region 2 if any.
     total_mean_power_W : float
-        Mean viscous power of all regions under the thermal mode (Eq. 10) [W].
+        Mean viscous power of all regions under the thermal mode (Eq. 10), plus the
+        rolling bearing's [W].
     isothermal_total_mean_power_W : float
         The seed paper's isothermal model (mode ``none``) at the case's own oil
-        temperature [W]: what the heating changed.
+        temperature, plus the bearing there [W]: what the heating changed.
     viscous_torque_peak_Nm : float
-        Viscous torque of all regions at the peak speed [N m].
+        Viscous torque of all regions, plus the bearing's moment, at the peak speed [N m].
     cycle_energy_J : float
         Energy dissipated over one cycle [J].
+    bearings : tuple of BearingResult
+        The case's rolling bearing, if any (empty without ``[bearing]``).
     """
 
     case_name: str
@@ -157,6 +220,7 @@ class CaseEvaluation:
     isothermal_total_mean_power_W: float
     viscous_torque_peak_Nm: float
     cycle_energy_J: float
+    bearings: tuple[BearingResult, ...] = ()
 
     def to_dict(self) -> dict:
         """Plain-dict form (the ``--json`` output).
@@ -164,10 +228,16 @@ class CaseEvaluation:
         Returns
         -------
         dict
-            The fields with their unit-carrying names (``mean_power_W`` [W]).
+            The fields with their unit-carrying names (``mean_power_W`` [W]);
+            ``bearings`` only when the case has a bearing (a case without one gives
+            the document it gave before bearings existed).
         """
         d = asdict(self)
         d["regions"] = [dict(asdict(r), regimes=list(r.regimes)) for r in self.regions]
+        d["bearings"] = [dict(asdict(b), default_notes=list(b.default_notes),
+                              validity_notes=list(b.validity_notes)) for b in self.bearings]
+        if not self.bearings:
+            del d["bearings"]
         return d
 
 
@@ -225,8 +295,8 @@ def region_powers(case: DesignCase, omega_rad_s, nu_m2_s, rho_kg_m3) -> dict[str
 def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
                        depth_m: float | None = None) -> float:
     """Mean viscous power [W] of all regions over the case's duty cycle (Eq. 10),
-    isothermal (thermal mode ``none``; the other modes:
-    :func:`~oilgap.model.joint_loss.joint_mean_power`).
+    isothermal (thermal mode ``none``; the other modes, and the regions with the case's
+    rolling bearing: :func:`~oilgap.model.joint_loss.joint_mean_power`).
 
     Parameters
     ----------
@@ -278,6 +348,43 @@ def _region_result(case: DesignCase, region, p_mean: float, nu, rho, b, film,
         peak["film_temp_rise_peak_K"])
 
 
+def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float) -> BearingResult:
+    """The rolling bearing's row at a kinematic viscosity (the bulk oil's).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (its duty cycle).
+    spec : BearingSpec
+        The bearing.
+    nu_m2_s : float
+        Kinematic viscosity of the oil [m^2/s].
+
+    Returns
+    -------
+    BearingResult
+        Mean power [W] in total and per term, moment at the peak speed [N m], the
+        defaults the tool filled in, kappa [-] and n d_m [mm rpm] at the peak speed.
+
+    References
+    ----------
+    SKF's frictional-moment model, Palmgren's load-independent/load-dependent pair:
+    :mod:`oilgap.model.bearing`.
+    """
+    cycle = case.duty_cycle
+    nodes, weights = cycle.speed_distribution()
+    terms = {k: float(weighted_mean(np.broadcast_to(np.asarray(v, dtype=float), nodes.shape)
+                                    * nodes, weights))
+             for k, v in bearing_moment_terms(spec, nodes, nu_m2_s).items()}
+    valid = bearing_validity(spec, cycle.peak_omega_rad_s, nu_m2_s)
+    return BearingResult(
+        spec.name, spec.model, spec.kind, float(spec.pitch_diameter_m),
+        float(bearing_mean_power(spec, nodes, weights, nu_m2_s)),
+        float(bearing_torque(spec, cycle.peak_omega_rad_s, nu_m2_s)), terms,
+        bearing_defaults(spec), bearing_default_notes(spec), float(valid.kappa),
+        float(valid.speed_factor_mm_rpm), valid.notes)
+
+
 def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regions):
     """Operating temperature [degC], nu [m^2/s], rho [kg/m^3] and each region's mean loss
     [W] under the mode (today's isothermal path, unchanged, under ``none``)."""
@@ -306,7 +413,9 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     factor at the bulk temperature of the heat balance to the sea
     (:func:`~oilgap.model.joint_loss.operating_temperature`, the case's ``[thermal]``).
     Under every mode the film's Nahme number, factor and temperature rise at the peak
-    speed are reported (under ``none`` as diagnostics, not applied).
+    speed are reported (under ``none`` as diagnostics, not applied). A rolling bearing
+    (``case.bearing``) is its own row at the bulk viscosity under every mode
+    (:func:`bearing_result`) and part of the totals (and of the balance under ``full``).
 
     Parameters
     ----------
@@ -327,8 +436,8 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     -------
     CaseEvaluation
         Mode, operating oil state, and per region Re, Ta, C_m at the peak speed, the
-        regimes visited, the mean power [W] and the film at the peak; totals [W],
-        [N m], [J] and the isothermal total [W].
+        regimes visited, the mean power [W] and the film at the peak; the bearing's
+        row; totals [W], [N m], [J] and the isothermal total [W], bearing included.
 
     Raises
     ------
@@ -359,7 +468,8 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     film, b = mode_film(case, "film", celsius_to_kelvin(t), seawater_gauge_pressure(d))
     results = tuple(_region_result(case, r, p, nu, rho, b, film, mode != "none")
                     for r, p in zip(regions, means, strict=True))
-    total = sum(r.mean_power_W for r in results)
+    bearings = () if case.bearing is None else (bearing_result(case, case.bearing, nu),)
+    total = sum(r.mean_power_W for r in results + bearings)
     iso = total if mode == "none" else float(joint_mean_power(case, t_case, "none", d))
     cycle = case.duty_cycle
     return CaseEvaluation(
@@ -368,5 +478,5 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
         None if spec is None else float(spec.resistance_K_W),
         None if spec is None else float(spec.other_heat_W), d, m2_s_to_cst(nu), float(rho),
         case.friction.laminar_law, case.friction.form, rad_s_to_rpm(cycle.peak_omega_rad_s),
-        results, total, iso, sum(r.torque_peak_Nm for r in results),
-        total * cycle.duration_s)
+        results, total, iso, sum(r.torque_peak_Nm for r in results + bearings),
+        total * cycle.duration_s, bearings)

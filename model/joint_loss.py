@@ -14,6 +14,11 @@ Three modes, the same for every command and study:
 The default is the best physics the case allows: ``full`` with a ``[thermal]`` table,
 ``film`` without (:func:`default_thermal_mode`).
 
+A case's rolling bearing (``[bearing]``, :mod:`.bearing`) is part of the joint's loss
+under every mode: its friction and drag at the bulk oil's viscosity (it is not a film,
+so no film factor) are added by :func:`joint_mean_power`, and its heat goes into the
+oil's balance under ``full``. Region 2, the annulus, keeps its own term.
+
 Functions accept floats and numpy arrays of temperatures; :func:`joint_mean_power`
 also CasADi symbols (the design NLP differentiates it).
 
@@ -35,6 +40,7 @@ import casadi as ca
 import numpy as np
 
 from . import _math as m
+from .bearing import bearing_mean_power
 from .errors import InputError
 from .film_cycle import FilmHeating, film_heating_for
 from .oil_properties import seawater_gauge_pressure
@@ -65,6 +71,9 @@ class OperatingTemperature:
         Mean viscous loss over the duty cycle at ``oil_temp_C`` under the mode [W].
     region_mean_powers_W : tuple of float
         The same per region, region 1 first (:func:`region_mean_powers`) [W].
+    bearing_mean_power_W : float
+        The rolling bearing's part of ``mean_power_W`` (:func:`bearing_mean_power_at`) [W];
+        0 without a bearing.
     """
 
     mode: str
@@ -72,6 +81,7 @@ class OperatingTemperature:
     sea_temp_C: float | None
     mean_power_W: float
     region_mean_powers_W: tuple[float, ...] = ()
+    bearing_mean_power_W: float = 0.0
 
 
 def default_thermal_mode(case: DesignCase) -> str:
@@ -172,8 +182,9 @@ def mode_film(case: DesignCase, mode: str, temp_K, pressure_gauge_Pa):
 
 
 def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | None = None,
-                     regions=None):
-    """Mean viscous loss [W] of all regions over the duty cycle at a bulk temperature.
+                     regions=None, include_bearing: bool | None = None):
+    """Mean loss [W] of all regions (and the rolling bearing) over the duty cycle at a
+    bulk temperature.
 
     Parameters
     ----------
@@ -191,15 +202,23 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         The regions (default: :func:`~oilgap.model.regions.joint_regions` of the case;
         the design NLP passes region 1 with symbolic geometry, a sweep regions whose
         R, delta, L, T have shape (n, 1)).
+    include_bearing : bool, optional
+        Add the case's rolling bearing (``case.bearing``,
+        :func:`~oilgap.model.bearing.bearing_mean_power` at the bulk viscosity, no film
+        factor) when it has one (default: when ``regions`` is None, i.e. the whole
+        joint; a caller passing its own regions says whether they stand for the joint).
+        Its result must broadcast like the regions' means: one bearing term per
+        temperature, not per region.
 
     Returns
     -------
     float, array or CasADi expression
-        Mean loss [W] (Eq. 10 with the film factor per node).
+        Mean loss [W] (Eq. 10 with the film factor per node, plus the bearing).
 
     References
     ----------
-    Seed paper [1]_ (Eqs. 5, 10); Nahme, Gavis & Laurence [2]_.
+    Seed paper [1]_ (Eqs. 5, 10); Nahme, Gavis & Laurence [2]_; the bearing's laws:
+    :mod:`oilgap.model.bearing`.
     """
     d = case.operating.depth_m if depth_m is None else depth_m
     p = seawater_gauge_pressure(d)
@@ -215,9 +234,49 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         shape = np.broadcast_shapes(np.shape(nu), np.shape(rho), np.shape(b))
         nu, rho = (np.broadcast_to(v, shape)[..., None] for v in (nu, rho))
         b = None if b is None else np.broadcast_to(b, shape)[..., None]
+    if include_bearing is None:
+        include_bearing = regions is None
     regions = joint_regions(case) if regions is None else regions
-    return sum(region_mean_power(r, nodes, weights, nu, rho, case.friction, film, b)
-               for r in regions)
+    total = sum(region_mean_power(r, nodes, weights, nu, rho, case.friction, film, b)
+                for r in regions)
+    if include_bearing and case.bearing is not None:
+        total = total + bearing_mean_power(case.bearing, nodes, weights, nu)
+    return total
+
+
+def bearing_mean_power_at(case: DesignCase, oil_temp_C, depth_m: float | None = None):
+    """Mean power [W] of the case's rolling bearing over the duty cycle at bulk
+    temperature(s), numpy only; 0 without a bearing. The same under every thermal mode
+    (the bearing's laws take the bulk viscosity; no film factor).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (``bearing``, oil, duty cycle, depth).
+    oil_temp_C : float or array
+        Bulk oil temperature(s) [degC].
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+
+    Returns
+    -------
+    float or ndarray
+        Shape ``np.shape(oil_temp_C)`` [W].
+
+    References
+    ----------
+    :func:`oilgap.model.bearing.bearing_mean_power` (SKF's frictional-moment model or
+    Palmgren's, as the case's ``[bearing]`` chooses).
+    """
+    t = np.asarray(oil_temp_C, dtype=float)
+    if case.bearing is None:
+        return np.zeros(t.shape) if t.ndim else 0.0
+    d = case.operating.depth_m if depth_m is None else depth_m
+    nu, _, _ = case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
+    nodes, weights = case.duty_cycle.speed_distribution()
+    nu = np.broadcast_to(np.asarray(nu, dtype=float), t.shape)[..., None]
+    p = np.asarray(bearing_mean_power(case.bearing, nodes, weights, nu), dtype=float)
+    return p.reshape(t.shape) if t.ndim else float(p)
 
 
 def _stacked_regions(case: DesignCase) -> Region:
@@ -269,10 +328,17 @@ def _stacked_powers(case: DesignCase, oil_temp_C, mode: str, depth_m: float | No
 
 def _balance(case: DesignCase, depth_m: float | None) -> tuple[float, np.ndarray]:
     """``T = T_sea + R (P(T) + Q)`` by :func:`~oilgap.model.thermal.joint_steady_temperature`
-    (the one solver of the lumped balance), with the losses per region at the root."""
+    (the one solver of the lumped balance), with the losses per region at the root (and
+    the bearing's as a last column when the case has one: its heat is in P)."""
     stacked = _stacked_regions(case)
-    temps, powers = joint_steady_temperature(
-        lambda ts: _stacked_powers(case, ts, "full", depth_m, stacked), case.thermal, 1)
+
+    def power_at(ts):
+        p = _stacked_powers(case, ts, "full", depth_m, stacked)
+        if case.bearing is None:
+            return p
+        return np.concatenate([p, bearing_mean_power_at(case, ts, depth_m)[..., None]], -1)
+
+    temps, powers = joint_steady_temperature(power_at, case.thermal, 1)
     return float(temps[0]), powers[0]
 
 
@@ -297,8 +363,8 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
     Returns
     -------
     OperatingTemperature
-        Mode, T_oil [degC], T_sea [degC] or None, mean loss [W] in total and per
-        region.
+        Mode, T_oil [degC], T_sea [degC] or None, mean loss [W] in total (the bearing
+        included), per region and of the bearing.
 
     Raises
     ------
@@ -312,11 +378,14 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
     Bergman et al. [3]_, sec. 3.1.
     """
     mode = resolve_thermal_mode(case, mode)
+    nreg = len(joint_regions(case))
     if mode != "full":
         t = float(case.operating.oil_temp_C)
         return OperatingTemperature(
             mode, t, None, float(joint_mean_power(case, t, mode, depth_m)),
-            tuple(float(v) for v in region_mean_powers(case, t, mode, depth_m)))
+            tuple(float(v) for v in region_mean_powers(case, t, mode, depth_m)),
+            float(bearing_mean_power_at(case, t, depth_m)))
     t, powers = _balance(case, depth_m)
     return OperatingTemperature(mode, float(t), float(case.thermal.sea_temp_C),
-                                float(powers.sum()), tuple(float(v) for v in powers))
+                                float(powers.sum()), tuple(float(v) for v in powers[:nreg]),
+                                float(powers[nreg:].sum()))

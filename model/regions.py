@@ -70,11 +70,14 @@ class JointGeometry:
         Outer and inner radius of the rotor's end faces (rotor radius, shaft bore).
     bearing_pitch_diameter_m : float or None
         ``2 R2 + delta2`` of the bearing region; None without region 2.
+    bearing : BearingSpec or None
+        The case's rolling bearing (``[bearing]``), if any.
     """
 
     regions: tuple[Region, ...]
     disc_radii_m: tuple[float, float]
     bearing_pitch_diameter_m: float | None
+    bearing: Any = None
 
 
 def joint_regions(case: DesignCase) -> tuple[Region, ...]:
@@ -121,8 +124,8 @@ def joint_geometry(case: DesignCase, roughness_T: Any = None, gap1_m: Any = None
     -------
     JointGeometry
         Regions (:func:`joint_regions`, region 1 with the given T and gap), end-face
-        radii (rotor radius T2, shaft bore) [m] and bearing pitch diameter
-        ``2 R2 + delta2`` [m] (None without region 2).
+        radii (rotor radius T2, shaft bore) [m], bearing pitch diameter
+        ``2 R2 + delta2`` [m] (None without region 2) and the case's rolling bearing.
     """
     regions = list(joint_regions(case))
     changes = {}
@@ -134,7 +137,7 @@ def joint_geometry(case: DesignCase, roughness_T: Any = None, gap1_m: Any = None
     r2 = case.region2
     pitch = None if r2 is None else 2.0 * r2.radius + r2.gap
     return JointGeometry(tuple(regions), (case.region1.radius, case.motor.shaft_bore_radius),
-                         pitch)
+                         pitch, case.bearing)
 
 
 def region_power(region: Region, omega_rad_s, nu_m2_s, density_kg_m3, law: FrictionLaw):

@@ -40,7 +40,7 @@ class ReferenceResult:
     region1_power_W : float
         Region-1 mean power [W].
     mean_power_W : float
-        Region 1 plus region 2, smooth C_m (the NLP's objective) [W].
+        Region 1 plus region 2 (and a rolling bearing), smooth C_m (the NLP's total) [W].
     torque_capability_Nm : float
         Torque capability [N m].
     inertia_kgm2 : float
@@ -59,7 +59,7 @@ class ReferenceResult:
     """(R, delta, d_r, d_s, L) [m]."""
     region1_power_W: float
     mean_power_W: float
-    """Region 1 plus region 2, smooth C_m (the NLP's objective) [W]."""
+    """Region 1 plus region 2 (and a rolling bearing), smooth C_m [W]."""
     torque_capability_Nm: float
     inertia_kgm2: float
     success: bool
@@ -144,6 +144,6 @@ def solve_slsqp(problem: DesignProblem, x0: Sequence[float] | None = None, *,
     x_mm = np.clip(res.x, lo_mm, hi_mm)
     p1 = power(x_mm)
     return ReferenceResult(x_mm * MM_TO_M, p1,
-                           p1 + problem.region2_power(params.nu_m2_s, params.rho_kg_m3),
+                           p1 + problem.constant_power(params.nu_m2_s, params.rho_kg_m3),
                            torque(x_mm), inertia(x_mm), bool(res.success), str(res.message),
                            int(res.nit), int(res.nfev), dt)

@@ -42,6 +42,11 @@ Thermal modes (``thermal``, :mod:`oilgap.model.joint_loss`):
   energy with the balance. The ISO tolerance is applied to the operating viscosity
   as it is (conservative: a thinner batch also heats a little less).
 
+A case's rolling bearing (``[bearing]``) is part of every loss (the grid's
+``mean_power_W``): its friction and drag grow with the viscosity, so they favour thinner
+grades; the grade table then also lists its share of the rated and mission powers
+(``rated_bearing_power_W``, ``mission_bearing_power_W``).
+
 Under ``film`` and ``full`` the isothermal study over the same temperatures runs as
 well: the result names both recommendations, whether the grade changes and why
 (:mod:`oilgap.studies.oil_grade_thermal`).
@@ -73,7 +78,7 @@ from oilgap.model.errors import (
     check_range,
 )
 from oilgap.model.evaluation import evaluate_case
-from oilgap.model.joint_loss import resolve_thermal_mode
+from oilgap.model.joint_loss import bearing_mean_power_at, resolve_thermal_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
@@ -430,7 +435,25 @@ def _grade_row(base: DesignCase, oil, e: pd.DataFrame, c: pd.DataFrame, m: pd.Da
         "nu_min_at_sea_C": float(e.loc[i_lo, axis]) if mode == "full" else float("nan"),
         "oil_temp_op_max_C": float(e["oil_temp_op_C"].max()),
         "rated_oil_temp_op_C": rated("oil_temp_op_C"),
-        "mission_oil_temp_op_max_C": float(m["oil_temp_op_C"].max())}
+        "mission_oil_temp_op_max_C": float(m["oil_temp_op_C"].max())} | _bearing_columns(
+            base, oil, m, r_case, fr)
+
+
+def _bearing_columns(base: DesignCase, oil, m: pd.DataFrame, r: pd.DataFrame,
+                     fr: np.ndarray) -> dict:
+    """The rolling bearing's share of the rated and mission powers [W] at their operating
+    temperatures (none without ``[bearing]``)."""
+    if base.bearing is None:
+        return {}
+    case = replace(base, oil=oil)
+
+    def bearing_w(rows: pd.DataFrame) -> np.ndarray:
+        return np.array([bearing_mean_power_at(case, t, d) for t, d in
+                         zip(rows["oil_temp_op_C"], rows["depth_m"], strict=True)])
+
+    rated = bearing_w(r)
+    return {"rated_bearing_power_W": float(rated[0]) if len(rated) else float("nan"),
+            "mission_bearing_power_W": float(bearing_w(m) @ fr)}
 
 
 def _grade_table(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,

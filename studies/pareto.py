@@ -412,7 +412,7 @@ def gap_problem_numpy(case: DesignCase | None = None, torque_min_Nm: float | Non
     prob = DesignProblem(base)
     params = prob.parameters(**({} if torque_min_Nm is None else
                                 {"torque_min_Nm": torque_min_Nm}))
-    p2 = prob.region2_power(params.nu_m2_s, params.rho_kg_m3)
+    p2 = prob.constant_power(params.nu_m2_s, params.rho_kg_m3)  # region 2 and a bearing
     objective = prob.objective(params)
 
     def evaluate(X: np.ndarray) -> tuple[np.ndarray, np.ndarray]:

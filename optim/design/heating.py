@@ -34,11 +34,13 @@ COMPARED = (
     ("T", "roughness (T4 - T1)/(T3 - T2)"),
     ("region1_power_W", "rotor-stator clearance"),
     ("region2_power_W", "bearing annulus"),
+    ("bearing_power_W", "rolling bearing (friction and drag)"),
     ("mean_power_W", "mean viscous power (smooth C_m)"),
     ("torque_capability_Nm", "torque capability"),
     ("inertia_ratio", "inertia / the case's unfilled rotor"),
 )
-"""Quantities of the optimal DesignPoint compared (key of ``to_dict``, meaning)."""
+"""Quantities of the optimal DesignPoint compared (key of ``to_dict``, meaning);
+``bearing_power_W`` only for a case with a ``[bearing]``."""
 
 
 @dataclass(frozen=True)
@@ -78,7 +80,7 @@ class HeatingComparison:
             ``change_pct`` [%] (None where the value without heating is 0).
         """
         a, b = self.isothermal.optimal.to_dict(), self.heated.optimal.to_dict()
-        pairs = [(k, a[k], b[k]) for k, _ in COMPARED]
+        pairs = [(k, a[k], b[k]) for k, _ in COMPARED if k in a and k in b]
         pairs.append(("oil_temp_C", self.isothermal_oil_temp_C, self.heated.oil_temp_C))
         out = {}
         for k, x, y in pairs:

@@ -12,7 +12,10 @@ with ``P1 = sum_i w_i clearance_power(omega_i, nu, rho, R, delta, L, law_smooth,
 over the exact speed distribution (omega_i, w_i) of the duty cycle
 (:meth:`DutyCycle.speed_distribution`), the smooth C_m (no ``if_else`` in the
 NLP), and P2 the (constant) bearing-annulus power: the objective of
-:mod:`.objective`, Eqs. 4-10 of the seed paper [1]. The torque capability and
+:mod:`.objective`, Eqs. 4-10 of the seed paper [1]. A case's rolling bearing
+(``[bearing]``, :mod:`oilgap.model.bearing` [5]) adds its mean friction and drag at the
+oil's viscosity: constant in the design variables like P2, so the optimum is the same
+and the reported totals include it (:meth:`DesignProblem.constant_power`). The torque capability and
 inertia are :mod:`oilgap.model.motor` (Carter coefficient with slot pitch
 2 pi T3 / Q_s, B_g, tau = 2 pi R^2 L k_w B_g A / sqrt 2, grooved rotor with
 T1_unfilled = R - d_r0) [2].
@@ -45,6 +48,8 @@ References
    Math. Program. 106:25-57, 2006 (IPOPT).
 .. [4] J. Nocedal, S. J. Wright, *Numerical Optimization*, 2nd ed., Springer
    2006, sec. 12.8 (multipliers as sensitivities of the optimal value).
+.. [5] SKF's frictional-moment model; Palmgren's load-independent/load-dependent pair
+   (:mod:`oilgap.model.bearing`, its references).
 """
 
 from __future__ import annotations
@@ -57,6 +62,7 @@ from typing import Any
 import casadi as ca
 import numpy as np
 
+from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import oil_state
@@ -156,6 +162,7 @@ class DesignProblem:
         self.nu_m2_s, _, self.rho_kg_m3 = (float(v) for v in oil_state(case))
         self._build()
         self._p2_cache: dict[tuple[float, float], float] = {}
+        self._bearing_cache: dict[float, float] = {}
         self._point_cache: dict[tuple, DesignPoint] = {}
         self.heated = (None if self.thermal_mode == "none" else
                        ThermalDesignProblem(self, self.thermal_mode, verbose))
@@ -219,6 +226,55 @@ class DesignProblem:
                 rho_kg_m3, self.law))
         return self._p2_cache[key]
 
+    def bearing_power(self, nu_m2_s: float) -> float | None:
+        """Mean power of the case's rolling bearing (constant for the design).
+
+        Parameters
+        ----------
+        nu_m2_s : float
+            Kinematic viscosity of the oil [m^2/s].
+
+        Returns
+        -------
+        float or None
+            Mean friction and drag power over the duty cycle [W]
+            (:func:`~oilgap.model.bearing.bearing_mean_power`); None if the case has
+            no ``[bearing]``.
+
+        References
+        ----------
+        SKF's frictional-moment model or Palmgren's, as the case's ``[bearing]``
+        chooses [5].
+        """
+        if self.case.bearing is None:
+            return None
+        key = float(nu_m2_s)
+        if key not in self._bearing_cache:
+            if len(self._bearing_cache) > 4096:
+                self._bearing_cache.clear()
+            self._bearing_cache[key] = float(bearing_mean_power(
+                self.case.bearing, self.nodes_rad_s, self.weights, key))
+        return self._bearing_cache[key]
+
+    def constant_power(self, nu_m2_s: float, rho_kg_m3: float) -> float:
+        """The mean power the design variables do not change: region 2 and the bearing.
+
+        Parameters
+        ----------
+        nu_m2_s : float
+            Kinematic viscosity [m^2/s].
+        rho_kg_m3 : float
+            Density [kg/m^3].
+
+        Returns
+        -------
+        float
+            :meth:`region2_power` plus :meth:`bearing_power` (0 without one) [W].
+        """
+        p2 = self.region2_power(nu_m2_s, rho_kg_m3)
+        pb = self.bearing_power(nu_m2_s)
+        return p2 if pb is None else p2 + pb
+
     def point(self, x_m: Sequence[float], nu_m2_s: float | None = None,
               rho_kg_m3: float | None = None) -> DesignPoint:
         """The DesignPoint of a design vector.
@@ -254,7 +310,8 @@ class DesignProblem:
                            np.asarray(self._report(ca.DM(to_nlp(x_m)),
                                                    ca.DM([nu, rho]))).ravel())
         p1, tau, J = values
-        pt = design_point(x_m, p1, tau, J, p2, self.case.motor, self.inertia_ref_kgm2)
+        pt = design_point(x_m, p1, tau, J, p2, self.case.motor, self.inertia_ref_kgm2,
+                          self.bearing_power(nu))
         if key is not None:
             if len(self._point_cache) > 1024:
                 self._point_cache.clear()
@@ -463,7 +520,7 @@ class DesignProblem:
         status = str(stats.get("return_status", "unknown"))
         y = np.asarray(sol["x"]).ravel()
         if status not in SUCCESS_STATUSES or not np.all(np.isfinite(y)):
-            raise self._failure(status, stats, sol, y, p2)
+            raise self._failure(status, stats, sol, y, p2, nu)
         y_in = np.clip(y, ylo, yhi)
         x_m = np.clip(from_nlp(y_in), lo, hi)
         # a variable IPOPT left on its bound is reported at the bound exactly (no exp/log
@@ -484,14 +541,15 @@ class DesignProblem:
                             {"lam_x": lam_x, "lam_g": lam_g})
 
     def _failure(self, status: str, stats: dict, sol: dict, y: np.ndarray,
-                 p2: float) -> SolverError:
+                 p2: float, nu: float) -> SolverError:
         """The SolverError of a failed solve, with its last iterate in physical units."""
         last = {VARIABLE_LABELS[v][0]: float(xv) for v, xv in
                 zip(VARIABLES, from_nlp(y) / MM_TO_M, strict=True)}
         gv = np.asarray(sol["g"]).ravel()
         last["torque_capability_Nm"] = float(np.exp(gv[0]) * self.tau_ref_Nm)
         last["inertia_kgm2"] = float(np.exp(gv[1]) * self.inertia_ref_kgm2)
-        last["mean_power_W"] = float(np.exp(float(sol["f"]))) + p2
+        pb = self.bearing_power(nu)
+        last["mean_power_W"] = float(np.exp(float(sol["f"]))) + p2 + (pb or 0.0)
         it = ", ".join(f"{k} = {v:.6g}" for k, v in last.items())
         return SolverError(f"IPOPT did not converge (status {status} after "
                            f"{stats.get('iter_count', '?')} iterations); last iterate: {it}",

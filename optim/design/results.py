@@ -39,10 +39,12 @@ class DesignPoint:
     """One region-1 design with everything the optimizer reports (SI).
 
     ``mean_power_W`` is the NLP's objective: region 1 plus region 2, both with the
-    smooth C_m (``case.friction.smooth()``); :meth:`DesignResult.evaluate` gives
-    the exact-Eq.-6 numbers of ``oilgap evaluate`` (equation numbers of the seed
-    paper, *Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator*).
+    smooth C_m (``case.friction.smooth()``), plus the rolling bearing's friction and
+    drag when the case has a ``[bearing]`` (:mod:`oilgap.model.bearing`; constant in
+    the design variables, it shifts the total and, under ``full``, the heat balance);
+    :meth:`DesignResult.evaluate` gives the exact-Eq.-6 numbers of ``oilgap evaluate``
+    (equation numbers of the seed paper, *Modeling and Optimization of Compensating Oil
+    Viscous Power for a Deep-Sea Electric Manipulator*).
 
     Parameters
     ----------
@@ -53,7 +55,7 @@ class DesignPoint:
     T : float
         Roughness (T4 - T1)/(T3 - T2) [-].
     region1_power_W, region2_power_W, mean_power_W : float
-        Mean viscous power of region 1, region 2 and their sum [W].
+        Mean viscous power of region 1, region 2 and the total (with the bearing) [W].
     torque_capability_Nm : float
         Torque capability [N m].
     airgap_flux_density_T : float
@@ -64,6 +66,9 @@ class DesignPoint:
         Rotor inertia with the epoxy fill [kg m^2].
     inertia_ratio : float
         Inertia over the reference (the case's unfilled rotor) [-].
+    bearing_power_W : float or None
+        Mean power of the rolling bearing [W] (part of ``mean_power_W``); None for a
+        case without ``[bearing]``.
     """
 
     R_m: float
@@ -85,6 +90,8 @@ class DesignPoint:
     inertia_kgm2: float
     inertia_ratio: float
     """Inertia over the reference (the case's unfilled rotor) [-]."""
+    bearing_power_W: float | None = None
+    """Mean power of the rolling bearing [W] (in ``mean_power_W``); None without one."""
 
     @property
     def x_mm(self) -> np.ndarray:
@@ -99,13 +106,17 @@ class DesignPoint:
         -------
         dict
             Powers [W], T [-], lengths [mm] (``*_mm``), torque [N m], flux
-            density [T], Carter coefficient [-], inertia [kg m^2] and its ratio [-].
+            density [T], Carter coefficient [-], inertia [kg m^2] and its ratio [-];
+            ``bearing_power_W`` [W] only for a case with a bearing.
         """
         mm = 1.0 / MM_TO_M
+        bearing = {} if self.bearing_power_W is None else {
+            "bearing_power_W": self.bearing_power_W}
         return {
             "mean_power_W": self.mean_power_W,
             "region1_power_W": self.region1_power_W,
             "region2_power_W": self.region2_power_W,
+            **bearing,
             "T": self.T,
             "delta_mm": self.delta_m * mm,
             "R_mm": self.R_m * mm,
@@ -125,7 +136,7 @@ class DesignPoint:
 
 
 def design_point(x_m: np.ndarray, p1: float, tau: float, J: float, p2: float, motor: Motor,
-                 inertia_ref_kgm2: float) -> DesignPoint:
+                 inertia_ref_kgm2: float, bearing_W: float | None = None) -> DesignPoint:
     """The DesignPoint of a design vector whose loss, torque and inertia are known.
 
     Parameters
@@ -144,17 +155,22 @@ def design_point(x_m: np.ndarray, p1: float, tau: float, J: float, p2: float, mo
         The case's motor (flux density and Carter coefficient at ``x_m``).
     inertia_ref_kgm2 : float
         Reference inertia [kg m^2].
+    bearing_W : float, optional
+        Mean power of the rolling bearing [W] (None: the case has none).
 
     Returns
     -------
     DesignPoint
+        ``mean_power_W = p1 + p2 (+ bearing_W)`` [W].
     """
     R, delta, d_r, d_s, L = (float(v) for v in x_m)
     _, bg, kc = motor_torque(motor, R, delta, L)
     T1, T2, T3, T4 = rotor_stator_radii(R, delta, d_r, d_s)
+    total = p1 + p2 if bearing_W is None else p1 + p2 + bearing_W
     return DesignPoint(R, delta, d_r, d_s, L, T1, T2, T3, T4,
-                       float(groove_roughness(T1, T2, T3, T4)), p1, p2, p1 + p2, tau,
-                       float(bg), float(kc), J, J / inertia_ref_kgm2)
+                       float(groove_roughness(T1, T2, T3, T4)), p1, p2, total, tau,
+                       float(bg), float(kc), J, J / inertia_ref_kgm2,
+                       None if bearing_W is None else float(bearing_W))
 
 
 @dataclass(frozen=True)

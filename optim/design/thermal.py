@@ -4,7 +4,7 @@ Under the thermal modes of :mod:`oilgap.model.joint_loss` the NLP of
 :mod:`.problem` gains the bulk oil temperature T as a sixth variable
 (``w = (x, T)``, ``x = (R, delta, d_r, d_s, L)``)::
 
-    min   P(x, T) = P1(x, T) + P2(T)                  mean viscous power [W]
+    min   P(x, T) = P1(x, T) + P2(T) [+ P_b(T)]       mean viscous power [W]
     s.t.  tau(R, delta, L) >= tau_min,  J(R, d_r, L) <= J_max,  bounds on x
           full:  (T - T_sea - R_th (P(x, T) + Q)) / 1 K = 0,   T_sea + R_th Q <= T <= 250
           film:  T = the solve's oil temperature (given; no balance)
@@ -16,6 +16,12 @@ T (nu, rho and b = -d ln mu/dT from the oil's own law at the symbolic T). ``full
 is the heat balance of :mod:`oilgap.model.thermal` as an equality: a design that
 loses less also runs colder, so its oil is more viscous [1, 2]. CasADi gives IPOPT
 exact first and second derivatives [3].
+
+P_b is the case's rolling bearing (``[bearing]``; absent without one): its friction and
+drag at the bulk viscosity (:func:`~oilgap.model.bearing.bearing_mean_power`, no film
+factor) [5], what ``joint_mean_power`` adds with ``include_bearing``. It does not depend
+on the design, but under ``full`` its heat goes into the balance, so it warms the oil
+and thins it for the clearances too.
 
 Under ``film`` the oil temperature is given: the NLP has the five design variables and
 the oil state (nu, rho, b) at that temperature as parameters, like the isothermal NLP's
@@ -45,6 +51,8 @@ References
    optimization and optimal control", Math. Prog. Comp. 11:1-36, 2019.
 .. [4] J. Nocedal, S. J. Wright, *Numerical Optimization*, 2nd ed., Springer 2006,
    sec. 12.8 (multipliers as sensitivities of the optimal value).
+.. [5] SKF's frictional-moment model; Palmgren's load-independent/load-dependent pair
+   (:mod:`oilgap.model.bearing`, its references).
 """
 
 from __future__ import annotations
@@ -57,6 +65,7 @@ from typing import TYPE_CHECKING, Any
 import casadi as ca
 import numpy as np
 
+from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import ThermalSpec
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.joint_loss import (
@@ -114,12 +123,13 @@ class _ThermalNLP:
     opts: dict
     solver: Any
     parts: Any
-    """(y, q) -> (P1 [W], P2 [W], tau [N m], J [kg m^2])."""
+    """(y, q) -> (P1 [W], P2 [W], P_b [W], tau [N m], J [kg m^2]) (P_b = 0 without a
+    bearing)."""
     oil: Any
     pressure_Pa: float
     """Gauge pressure of the oil [Pa]."""
     loss2: Any = None
-    """full: (y, row of two t) -> P1 + P2 [W] at both."""
+    """full: (y, row of two t) -> P1 + P2 + P_b [W] at both."""
     balance: Any = None
     """full: (y, t, p) -> (residual [BALANCE_SCALE_K], its derivative in T [1/K])."""
     warm: Any = None
@@ -210,11 +220,15 @@ class ThermalDesignProblem:
         case = replace(self.case, oil=oil, friction=iso.law)
         regions = (rotor_stator_region(R, delta, d_r, d_s, L), *joint_regions(case)[1:])
         full = self.mode == "full"
+        has_bearing = case.bearing is not None
         if full:
             q = ca.SX.sym("t")  # T / TEMP_SCALE_K, T in degC
             try:
                 powers = [joint_mean_power(case, q * TEMP_SCALE_K, self.mode, depth_m,
                                            regions=(r,)) for r in regions]
+                pb = (joint_mean_power(case, q * TEMP_SCALE_K, self.mode, depth_m,
+                                       regions=(), include_bearing=True)
+                      if has_bearing else ca.SX(0))
             except (TypeError, NotImplementedError, RuntimeError) as e:
                 raise InputError("oil", oil.name, "a fluid whose viscosity law CasADi can "
                                  "differentiate (thermal full carries the temperature; "
@@ -224,25 +238,28 @@ class ThermalDesignProblem:
             nodes, weights = case.duty_cycle.speed_distribution()
             powers = [region_mean_power(r, ca.DM(nodes), weights, q[0], q[1], iso.law,
                                         case_film(case), q[2]) for r in regions]
+            pb = (bearing_mean_power(case.bearing, ca.DM(nodes), weights, q[0])
+                  if has_bearing else ca.SX(0))
         p1, p2 = powers[0], (powers[1] if len(powers) > 1 else ca.SX(0))
+        loss = p1 + p2 + pb if has_bearing else p1 + p2  # the one objective and heat
         tau = motor_torque(m, R, delta, L)[0]
         J = rotor_inertia(m, R, d_r, L, iso.machined_rotor_groove_m)
         g = [ca.log(tau / iso.tau_ref_Nm), ca.log(J / iso.inertia_ref_kgm2)]
         p = ca.SX.sym("p", 3)  # full: (T_sea [degC], R_th [K/W], Q [W])
-        balance = (q * TEMP_SCALE_K - p[0] - p[1] * (p1 + p2 + p[2])) / BALANCE_SCALE_K
-        nlp = ({"x": ca.vertcat(y, q), "p": p, "f": ca.log(p1 + p2),
+        balance = (q * TEMP_SCALE_K - p[0] - p[1] * (loss + p[2])) / BALANCE_SCALE_K
+        nlp = ({"x": ca.vertcat(y, q), "p": p, "f": ca.log(loss),
                 "g": ca.vertcat(*g, balance)} if full else
-               {"x": y, "p": q, "f": ca.log(p1 + p2), "g": ca.vertcat(*g)})
+               {"x": y, "p": q, "f": ca.log(loss), "g": ca.vertcat(*g)})
         opts = dict(SOLVER_OPTIONS, **QUIET_OPTIONS)
         if self.verbose:
             opts.update({"ipopt.print_level": 5, "print_time": True})
             opts.pop("ipopt.sb")
         solver = ca.nlpsol(f"oilgap_design_{self.mode}", "ipopt", nlp, opts)
-        parts = ca.Function("parts", [y, q], [ca.vertcat(p1, p2, tau, J)])
+        parts = ca.Function("parts", [y, q], [ca.vertcat(p1, p2, pb, tau, J)])
         out = _ThermalNLP(nlp, opts, solver, parts, oil,
                           float(seawater_gauge_pressure(depth_m)))
         if full:
-            out.loss2 = ca.Function("loss", [y, q], [p1 + p2]).map(2)
+            out.loss2 = ca.Function("loss", [y, q], [loss]).map(2)
             out.balance = ca.Function("balance", [y, q, p],
                                       [balance, ca.jacobian(balance, q) / TEMP_SCALE_K])
         return out
@@ -316,13 +333,14 @@ class ThermalDesignProblem:
         return self._point(nlp, x, float(oil_temp_C)), float(oil_temp_C)
 
     def _point(self, nlp: _ThermalNLP, x_m: np.ndarray, temp_C: float) -> DesignPoint:
-        p1, p2, tau, J = (float(v) for v in self._parts(nlp, x_m, temp_C))
+        p1, p2, pb, tau, J = (float(v) for v in self._parts(nlp, x_m, temp_C))
         return design_point(x_m, p1, tau, J, p2, self.case.motor,
-                            self.isothermal.inertia_ref_kgm2)
+                            self.isothermal.inertia_ref_kgm2,
+                            None if self.case.bearing is None else pb)
 
     @staticmethod
     def _parts(nlp: _ThermalNLP, x_m: np.ndarray, temp_C: float) -> np.ndarray:
-        """(P1 [W], P2 [W], tau [N m], J [kg m^2]) of design ``x_m`` [m] at ``temp_C``."""
+        """(P1, P2, P_b [W], tau [N m], J [kg m^2]) of design ``x_m`` [m] at ``temp_C``."""
         return np.asarray(nlp.parts(to_nlp(x_m), nlp.q(temp_C))).ravel()
 
     def _temperature(self, nlp: _ThermalNLP, x_m: np.ndarray, spec: ThermalSpec | None,
@@ -505,8 +523,8 @@ class ThermalDesignProblem:
         else:  # envelope theorem: no constraint depends on T, so dP*/dT = dP/dT at x*
             h = 1e-2
             costs = {"oil_temp_cost_W_per_K": float(
-                (self._parts(nlp, x_m, temp + h)[:2].sum()
-                 - self._parts(nlp, x_m, temp - h)[:2].sum()) / (2 * h))}
+                (self._parts(nlp, x_m, temp + h)[:3].sum()
+                 - self._parts(nlp, x_m, temp - h)[:3].sum()) / (2 * h))}
         case = self.isothermal._case_for(params)
         return ThermalDesignResult(
             status, True, int(stats.get("iter_count", -1)), dt, initial, optimal, active,

@@ -21,6 +21,12 @@ MODE_TEXT = {
 }
 """What each thermal mode computes, for the header line."""
 
+BEARING_MODEL_TEXT = {
+    "skf": "SKF frictional-moment model (rolling, sliding, drag)",
+    "palmgren": "Palmgren (load-independent M0 + load-dependent M1)",
+}
+"""The rolling bearing's model, for the header line."""
+
 
 def _header(ev: CaseEvaluation) -> list[str]:
     """The case, thermal-mode, balance, oil and friction lines."""
@@ -43,7 +49,41 @@ def _header(ev: CaseEvaluation) -> list[str]:
         f"friction    C_m form {ev.form}, laminar law {ev.laminar_law}; "
         f"peak speed {ev.peak_speed_rpm:g} rpm",
     ]
+    lines += [f"rolling brg {b.name} ({b.kind}, d_m = {m_to_mm(b.pitch_diameter_m):g} mm): "
+              f"{BEARING_MODEL_TEXT.get(b.model, b.model)}, at the bulk oil's viscosity"
+              for b in ev.bearings]
     return lines
+
+
+def _bearing_rows(ev: CaseEvaluation) -> list[str]:
+    """The rolling bearing's own rows below the regions (none without a bearing)."""
+    if not ev.bearings:
+        return []
+    lines = ["", f"{'rolling bearing':<16}{'model':<10}{'mean W':>9}{'torque Nm':>11}"
+                 "  mean W per term"]
+    for b in ev.bearings:
+        terms = ", ".join(f"{k} {v:.3g}" for k, v in b.terms.items())
+        lines.append(f"{b.name:<16}{b.model:<10}{b.mean_power_W:>9.3f}"
+                     f"{b.torque_peak_Nm:>11.4f}  {terms}")
+    return lines
+
+
+def _bearing_notes(ev: CaseEvaluation) -> list[str]:
+    """What the bearing's row is, where it lies against its model's range, and every
+    default the tool filled in."""
+    notes = []
+    for b in ev.bearings:
+        notes.append(f"rolling bearing {b.name}: its friction and drag at the bulk oil's "
+                     "viscosity under every thermal mode (not a film: no film factor); "
+                     "region 2 'bearing' is the oil annulus beside it, a separate term")
+        notes.append(f"  at the peak speed: kappa = nu/nu_1 = {b.kappa_peak:.3g}, "
+                     f"n d_m = {b.speed_factor_peak_mm_rpm:.4g} mm rpm")
+        notes += [f"  {v}" for v in b.validity_notes]
+        if b.default_notes:
+            notes.append("  defaults the tool filled in (give the key in [bearing] to "
+                         "change one):")
+            notes += [f"    {v}" for v in b.default_notes]
+    return notes
 
 
 def _film_notes(ev: CaseEvaluation) -> list[str]:
@@ -76,9 +116,13 @@ def format_evaluation(ev: CaseEvaluation) -> str:
             f"{r.roughness_T:>6.2f}{r.Re_peak:>10.4g}{r.Ta_peak:>10.4g}{r.Cm_peak:>11.4g}"
             f"{r.mean_power_W:>9.3f}{r.nahme_peak:>9.3g}{r.film_factor_peak:>7.3f}{rise:>8}"
             f"  {', '.join(r.regimes)}")
-    share = ", ".join(f"{r.name} {100 * r.mean_power_W / ev.total_mean_power_W:.0f} %"
-                      for r in ev.regions) if ev.total_mean_power_W > 0 else ""
-    lines += ["", f"total mean viscous power   {ev.total_mean_power_W:.3f} W   ({share})"]
+    lines += _bearing_rows(ev)
+    parts = [(r.name, r.mean_power_W) for r in ev.regions]
+    parts += [(f"rolling bearing {b.name}", b.mean_power_W) for b in ev.bearings]
+    share = ", ".join(f"{n} {100 * p / ev.total_mean_power_W:.0f} %"
+                      for n, p in parts) if ev.total_mean_power_W > 0 else ""
+    label = "total mean power          " if ev.bearings else "total mean viscous power  "
+    lines += ["", f"{label} {ev.total_mean_power_W:.3f} W   ({share})"]
     if ev.thermal_mode != "none":
         iso = ev.isothermal_total_mean_power_W
         where = " at [operating] oil_temp_C" if ev.thermal_mode == "full" else ""
@@ -89,7 +133,7 @@ def format_evaluation(ev: CaseEvaluation) -> str:
         f"viscous torque at peak     {ev.viscous_torque_peak_Nm:.4f} N m",
         f"energy per cycle           {ev.cycle_energy_J:.1f} J",
         "",
-    ] + _film_notes(ev)
+    ] + _film_notes(ev) + _bearing_notes(ev)
     return "\n".join(lines)
 
 

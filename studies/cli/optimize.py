@@ -86,6 +86,7 @@ def _rows(prm) -> list[tuple[str, str]]:
         ("T", "roughness (T4 - T1)/(T3 - T2)"),
         ("region1_power_W", "rotor-stator clearance"),
         ("region2_power_W", "bearing annulus"),
+        ("bearing_power_W", "rolling bearing (friction and drag)"),
         ("mean_power_W", "mean viscous power (smooth C_m)"),
         ("torque_capability_Nm", f"torque capability (>= {prm.torque_min_Nm:.5g})"),
         ("airgap_flux_density_T", "air-gap flux density B_g"),
@@ -133,7 +134,7 @@ def format_result(res: DesignResult, exact: tuple | None = None,
         "",
         f"{'quantity':<24}{'initial':>13}{'optimal':>13}{'change':>11}  meaning",
     ]
-    for key, meaning in _rows(prm):
+    for key, meaning in (r for r in _rows(prm) if r[0] in o):  # bearing only with one
         a, b = i[key], o[key]
         lines.append(f"{key:<24}{_fmt(a):>13}{_fmt(b):>13}{_change(a, b):>11}  {meaning}")
     if exact is not None:
@@ -183,7 +184,7 @@ def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str) -> str
         f"{'':<24}{'(' + h.thermal_mode + ')':>12}{'(' + h.thermal_mode + ')':>12}{'':>9}"
         f"{'(none)':>12}{'vs none':>10}",
     ]
-    for key, meaning in _rows(prm):
+    for key, meaning in (r for r in _rows(prm) if r[0] in o):  # bearing only with one
         a, b, c = i[key], o[key], n[key]
         lines.append(f"{key:<24}{_fmt(a):>12}{_fmt(b):>12}{_change(a, b):>9}{_fmt(c):>12}"
                      f"{_change(c, b):>10}  {meaning}")

@@ -4,6 +4,11 @@ Cases that share an oil, a friction law, a duty cycle and a heat path are evalua
 together: their regions are stacked (R, delta, L, T of shape (cases, 1)) and the loss
 is :func:`oilgap.model.joint_loss.joint_mean_power` over a (cases x speed nodes)
 array, the same composition as ``oilgap evaluate``. Physics is never re-written here.
+A case's rolling bearing (``[bearing]``) is part of the joint: ``mean_power_W`` and
+``isothermal_power_W`` include it (``include_bearing=True`` where the regions are
+stacked), and so does the heat balance under ``full``; ``region1_power_W`` and
+``region2_power_W`` stay the clearances' own (the bearing is their difference from the
+total).
 
 Thermal modes (:data:`oilgap.model.joint_loss.THERMAL_MODES`):
 
@@ -50,10 +55,12 @@ def _heat_path(case: DesignCase) -> tuple | None:
 
 
 def _group_by_law(cases: list[DesignCase]) -> list[list[int]]:
-    """Indices of the cases sharing an oil, a friction law, a duty cycle and a heat path."""
+    """Indices of the cases sharing an oil, a friction law, a duty cycle, a heat path and a
+rolling bearing (or none)."""
     groups: dict[tuple, list[int]] = {}
     for i, c in enumerate(cases):
-        key = (c.oil, c.friction, id(c.duty_cycle), c.region2 is None, _heat_path(c))
+        key = (c.oil, c.friction, id(c.duty_cycle), c.region2 is None, _heat_path(c),
+               c.bearing)
         groups.setdefault(key, []).append(i)
     return list(groups.values())
 
@@ -101,8 +108,8 @@ def _balance(c0: DesignCase, cases: list[DesignCase], idx: list[int], depths: np
 
     def power_at(ts: np.ndarray) -> np.ndarray:
         k = len(ts) // n
-        return np.asarray(joint_mean_power(c0, ts, "full", np.tile(depths, k), regs[k]),
-                          dtype=float)
+        return np.asarray(joint_mean_power(c0, ts, "full", np.tile(depths, k), regs[k],
+                                           include_bearing=True), dtype=float)
 
     temps, _ = steady_temperature(power_at, sea + th.resistance_K_W * th.other_heat_W,
                                   th.resistance_K_W, n)
@@ -148,6 +155,9 @@ def _evaluate_group(cases: list[DesignCase], idx: list[int], mode: str,
         out[f"region{r + 1}_power_W"][ii] = mean
         out[f"Re{r + 1}_peak"][ii] = couette_reynolds(w_peak, reg.radius_m[:, 0],
                                                       reg.gap_m[:, 0], nu)
+    if c0.bearing is not None:  # the bearing's own term: one per row, no film factor
+        total += np.asarray(joint_mean_power(c0, temps, mode, depths, [],
+                                             include_bearing=True), dtype=float)
     r1 = regions[0]
     out["T_res"][ii] = r1.roughness_T[:, 0]
     out["delta_mm_res"][ii] = r1.gap_m[:, 0] / MM_TO_M
@@ -155,7 +165,8 @@ def _evaluate_group(cases: list[DesignCase], idx: list[int], mode: str,
     out["L_mm_res"][ii] = r1.length_m[:, 0] / MM_TO_M
     out["mean_power_W"][ii] = total
     out["isothermal_power_W"][ii] = total if mode == "none" else np.asarray(
-        joint_mean_power(c0, given, "none", depths, regions), dtype=float)
+        joint_mean_power(c0, given, "none", depths, regions, include_bearing=True),
+        dtype=float)
     out["oil_temp_op_C"][ii] = temps
     out["sea_temp_C"][ii] = sea
     out["nu_cSt"][ii] = m2_s_to_cst(nu)
@@ -202,8 +213,9 @@ def evaluate_cases(cases: list[DesignCase], thermal: str = "none") -> pd.DataFra
     Returns
     -------
     DataFrame
-        One row per case: ``mean_power_W``, ``region1_power_W``,
-        ``region2_power_W`` [W] under the mode, ``isothermal_power_W`` (the
+        One row per case: ``mean_power_W`` (the rolling bearing's included),
+        ``region1_power_W``, ``region2_power_W`` [W] under the mode,
+        ``isothermal_power_W`` (the
         isothermal loss at the row's given temperature: the oil's under
         none/film, the sea's under full) [W], ``oil_temp_op_C`` (the operating
         bulk temperature) and ``sea_temp_C`` (full only) [degC], ``nu_cSt``,

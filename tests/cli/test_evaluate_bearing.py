@@ -1,0 +1,141 @@
+"""``oilgap evaluate`` with a [bearing]: the bearing is its own row with its model, its
+mean power equals bearing_mean_power at the same oil state (computed here), the total is
+regions + bearing under every thermal mode, the balance under full takes its heat, the
+defaults the tool filled in are shown; bad tables exit 2 with one line; a case without
+[bearing] prints what it printed before."""
+
+import json
+import re
+
+import pytest
+
+from oilgap.model.bearing import bearing_mean_power, bearing_torque
+from oilgap.model.case_io import read_case_toml
+from oilgap.model.evaluation import oil_state
+from oilgap.studies.cli import main
+
+THERMAL = """
+[thermal]
+sea_temp_C = 2.0
+resistance_K_per_W = 0.5
+heat_capacity_J_per_K = 5.0e4
+other_heat_W = 3.0
+"""
+
+
+def run(capsys, argv):
+    code = main(argv)
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+@pytest.fixture
+def cases(seed_toml, write_file):
+    """Paths (str) of the test joint with a 6809 (skf, palmgren, with [thermal]) and without."""
+    return {
+        "skf": str(write_file(seed_toml + '[bearing]\ndesignation = "6809"\n', "skf.toml")),
+        "palmgren": str(write_file(seed_toml + '[bearing]\ndesignation = "6809"\n'
+                                   'model = "palmgren"\n', "palmgren.toml")),
+        "hot": str(write_file(seed_toml + '[bearing]\ndesignation = "6809"\n' + THERMAL,
+                              "hot.toml")),
+        "plain": str(write_file(seed_toml, "plain.toml")),
+        "hot_plain": str(write_file(seed_toml + THERMAL, "hot_plain.toml")),
+    }
+
+
+def evaluate_json(capsys, *argv):
+    code, out, err = run(capsys, ["evaluate", *argv, "--json"])
+    assert code == 0, err
+    return json.loads(out)
+
+
+@pytest.mark.parametrize("model", ["skf", "palmgren"])
+@pytest.mark.parametrize("thermal", ["none", "film"])
+def test_json_bearing_row_and_total(capsys, cases, model, thermal):
+    d = evaluate_json(capsys, cases[model], "--thermal", thermal)
+    plain = evaluate_json(capsys, cases["plain"], "--thermal", thermal)
+    case = read_case_toml(cases[model])
+    nu, _, _ = oil_state(case, d["oil_temp_C"], d["depth_m"])
+    nodes, weights = case.duty_cycle.speed_distribution()
+    (b,) = d["bearings"]
+    assert (b["name"], b["model"]) == ("61809", model)
+    assert b["mean_power_W"] == pytest.approx(
+        float(bearing_mean_power(case.bearing, nodes, weights, nu)), rel=1e-12)
+    assert b["torque_peak_Nm"] == pytest.approx(
+        float(bearing_torque(case.bearing, 3000 * 3.141592653589793 / 30, nu)), rel=1e-9)
+    assert sum(b["terms"].values()) == pytest.approx(b["mean_power_W"], rel=1e-12)
+    expected_terms = ({"rolling", "sliding", "drag_vm", "drag_rs"} if model == "skf"
+                      else {"load_independent", "load_dependent"})
+    assert set(b["terms"]) == expected_terms
+    assert b["defaults"]["outside_mm"] == 58.0 and b["defaults"]["balls"] == 24
+    assert "bore_mm" not in b["defaults"]
+    # the regions are the case's without the bearing; the total adds the bearing
+    assert d["regions"] == plain["regions"]
+    regions = sum(r["mean_power_W"] for r in d["regions"])
+    assert d["total_mean_power_W"] == pytest.approx(regions + b["mean_power_W"], rel=1e-12)
+    assert d["viscous_torque_peak_Nm"] == pytest.approx(
+        plain["viscous_torque_peak_Nm"] + b["torque_peak_Nm"], rel=1e-12)
+    assert d["cycle_energy_J"] == pytest.approx(300.0 * d["total_mean_power_W"], rel=1e-12)
+    if thermal == "none":
+        assert d["isothermal_total_mean_power_W"] == d["total_mean_power_W"]
+    # no bearings key without a bearing (the document of before)
+    assert "bearings" not in plain
+
+
+def test_full_balance_includes_the_bearing_heat(capsys, cases):
+    d = evaluate_json(capsys, cases["hot"])
+    assert d["thermal_mode"] == "full"
+    case = read_case_toml(cases["hot"])
+    t = d["oil_temp_C"]
+    nu, _, _ = oil_state(case, t, d["depth_m"])
+    nodes, weights = case.duty_cycle.speed_distribution()
+    p_bearing = float(bearing_mean_power(case.bearing, nodes, weights, nu))
+    p_regions = sum(r["mean_power_W"] for r in d["regions"])
+    assert d["bearings"][0]["mean_power_W"] == pytest.approx(p_bearing, rel=1e-10)
+    assert t - 2.0 - 0.5 * (p_regions + p_bearing + 3.0) == pytest.approx(0.0, abs=1e-7)
+    # the bearing's heat warms the oil above the balance without it
+    without = evaluate_json(capsys, cases["hot_plain"])
+    assert "bearings" not in without and t - without["oil_temp_C"] > 0.1
+
+
+def test_text_output_has_the_bearing_row_model_and_defaults(capsys, cases):
+    code, out, err = run(capsys, ["evaluate", cases["skf"], "--thermal", "none"])
+    assert code == 0 and err == ""
+    lines = out.splitlines()
+    assert any(re.match(r"^rolling brg 61809 \(deep-groove-ball, d_m = 51.5 mm\): SKF", x)
+               for x in lines)
+    head = next(i for i, x in enumerate(lines) if x.startswith("rolling bearing model"))
+    row = lines[head + 1].split()
+    assert row[:2] == ["61809", "skf"]
+    assert head > next(i for i, x in enumerate(lines) if x.startswith("rotor-stator"))
+    regions = [float(x.split()[8]) for x in lines if x.startswith(("rotor-stator", "bearing  "))
+               and len(x.split()) > 9]
+    total = float(re.search(r"total mean power\s+([\d.]+) W", out).group(1))
+    assert total == pytest.approx(sum(regions) + float(row[2]), abs=2e-3)
+    assert "rolling bearing 61809" in out and "kappa = nu/nu_1" in out
+    assert "outside_mm = 58.0 (catalogue 61809)" in out
+    assert re.search(r"balls = 24 \(estimate", out)
+
+
+def test_without_bearing_the_text_is_unchanged(capsys, cases):
+    code, out, _ = run(capsys, ["evaluate", cases["plain"], "--thermal", "none"])
+    assert code == 0
+    assert "total mean viscous power" in out and "rolling bearing" not in out
+    assert not any(x.startswith("rolling brg") for x in out.splitlines())
+
+
+@pytest.mark.parametrize("table,needle", [
+    ('designation = "6809"\nbore_diameter_mm = 45\n', "bore_diameter_mm = 45"),
+    ('designation = "6809"\nmodel = "timken"\n', "model = 'timken'"),
+    ('designation = "6809"\nradial_load_N = -5.0\n', "radial_load_N = -5.0"),
+    ('designation = "6809"\nballs = 2.5\n', "balls = 2.5"),
+    ('designation = "6809-2RS"\n', "seal"),
+    ('designation = "abc"\n', "designation = 'abc'"),
+    ('bore_mm = 45.0\n', "outside_mm"),
+])
+def test_bad_bearing_tables_exit_2_with_one_line(capsys, seed_toml, write_file, table,
+                                                  needle):
+    path = write_file(seed_toml + "[bearing]\n" + table, "bad.toml")
+    code, out, err = run(capsys, ["evaluate", str(path)])
+    assert code == 2 and out == ""
+    assert needle in err and "Traceback" not in err and len(err.strip().splitlines()) == 1

@@ -3,12 +3,16 @@
 Tables: :func:`markdown_table` (a DataFrame) or :func:`markdown_rows` (ready-made
 cells) as Markdown pipe tables, :func:`write_tables` for the CSVs. Figures:
 :func:`new_figure` draws on the Agg canvas outside pyplot (no global backend,
-safe in worker processes) and :func:`save_figure` writes the PNG.
+safe in worker processes) and :func:`save_figure` writes the PNG. Every file is
+written atomically (:mod:`oilgap.model.files`: a temporary file, then a rename), so
+a failure never leaves half a file; :func:`write_text` is the form for Markdown and
+JSON.
 """
 
 from __future__ import annotations
 
 import math
+import re
 from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
@@ -17,18 +21,35 @@ import numpy as np
 import pandas as pd
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.text import Text
 
 from oilgap.model.errors import InputError
+from oilgap.model.files import atomic_savefig, atomic_to_csv, atomic_write_text
 
 DPI = 120
 """Resolution of the studies' PNG figures [dots per inch]."""
 
 
+_TAG_OPEN = re.compile(r"<(?=[A-Za-z/!?])")
+"""A ``<`` that opens raw HTML in Markdown (a tag, a comment, a declaration)."""
+
+
+def markdown_cell(x: Any) -> str:
+    """One table cell as text that cannot break its table or inject HTML: on one line,
+    ``|`` escaped (GitHub splits cells on it even inside code spans), a ``<`` that would
+    open an HTML tag written as ``&lt;`` outside a code span (``nu < 13`` stays as is)."""
+    text = " ".join(str(x).splitlines())
+    if not (len(text) >= 2 and text[0] == "`" and text[-1] == "`"):
+        text = _TAG_OPEN.sub("&lt;", text)
+    return text.replace("|", "\\|")
+
+
 def markdown_rows(header: Sequence[Any], rows: Sequence[Sequence[Any]]) -> str:
-    """A Markdown pipe table of ready-made cells (each written with ``str``)."""
-    out = ["| " + " | ".join(str(c) for c in header) + " |",
+    """A Markdown pipe table of ready-made cells (each written with ``str``, escaped by
+    :func:`markdown_cell`)."""
+    out = ["| " + " | ".join(markdown_cell(c) for c in header) + " |",
            "|" + "|".join("---" for _ in header) + "|"]
-    out += ["| " + " | ".join(str(x) for x in r) + " |" for r in rows]
+    out += ["| " + " | ".join(markdown_cell(x) for x in r) + " |" for r in rows]
     return "\n".join(out)
 
 
@@ -47,13 +68,15 @@ def markdown_table(df: pd.DataFrame, digits: int = 2) -> str:
 
 
 def write_tables(out: Path, tables: dict[str, pd.DataFrame]) -> list[Path]:
-    """Write each named DataFrame as ``out/<name>`` CSV (no index); return the paths."""
+    """Write each named DataFrame as ``out/<name>`` CSV (no index), atomically; return
+    the paths."""
     out.mkdir(parents=True, exist_ok=True)
-    paths = []
-    for name, df in tables.items():
-        df.to_csv(out / name, index=False)
-        paths.append(out / name)
-    return paths
+    return [atomic_to_csv(df, out / name, index=False) for name, df in tables.items()]
+
+
+def write_text(path: Path, text: str) -> Path:
+    """Write a text output (Markdown, JSON) atomically, UTF-8; return the path."""
+    return atomic_write_text(path, text)
 
 
 def write_data_csv(df: pd.DataFrame, path: str | Path) -> Path:
@@ -65,8 +88,7 @@ def write_data_csv(df: pd.DataFrame, path: str | Path) -> Path:
     path = Path(path)
     if not path.parent.is_dir():
         raise InputError("--out", str(path), f"directory {str(path.parent)!r} does not exist")
-    df.to_csv(path, index=False, float_format="%.7g")
-    return path
+    return atomic_to_csv(df, path, index=False, float_format="%.7g")
 
 
 def new_figure(width: float = 7.5, height: float = 4.8, ncols: int = 1, nrows: int = 1,
@@ -83,8 +105,10 @@ def new_figure(width: float = 7.5, height: float = 4.8, ncols: int = 1, nrows: i
 
 
 def save_figure(fig: Figure, path: Path, dpi: int = DPI) -> Path:
-    """Save a figure made by :func:`new_figure` as PNG (tight layout); return the path."""
+    """Save a figure made by :func:`new_figure` as PNG (tight layout), atomically; return
+    the path."""
     path.parent.mkdir(parents=True, exist_ok=True)
+    for text in fig.findobj(Text):  # names are drawn as written: "$" is no mathtext
+        text.set_parse_math(False)
     fig.tight_layout()
-    fig.savefig(path, dpi=dpi)
-    return path
+    return atomic_savefig(fig, path, dpi=dpi)

@@ -11,15 +11,22 @@ returns one result row per grid row.
 * Robustness: a point that fails (a geometry the case refuses, a solver
   failure) is a row with ``status = "error"`` and its message in ``error``;
   the sweep goes on.
-* Resumable: with ``out_dir``, each finished chunk is appended to
-  ``out_dir/points_<mode>.csv`` (:mod:`oilgap.studies.grid.store`); a rerun
-  with the same folder computes only the points not in that file.
+* Resumable: with ``out_dir``, each finished chunk is stored at once, whole or not
+  at all, and folded into ``out_dir/points_<mode>.csv``
+  (:mod:`oilgap.studies.grid.store`); a rerun with the same folder checks the
+  store (partial rows dropped and counted) and computes only the points not in it.
+* One run per folder: ``out_dir`` is locked for the run
+  (:class:`oilgap.model.result_folder.FolderLock`); a second run is refused.
+* Ctrl-C: the workers ignore SIGINT; the pool is stopped and its workers ended, and
+  ``KeyboardInterrupt`` reaches the caller alone (no worker tracebacks).
 """
 
 from __future__ import annotations
 
+import contextlib
 import math
 import os
+import signal
 import sys
 import time
 import warnings
@@ -34,13 +41,23 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.files import OutputError, atomic_to_csv
 from oilgap.model.joint_loss import default_thermal_mode, resolve_thermal_mode
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
+from oilgap.model.result_folder import FolderLock
 from oilgap.studies.grid.columns import THERMAL_COLUMNS, result_columns
 from oilgap.studies.grid.evaluate import evaluate_chunk
 from oilgap.studies.grid.optimize import nlp_thermal_modes, optimize_chunk
 from oilgap.studies.grid.schema import WHERE, check_thermal_columns, validate_grid
-from oilgap.studies.grid.store import append_points, finished_points, point_keys, points_path
+from oilgap.studies.grid.store import (
+    append_points,
+    chunks_dir,
+    finished_points,
+    fold_chunks,
+    point_keys,
+    points_path,
+    repair_store,
+)
 
 DEFAULT_EVAL_CHUNK = 1000
 """Rows per chunk in evaluate mode (vectorised inside a chunk)."""
@@ -81,6 +98,13 @@ class Progress:
         if self.enabled and (now - self._last >= self.min_interval_s or self.done >= self.total):
             self._last = now
             self.stream.write("\r" + self.line())
+            self.stream.flush()
+
+    def abort(self) -> None:
+        """End the line where it stands (a failure or Ctrl-C: the message that follows
+        starts on a line of its own)."""
+        if self.enabled and self._last >= 0:
+            self.stream.write("\n")
             self.stream.flush()
 
     def close(self) -> None:
@@ -167,15 +191,29 @@ def _chunk_size(chunk_size: int | None, mode: str, n: int, workers: int) -> int:
     return max(1, int(chunk_size))
 
 
-def _open_store(out_dir: str | Path | None, mode: str, retry_failed: bool
-                ) -> tuple[Path | None, dict[str, dict]]:
-    """The points file in ``out_dir`` (created) and the points already finished there;
-    (None, {}) without ``out_dir``."""
+def _open_store(out_dir: str | Path | None, mode: str, retry_failed: bool,
+                stack: contextlib.ExitStack) -> tuple[Path | None, dict[str, dict]]:
+    """The points file in ``out_dir`` (created and locked for the run; the lock is
+    released by ``stack``), checked (:func:`repair_store`), and the points already
+    finished there; (None, {}) without ``out_dir``."""
     if out_dir is None:
         return None, {}
-    Path(out_dir).mkdir(parents=True, exist_ok=True)
     store = points_path(out_dir, mode)
+    new = [] if Path(out_dir).is_dir() else [Path(out_dir)]
+    try:
+        Path(out_dir).mkdir(parents=True, exist_ok=True)
+    except OSError as e:
+        raise OutputError(out_dir, e) from None
+    for d in (*new, chunks_dir(store)):  # after the lock is released: empty folders go
+        stack.callback(_rmdir_if_empty, d)
+    stack.enter_context(FolderLock(out_dir, "out_dir"))
+    repair_store(store, mode)
     return store, finished_points(store, mode, retry_failed)
+
+
+def _rmdir_if_empty(d: Path) -> None:
+    with contextlib.suppress(OSError):
+        d.rmdir()
 
 
 def _todo(keys: list[str], grid: pd.DataFrame, done: Mapping[str, dict]
@@ -194,16 +232,28 @@ def _todo(keys: list[str], grid: pd.DataFrame, done: Mapping[str, dict]
 
 def _execute(tasks: list[tuple[list[str], list[dict]]], mode: str, base: DesignCase,
              catalogue: Mapping[str, Oil] | None, workers: int,
-             finish: Callable[[list[str], list[dict]], None], thermal: str = "none") -> None:
+             finish: Callable[[list[str], list[dict]], None], thermal: str = "none",
+             on_abort: Callable[[], None] | None = None) -> None:
     """Run the tasks here (one worker or one task) or on a process pool; ``finish`` each
-    chunk as it completes."""
+    chunk as it completes; ``on_abort`` when a failure or Ctrl-C stops them."""
+    try:
+        _run_tasks(tasks, mode, base, catalogue, workers, finish, thermal)
+    except BaseException:
+        if on_abort is not None:
+            on_abort()
+        raise
+
+
+def _run_tasks(tasks, mode, base, catalogue, workers, finish, thermal) -> None:
     if not tasks:
         return
     if workers == 1 or len(tasks) == 1:
         for ks, rows in tasks:
             finish(ks, run_chunk(mode, base, rows, catalogue, thermal))
         return
-    with ProcessPoolExecutor(max_workers=min(workers, len(tasks))) as ex:
+    ex = ProcessPoolExecutor(max_workers=min(workers, len(tasks)),
+                             initializer=_ignore_sigint)
+    try:
         futs = {ex.submit(run_chunk, mode, base, rows, catalogue, thermal): ks
                 for ks, rows in tasks}
         pending = set(futs)
@@ -211,6 +261,29 @@ def _execute(tasks: list[tuple[list[str], list[dict]]], mode: str, base: DesignC
             fin, pending = wait(pending, return_when=FIRST_COMPLETED)
             for f in fin:
                 finish(futs[f], f.result())
+    except BaseException:
+        _stop_pool(ex)
+        raise
+    ex.shutdown(wait=True)
+
+
+def _ignore_sigint() -> None:
+    """Worker initializer: Ctrl-C goes to the whole process group; the parent alone
+    handles it (no traceback per worker)."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _stop_pool(ex: ProcessPoolExecutor) -> None:
+    """Stop a pool at once: pending chunks cancelled, running workers ended (their
+    chunks are not stored; a rerun computes them)."""
+    procs = list((getattr(ex, "_processes", None) or {}).values())
+    ex.shutdown(wait=False, cancel_futures=True)
+    for p in procs:
+        with contextlib.suppress(Exception):
+            p.terminate()
+    for p in procs:
+        with contextlib.suppress(Exception):
+            p.join(5)
 
 
 def _assemble(grid: pd.DataFrame, keys: list[str], done: Mapping[str, dict],
@@ -330,19 +403,21 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
     catalogue = _catalogue(grid, base, catalogue)
     workers = _check_workers(workers)
     keys = point_keys(grid, base, mode, {"thermal": thermal})
-    store, done = _open_store(out_dir, mode, retry_failed)
-    todo_keys, todo_rows = _todo(keys, grid, done)
-    n = len(todo_rows)
-    chunk_size = _chunk_size(chunk_size, mode, n, workers)
-    bar = _bar(len(keys), n, label, progress)
-    finish = _finisher(done, store, mode, bar, on_chunk)
-    tasks = list(zip(chunks(todo_keys, chunk_size), chunks(todo_rows, chunk_size),
-                     strict=True))
-    _execute(tasks, mode, base, catalogue, workers, finish, thermal)
-    bar.close()
-    result = _assemble(grid, keys, done, mode)
-    result.attrs.update(thermal_mode=thermal, thermal_default=by_default, computed=n,
-                        reused=len(keys) - n, elapsed_s=time.perf_counter() - bar.t0)
-    if out_dir is not None:
-        result.to_csv(Path(out_dir) / "results.csv", index=False)
+    with contextlib.ExitStack() as stack:
+        store, done = _open_store(out_dir, mode, retry_failed, stack)
+        todo_keys, todo_rows = _todo(keys, grid, done)
+        n = len(todo_rows)
+        chunk_size = _chunk_size(chunk_size, mode, n, workers)
+        bar = _bar(len(keys), n, label, progress)
+        finish = _finisher(done, store, mode, bar, on_chunk)
+        tasks = list(zip(chunks(todo_keys, chunk_size), chunks(todo_rows, chunk_size),
+                         strict=True))
+        _execute(tasks, mode, base, catalogue, workers, finish, thermal, bar.abort)
+        bar.close()
+        result = _assemble(grid, keys, done, mode)
+        result.attrs.update(thermal_mode=thermal, thermal_default=by_default, computed=n,
+                            reused=len(keys) - n, elapsed_s=time.perf_counter() - bar.t0)
+        if store is not None:
+            fold_chunks(store, mode)
+            atomic_to_csv(result, Path(out_dir) / "results.csv", index=False)
     return result

@@ -1,17 +1,30 @@
 """The resumable store: point keys and the ``points_<mode>.csv`` file of finished points.
 
 Each grid row's key is a hash of (engine version, mode, base case, row
-parameters); each finished chunk is appended to ``out_dir/points_<mode>.csv``
-under those keys, and a rerun with the same folder computes only the points
-not in that file.
+parameters); a rerun with the same folder computes only the points not in the
+store. Crash-safe: each finished chunk is written atomically as a file of its own
+in ``points_<mode>.chunks/`` (whole or absent, never a partial row), and the
+chunks are folded into ``points_<mode>.csv`` (written atomically) at the end of a
+run, or at the start of the next one after a kill. Before a run resumes, every row
+is checked (:func:`repair_store`): a partial or invalid row (a file cut short by a
+full disk, an older writer) is dropped, counted in a warning, and computed again.
 """
 
 from __future__ import annotations
 
+import contextlib
+import csv
 import hashlib
+import io
+import itertools
 import json
+import os
+import re
+import time
+import warnings
 import weakref
 from collections.abc import Mapping
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -20,11 +33,16 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import case_to_dict
-from oilgap.model.errors import InputError
+from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.files import OutputError, atomic_to_csv, atomic_write_text
+from oilgap.model.result_folder import LOCK_NAME
 from oilgap.studies.grid.columns import ENGINE_VERSION, result_columns
 from oilgap.studies.grid.schema import WHERE, is_missing
 
 _FINGERPRINTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
+_KEY = re.compile(r"[0-9A-Za-z_-]+")
+_SEQ = itertools.count()
+_DTYPES = {"point_key": str, "status": str, "error": str, "warning": str, "thermal_mode": str}
 
 
 def case_fingerprint(case: DesignCase) -> str:
@@ -72,25 +90,121 @@ def points_path(out_dir: str | Path, mode: str) -> Path:
     return Path(out_dir) / f"points_{mode}.csv"
 
 
+def store_files(sub: str = "") -> tuple[str, ...]:
+    """The files of a store in folder ``sub`` (``""`` or ``"grid/"``) as glob patterns
+    relative to a result folder: what ``--force`` removes."""
+    lock = (f"{sub}{LOCK_NAME}",) if sub else ()  # a subfolder's lock left by a killed run
+    return (f"{sub}points_*.csv", f"{sub}points_*.chunks/*.csv",
+            f"{sub}points_*.chunks/.*.tmp", f"{sub}results.csv", *lock)
+
+
+def chunks_dir(path: Path) -> Path:
+    """The folder of the chunk files not yet folded into ``path``:
+    ``points_<mode>.chunks/`` beside it."""
+    return path.with_name(path.stem + ".chunks")
+
+
+# --------------------------------------------------------------------------- reading
+
+
+@dataclass
+class _Rows:
+    """The rows of one points file: header fields, the valid data lines (each ending in a
+    newline) and the number of partial or invalid rows left out."""
+
+    header: list[str] | None
+    lines: list[str]
+    dropped: int
+
+
+def _read_rows(path: Path) -> _Rows:
+    """The rows of a points file, checked line by line.
+
+    A row is valid when it ends in a newline (a row cut short by a full disk or a kill
+    does not), has as many fields as the header, a key and a status ``ok``/``error``.
+
+    Raises
+    ------
+    InputError
+        The header holds no ``point_key`` (oilgap did not write the file).
+    """
+    text = path.read_bytes().decode("utf-8", errors="replace")
+    parts = text.split("\n")
+    complete, tail = parts[:-1], parts[-1]
+    if not complete:  # not even a whole header line: a file cut short at its start
+        return _Rows(None, [], 1 if tail.strip() else 0)
+    header = next(csv.reader([complete[0]]))
+    if "point_key" not in header:
+        raise InputError("out_dir", str(path), "holds a points file oilgap did not write; "
+                         "choose another --out", WHERE)
+    ik = header.index("point_key")
+    ist = header.index("status") if "status" in header else None
+    good, bad = [], 1 if tail.strip() else 0
+    for line in complete[1:]:
+        if not line.strip():
+            continue
+        try:
+            fields = next(csv.reader([line]))
+        except csv.Error:
+            fields = []
+        if (len(fields) == len(header) and _KEY.fullmatch(fields[ik])
+                and (ist is None or fields[ist] in ("ok", "error"))):
+            good.append(line + "\n")
+        else:
+            bad += 1
+    return _Rows(header, good, bad)
+
+
+def _chunk_files(path: Path) -> list[Path]:
+    """The chunk files waiting to be folded into ``path``, oldest first."""
+    d = chunks_dir(path)
+    return sorted(d.glob("*.csv")) if d.is_dir() else []
+
+
+def _frame(header: list[str], lines: list[str], mode: str) -> pd.DataFrame:
+    """Rows (with their header) as a DataFrame with today's columns."""
+    cols = ["point_key", *result_columns(mode)]
+    if not lines:
+        return pd.DataFrame(columns=cols)
+    text = ",".join(_quote(h) for h in header) + "\n" + "".join(lines)
+    df = pd.read_csv(io.StringIO(text), dtype=_DTYPES)
+    return df.reindex(columns=cols) if list(df.columns) != cols else df
+
+
+def _quote(field: str) -> str:
+    return f'"{field}"' if any(c in field for c in ',"\n') else field
+
+
+def read_store(path: Path, mode: str) -> tuple[pd.DataFrame, int]:
+    """The finished points of a store (its file and any chunk files not yet folded in)
+    and how many partial or invalid rows were left out.
+
+    Raises
+    ------
+    InputError
+        A file holds no ``point_key`` column (oilgap did not write it).
+    """
+    frames, dropped = [], 0
+    for f in ([path] if path.is_file() else []) + _chunk_files(path):
+        rows = _read_rows(f)
+        dropped += rows.dropped
+        if rows.header is not None and rows.lines:
+            frames.append(_frame(rows.header, rows.lines, mode))
+    if not frames:
+        return pd.DataFrame(columns=["point_key", *result_columns(mode)]), dropped
+    return pd.concat(frames, ignore_index=True) if len(frames) > 1 else frames[0], dropped
+
+
 def load_points(path: Path, mode: str) -> pd.DataFrame:
-    """The finished points stored at ``path`` (an empty frame if there is no file yet).
+    """The finished points stored at ``path`` (an empty frame if there is no file yet);
+    partial or invalid rows are left out (:func:`repair_store` says how many).
 
     Raises
     ------
     InputError
         The file holds no ``point_key`` column (oilgap did not write it).
     """
-    if not path.is_file():
-        return pd.DataFrame(columns=["point_key", *result_columns(mode)])
-    try:
-        df = pd.read_csv(path, dtype={"point_key": str, "status": str, "error": str,
-                                      "warning": str, "thermal_mode": str})
-    except pd.errors.EmptyDataError:
-        return pd.DataFrame(columns=["point_key", *result_columns(mode)])
-    if "point_key" not in df.columns:
-        raise InputError("out_dir", str(path), "holds a points file oilgap did not write; "
-                         "choose another --out", WHERE)
-    return df
+    return read_store(path, mode)[0]
 
 
 def finished_points(path: Path, mode: str, retry_failed: bool = False) -> dict[str, dict]:
@@ -103,18 +217,75 @@ def finished_points(path: Path, mode: str, retry_failed: bool = False) -> dict[s
     return done
 
 
-def append_points(path: Path, keys: list[str], recs: list[dict], mode: str) -> None:
-    """Append finished points (one chunk) to the points file, with a header if new; a file
-    written by an older engine (other columns) is rewritten with today's columns first."""
+# --------------------------------------------------------------------------- writing
+
+
+def _clean_text(v: Any) -> Any:
+    """A message cell on one line (a row of the store is one line)."""
+    return " ".join(v.splitlines()) if isinstance(v, str) else v
+
+
+def append_points(path: Path, keys: list[str], recs: list[dict], mode: str) -> Path:
+    """Store finished points (one chunk) as a chunk file of their own, written
+    atomically (temporary file, then rename) into ``points_<mode>.chunks/``: a crash,
+    a kill or a full disk leaves the chunk whole or absent, never a partial row.
+    :func:`fold_chunks` later folds the chunk files into ``path``. Returns the chunk
+    file."""
     cols = result_columns(mode)
-    df = pd.DataFrame([{c: r.get(c) for c in cols} for r in recs], columns=list(cols))
+    df = pd.DataFrame([{c: _clean_text(r.get(c)) for c in cols} for r in recs],
+                      columns=list(cols))
     df.insert(0, "point_key", keys)
-    new = not path.is_file() or path.stat().st_size == 0
-    if not new:
-        with path.open(encoding="utf-8") as f:
-            header = f.readline().strip().split(",")
-        if header != list(df.columns):
-            old = load_points(path, mode).reindex(columns=df.columns)
-            df = pd.concat([old, df], ignore_index=True)
-            new = True
-    df.to_csv(path, mode="w" if new else "a", header=new, index=False)
+    d = chunks_dir(path)
+    try:
+        d.mkdir(exist_ok=True)
+    except OSError as e:
+        raise OutputError(d, e) from None
+    name = f"{time.time_ns():020d}-{os.getpid()}-{next(_SEQ):06d}.csv"
+    return atomic_to_csv(df, d / name, neutralise=False, index=False)
+
+
+def fold_chunks(path: Path, mode: str) -> int:
+    """Fold the chunk files into ``path`` and drop partial or invalid rows; returns how
+    many rows were dropped.
+
+    The new points file is written atomically (:func:`oilgap.model.files.atomic_write`)
+    before the chunk files are removed: a crash in between leaves rows twice, which
+    reads the same (the last row of a key wins). A file written by an older engine
+    (other columns) is rewritten with today's columns.
+    """
+    chunks = _chunk_files(path)
+    files = ([path] if path.is_file() else []) + chunks
+    rows = [_read_rows(f) for f in files]
+    dropped = sum(r.dropped for r in rows)
+    cols = ["point_key", *result_columns(mode)]
+    same = all(r.header in (None, cols) for r in rows)
+    if chunks or dropped or not same:
+        if same:
+            text = ",".join(cols) + "\n" + "".join(x for r in rows for x in r.lines)
+            atomic_write_text(path, text)
+        else:
+            frames = [_frame(r.header, r.lines, mode) for r in rows if r.header is not None]
+            atomic_to_csv(pd.concat(frames, ignore_index=True) if frames
+                          else pd.DataFrame(columns=cols), path, neutralise=False, index=False)
+    d = chunks_dir(path)
+    for f in chunks + (sorted(d.glob(".*.tmp")) if d.is_dir() else []):
+        with contextlib.suppress(OSError):
+            f.unlink()
+    with contextlib.suppress(OSError):
+        d.rmdir()
+    return dropped
+
+
+def repair_store(path: Path, mode: str) -> int:
+    """Check a store before a run resumes it: chunk files of a run that was cut short
+    folded in, partial or invalid rows dropped (an OilgapWarning says how many: those
+    points are computed again); returns that number."""
+    if not path.is_file() and not chunks_dir(path).is_dir():
+        return 0
+    dropped = fold_chunks(path, mode)
+    if dropped:
+        warnings.warn(OilgapWarning(
+            f"{path}: {dropped} partial or invalid row{'s' if dropped > 1 else ''} "
+            "dropped (a run cut short by a full disk, a crash or a kill); "
+            f"{'they are' if dropped > 1 else 'it is'} computed again"), stacklevel=2)
+    return dropped

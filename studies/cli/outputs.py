@@ -1,0 +1,89 @@
+"""What the commands write, and how: the outputs of each result folder, the folder opened
+before any computation, and IPOPT's log kept off stdout.
+
+* Every command that writes checks its ``--out`` first (before reading big inputs or
+  computing): :func:`out_folder` for the folder commands (``study ...``, ``loop``),
+  :func:`oilgap.model.files.check_out_file` for the one-file commands (``optimize
+  --out``, ``predict``, ``synth``). An existing output is refused unless ``--force``
+  (or ``--resume`` for a sweep).
+* The outputs of each folder command are listed here (:data:`OUTPUTS`): ``--force``
+  removes exactly these (never anything else in the folder) before the new run
+  writes, so old and new outputs never sit side by side.
+* :func:`solver_log_to_stderr` sends what a solver prints (IPOPT's iterations) to
+  stderr, so that ``--json`` on stdout stays one JSON document.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+import ctypes
+import os
+import sys
+from collections.abc import Iterator
+from pathlib import Path
+
+from oilgap.model.result_folder import ResultFolder
+from oilgap.studies.grid.store import store_files
+
+OUTPUTS: dict[str, tuple[str, ...]] = {
+    "loop": ("loop.json", "report.md", "measured_vs_model.png", "residual_vs_speed.png",
+             "residual_vs_time.png"),
+    "study sweep": ("summary.md", "sweep.png", *store_files()),
+    "study smoothing": ("smoothing_table4.csv", "smoothing_fits.csv",
+                        "smoothing_loss_vs_T.csv", "smoothing_plateau.csv",
+                        "smoothing_run_temps.csv", "smoothing_table4.png",
+                        "smoothing_loss_vs_T.png", "summary.md", *store_files("grid/")),
+    "study pareto": ("pareto_gap.csv", "pareto_inertia.csv", "pareto_seeds.csv",
+                     "pareto_gap.png", "pareto_inertia.png", "summary.md",
+                     *store_files("grid_gap/"), *store_files("grid_inertia/")),
+    "study oil-grade": ("oil_grade_table.csv", "oil_grade_envelope.csv",
+                        "oil_grade_rated.csv", "oil_grade_isothermal_table.csv",
+                        "oil_grade_thermal_comparison.csv", "oil_grade.json",
+                        "oil_grade_heatmap.png", "oil_grade_loss_vs_grade.png",
+                        "oil_grade_thermal.png", "summary.md", *store_files("grid/"),
+                        *store_files("grid_isothermal/")),
+}
+"""The files each folder command writes (names or glob patterns relative to ``--out``)."""
+
+SWEEP_HINT = "pass --resume to continue it or --force to start over"
+
+
+def out_folder(args: argparse.Namespace, out: str | Path, resume: bool = False
+               ) -> ResultFolder:
+    """The result folder of the command in ``args`` (not yet opened: use it as a context
+    manager, before any computation; call ``begin()`` when writing starts)."""
+    command = args.command
+    return ResultFolder(out, OUTPUTS[command], force=getattr(args, "force", False),
+                        resume=resume, command=f"oilgap {command}",
+                        hint=SWEEP_HINT if command == "study sweep"
+                        else "pass --force to replace them")
+
+
+def _flush_c_stdout() -> None:
+    """Flush C's stdio buffers (IPOPT prints through them)."""
+    with contextlib.suppress(Exception):
+        ctypes.CDLL(None).fflush(None)
+
+
+@contextlib.contextmanager
+def solver_log_to_stderr() -> Iterator[None]:
+    """While inside, what a solver prints goes to stderr: ``sys.stdout`` (CasADi writes
+    IPOPT's log through it) and file descriptor 1 (C code printing directly) both point
+    at stderr. Restored on exit."""
+    with contextlib.suppress(Exception):
+        sys.stdout.flush()
+    _flush_c_stdout()
+    try:
+        saved = os.dup(1)
+        os.dup2(2, 1)
+    except OSError:  # no fd 1 or 2 (a detached process): Python's stream only
+        saved = None
+    try:
+        with contextlib.redirect_stdout(sys.stderr):
+            yield
+    finally:
+        _flush_c_stdout()
+        if saved is not None:
+            os.dup2(saved, 1)
+            os.close(saved)

@@ -24,10 +24,23 @@ from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 from .bearing import BearingSpec
+from .case_limits import (
+    MAX_GAP_RATIO,
+    MAX_LENGTH_M,
+    MAX_RADIUS_M,
+    MAX_SLOT_COUNT,
+    MIN_GAP_M,
+    MOTOR_RANGES,
+    SLOT_COUNT_REASON,
+    check_gap,
+    check_motor_fits,
+    check_size,
+)
 from .duty_cycle import DutyCycle
 from .errors import InputError, check_positive, check_range
 from .film_heating import WALL_CONDITIONS
 from .fluids import Fluid
+from .inputs import check_physical
 from .skin_friction import FrictionLaw, groove_roughness
 from .units import MM_TO_M
 
@@ -71,12 +84,15 @@ class RotorStatorClearance:
         where = "region1"
         for f in ("T1", "T2", "T3", "T4", "length"):
             check_positive(_key(f), getattr(self, f), where)
+            check_size(_key(f), getattr(self, f), MAX_LENGTH_M if f == "length"
+                        else MAX_RADIUS_M, where)
         if self.T1_unfilled is None:
             object.__setattr__(self, "T1_unfilled", self.T1)
         if self.T4_unfilled is None:
             object.__setattr__(self, "T4_unfilled", self.T4)
         check_positive("T1_unfilled_mm", self.T1_unfilled / MM_TO_M, where)
         check_positive("T4_unfilled_mm", self.T4_unfilled / MM_TO_M, where)
+        check_size("T4_unfilled_mm", self.T4_unfilled, MAX_RADIUS_M, where)
         mm = 1.0 / MM_TO_M
         if self.T3 <= self.T2:
             raise InputError("T3_mm", self.T3 * mm, f"the gap T3 - T2 must be > 0 "
@@ -95,6 +111,7 @@ class RotorStatorClearance:
                              f"must be >= T4_mm = {self.T4 * mm:g} (fill only lowers it)", where)
         if self.roughness < 1.0:
             raise InputError("T", self.roughness, "roughness (T4-T1)/(T3-T2) must be >= 1", where)
+        check_gap("T3_mm", self.T3 * mm, self.gap, self.T2, "T2_mm", where)
 
     @property
     def gap(self) -> float:
@@ -133,6 +150,9 @@ class BearingClearance:
     def __post_init__(self):
         for f in ("radius", "length", "gap"):
             check_positive(f + "_mm", getattr(self, f) / MM_TO_M, "region2")
+            check_size(f + "_mm", getattr(self, f), MAX_LENGTH_M if f == "length"
+                        else MAX_RADIUS_M, "region2")
+        check_gap("gap_mm", self.gap / MM_TO_M, self.gap, self.radius, "radius_mm", "region2")
 
 
 @dataclass(frozen=True)
@@ -186,16 +206,18 @@ class Motor:
 
     def __post_init__(self):
         where = "motor"
+        v = self.slot_count
+        if isinstance(v, bool) or not isinstance(v, int) or not 1 <= v <= MAX_SLOT_COUNT:
+            raise InputError("slot_count", v, f"must be an integer from 1 to {MAX_SLOT_COUNT} "
+                             f"({SLOT_COUNT_REASON})", where)
         for f in fields(self):
-            v = getattr(self, f.name)
-            if f.name == "slot_count":
-                if isinstance(v, bool) or not isinstance(v, int) or v < 1:
-                    raise InputError("slot_count", v, "must be an integer >= 1", where)
-            elif f.name in ("rotor_groove_solid_fraction", "gear_efficiency"):
-                check_range(f.name, v, 0.0, 1.0, where)
-            else:
-                check_positive(MOTOR_FIELD_TO_KEY.get(f.name, f.name),
-                               motor_value_in_toml_units(f.name, v), where)
+            if f.name in MOTOR_RANGES:
+                lo, hi, lo_open, reason = MOTOR_RANGES[f.name]
+                check_physical(MOTOR_FIELD_TO_KEY.get(f.name, f.name),
+                               motor_value_in_toml_units(f.name, getattr(self, f.name)),
+                               lo, hi, reason, where, lo_open)
+
+
 
 
 @dataclass(frozen=True)
@@ -254,13 +276,21 @@ class DesignBounds:
             b = check_positive(hi + "_mm", getattr(self, hi) * mm, where)
             if b < a:
                 raise InputError(hi + "_mm", b, f"must be >= {lo}_mm = {a:g}", where)
+            check_size(hi + "_mm", getattr(self, hi), MAX_LENGTH_M if lo == "length_min"
+                        else MAX_RADIUS_M, where)
+        check_gap("gap_min_mm", self.gap_min * mm, self.gap_min, self.radius_min,
+                  "radius_min_mm", where)
+        check_gap("gap_max_mm", self.gap_max * mm, self.gap_max, self.radius_min,
+                  "radius_min_mm", where)
         check_positive("inertia_max_ratio", self.inertia_max_ratio, where)
         if self.torque_min_Nm is not None:
             check_positive("torque_min_Nm", self.torque_min_Nm, where)
 
     @classmethod
     def around(cls, region1: RotorStatorClearance) -> DesignBounds:
-        """Default bounds: gap x[0.5, 2], radius x[0.9, 1.1], length x[0.8, 1.2] of the given.
+        """Default bounds: gap x[0.5, 2], radius x[0.9, 1.1], length x[0.8, 1.2] of the given,
+        within the limits of :mod:`~oilgap.model.case_limits` (the gap from 1 um to the
+        smallest radius, the radius at most 2 m, the length at most 5 m).
 
         Parameters
         ----------
@@ -272,8 +302,11 @@ class DesignBounds:
         DesignBounds
             Bounds [m], inertia ratio 1.05 [-], no torque bound.
         """
-        return cls(0.5 * region1.gap, 2.0 * region1.gap, 0.9 * region1.radius,
-                   1.1 * region1.radius, 0.8 * region1.length, 1.2 * region1.length)
+        r_min = 0.9 * region1.radius
+        return cls(max(0.5 * region1.gap, MIN_GAP_M), min(2.0 * region1.gap,
+                                                          MAX_GAP_RATIO * r_min), r_min,
+                   min(1.1 * region1.radius, MAX_RADIUS_M), 0.8 * region1.length,
+                   min(1.2 * region1.length, MAX_LENGTH_M))
 
 
 @dataclass(frozen=True)
@@ -388,6 +421,10 @@ class DesignCase:
         The rolling bearing (``[bearing]``, :mod:`oilgap.model.bearing`), if given: its
         friction and drag are added to the regions' loss (region 2, the annulus, keeps
         its own term).
+    gamma_source : str
+        Where ``friction.gamma`` came from, for output headers: ``"case"`` (the
+        case's ``[friction]``), :data:`GAMMA_DEFAULT_SOURCE` (filled in by the reader)
+        or ``"given"`` (set in Python).
     """
 
     name: str
@@ -403,10 +440,12 @@ class DesignCase:
     oils_csv: str | None = None
     thermal: ThermalSpec | None = None
     bearing: BearingSpec | None = None
+    gamma_source: str = field(default="given", compare=False)
 
     def __post_init__(self):
         if self.bounds is None:
             object.__setattr__(self, "bounds", DesignBounds.around(self.region1))
+        check_motor_fits(self)
         if self.mission:
             total = sum(s.fraction for s in self.mission)
             if abs(total - 1.0) > 1e-6:
@@ -443,6 +482,15 @@ class DesignCase:
         return replace(self, region1=replace(self.region1, **radii_m))
 
 
+DEFAULT_GAMMA = 0.566
+"""Groove exponent gamma of Eq. 8 [-] for a case whose ``[friction]`` gives none: the seed
+rig's fit (``oilgap study smoothing``: 0.566 +- 0.041 on the seed's Table 4), the only
+evidence the tool has of what grooves cost; 0 would drop the grooves' loss (about 1.9x too
+low on the seed joint). A grooved case (T > 1) without gamma gets a warning."""
+GAMMA_DEFAULT_SOURCE = "default (seed rig fit)"
+"""``DesignCase.gamma_source`` of a case whose gamma is :data:`DEFAULT_GAMMA`."""
+
+
 # --------------------------------------------------------------------------- TOML key names
 # (the motor's SI fields and the TOML keys that carry their units)
 
@@ -477,5 +525,3 @@ def motor_value_in_toml_units(name: str, value: float) -> float:
 
 def _key(attr: str) -> str:
     return attr + "_mm"
-
-

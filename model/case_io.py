@@ -17,12 +17,15 @@ from __future__ import annotations
 import json
 import math
 import tomllib
+import warnings
 from dataclasses import fields, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from .case import (
+    DEFAULT_GAMMA,
+    GAMMA_DEFAULT_SOURCE,
     MOTOR_FIELD_TO_KEY,
     MOTOR_TOML_KEYS,
     THERMAL_TOML_KEYS,
@@ -38,11 +41,16 @@ from .case import (
 )
 from .case_bearing import BEARING_TABLE, bearing_from_doc, bearing_to_doc
 from .duty_cycle import DutyCycle
-from .errors import InputError, check_finite, check_range
+from .errors import InputError, OilgapWarning, check_finite, check_range
+from .files import atomic_write_text
 from .fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
+from .inputs import cell_for_message, read_input_text
 from .oils import Oil, builtin_oils, get_oil, normalize_oil_name, read_oils_csv
-from .skin_friction import FrictionLaw
+from .skin_friction import FrictionLaw, check_friction_ranges
 from .units import MM_TO_M, celsius_to_kelvin, kelvin_to_celsius
+
+MAX_CASE_BYTES = 16 * 2**20
+"""Largest case TOML file read [bytes] (16 MiB; the seed's is under 2 kB)."""
 
 # --------------------------------------------------------------------------- TOML schema
 
@@ -79,11 +87,18 @@ _GAS_CONSTANTS = {  # TOML key -> GasFluid field (SI: kg/mol, Pa s, K)
     "molar_mass_kg_per_mol": "molar_mass_kg_mol", "sutherland_mu_ref_Pa_s": "mu_ref_Pa_s",
     "sutherland_T_ref_K": "T_ref_K", "sutherland_S_K": "sutherland_S_K"}
 def _check_keys(table: dict, allowed: set[str], where: str) -> None:
+    """Refuse an unknown key by name. At the top level its value is not shown: a file
+    that is not a case at all (``oilgap evaluate ~/.config/x.toml``) is not echoed."""
     for k in table:
         if k not in allowed:
-            raise InputError(f"{where}.{k}" if where else k, table[k],
+            shown = table[k] if where else f"<{_toml_type(table[k])}>"
+            raise InputError(f"{where}.{k}" if where else k, cell_for_message(shown),
                              f"unknown key; allowed keys: {', '.join(sorted(allowed))}",
                              "case TOML")
+
+
+def _toml_type(v: Any) -> str:
+    return {dict: "a table", list: "an array", str: "a string"}.get(type(v), "a value")
 
 
 def _mm(table: dict, key: str, where: str, default: float | None = None) -> float | None:
@@ -142,16 +157,34 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     duty = _duty_cycle_from(dict(doc.get("duty_cycle", {})), base_dir)
 
     fd = doc.get("friction", {})
-    friction = FrictionLaw(**{k: (str(v) if k in ("form", "laminar_law")
-                                  else check_finite(k, v, "friction")) for k, v in fd.items()})
+    friction = check_friction_ranges(FrictionLaw(**{
+        k: (str(v) if k in ("form", "laminar_law") else check_finite(k, v, "friction"))
+        for k, v in fd.items()}))
     motor = _motor_from(doc.get("motor", {}))
     bounds = _bounds_from(doc, region1)
     mission = _mission_from(doc.get("mission", []))
     thermal = _thermal_from(doc["thermal"]) if "thermal" in doc else None
 
     name = str(doc.get("name", "unnamed case"))
+    friction, gamma_source = _gamma_default(fd, friction, region1)
     return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
-                      tuple(mission), oils_csv, thermal, bearing_from_doc(doc))
+                      tuple(mission), oils_csv, thermal, bearing_from_doc(doc), gamma_source)
+
+
+def _gamma_default(fd: dict, friction: FrictionLaw, region1: RotorStatorClearance
+                   ) -> tuple[FrictionLaw, str]:
+    """The law with DEFAULT_GAMMA where ``[friction]`` gives no gamma, and its source; a
+    warning when the default matters (grooves, T > 1)."""
+    if "gamma" in fd:
+        return friction, "case"
+    T = region1.roughness
+    if T > 1.0 + 1e-9:
+        warnings.warn(OilgapWarning(
+            f"[friction] gives no gamma: the groove exponent defaults to {DEFAULT_GAMMA:g}, "
+            "the seed rig's fit (oilgap study smoothing), the only evidence the tool has; "
+            f"this joint is grooved (T = {T:.3g}): give gamma in [friction] to use another"),
+            stacklevel=3)
+    return replace(friction, gamma=DEFAULT_GAMMA), GAMMA_DEFAULT_SOURCE
 
 
 def _thermal_from(td: dict) -> ThermalSpec:
@@ -213,7 +246,7 @@ def _mineral_from(od: dict, base_dir: Path, flag: bool | None) -> tuple[Oil, str
     if "oils_csv" in od:
         p = Path(str(od["oils_csv"]))
         p = p if p.is_absolute() else base_dir / p
-        catalogue = read_oils_csv(p)
+        catalogue = read_oils_csv(p, "oil.oils_csv")
         oils_csv = str(p)
     oil_name = str(od.get("name", "VG22"))
     own = [k for k in ("nu40_cSt", "nu100_cSt", "density_kg_m3") if k in od]
@@ -349,17 +382,16 @@ def read_case_toml(path: str | Path) -> DesignCase:
     Raises
     ------
     InputError
-        Missing file, malformed TOML, unknown keys, bad values.
+        A file that cannot be read (missing, a directory, unreadable, larger than
+        :data:`MAX_CASE_BYTES`, not UTF-8), malformed TOML, unknown keys, bad values;
+        the message names the file and the reason, never its content.
     """
     path = Path(path)
-    if not path.is_file():
-        raise InputError("case", str(path), "must be an existing TOML file")
+    text = read_input_text(path, "case", "TOML file", max_bytes=MAX_CASE_BYTES)
     try:
-        doc = tomllib.loads(path.read_text(encoding="utf-8"))
+        doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
         raise InputError("case TOML", str(path), f"is malformed: {e}") from None
-    except UnicodeDecodeError:
-        raise InputError("case TOML", str(path), "must be UTF-8 text") from None
     return case_from_dict(doc, path.parent)
 
 
@@ -524,8 +556,7 @@ def write_case_toml(case: DesignCase, path: str | Path) -> Path:
     """
     path = Path(path)
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(dumps_toml(case_to_dict(case)), encoding="utf-8")
-    return path
+    return atomic_write_text(path, dumps_toml(case_to_dict(case)))  # temp file + rename
 
 
 # --------------------------------------------------------------------------- the seed joint

@@ -19,16 +19,35 @@ References
 from __future__ import annotations
 
 import csv
+import io
 from dataclasses import dataclass, field
 from pathlib import Path
 
 import numpy as np
 
 from .errors import InputError, check_finite, check_positive
+from .inputs import cell_for_message, check_physical, header_error, read_input_text
 from .units import rpm_to_rad_s
 
 NODE_MERGE_RTOL = 1e-12
 """Relative tolerance (of the peak |omega|) within which samples share a node."""
+
+MAX_SAMPLES = 10_000_000
+"""Most samples a duty cycle may have [-]: a day sampled every 10 ms is 8.6e6. A cycle
+this long takes about 0.8 GB and a few seconds to reduce to its speed distribution; a
+longer record adds nothing to a mean over |omega| (resample it). Checked before the
+arrays are allocated."""
+
+SAMPLES_REASON = ("a day sampled every 10 ms is 8.6e6 samples; a longer record only "
+                  "costs memory, resample it")
+
+MAX_SPEED_RPM = 100_000.0
+"""Largest |speed| of a duty cycle [rpm]: above the fastest electric machines
+(high-speed spindles and turbo-compressor drives reach ~1e5 rpm); a larger number is a
+unit slip (rad/s x 100, rpm x 60)."""
+
+SPEED_REASON = ("faster than any electric machine (high-speed spindles reach ~1e5 rpm); "
+                "a larger number is a unit slip")
 
 
 @dataclass(frozen=True, eq=False)
@@ -64,13 +83,14 @@ class DutyCycle:
         Parameters
         ----------
         peak_speed_rpm : float
-            Peak speed [rpm], > 0.
+            Peak speed [rpm], in (0, :data:`MAX_SPEED_RPM`].
         frequency_hz : float
-            Frequency of the sine [Hz], > 0.
+            Frequency of the sine [Hz], > 0 and below the Nyquist frequency 1/(2 dt).
         duration_s : float
             Duration [s], > 0.
         sample_interval_s : float
-            Sample interval dt [s], > 0; at least two samples.
+            Sample interval dt [s], > 0; at least two and at most :data:`MAX_SAMPLES`
+            samples.
 
         Returns
         -------
@@ -80,19 +100,32 @@ class DutyCycle:
         Raises
         ------
         InputError
-            A non-positive value or fewer than two samples.
+            A value out of range, fewer than two or more than :data:`MAX_SAMPLES`
+            samples (refused before anything is allocated), a frequency the samples
+            cannot represent, or a cycle whose samples are all at rest.
         """
         where = "duty_cycle"
-        peak = check_positive("peak_speed_rpm", peak_speed_rpm, where)
+        peak = check_physical("peak_speed_rpm", peak_speed_rpm, 0.0, MAX_SPEED_RPM,
+                              SPEED_REASON, where, lo_open=True)
         f = check_positive("frequency_hz", frequency_hz, where)
         dur = check_positive("duration_s", duration_s, where)
         dt = check_positive("sample_interval_s", sample_interval_s, where)
-        n = int(round(dur / dt))
+        ratio = dur / dt
+        if not ratio <= MAX_SAMPLES:  # also inf: checked before anything is allocated
+            raise InputError("duration_s", duration_s, f"with sample_interval_s = {dt:g} s "
+                             f"this is {ratio:.3g} samples; at most {MAX_SAMPLES:.0e} "
+                             f"({SAMPLES_REASON})", where)
+        n = int(round(ratio))
         if n < 2:
             raise InputError("duration_s", duration_s,
                              f"must hold at least 2 samples of {dt:g} s", where)
+        if not 2.0 * f * dt < 1.0:
+            raise InputError("frequency_hz", frequency_hz, f"must be below 1/(2 "
+                             f"sample_interval_s) = {0.5 / dt:g} Hz: samples every {dt:g} s "
+                             "cannot represent a faster sine (Nyquist)", where)
         t = np.arange(n) * dt
         w = rpm_to_rad_s(peak) * np.sin(2.0 * np.pi * f * t)
+        _refuse_at_rest(w, "frequency_hz", f, where)
         return cls(t, w, f"{peak:g} rpm * sin(2 pi {f:g} Hz t), {n} samples every {dt:g} s",
                    {"kind": "sine", "peak_speed_rpm": peak, "frequency_hz": f,
                     "duration_s": dur, "sample_interval_s": dt})
@@ -104,7 +137,8 @@ class DutyCycle:
         Parameters
         ----------
         path : str or Path
-            CSV with columns ``time_s`` [s] and ``speed_rpm`` [rpm] (signed).
+            UTF-8 CSV with columns ``time_s`` [s] and ``speed_rpm`` [rpm] (signed,
+            |speed| <= :data:`MAX_SPEED_RPM`), 2 to :data:`MAX_SAMPLES` rows.
 
         Returns
         -------
@@ -114,24 +148,29 @@ class DutyCycle:
         Raises
         ------
         InputError
-            Missing file or column, non-finite values, time not strictly increasing,
-            fewer than two rows.
+            A file that cannot be read (missing, a directory, unreadable, not UTF-8),
+            missing columns, non-finite or out-of-range values, time not strictly
+            increasing, fewer than two or more than :data:`MAX_SAMPLES` rows, or every
+            speed 0. No message repeats the file's content but a bad cell.
         """
         path = Path(path)
         where = str(path)
-        if not path.is_file():
-            raise InputError("duty_cycle.csv", str(path), "must be an existing CSV file")
-        with path.open(newline="", encoding="utf-8") as fh:
-            reader = csv.DictReader(fh)
-            cols = reader.fieldnames or []
-            missing = [c for c in ("time_s", "speed_rpm") if c not in cols]
-            if missing:
-                raise InputError("columns", cols, f"missing {missing}; required "
-                                 "['time_s', 'speed_rpm']", where)
-            t, s = [], []
-            for i, row in enumerate(reader, start=2):
-                t.append(check_finite("time_s", _num(row["time_s"]), f"{where} line {i}"))
-                s.append(check_finite("speed_rpm", _num(row["speed_rpm"]), f"{where} line {i}"))
+        text = read_input_text(path, "duty_cycle.csv", "CSV file")
+        reader = csv.DictReader(io.StringIO(text, newline=""))
+        cols = [c.strip() for c in (reader.fieldnames or [])]
+        err = header_error(path, cols, ("time_s", "speed_rpm"))
+        if err is not None:
+            raise err
+        reader.fieldnames = cols
+        t, s = [], []
+        for i, row in enumerate(reader, start=2):
+            if len(t) >= MAX_SAMPLES:
+                raise InputError("rows", f"more than {MAX_SAMPLES:.0e}", f"at most "
+                                 f"{MAX_SAMPLES:.0e} samples ({SAMPLES_REASON})", where)
+            rw = f"{where} line {i}"
+            t.append(check_finite("time_s", cell_for_message(row["time_s"]), rw))
+            s.append(check_physical("speed_rpm", cell_for_message(row["speed_rpm"]),
+                                    -MAX_SPEED_RPM, MAX_SPEED_RPM, SPEED_REASON, rw))
         if len(t) < 2:
             raise InputError("rows", len(t), "a duty cycle needs at least 2 samples", where)
         t_arr = np.asarray(t)
@@ -140,8 +179,9 @@ class DutyCycle:
             i = int(bad[0]) + 1
             raise InputError("time_s", t[i], f"must increase strictly (line {i + 2} follows "
                              f"{t[i - 1]:g})", where)
-        return cls(t_arr, rpm_to_rad_s(np.asarray(s)), f"{path.name}, {len(t)} samples",
-                   {"kind": "csv", "csv": str(path)})
+        w = rpm_to_rad_s(np.asarray(s))
+        _refuse_at_rest(w, "speed_rpm", 0.0, where)
+        return cls(t_arr, w, f"{path.name}, {len(t)} samples", {"kind": "csv", "csv": str(path)})
 
     @property
     def peak_omega_rad_s(self) -> float:
@@ -195,8 +235,8 @@ class DutyCycle:
         return dist
 
 
-def _num(raw):
-    try:
-        return float(raw)
-    except (TypeError, ValueError):
-        return raw
+def _refuse_at_rest(omega_rad_s: np.ndarray, field: str, value: float, where: str) -> None:
+    """Refuse a cycle whose every sample is at rest: it has no loss to average."""
+    if not np.any(omega_rad_s != 0.0):
+        raise InputError(field, value, "the speed is 0 at every sample: the joint never "
+                         "turns, so there is no loss to evaluate", where)

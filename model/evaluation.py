@@ -34,7 +34,7 @@ from .bearing import (
 )
 from .case import DesignCase
 from .case_bearing import bearing_default_notes, bearing_defaults
-from .errors import InputError
+from .errors import InputError, SolverError
 from .film_cycle import film_peak
 from .fluids import warn_if_untrusted_state
 from .joint_loss import (
@@ -403,6 +403,64 @@ def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regio
     return t, nu, rho, means
 
 
+def _refuse_non_finite(case: DesignCase, t: float, d: float, nu, rho,
+                       results: tuple[RegionResult, ...],
+                       bearings: tuple[BearingResult, ...]) -> None:
+    """Never a non-finite loss as a result: an InputError naming the inputs that drive it
+    (the fluid's state, the friction law, the speed and geometry), else a SolverError."""
+    if not (np.isfinite(nu) and np.isfinite(rho) and nu > 0 and rho > 0):
+        raise InputError("oil", case.oil.name, f"its state at {t:g} degC and {d:g} m is not a "
+                         f"finite positive number (nu = {m2_s_to_cst(nu):g} cSt, rho = "
+                         f"{float(rho):g} kg/m^3): check the oil's data and the operating "
+                         "condition", "evaluation")
+    law = case.friction
+    for r in results:
+        if not (np.isfinite(r.Re_peak) and np.isfinite(r.Cm_peak)):
+            raise InputError("friction", f"gamma = {law.gamma:g}, C = {law.C:g}, alpha = "
+                             f"{law.alpha:g}, beta = {law.beta:g}, scale = {law.scale:g}",
+                             f"C_m of {r.name} at the peak speed is not finite (Re = "
+                             f"{r.Re_peak:g}, T = {r.roughness_T:g}): the law's numbers or the "
+                             "geometry are out of reach of the law", "evaluation")
+        if not (np.isfinite(r.mean_power_W) and np.isfinite(r.torque_peak_Nm)):
+            raise InputError("speed, size and oil", f"peak_speed_rpm = "
+                             f"{rad_s_to_rpm(case.duty_cycle.peak_omega_rad_s):g}, R = "
+                             f"{r.radius_m / 1e-3:g} mm, L = {r.length_m / 1e-3:g} mm, rho = "
+                             f"{float(rho):g} kg/m^3, nu = {m2_s_to_cst(nu):g} cSt",
+                             f"the loss of {r.name} (C_m rho omega^3 R^4 L) is not finite: "
+                             "out of reach of the model", "evaluation")
+    for b in bearings:
+        if not (np.isfinite(b.mean_power_W) and np.isfinite(b.torque_peak_Nm)):
+            raise InputError("bearing", b.name, "its loss is not finite at this speed and "
+                             "viscosity: check the [bearing] table", "evaluation")
+    if not all(np.isfinite(x) for r in results for x in (r.film_factor_peak, r.nahme_peak)):
+        raise SolverError("the film-heating factor at the peak speed is not finite; the "
+                          "result is not reported")
+
+
+def _computed(case: DesignCase, mode: str, t_case: float, d: float):
+    """The evaluation's numbers, checked finite (numpy's overflow warnings are replaced by
+    the check: a non-finite loss is refused, never printed)."""
+    try:
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            regions = joint_regions(case)
+            t, nu, rho, means = _operating_state(case, mode, t_case, d, regions)
+            film, b = mode_film(case, "film", celsius_to_kelvin(t), seawater_gauge_pressure(d))
+            results = tuple(_region_result(case, r, p, nu, rho, b, film, mode != "none")
+                            for r, p in zip(regions, means, strict=True))
+            bearings = () if case.bearing is None else (bearing_result(case, case.bearing,
+                                                                       nu),)
+            total = sum(r.mean_power_W for r in results + bearings)
+            iso = total if mode == "none" else float(joint_mean_power(case, t_case, "none", d))
+    except (OverflowError, ZeroDivisionError) as e:
+        raise SolverError(f"the evaluation of {case.name!r} overflowed ({e}); the inputs "
+                          "are out of reach of the model") from None
+    _refuse_non_finite(case, t, d, nu, rho, results, bearings)
+    if not (np.isfinite(total) and np.isfinite(iso)):
+        raise SolverError(f"the total loss is not finite ({total:g} W, isothermal {iso:g} W); "
+                          "the result is not reported")
+    return t, nu, rho, results, bearings, total, iso
+
+
 def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
                   depth_m: float | None = None, laminar_law: str | None = None,
                   thermal: str | None = None) -> CaseEvaluation:
@@ -443,9 +501,11 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     ------
     InputError
         An unknown mode, ``full`` without ``[thermal]``, or ``oil_temp_C`` under
-        ``full``.
+        ``full``; a loss that is not a finite number, named by the inputs that drive it (the
+        fluid's state, the friction law, the speed, the bearing).
     SolverError
-        The heat balance did not converge.
+        The heat balance did not converge, or a non-finite result that no input
+        explains.
 
     References
     ----------
@@ -463,14 +523,7 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
         raise InputError("oil_temp_C", oil_temp_C, "not given under thermal mode 'full': the "
                          "heat balance sets the oil temperature (change [thermal] "
                          "sea_temp_C, or choose thermal 'film' or 'none')")
-    regions = joint_regions(case)
-    t, nu, rho, means = _operating_state(case, mode, t_case, d, regions)
-    film, b = mode_film(case, "film", celsius_to_kelvin(t), seawater_gauge_pressure(d))
-    results = tuple(_region_result(case, r, p, nu, rho, b, film, mode != "none")
-                    for r, p in zip(regions, means, strict=True))
-    bearings = () if case.bearing is None else (bearing_result(case, case.bearing, nu),)
-    total = sum(r.mean_power_W for r in results + bearings)
-    iso = total if mode == "none" else float(joint_mean_power(case, t_case, "none", d))
+    t, nu, rho, results, bearings, total, iso = _computed(case, mode, t_case, d)
     cycle = case.duty_cycle
     return CaseEvaluation(
         case.name, case.oil.name, mode, thermal is None, t,

@@ -27,6 +27,7 @@ import numpy as np
 
 from . import _math as m
 from .errors import InputError, OilgapWarning, check_finite, check_positive
+from .inputs import cell_for_message, header_error, read_input_text
 from .oil_properties import seawater_gauge_pressure
 from .units import (
     MPA_TO_PA,
@@ -247,7 +248,8 @@ class TableFluid:
 
 
 def read_fluid_table(path: str | Path, name: str | None = None,
-                     polymer_thickened: bool = False, outside: str = "refuse") -> TableFluid:
+                     polymer_thickened: bool = False, outside: str = "refuse",
+                     field: str = "table_csv") -> TableFluid:
     """Read a fluid table ``temp_C,[pressure_MPa,]nu_cSt,density_kg_m3``.
 
     Lines starting with ``#`` are comments (the source of the data). With a
@@ -265,6 +267,8 @@ def read_fluid_table(path: str | Path, name: str | None = None,
         True for a polymer-thickened liquid [-].
     outside : {"refuse", "clamp"}
         Behaviour outside the table [-].
+    field : str
+        The key that named the file, for messages [-].
 
     Returns
     -------
@@ -274,20 +278,17 @@ def read_fluid_table(path: str | Path, name: str | None = None,
     Raises
     ------
     InputError
-        Missing file, missing or unknown columns, bad numbers, duplicate or missing
-        grid points.
+        A file that cannot be read (missing, a directory, unreadable, not UTF-8),
+        missing or unknown columns (named without repeating the header), bad numbers,
+        duplicate or missing grid points.
     """
     path = Path(path)
     where = str(path)
-    if not path.is_file():
-        raise InputError("table_csv", str(path), "must be an existing CSV file")
-    reader = csv.DictReader(uncommented_csv(path))
+    reader = csv.DictReader(uncommented_csv(path, field))
     cols = [c.strip() for c in (reader.fieldnames or [])]
-    missing = [c for c in TABLE_COLUMNS if c not in cols]
-    unknown = [c for c in cols if c not in TABLE_COLUMNS + TABLE_OPTIONAL_COLUMNS]
-    if missing or unknown:
-        raise InputError("columns", cols, f"required {list(TABLE_COLUMNS)}, optional "
-                         f"{list(TABLE_OPTIONAL_COLUMNS)}", where)
+    err = header_error(path, cols, TABLE_COLUMNS, TABLE_OPTIONAL_COLUMNS)
+    if err is not None:
+        raise err
     has_p = "pressure_MPa" in cols
     pts: dict[tuple[float, float], tuple[float, float]] = {}
     for i, raw in enumerate(reader, start=2):
@@ -319,13 +320,15 @@ def read_fluid_table(path: str | Path, name: str | None = None,
 # --------------------------------------------------------------------------- helpers
 
 
-def uncommented_csv(path: Path) -> io.StringIO:
+def uncommented_csv(path: Path, field: str = "table") -> io.StringIO:
     """The text of a CSV file without comment (``#``) and blank lines.
 
     Parameters
     ----------
     path : Path
         UTF-8 text file [-].
+    field : str
+        The key that named the file, for messages [-].
 
     Returns
     -------
@@ -335,18 +338,17 @@ def uncommented_csv(path: Path) -> io.StringIO:
     Raises
     ------
     InputError
-        The file is not UTF-8 text.
+        The file cannot be read or is not UTF-8 text
+        (:func:`~oilgap.model.inputs.read_input_text`).
     """
-    try:
-        text = path.read_text(encoding="utf-8")
-    except UnicodeDecodeError:
-        raise InputError("table", str(path), "must be UTF-8 text") from None
+    text = read_input_text(path, field, "CSV file")
     lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
     return io.StringIO("\n".join(lines) + "\n")
 
 
 def number_or_raw(raw):
-    """``float(raw)``, or ``raw`` itself when it is not a number (the checks name it).
+    """``float(raw)``, or ``raw`` itself (cut short) when it is not a number (the checks
+    name it).
 
     Parameters
     ----------
@@ -356,9 +358,7 @@ def number_or_raw(raw):
     Returns
     -------
     float or Any
-        The number [in the unit of its column], or ``raw``.
+        The number [in the unit of its column], or ``raw``
+        (:func:`~oilgap.model.inputs.cell_for_message`).
     """
-    try:
-        return float(raw)
-    except (TypeError, ValueError):
-        return raw
+    return cell_for_message(raw)

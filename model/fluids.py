@@ -44,8 +44,9 @@ from typing import Protocol, runtime_checkable
 import numpy as np
 
 from . import _math as m
-from .errors import InputError, OilgapWarning, check_finite, check_positive
+from .errors import InputError, OilgapWarning, check_finite
 from .fluid_table import TableFluid, number_or_raw, read_fluid_table, uncommented_csv
+from .inputs import check_physical
 from .oil_properties import seawater_gauge_pressure
 from .units import (
     MPA_TO_PA,
@@ -68,6 +69,15 @@ GAS_TRUSTED_PRESSURE_ABS_PA = 1.0e6
 """Absolute pressure [Pa] above which oilgap warns that a gas is no longer dilute: the
 ideal-gas density and Sutherland's pressure-free viscosity leave out the real-gas
 compressibility and the dense-gas rise of viscosity [4]."""
+
+GAS_LIMITS = {  # TOML key -> (largest value, why)
+    "molar_mass_kg_per_mol": (1.0, "the heaviest gases (UF6 0.352, SF6 0.146 kg/mol) are "
+                              "far below 1 kg/mol"),
+    "sutherland_mu_ref_Pa_s": (1.0e-3, "gases have 1e-5-5e-5 Pa s; 1e-3 is a liquid's"),
+    "sutherland_T_ref_K": (5000.0, "Sutherland's law is fitted between ~100 and ~2000 K"),
+    "sutherland_S_K": (5000.0, "Sutherland constants are 70-700 K [2]"),
+}
+"""Largest physical value of each constant of a gas, with the reason (all must be > 0)."""
 
 TABLE_NO_PRESSURE_WARN_PA = 1.0e6
 """Gauge pressure [Pa] above which oilgap warns that a table without pressures is used at
@@ -148,7 +158,9 @@ class GasFluid:
         for f, key in (("molar_mass_kg_mol", "molar_mass_kg_per_mol"),
                        ("mu_ref_Pa_s", "sutherland_mu_ref_Pa_s"),
                        ("T_ref_K", "sutherland_T_ref_K"), ("sutherland_S_K", "sutherland_S_K")):
-            object.__setattr__(self, f, check_positive(key, getattr(self, f), where))
+            object.__setattr__(self, f, check_physical(key, getattr(self, f), 0.0,
+                                                       GAS_LIMITS[key][0], GAS_LIMITS[key][1],
+                                                       where, lo_open=True))
         lo, hi = (float(v) for v in self.trusted_range_K)
         if not (lo < hi) or math.isnan(lo) or math.isnan(hi) or lo < 0.0:
             raise InputError("trusted range [K]", (lo, hi), "must be 0 <= lo < hi", where)

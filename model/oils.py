@@ -28,6 +28,7 @@ References
 from __future__ import annotations
 
 import csv
+import io
 import math
 import warnings
 from dataclasses import dataclass
@@ -39,12 +40,38 @@ import numpy as np
 from . import oil_properties as op
 from .errors import InputError, OilgapWarning, check_positive, check_range
 from .fluids import Fluid, builtin_gases, gas_key, warn_if_untrusted_state
+from .inputs import cell_for_message, check_physical, header_error, read_input_text
 from .units import ZERO_CELSIUS_K, celsius_to_kelvin, m2_s_to_cst, per_gpa_to_per_pa
 
 OIL_COLUMNS = ("oil", "nu40_cSt", "nu100_cSt", "density_kg_m3")
 OPTIONAL_OIL_COLUMNS = ("barus_1_GPa", "polymer_thickened")
 TRUE_WORDS = ("true", "yes", "1")
 FALSE_WORDS = ("false", "no", "0", "")
+
+WALTHER_MIN_CST = 1.0 - op.WALTHER_OFFSET_CST
+"""Viscosity [cSt] at and below which the Walther line is undefined: it takes
+log10(log10(nu + 0.7)), and log10(nu + 0.7) <= 0 there (0.3 cSt) [2]."""
+
+MAX_OIL_CST = 1.0e6
+"""Largest nu at 40 or 100 degC of an oil [cSt]: 300 times the heaviest ISO grade (VG 3200
+[1]); a larger number is a unit slip (mm^2/s vs m^2/s)."""
+
+NU_REASON = ("the Walther line (ASTM D341) takes log10(log10(nu + 0.7)), undefined at or "
+             "below 0.3 cSt; above 1e6 cSt (300 x ISO VG 3200) the number is a unit slip")
+
+OIL_DENSITY_RANGE_KG_M3 = (600.0, 2200.0)
+"""Allowed density of a liquid oil at 15 degC [kg/m^3]: compensating and lubricating
+liquids lie between light hydrocarbons (~700) and perfluoropolyethers (~1950)."""
+
+DENSITY_REASON = ("liquid oils lie between light hydrocarbons (~700 kg/m^3) and "
+                  "perfluoropolyethers (~1950 kg/m^3); outside it is a unit slip (g/cm^3)")
+
+MAX_BARUS_1_GPA = 100.0
+"""Largest pressure-viscosity coefficient at 40 degC [1/GPa]: mineral oils have 15-35,
+traction fluids up to ~40 [3]."""
+
+BARUS_REASON = ("mineral oils have 15-35 /GPa at 40 degC, traction fluids up to ~40; "
+                "a larger number is a unit slip (1/bar vs 1/GPa)")
 
 
 @dataclass(frozen=True)
@@ -68,7 +95,8 @@ class Oil:
     Raises
     ------
     InputError
-        A non-positive property, a negative Barus coefficient, or nu100 >= nu40.
+        A property outside its physical range (:data:`NU_REASON`,
+        :data:`DENSITY_REASON`, :data:`BARUS_REASON`), or nu100 >= nu40.
     """
 
     name: str
@@ -80,11 +108,16 @@ class Oil:
 
     def __post_init__(self):
         where = f"oil {self.name!r}"
-        for f in ("nu40_cSt", "nu100_cSt", "density_kg_m3"):
-            check_positive(f, getattr(self, f), where)
+        for f in ("nu40_cSt", "nu100_cSt"):
+            check_physical(f, getattr(self, f), WALTHER_MIN_CST, MAX_OIL_CST, NU_REASON, where,
+                           lo_open=True)
+        check_physical("density_kg_m3", self.density_kg_m3, *OIL_DENSITY_RANGE_KG_M3,
+                       DENSITY_REASON, where)
         if not self.barus_1_Pa >= 0 or not math.isfinite(self.barus_1_Pa):
             raise InputError("barus_1_GPa", self.barus_1_Pa * 1e9, "must be >= 0 and finite",
                              where)
+        check_physical("barus_1_GPa", self.barus_1_Pa * 1e9, 0.0, MAX_BARUS_1_GPA,
+                       BARUS_REASON, where)
         if self.nu100_cSt >= self.nu40_cSt:
             raise InputError("nu100_cSt", self.nu100_cSt,
                              f"must be below nu40_cSt = {self.nu40_cSt:g}", where)
@@ -223,16 +256,18 @@ def normalize_oil_name(name: str) -> str:
     return key
 
 
-def read_oils_csv(path: str | Path) -> dict[str, Oil]:
+def read_oils_csv(path: str | Path, field: str = "oils file") -> dict[str, Oil]:
     """Read an oils table ``oil,nu40_cSt,nu100_cSt,density_kg_m3[,barus_1_GPa]
     [,polymer_thickened]``.
 
     Parameters
     ----------
     path : str or Path
-        CSV file; units in the column names: nu [cSt], density at 15 degC
+        UTF-8 CSV file; units in the column names: nu [cSt], density at 15 degC
         [kg/m^3], Barus coefficient [1/GPa] (optional, default 17), polymer_thickened
         [-] (optional: true/false, yes/no, 1/0; default false).
+    field : str
+        The key or option that named the file, for messages [-].
 
     Returns
     -------
@@ -242,59 +277,50 @@ def read_oils_csv(path: str | Path) -> dict[str, Oil]:
     Raises
     ------
     InputError
-        Missing or unknown columns, non-numeric or non-positive values,
-        duplicate names.
+        A file that cannot be read (missing, a directory, unreadable, not UTF-8),
+        missing or unknown columns (named without repeating the header), non-numeric
+        or out-of-range values, duplicate names.
     """
     path = Path(path)
     where = str(path)
-    if not path.is_file():
-        raise InputError("oils file", str(path), "must be an existing CSV file")
-    with path.open(newline="", encoding="utf-8") as fh:
-        reader = csv.DictReader(fh)
-        cols = reader.fieldnames or []
-        missing = [c for c in OIL_COLUMNS if c not in cols]
-        if missing:
-            raise InputError("columns", cols, f"missing {missing}; required {list(OIL_COLUMNS)}",
-                             where)
-        unknown = [c for c in cols if c not in OIL_COLUMNS + OPTIONAL_OIL_COLUMNS]
-        if unknown:
-            raise InputError("columns", unknown, f"unknown; allowed "
-                             f"{list(OIL_COLUMNS + OPTIONAL_OIL_COLUMNS)}", where)
-        oils: dict[str, Oil] = {}
-        for i, row in enumerate(reader, start=2):
-            rwhere = f"{where} line {i}"
-            name = (row["oil"] or "").strip()
-            if not name:
-                raise InputError("oil", name, "a non-empty name is required", rwhere)
-            vals = {}
-            for c in OIL_COLUMNS[1:] + OPTIONAL_OIL_COLUMNS:
-                if c not in cols:
-                    continue
-                raw = row[c]
-                if c in OPTIONAL_OIL_COLUMNS and (raw is None or raw.strip() == ""):
-                    continue
-                if c == "polymer_thickened":
-                    vals[c] = _flag(c, raw, rwhere)
-                    continue
-                vals[c] = check_positive(c, _num(raw), rwhere) if c != "barus_1_GPa" else \
-                    _nonneg(c, raw, rwhere)
-            key = normalize_oil_name(name)
-            if key in oils:
-                raise InputError("oil", name, "names must be unique", rwhere)
-            barus = per_gpa_to_per_pa(vals["barus_1_GPa"]) if "barus_1_GPa" in vals \
-                else op.BARUS_MINERAL_OIL_1_PA
-            oils[key] = Oil(name, vals["nu40_cSt"], vals["nu100_cSt"], vals["density_kg_m3"],
-                            barus, vals.get("polymer_thickened", False))
+    reader = csv.DictReader(io.StringIO(read_input_text(path, field, "CSV file"), newline=""))
+    cols = [c.strip() for c in (reader.fieldnames or [])]
+    err = header_error(path, cols, OIL_COLUMNS, OPTIONAL_OIL_COLUMNS)
+    if err is not None:
+        raise err
+    reader.fieldnames = cols
+    oils: dict[str, Oil] = {}
+    for i, row in enumerate(reader, start=2):
+        rwhere = f"{where} line {i}"
+        name = (row["oil"] or "").strip()
+        if not name:
+            raise InputError("oil", name, "a non-empty name is required", rwhere)
+        vals = {}
+        for c in OIL_COLUMNS[1:] + OPTIONAL_OIL_COLUMNS:
+            if c not in cols:
+                continue
+            raw = row[c]
+            if c in OPTIONAL_OIL_COLUMNS and (raw is None or raw.strip() == ""):
+                continue
+            if c == "polymer_thickened":
+                vals[c] = _flag(c, raw, rwhere)
+                continue
+            vals[c] = check_positive(c, _num(raw), rwhere) if c != "barus_1_GPa" else \
+                _nonneg(c, raw, rwhere)
+        key = normalize_oil_name(name)
+        if key in oils:
+            raise InputError("oil", name, "names must be unique", rwhere)
+        barus = per_gpa_to_per_pa(vals["barus_1_GPa"]) if "barus_1_GPa" in vals \
+            else op.BARUS_MINERAL_OIL_1_PA
+        oils[key] = Oil(name, vals["nu40_cSt"], vals["nu100_cSt"], vals["density_kg_m3"],
+                        barus, vals.get("polymer_thickened", False))
     if not oils:
-        raise InputError("oils file", str(path), "must hold at least one oil", where)
+        raise InputError(field, str(path), "must hold at least one oil")
     return oils
 
 
 def _num(raw):
-    try:
-        return float(raw)
-    except (TypeError, ValueError):
-        return raw
+    return cell_for_message(raw)
 
 
 def _nonneg(field, raw, where):
@@ -304,7 +330,7 @@ def _nonneg(field, raw, where):
 def _flag(field, raw, where) -> bool:
     word = str(raw).strip().lower()
     if word not in TRUE_WORDS + FALSE_WORDS:
-        raise InputError(field, raw, "true or false (yes/no, 1/0)", where)
+        raise InputError(field, cell_for_message(raw), "true or false (yes/no, 1/0)", where)
     return word in TRUE_WORDS
 
 

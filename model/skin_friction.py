@@ -39,6 +39,7 @@ from typing import Literal
 
 from . import _math as m
 from .errors import InputError, check_finite, check_positive
+from .inputs import check_physical
 from .taylor_couette import REGIME_BOUNDARIES_RE, couette_moment_coefficient
 
 BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))
@@ -58,6 +59,27 @@ RE_FLOOR = 1.0e-12
 
 FORMS = ("bilgen-boulos", "smooth", "power-law")
 LAMINAR_LAWS = ("couette", "bilgen-boulos")
+
+FRICTION_RANGES = {
+    "gamma": (0.0, 3.0, "T^gamma >= 1: grooves raise a clearance's loss (every smoothed run "
+              "of the seed's Table 4 lost less), so gamma >= 0; the seed's fits give "
+              "0.57-0.98 and the smoothing study bounds it by 3 (above it, halving T would "
+              "cut the loss more than 8-fold)"),
+    "scale": (0.01, 100.0, "a calibration factor on the measured Eq. 6; one that moves it "
+              "100-fold either way says Eq. 6 does not describe the joint (use form = "
+              "\"power-law\")"),
+    "C": (1.0e-4, 1.0e4, "the branches of Eq. 6 have C = 0.065-10; 1000-fold outside that "
+          "is a slip, not a law"),
+    "alpha": (-2.0, 2.0, "Eq. 6 has alpha = 0.3; over the gap ratios of real clearances "
+              "(0.001-1) |alpha| > 2 changes C_m more than a million-fold"),
+    "beta": (-1.5, 0.5, "laminar Couette flow has beta = -1, fully rough turbulence beta -> "
+             "0, the branches of Eq. 6 -1 to -0.2; outside [-1.5, 0.5] no clearance flow "
+             "behaves so (the torque would fall as the speed rises, or grow without bound)"),
+}
+"""Physical range of each number of a friction law given as input (a case's
+``[friction]``, a sweep's ``gamma``/``scale`` column): key -> (lowest, highest, reason).
+A fit (the loop's calibration) may explore outside them; an input may not
+(:func:`check_friction_ranges`)."""
 
 
 def power_law_cm(reynolds, gap_ratio, C, alpha, beta):
@@ -335,6 +357,35 @@ class FrictionLaw:
             ``form = "smooth"`` unless the form is ``"power-law"``; C_m stays [-].
         """
         return self if self.form == "power-law" else replace(self, form="smooth")
+
+
+def check_friction_ranges(law: FrictionLaw, where: str = "friction") -> FrictionLaw:
+    """Refuse a friction law whose numbers lie outside :data:`FRICTION_RANGES`.
+
+    Parameters
+    ----------
+    law : FrictionLaw
+        The law as given (gamma, scale, C, alpha, beta [-]).
+    where : str
+        Where it came from, for the message [-].
+
+    Returns
+    -------
+    FrictionLaw
+        ``law`` itself.
+
+    Raises
+    ------
+    InputError
+        A number outside its range; the message gives the range and why.
+
+    References
+    ----------
+    Seed paper (Eqs. 6-8 and Table 4) [3]; Bilgen & Boulos [1].
+    """
+    for name, (lo, hi, reason) in FRICTION_RANGES.items():
+        check_physical(name, getattr(law, name), lo, hi, reason, where)
+    return law
 
 
 def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):

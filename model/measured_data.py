@@ -45,6 +45,7 @@ import numpy as np
 import pandas as pd
 
 from .errors import InputError
+from .fluids import warn_if_untrusted_state
 from .kinematics import (
     SPEED_DERIVATIVE_WINDOW_S,
     TEMP_DERIVATIVE_WINDOW_S,
@@ -221,11 +222,15 @@ def _fluid_state(o: pd.DataFrame, oils: Mapping, region1_gap_m: float, p_Pa: flo
     tK = o["temp_C"].to_numpy(dtype=float) + ZERO_CELSIUS_K
     nu, rho, nu_m, nu_p, rho_m, rho_p = (np.full(n, np.nan) for _ in range(6))
     codes, names = text_codes(o["oil"])
+    own_nu = (~np.isnan(o["nu_cSt"].to_numpy(dtype=float)) if "nu_cSt" in o.columns
+              else np.zeros(n, bool))
     for k, name in enumerate(names):
         key = normalize_oil_name(name)
         if key not in oils:
             continue
         sel = codes == k
+        # the promised warning where a fluid's law is not trusted (rows with nu_cSt need none)
+        warn_if_untrusted_state(oils[key], tK[sel & ~own_nu] - ZERO_CELSIUS_K, p_Pa, "temp_C")
         nu[sel], rho[sel] = _properties(oils[key], tK[sel], p_Pa, True)
         nu_m[sel], rho_m[sel] = _properties(oils[key], tK[sel] - TEMP_STEP_K, p_Pa, False)
         nu_p[sel], rho_p[sel] = _properties(oils[key], tK[sel] + TEMP_STEP_K, p_Pa, False)

@@ -23,8 +23,9 @@ import numpy as np
 import pandas as pd
 
 from .errors import InputError
+from .measured_plausibility import check_units
 from .oils import Oil, builtin_fluids, normalize_oil_name
-from .table_io import numeric_column, text_codes
+from .table_io import numeric_column, text_cells, text_codes
 
 REQUIRED_COLUMNS = ("run", "time_s", "speed_rpm", "temp_C", "oil", "roughness_T")
 """Columns of a time-series file (the synthetic rig's format)."""
@@ -45,6 +46,10 @@ MAX_CV_GROUPS = 1000
 """Most groups leave-one-group-out validation accepts (one fold per group)."""
 INTERNAL_COLUMNS = ("line", "oil_free", "run_code", "omega", "domega_dt", "dtemp_dt")
 """Columns validation and kinematics add to the frame."""
+OVERRIDE_DEFAULT = {"nu_cSt": "the oils table's viscosity",
+                    "density_kg_m3": "the oils table's density",
+                    "gap_mm": "the case's region-1 clearance"}
+"""What an empty cell of each per-row override column takes."""
 
 
 @dataclass(frozen=True)
@@ -105,6 +110,9 @@ class MeasuredData:
         False for steady operating points (no ``time_s``).
     drop_code : ndarray of int or None
         Per input row: the index in ``dropped`` of its reason, -1 if kept.
+    notes : tuple of str
+        What the tool filled in, e.g. oil rows with an empty ``gap_mm`` [-] that take
+        the case's clearance (nothing is filled in silently).
     """
 
     frame: pd.DataFrame
@@ -116,6 +124,7 @@ class MeasuredData:
     oils: dict[str, Oil] = field(repr=False)
     has_time: bool = True
     drop_code: np.ndarray | None = field(default=None, repr=False)
+    notes: tuple[str, ...] = ()
 
     @property
     def n_dropped(self) -> int:
@@ -261,6 +270,8 @@ def _numbers(df: pd.DataFrame, d: _Dropper, kind: str, has_time: bool) -> dict:
     for c in OPTIONAL_COLUMNS:
         if c in df.columns:
             v = num[c] = numeric_column(df[c])
+            d.drop(text_cells(df[c]), f"{c} is text, not a number (leave the cell empty for "
+                   f"{OVERRIDE_DEFAULT[c]})")
             d.drop(~np.isnan(v) & ~(np.isfinite(v) & (v > 0)), f"{c} not a positive finite number")
     d.drop(num["roughness_T"] < 1.0, "roughness_T < 1")
     lo, hi = TEMP_LIMITS_C
@@ -346,6 +357,7 @@ def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
            "missing oil")
     num = _numbers(df, d, kind, has_time)
     oil_free = _oil_checks(d, oil, oil_names, num, catalogue)
+    check_units(num, kind, has_time, run, d.alive & ~oil_free, purpose, source)
     if run is not None:
         for val, label in ((oil, "oil"), (num["roughness_T"], "roughness_T")):
             d.drop(_run_mode(run, val, d.alive), f"{label} differs from the rest of its run")
@@ -363,7 +375,19 @@ def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
     rows = keep[np.lexsort(keys)]
     frame = _frame(df, rows, num, run, run_names, oil, oil_names, oil_free, has_time)
     return MeasuredData(frame, kind, d.result(), n_read, source, ignored, catalogue, has_time,
-                        d.code)
+                        d.code, _override_notes(num, d.alive & ~oil_free))
+
+
+def _override_notes(num: dict, oil_rows: np.ndarray) -> tuple[str, ...]:
+    """One note per override column with empty cells among the kept oil rows."""
+    notes = []
+    for c in OPTIONAL_COLUMNS:
+        if c in num:
+            n = int((np.isnan(num[c]) & oil_rows).sum())
+            if n:
+                notes.append(f"{c} empty in {n} of {int(oil_rows.sum())} oil rows: "
+                             f"{OVERRIDE_DEFAULT[c]} used there")
+    return tuple(notes)
 
 
 def _baseline_problems(d: _Dropper, kind: str, purpose: str, oil_free: np.ndarray,

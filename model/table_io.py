@@ -34,6 +34,8 @@ from .errors import InputError
 
 TEXT_COLUMNS = ("run", "oil")
 """Columns read as text (dictionary-encoded), never as numbers."""
+MISSING_TEXT = frozenset({"", "nan", "-nan", "na", "n/a", "#n/a", "<na>", "null", "none"})
+"""Cell texts (lower case, stripped) that mean "no value", as pyarrow and pandas read them."""
 
 
 def _first_line_names(path: Path) -> list[str]:
@@ -64,6 +66,14 @@ def _arrow_to_frame(table, source: str) -> pd.DataFrame:
     df = table.to_pandas(split_blocks=True, self_destruct=True)
     df.columns = names
     return df
+
+
+def _check_header(path: Path) -> None:
+    """Refuse duplicate column names on the raw header (pandas would rename them x, x.1)."""
+    names = [c.strip() for c in _first_line_names(path)]
+    dup = sorted({c for c in names if c and names.count(c) > 1})
+    if dup:
+        raise InputError("columns", dup, "column names must be unique", str(path))
 
 
 def _read_parquet(path: Path) -> pd.DataFrame:
@@ -100,6 +110,7 @@ def read_table(path: str | Path) -> pd.DataFrame:
         if suffix in (".parquet", ".pq"):
             df = _read_parquet(path)
         else:
+            _check_header(path)
             df = _read_csv_arrow(path)
             if df is None:
                 df = pd.read_csv(path, dtype=str, keep_default_na=False, skipinitialspace=True)
@@ -141,6 +152,31 @@ def text_codes(s: pd.Series) -> tuple[np.ndarray, np.ndarray]:
     remap = np.searchsorted(names, np.array(raw, dtype=object)).astype(np.int32)
     codes = np.where(codes < 0, len(raw) - 1, codes)
     return remap[codes], names
+
+
+def text_cells(s: pd.Series) -> np.ndarray:
+    """Where a column holds text that is neither a number nor a missing value.
+
+    Parameters
+    ----------
+    s : pandas.Series
+        Any column.
+
+    Returns
+    -------
+    ndarray of bool
+        One entry per row [-]: True where the cell is text such as ``"abc"`` (empty
+        cells and :data:`MISSING_TEXT` are missing values, not text).
+    """
+    dt = s.dtype
+    if pd.api.types.is_numeric_dtype(dt) and not pd.api.types.is_bool_dtype(dt):
+        return np.zeros(len(s), bool)
+    codes, names = text_codes(s)
+    vals = pd.to_numeric(pd.Series(names, dtype=object), errors="coerce").to_numpy(
+        dtype=float, na_value=np.nan)
+    bad = np.array([n.lower() not in MISSING_TEXT and np.isnan(v)
+                    for n, v in zip(names, vals, strict=True)], bool)
+    return bad[codes]
 
 
 def numeric_column(s: pd.Series) -> np.ndarray:

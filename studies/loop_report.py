@@ -13,13 +13,15 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 from pathlib import Path
 
 import numpy as np
 
-from oilgap.model.errors import InputError
+from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.optim.calibration.estimator import LoopEstimator
-from oilgap.studies.reporting import markdown_rows, new_figure, save_figure
+from oilgap.optim.calibration.ranges import effective_scale
+from oilgap.studies.reporting import markdown_rows, new_figure, save_figure, write_text
 
 FIGURES = ("measured_vs_model.png", "residual_vs_speed.png", "residual_vs_time.png")
 DPI = 110
@@ -58,6 +60,84 @@ def _base_text(est: LoopEstimator, long: bool = False) -> str:
             "a free power law, C_m = C (delta/R)^alpha Re^beta T^gamma")
 
 
+def gamma_text(est: LoopEstimator) -> str:
+    """The rig case's groove exponent, where it came from and when the loop uses it."""
+    case = est.case_
+    return (f"{case.friction.gamma:g} (the rig case's, from: {case.gamma_source}; used only "
+            "where the oil runs cannot identify gamma: one value of T > 1)")
+
+
+UNIT_HINT_RATIO = 10.0
+"""A calibrated level this many times above (or below 1/this of) the published law's
+is named as a possible unit mistake in the data."""
+
+
+def unit_hints(est: LoopEstimator) -> list[str]:
+    """Unit mistakes the calibrated level points to (empty when it is near the published
+    law's, or the data show no viscous signal): a speed in rad/s makes the model's speeds
+    9.55x too low and the level ~91x too high (laminar loss ~ omega^2); power in kW makes it
+    1000x too low."""
+    if not hasattr(est, "law_with_T_") or any(f.get("kind") == "no viscous signal"
+                                               for f in getattr(est, "findings_", [])):
+        return []
+    r = effective_scale(est.forward_model_, est.law_with_T_, est.spec_.laminar_law)
+    if not np.isfinite(r) or 1 / UNIT_HINT_RATIO < r < UNIT_HINT_RATIO:
+        return []
+    what = (f"{r:.3g}x the published law's: if speed_rpm is in rad/s, multiply it by 9.549 "
+            "(60/2 pi; the loss then looks ~91x too high); if the power is in mW, divide it by "
+            "1000; else check the oil and temp_C" if r > 1 else
+            f"{r:.3g}x the published law's: if the power is in kW, multiply it by 1000; if "
+            "speed_rpm is scaled up, divide it; else check the oil and temp_C")
+    return [f"{est.data_.source}: the calibrated viscous loss is {what}"]
+
+
+def unit_mistake(est: LoopEstimator, source: str, err: Exception) -> InputError | None:
+    """The refusal to raise instead of ``err`` (a solver failure after the calibration) when
+    the calibrated level points to a unit mistake in the data; None otherwise."""
+    hints = unit_hints(est)
+    if not hints:
+        return None
+    what = hints[0].split(": ", 1)[1]
+    return InputError("data", source, f"{what}; the fit then failed ({err})")
+
+
+def warn_unit_hints(est: LoopEstimator) -> None:
+    """Each of :func:`unit_hints` as an OilgapWarning (stderr; the run goes on)."""
+    for h in unit_hints(est):
+        warnings.warn(OilgapWarning(h), stacklevel=2)
+
+
+def not_identifiable(est: LoopEstimator) -> list[str]:
+    """Fitted base parameters without an interval: the data do not identify them."""
+    ci = est.calibration_ci_
+    return [k for k, v in ci.items() if isinstance(v, list)
+            and not all(isinstance(x, float) and math.isfinite(x) for x in v)]
+
+
+def identifiability(est: LoopEstimator) -> dict:
+    """The estimator's statement per parameter, with each fitted parameter that has no
+    interval called not identifiable (and why), never "identified"."""
+    out = dict(est.identifiability_)
+    kinds = {(f.get("kind"), f.get("parameter")) for f in est.findings_}
+    for k in not_identifiable(est):
+        if ("no viscous signal", None) in kinds:
+            why = "no viscous signal: the level is pinned by the noise"
+        elif ("at numerical limit", k) in kinds:
+            why = "it ran to the edge of the solver's box"
+        else:
+            why = "every cross-validation fold gives it the same value, or too few groups"
+        out[k] = f"not identifiable by these data (no interval: {why}); by design: {out.get(k)}"
+    return out
+
+
+def _ci_text(ci) -> str:
+    if not isinstance(ci, list):
+        return " (fixed)"
+    if not all(isinstance(x, float) and math.isfinite(x) for x in ci):
+        return " (not identifiable: no interval)"
+    return f" [{_num(ci[0])}, {_num(ci[1])}]"
+
+
 def format_summary(est: LoopEstimator) -> str:
     """What ``oilgap loop`` prints: data, calibration, error table, effects, before/after."""
     d = est.data_
@@ -69,13 +149,12 @@ def format_summary(est: LoopEstimator) -> str:
         lines.append(f"            dropped {r.count} x {r.reason}")
     if d.ignored_columns:
         lines.append(f"            ignored columns: {', '.join(d.ignored_columns)}")
+    lines += [f"            {n}" for n in getattr(d, "notes", ())]
+    lines.append(f"gamma       {gamma_text(est)}")
     for b in est.baselines_.values():
         lines.append(f"baseline    T = {b.roughness_T:g}: oil-free fit RMSE {b.rmse_W:.3f} W "
                      f"({b.n_samples} samples)" + ("; " + "; ".join(b.notes) if b.notes else ""))
-    par = ", ".join(
-        f"{k} = {_num(c[k])}" + (f" [{_num(ci[k][0])}, {_num(ci[k][1])}]"
-                                 if isinstance(ci[k], list) else " (fixed)")
-        for k in c)
+    par = ", ".join(f"{k} = {_num(c[k])}{_ci_text(ci[k])}" for k in c)
     lines += [f"calibration with T ({_base_text(est)}): {par}",
               f"            without T: the case's law ({est.law_without_T_.form}, laminar "
               f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted", "",
@@ -93,7 +172,7 @@ def format_summary(est: LoopEstimator) -> str:
             lines.append(f"  {e.name}: {e.formula}")
             unit = "" if e.unit == "-" else f" {e.unit}"
             ci_txt = (f"[{_num(e.ci_low)}, {_num(e.ci_high)}] (95 %)" if math.isfinite(e.ci_low)
-                      else "(no interval: fewer than 3 runs)")
+                      else "(no interval: fewer than 3 groups, or not identifiable)")
             if e.strength_unit != e.unit:  # e.g. lambda^2 fitted, lambda reported too
                 unit += f" (strength {_num(e.strength)} {e.strength_unit})"
             lines.append(f"    {e.coefficient_label()} = {_num(e.coefficient)}{unit} "
@@ -210,7 +289,11 @@ def _md_data(est: LoopEstimator) -> list[str]:
     d = est.data_
     parts = ["# Measured-data loop report", "",
              f"Data: `{d.source}` ({d.kind}); {d.n_read} rows read, {d.n_dropped} dropped; "
-             f"{est.samples_.n} oil samples in {len(est.samples_.run_names)} runs.", ""]
+             f"{est.samples_.n} oil samples in {len(est.samples_.run_names)} runs.", "",
+             f"Rig case: {est.case_.name}; groove exponent gamma = {gamma_text(est)}.", ""]
+    notes = getattr(d, "notes", ())
+    if notes:
+        parts += [f"- {n}" for n in notes] + [""]
     if d.dropped:
         parts += [markdown_rows(["reason", "rows", "first lines"],
                                 [[x.reason, x.count, ", ".join(map(str, x.lines))]
@@ -239,12 +322,19 @@ def _md_calibration(est: LoopEstimator) -> list[str]:
              "least squares on the power.", "",
              markdown_rows(["parameter", "value", "95 % CI (jackknife over groups + baseline)",
                             "physical range", "identifiability"],
-                           [[k, _num(c[k], 5), (f"{_num(ci[k][0], 5)} .. {_num(ci[k][1], 5)}"
+                           [[k, _num(c[k], 5), (("not identifiable (no interval)"
+                                                  if k in not_identifiable(est) else
+                                                  f"{_num(ci[k][0], 5)} .. {_num(ci[k][1], 5)}")
                                                  if isinstance(ci[k], list) else "fixed"),
                              (f"{ranges[k]['range'][0]:g} .. {ranges[k]['range'][1]:g}"
                               if k in ranges else "-"),
-                             est.identifiability_.get(k, "")]
+                             identifiability(est).get(k, "")]
                             for k in c]), ""]
+    parts += [f"Possible unit mistake: {h}." for h in unit_hints(est)]
+    nid = not_identifiable(est)
+    if nid:
+        parts += [f"Not identifiable by these data (no interval is given): {', '.join(nid)}.",
+                  ""]
     if est.findings_:
         parts += ["### Findings", ""] + [
             f"- {f['message']}." + (f" {f['evidence'][0].upper()}{f['evidence'][1:]}."
@@ -311,7 +401,7 @@ def _md_effects(est: LoopEstimator) -> list[str]:
     return parts
 
 
-def _md_errors(est: LoopEstimator) -> list[str]:
+def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
     """Report section: the errors before and after, overall and per run; the figures."""
     h, r = est.heldout_rmse_, est.rmse_
     return ["## Errors before and after", "",
@@ -326,13 +416,14 @@ def _md_errors(est: LoopEstimator) -> list[str]:
                                 f"{x['rmse_with_effect_W']:.3f}",
                                 f"{x['heldout_rmse_before_W']:.3f}",
                                 f"{x['heldout_rmse_after_W']:.3f}"] for x in est.per_run_]), "",
-            "## Figures", "", *(f"![{f}]({f})" for f in FIGURES)]
+            "## Figures", "", *((f"![{f}]({f})" for f in FIGURES) if figures
+                                else ["Not drawn (`--no-figures`)."])]
 
 
-def report_markdown(est: LoopEstimator) -> str:
-    """The ``report.md`` text."""
+def report_markdown(est: LoopEstimator, figures: bool = True) -> str:
+    """The ``report.md`` text (``figures``: the figures are drawn and linked)."""
     parts = (_md_data(est) + _md_calibration(est) + _md_search(est) + _md_effects(est)
-             + _md_errors(est))
+             + _md_errors(est, figures))
     return "\n".join(parts) + "\n"
 
 
@@ -352,12 +443,26 @@ def _json_safe(x):
 
 
 def loop_json(est: LoopEstimator) -> dict:
-    """The ``loop.json`` document (non-finite numbers as null)."""
-    return _json_safe(est.to_dict())
+    """The ``loop.json`` document (non-finite numbers as null): the estimator's, with the
+    rig case's ``gamma`` and ``gamma_source``, ``data.notes`` and ``not_identifiable`` (the
+    fitted parameters whose interval is null)."""
+    doc = est.to_dict()
+    case = est.case_
+    doc = {"gamma": float(case.friction.gamma), "gamma_source": case.gamma_source,
+           "gamma_use": "the rig case's; used only where the oil runs cannot identify gamma "
+                        "(one value of T > 1); calibration.gamma is the fitted one",
+           **doc, "identifiability": identifiability(est),
+           "not_identifiable": not_identifiable(est), "unit_hints": unit_hints(est)}
+    if isinstance(doc.get("data"), dict):
+        doc["data"] = {**doc["data"], "notes": list(getattr(est.data_, "notes", ()))}
+    return _json_safe(doc)
 
 
 def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) -> dict:
-    """Write ``loop.json``, ``report.md`` and the figures to ``out_dir``; returns the paths."""
+    """Write the figures, ``report.md`` and last ``loop.json`` to ``out_dir`` (each file
+    atomically; the documents that name the others come last, so a failure while
+    drawing never leaves a report linking figures that do not exist); returns the
+    paths."""
     out = Path(out_dir)
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -365,7 +470,9 @@ def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) 
         raise InputError("--out", str(out), f"cannot create the directory ({e.strerror})") \
             from None
     paths = {"json": out / "loop.json", "report": out / "report.md"}
-    paths["json"].write_text(json.dumps(loop_json(est), indent=2), encoding="utf-8")
-    paths["report"].write_text(report_markdown(est), encoding="utf-8")
     paths["figures"] = _figures(est, out) if figures else []
+    text = report_markdown(est, figures)
+    doc = json.dumps(loop_json(est), indent=2)
+    write_text(paths["report"], text)
+    write_text(paths["json"], doc)
     return paths

@@ -40,6 +40,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.case_io import case_from_dict, case_to_dict
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
+from oilgap.model.files import atomic_write_text
 from oilgap.model.fluid_table import TableFluid
 from oilgap.model.fluids import GasFluid
 from oilgap.model.measured_data import (
@@ -525,9 +526,7 @@ def save_model(model: FittedModel, path: str | Path) -> Path:
     Path
         The file (JSON, units in key names: [mm], [degC], [W]).
     """
-    p = Path(path)
-    p.write_text(json.dumps(model.to_dict(), indent=2), encoding="utf-8")
-    return p
+    return atomic_write_text(Path(path), json.dumps(model.to_dict(), indent=2))
 
 
 def load_model(path: str | Path) -> FittedModel:

@@ -8,7 +8,10 @@ Parameters that must be positive (C, the scale) get their interval in log space
 (jackknife of ln C, then exponentiated: the interval never includes zero or
 negative values). A parameter some folds could not identify (held at its
 all-data value there) gets its interval from the other folds only, and none
-with fewer than 3.
+with fewer than 3. A parameter every fold returns at exactly the same value
+(pinned on a bound of the solver's box, or nothing in the data moves it) with
+no baseline variance gets no interval either: a zero-width "95 % interval"
+would claim a certainty the data do not give (it is not identifiable).
 
 References
 ----------
@@ -51,7 +54,8 @@ def jackknife_ci(full: np.ndarray, folds: np.ndarray, extra_var: np.ndarray | No
     Returns
     -------
     (lo, hi) : arrays, shape (p,)
-        Bounds (NaN with fewer than 3 folds).
+        Bounds (NaN with fewer than 3 folds, and where the variance is zero: not
+        identifiable, never a zero-width interval).
     """
     g = folds.shape[0]
     if g < 3:
@@ -61,7 +65,8 @@ def jackknife_ci(full: np.ndarray, folds: np.ndarray, extra_var: np.ndarray | No
     if extra_var is not None:
         var = var + extra_var
     t = stats.t.ppf(0.5 + level / 2, g - 1)
-    return full - t * np.sqrt(var), full + t * np.sqrt(var)
+    half = np.where(var > 0, t * np.sqrt(np.maximum(var, 0.0)), np.nan)
+    return full - half, full + half
 
 
 def baseline_variance(fit: ModelFit, spec: BaseSpec, s: Samples,

@@ -9,6 +9,7 @@ case's value). The columns are listed in :data:`PARAM_COLUMNS` (and
 
 from __future__ import annotations
 
+import csv
 import math
 from collections.abc import Mapping
 from dataclasses import replace
@@ -22,6 +23,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError, check_positive
 from oilgap.model.oils import Oil, get_oil
+from oilgap.model.skin_friction import check_friction_ranges
 from oilgap.model.units import MM_TO_M
 from oilgap.studies.grid.columns import (
     MODES,
@@ -135,19 +137,63 @@ def check_thermal_columns(grid: pd.DataFrame, thermal: str, case: DesignCase) ->
                              f"balance); the mode is '{thermal}'", WHERE)
 
 
+MISSING_WORDS = frozenset({"nan", "-nan", "na", "n/a", "#n/a", "<na>", "null", "none"})
+"""Cell texts (lower case) pandas would read as missing: refused in a grid CSV, where only
+an empty cell means "the base case's value"."""
+
+
+def _raw_header(p: Path) -> list[str]:
+    """The header's column names as written (stripped), before pandas renames duplicates."""
+    try:
+        with open(p, newline="", encoding="utf-8-sig") as fh:
+            return [c.strip() for c in next(csv.reader(fh), [])]
+    except (UnicodeDecodeError, csv.Error):
+        return []
+
+
+def _refuse_missing_words(df: pd.DataFrame) -> None:
+    """Refuse cells such as ``nan`` or ``NA`` in parameter columns: never computed silently
+    at the base value."""
+    for c in (c for c in df.columns if c in PARAM_COLUMNS or c in OPTIMIZE_COLUMNS):
+        low = df[c].str.strip().str.lower()
+        bad = np.flatnonzero(low.isin(MISSING_WORDS).to_numpy())
+        if bad.size:
+            i = int(bad[0])
+            more = f"; {bad.size} such cells in the column" if bad.size > 1 else ""
+            raise InputError(c, df[c].iloc[i], "a value is required, or an empty cell for the "
+                             f"base case's value (grid row {i}, file line {i + 2}{more})", WHERE)
+
+
 def read_grid_csv(path: str | Path) -> pd.DataFrame:
-    """Read a grid CSV (one column per parameter, see :data:`PARAM_COLUMNS`)."""
+    """Read a grid CSV (one column per parameter, see :data:`PARAM_COLUMNS`).
+
+    An empty cell keeps the base case's value; a cell that only names a missing value
+    (``nan``, ``NA``, ``null``, ...) and a column name given twice are refused.
+    """
     p = Path(path)
     if not p.is_file():
         raise InputError("grid", str(p), "must be an existing CSV file", WHERE)
+    names = _raw_header(p)
+    dup = [c for c in dict.fromkeys(names) if c and names.count(c) > 1]
+    if dup:
+        raise InputError("column", dup[0], f"appears {names.count(dup[0])} times in the "
+                         "header; column names must be unique", WHERE)
     try:
-        df = pd.read_csv(p, dtype={c: str for c in STRING_COLUMNS}, skipinitialspace=True)
+        df = pd.read_csv(p, dtype=str, keep_default_na=False, na_values=[],
+                         skipinitialspace=True)
     except pd.errors.EmptyDataError:
         raise InputError("grid", str(p), "is empty; it must hold a header and at least one "
                          "row", WHERE) from None
     except (pd.errors.ParserError, UnicodeDecodeError) as e:
-        raise InputError("grid", str(p), f"is not a readable CSV ({e})", WHERE) from None
+        first = (str(e).strip().splitlines() or [type(e).__name__])[0]  # one line, no content
+        raise InputError("grid", str(p), f"is not a readable CSV ({first})", WHERE) from None
     df.columns = [str(c).strip() for c in df.columns]
+    _refuse_missing_words(df)
+    for c in df.columns:
+        col = df[c].where(df[c].str.strip() != "", np.nan)
+        num = pd.to_numeric(col, errors="coerce")
+        df[c] = num if c not in STRING_COLUMNS and num.notna().sum() == col.notna().sum() \
+            else col
     return df
 
 
@@ -249,7 +295,8 @@ def apply_params(case: DesignCase, params: Mapping[str, Any],
     fkw = {k: p[k] for k in ("gamma", "scale", "laminar_law", "form") if k in p}
     if fkw:
         fkw = {k: (str(v) if k in ("laminar_law", "form") else float(v)) for k, v in fkw.items()}
-        case = replace(case, friction=replace(case.friction, **fkw))
+        case = replace(case, friction=check_friction_ranges(replace(case.friction, **fkw),
+                                                             WHERE))
     if "peak_speed_rpm" in p:
         case = replace(case, duty_cycle=_sine_with_peak(case, float(p["peak_speed_rpm"])))
     case = _apply_thermal(case, p)

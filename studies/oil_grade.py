@@ -61,6 +61,8 @@ References
 
 from __future__ import annotations
 
+import csv
+import io
 from collections.abc import Sequence
 from dataclasses import dataclass, replace
 from pathlib import Path
@@ -78,6 +80,7 @@ from oilgap.model.errors import (
     check_range,
 )
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.inputs import header_error, read_input_text
 from oilgap.model.joint_loss import bearing_mean_power_at, resolve_thermal_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
 from oilgap.studies.grid.runner import run_grid
@@ -150,14 +153,16 @@ def parse_mission(mission) -> tuple[MissionSegment, ...]:
 
 
 def read_mission_csv(path: str | Path) -> tuple[MissionSegment, ...]:
-    """Read a mission CSV ``depth_m,oil_temp_C,fraction`` (see :func:`parse_mission`)."""
+    """Read a UTF-8 mission CSV ``depth_m,oil_temp_C,fraction`` (see :func:`parse_mission`);
+    a file that cannot be read, or whose header is not those columns once each, is
+    refused naming the file and the reason, never its content."""
     p = Path(path)
-    if not p.is_file():
-        raise InputError("mission", str(p), "must be an existing CSV file", "oil-grade study")
-    try:
-        df = pd.read_csv(p, skipinitialspace=True)
-    except pd.errors.EmptyDataError:
-        raise InputError("mission", str(p), "is empty", "oil-grade study") from None
+    text = read_input_text(p, "--mission", "CSV file")
+    header = next(csv.reader(io.StringIO(text)), [])
+    err = header_error(p, [c.strip() for c in header], ("depth_m", "oil_temp_C", "fraction"))
+    if err is not None:
+        raise err
+    df = pd.read_csv(io.StringIO(text), skipinitialspace=True)
     df.columns = [str(c).strip() for c in df.columns]
     return parse_mission(df)
 

@@ -16,7 +16,13 @@ import numpy as np
 import pandas as pd
 
 from oilgap.studies.grid.evaluate import thermal_description
-from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_tables
+from oilgap.studies.reporting import (
+    markdown_table,
+    new_figure,
+    save_figure,
+    write_tables,
+    write_text,
+)
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from oilgap.model.case import DesignCase
@@ -194,7 +200,8 @@ def summary_markdown(result: OilGradeResult, base: DesignCase) -> str:
         + f"; both with the ISO 3448 +-{100 * s['iso_tolerance']:g} % grade tolerance at its "
         "worst. Loss: mean viscous power over the case's duty cycle "
         f"({base.duty_cycle.description}), friction form `{base.friction.form}`, laminar law "
-        f"`{base.friction.laminar_law}`, gamma = {base.friction.gamma:g}.", "",
+        f"`{base.friction.laminar_law}`, gamma = {base.friction.gamma:g} "
+        f"({base.gamma_source}).", "",
         f"Mission profile ({result.mission_source}), {s['mission_hours']:g} h:", "",
         markdown_table(mis, 2), "",
         markdown_table(show, 1),
@@ -240,14 +247,14 @@ def write_outputs(out: Path, result: OilGradeResult, base: DesignCase) -> tuple[
         tables["oil_grade_thermal_comparison.csv"] = result.comparison["grades"]
     files = write_tables(out, tables)
     js = out / "oil_grade.json"
-    js.write_text(json.dumps(result_json(result, base), indent=2) + "\n", encoding="utf-8")
+    write_text(js, json.dumps(result_json(result, base), indent=2) + "\n")
     files.append(js)
     files.append(_figure_heatmap(result, base, out / "oil_grade_heatmap.png"))
     files.append(_figure_vs_grade(result, base, out / "oil_grade_loss_vs_grade.png"))
     if result.comparison is not None:
         files.append(_figure_thermal(result, out / "oil_grade_thermal.png"))
     md = out / "summary.md"
-    md.write_text(summary_markdown(result, base), encoding="utf-8")
+    write_text(md, summary_markdown(result, base))
     files.append(md)
     return tuple(files)
 

@@ -275,7 +275,9 @@ class RigGeometry:
                            "T3_mm": mm(r1.radius_m + r1.gap_m),
                            "T4_mm": mm(r1.radius_m + r1.gap_m + groove_depth_m),
                            "length_mm": mm(r1.length_m)},
-               "motor": {"shaft_bore_radius_mm": mm(self.shaft_bore_m)}}
+               "motor": {"shaft_bore_radius_mm": mm(self.shaft_bore_m)},
+               # stated, not the seed-fit default: the loop is given no groove law for this rig
+               "friction": {"gamma": 0.0}}
         if self.region2 is not None:
             r2 = self.region2
             doc["region2"] = {"radius_mm": mm(r2.radius_m), "length_mm": mm(r2.length_m),

@@ -62,7 +62,13 @@ from oilgap.studies.grid.evaluate import evaluate_cases
 from oilgap.studies.grid.optimize import solve_design_point
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.store import case_fingerprint
-from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_tables
+from oilgap.studies.reporting import (
+    markdown_table,
+    new_figure,
+    save_figure,
+    write_tables,
+    write_text,
+)
 
 MIN_POINTS = 50
 """The fewest points a front may have."""
@@ -342,6 +348,8 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
     lines = [
         f"# Pareto sweeps for {base.name}",
         "",
+        f"Groove exponent: gamma = {base.friction.gamma:g} ({base.gamma_source}).",
+        "",
         f"Gap front: {len(gok)}/{len(g)} points solved (epsilon on delta from "
         f"{g['epsilon'].max():.4g} down to {g['epsilon'].min():.4g} mm), sweep "
         f"{result.sweep_time_s:.2f} s, median solve {1e3 * gok['solve_time_s'].median():.1f} ms. "
@@ -390,7 +398,7 @@ def write_outputs(out: Path, result: ParetoResult, base: DesignCase) -> tuple[Pa
     files.append(_figure_gap(result, out / "pareto_gap.png"))
     files.append(_figure_inertia(result, out / "pareto_inertia.png"))
     md = out / "summary.md"
-    md.write_text(summary_markdown(result, base), encoding="utf-8")
+    write_text(md, summary_markdown(result, base))
     files.append(md)
     return tuple(files)
 

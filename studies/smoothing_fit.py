@@ -82,6 +82,14 @@ DEFAULT_METHOD = "per-oil"
 NEGLIGIBLE_RESISTANCE_K_W = 1e-6
 """R_th below this is taken as 0 [K/W]: the balance's rise R_th P < 1e-3 K, far below
 anything the fit resolves (and the bracket of the fixed point is then a rounding)."""
+MAX_RESISTANCE_K_W = 3.0
+"""Largest fixed R_th of the per-oil fit [K/W], the shared fits' bound too: the runs'
+25-110 W would heat the oil by 75-330 K, towards the 250 degC cap of the balance (the
+seed rig's shared fit gives 0.21 K/W). Within it, a fit that ends on the bounds of its
+parameters is reported as failed (:func:`fit_smoothing`)."""
+
+RESISTANCE_REASON = ("the runs' 25-110 W would heat the oil by 75-330 K, towards the "
+                     "balance's 250 degC cap (the seed rig's fitted R_th is 0.21 K/W)")
 PLATEAU_TOL = 0.05
 """Default criterion: the loss has stopped falling once it is within this fraction of
 its value at T = 1 (the smooth-wall floor)."""
@@ -371,14 +379,17 @@ def fit_smoothing(method: str | None = "per-oil", resistance_K_W: float = 0.0,
     Raises
     ------
     InputError
-        Unknown method or mode, negative ``resistance_K_W``.
+        Unknown method or mode, ``resistance_K_W`` outside [0,
+        :data:`MAX_RESISTANCE_K_W`].
     SolverError
-        The least-squares fit did not converge.
+        The least-squares fit did not converge, or did not identify its parameters
+        (a singular Jacobian: no standard error).
     """
     method, thermal, _ = resolve_fit_mode(method, thermal)
     rth_fixed = check_finite("resistance_K_W", resistance_K_W, "smoothing study")
-    if rth_fixed < 0:
-        raise InputError("resistance_K_W", rth_fixed, "must be >= 0", "smoothing study")
+    if not 0.0 <= rth_fixed <= MAX_RESISTANCE_K_W:
+        raise InputError("R_th (--r-th-k-per-w)", rth_fixed, f"allowed range is [0, "
+                         f"{MAX_RESISTANCE_K_W:g}] K/W: {RESISTANCE_REASON}", "smoothing study")
     base = base if base is not None else seed_case()
     table4 = table4 if table4 is not None else load_table4()
     runs, meas = measured_runs(table4)
@@ -413,6 +424,7 @@ def _result(method, thermal, sol, model, runs, meas, oils, rth_fixed, table4) ->
         se = np.sqrt(np.clip(np.diag(cov), 0.0, None))
     except np.linalg.LinAlgError:
         se = np.full(p, np.nan)
+    _refuse_unidentified(method, thermal, sol, se, rth_fixed)
     temps, powers = model(sol.x)
     red = reduction_errors(powers, table4)
     common = dict(rms_W=float(np.sqrt(ssr / m)), max_abs_W=float(np.max(np.abs(sol.fun))),
@@ -429,6 +441,25 @@ def _result(method, thermal, sol, model, runs, meas, oils, rth_fixed, table4) ->
                         {o: float(sol.x[1 + i]) for i, o in enumerate(oils)},
                         {o: float(se[1 + i]) for i, o in enumerate(oils)}, rth_fixed, None,
                         **common)
+
+
+def _refuse_unidentified(method, thermal, sol, se, rth_fixed) -> None:
+    """A fit whose parameters the data do not identify is a failure, not a result: no
+    finite standard error (singular Jacobian), or a parameter on the bounds of the fit
+    (R_th at 0 aside, which the shared fits report as such)."""
+    note = f" with R_th = {rth_fixed:g} K/W" if method == "per-oil" and rth_fixed else ""
+    if not (np.all(np.isfinite(se)) and np.all(np.isfinite(sol.x))):
+        raise SolverError(f"the {method}/{thermal} fit of Table 4{note} did not identify its "
+                          "parameters (singular Jacobian: no standard error), so it gives no "
+                          "result", "not identified")
+    names = ["gamma"] + (["T_base"] * (len(sol.x) - 1) if method == "per-oil"
+                         else ["T_base", "R_th"])
+    pinned = [n for n, a in zip(names, sol.active_mask, strict=True)
+              if a != 0 and not (n == "R_th" and a < 0)]
+    if pinned:
+        raise SolverError(f"the {method}/{thermal} fit of Table 4{note} ended on the bounds "
+                          f"of {', '.join(dict.fromkeys(pinned))}: the data are not explained "
+                          "within them, so it gives no result", "at bounds")
 
 
 def run_base_temps(fit: SmoothingFit, oils: list[str]) -> np.ndarray:

@@ -9,7 +9,13 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_tables
+from oilgap.studies.reporting import (
+    markdown_table,
+    new_figure,
+    save_figure,
+    write_tables,
+    write_text,
+)
 from oilgap.studies.smoothing_fit import T_GROOVED, T_SMOOTHED, SmoothingFit
 
 THERMAL_TEXT = {
@@ -252,7 +258,6 @@ def write_outputs(out: Path, table: pd.DataFrame, fit: SmoothingFit, checks: pd.
     files.append(_figure_table4(table, out / "smoothing_table4.png"))
     files.append(_figure_loss_vs_T(curves, plateau, fit, out / "smoothing_loss_vs_T.png"))
     md = out / "summary.md"
-    md.write_text(summary_markdown(table, fit, checks, plateau, base, run_temps, default),
-                  encoding="utf-8")
+    write_text(md, summary_markdown(table, fit, checks, plateau, base, run_temps, default))
     files.append(md)
     return tuple(files)

@@ -203,18 +203,39 @@ class SynthConfig:
                                  "both", "synth")
             get_effect(self.effect)
             strength = DEFAULT_STRENGTH[self.effect] if strength is None else \
-                check_finite("strength", strength, "synth")
+                _checked_strength(self.effect, "strength", strength)
             effects = ((self.effect, strength),)
         elif strength is not None:
             raise InputError("strength", strength, "only together with an effect", "synth")
         else:
             effects = tuple((get_effect(n).name, DEFAULT_STRENGTH[n] if st is None else
-                             check_finite(f"strength of {n}", st, "synth"))
+                             _checked_strength(n, f"strength of {n}", st))
                             for n, st in self.effects or ())
         if self.extra_power not in (None, *OUTSIDE_LIBRARY):
             raise InputError("extra_power", self.extra_power,
                              f"allowed: {', '.join(OUTSIDE_LIBRARY)}", "synth")
         return replace(self, case=case, truth=truth, strength=strength, effects=effects)
+
+
+MAX_STRENGTH_FACTOR = 1000.0
+"""Largest |strength| as a multiple of the effect's :data:`DEFAULT_STRENGTH`: a thousand
+times the test strength already swamps the oil's own loss (kW on the seed rig); beyond,
+the rig's thermal model leaves its range."""
+
+
+def _checked_strength(effect: str, field: str, value) -> float:
+    """A finite strength, >= 0 where the effect's coefficient must be (``nonnegative``),
+    at most :data:`MAX_STRENGTH_FACTOR` times the default in size."""
+    x = check_finite(field, value, "synth")
+    if x < 0.0 and EFFECTS[effect].nonnegative:
+        raise InputError(field, value, f"must be >= 0: the coefficient of {effect} is "
+                         "non-negative by physics (dissipation, inertia, causality)", "synth")
+    top = MAX_STRENGTH_FACTOR * DEFAULT_STRENGTH[effect]
+    if abs(x) > top:
+        raise InputError(field, value, f"at most {top:g} in size ({MAX_STRENGTH_FACTOR:g} "
+                         f"times the test strength {DEFAULT_STRENGTH[effect]:g}, which already "
+                         "swamps the oil's loss)", "synth")
+    return x
 
 
 def polymer_thickened(oils: tuple[str, ...] = SYNTH_OILS) -> tuple:
@@ -455,6 +476,8 @@ def synthesize(config: SynthConfig | None = None, seed: int = 0) -> pd.DataFrame
     Columns ``run, time_s, speed_rpm, temp_C, oil, roughness_T`` and
     ``power_W`` or ``viscous_power_W``. ``seed`` draws the measurement noise.
     """
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise InputError("seed", seed, "an integer >= 0 is required", "synth")
     tr = simulate_truth(config)
     cfg = tr["config"]
     rng = np.random.default_rng(seed)

@@ -64,8 +64,10 @@ import numpy as np
 
 from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import DesignCase, OperatingPoint
+from oilgap.model.case_limits import check_slot_pitch
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import oil_state
+from oilgap.model.interrupts import raise_if_interrupted
 from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import joint_regions, region_mean_power
@@ -152,6 +154,9 @@ class DesignProblem:
                              "must leave the machined groove bottoms (R - "
                              f"{self.machined_rotor_groove_m / MM_TO_M:g} mm) outside the "
                              f"shaft bore ({m.shaft_bore_radius / MM_TO_M:g} mm)", "case")
+        check_slot_pitch(m, b.radius_min + b.gap_min, "bounds.radius_min_mm",
+                         b.radius_min / MM_TO_M, "the smallest stator bore of the bounds "
+                         "(radius_min_mm + gap_min_mm)", "case")
         nodes, weights = case.duty_cycle.speed_distribution()
         keep = nodes > 0.0  # zero speed: |omega|^3 = 0, exactly no power (Eq. 5)
         self.nodes_rad_s = np.ascontiguousarray(nodes[keep])
@@ -515,6 +520,7 @@ class DesignProblem:
             args.update(lam_x0=lam[0], lam_g0=lam[1])
         t0 = time.perf_counter()
         sol = solver(**args)
+        raise_if_interrupted()  # CasADi turns Ctrl-C into a failed solve: re-raise it
         dt = time.perf_counter() - t0
         stats = solver.stats()
         status = str(stats.get("return_status", "unknown"))
@@ -532,6 +538,9 @@ class DesignProblem:
             values = (float(np.exp(float(sol["f"]))), float(np.exp(gv[0]) * self.tau_ref_Nm),
                       float(np.exp(gv[1]) * self.inertia_ref_kgm2))
         optimal = self._point(x_m, nu, rho, p2, values)
+        if not np.all(np.isfinite([optimal.mean_power_W, optimal.torque_capability_Nm,
+                                   optimal.inertia_kgm2])):  # never a non-finite result
+            raise self._failure("non-finite result", stats, sol, y, p2, nu)
         lam_x = np.asarray(sol["lam_x"]).ravel()
         lam_g = np.asarray(sol["lam_g"]).ravel()
         mults, active = convert_multipliers(params, optimal, lam_x, lam_g)

@@ -68,6 +68,7 @@ import numpy as np
 from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import ThermalSpec
 from oilgap.model.errors import InputError, SolverError
+from oilgap.model.interrupts import raise_if_interrupted
 from oilgap.model.joint_loss import (
     case_film,
     joint_mean_power,
@@ -497,6 +498,7 @@ class ThermalDesignProblem:
             args.update(lam_x0=lam[0], lam_g0=lam[1])
         t0 = time.perf_counter()
         sol = solver(**args)
+        raise_if_interrupted()  # CasADi turns Ctrl-C into a failed solve: re-raise it
         dt = time.perf_counter() - t0
         stats = solver.stats()
         status = str(stats.get("return_status", "unknown"))

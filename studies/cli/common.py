@@ -42,3 +42,15 @@ def study_out(args: argparse.Namespace, study: str) -> Path:
 def file_list(files: Iterable) -> str:
     """The files written, one indented line each."""
     return "\n".join(f"  {f}" for f in files)
+
+
+def gamma_fields(case: DesignCase) -> dict:
+    """The groove exponent in use and where it came from, for a JSON output's top level:
+    ``gamma`` [-] and ``gamma_source`` ("case", "default (seed rig fit)", "given")."""
+    return {"gamma": float(case.friction.gamma), "gamma_source": case.gamma_source}
+
+
+def gamma_line(case: DesignCase) -> str:
+    """The header line naming gamma and its source (every command that uses a case)."""
+    return (f"gamma       {case.friction.gamma:g} (groove exponent of Eq. 8, T^gamma on "
+            f"region 1; from: {case.gamma_source})")

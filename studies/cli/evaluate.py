@@ -12,7 +12,7 @@ from oilgap.model.errors import InputError
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
 from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.units import m_to_mm
-from oilgap.studies.cli.common import load_case
+from oilgap.studies.cli.common import gamma_fields, gamma_line, load_case
 
 MODE_TEXT = {
     "none": "isothermal oil: the seed paper's model",
@@ -101,9 +101,10 @@ def _film_notes(ev: CaseEvaluation) -> list[str]:
     return notes
 
 
-def format_evaluation(ev: CaseEvaluation) -> str:
-    """Human-readable table of an evaluation."""
-    lines = _header(ev) + [
+def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
+    """Human-readable table of an evaluation (``gamma``: the header line naming the groove
+    exponent and its source, :func:`~oilgap.studies.cli.common.gamma_line`)."""
+    lines = _header(ev) + ([gamma] if gamma else []) + [
         "",
         f"{'region':<14}{'R mm':>7}{'gap mm':>8}{'L mm':>7}{'T':>6}{'Re_peak':>10}"
         f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}{'Na_peak':>9}{'film':>7}{'rise K':>8}"
@@ -167,7 +168,7 @@ def run(args: argparse.Namespace) -> int:
     case = _thermal_case(load_case(args), args)
     ev = evaluate_case(case, laminar_law=args.laminar_law, thermal=args.thermal)
     if args.json:
-        print(json.dumps(ev.to_dict(), indent=2))
+        print(json.dumps({**ev.to_dict(), **gamma_fields(case)}, indent=2))
     else:
-        print(format_evaluation(ev))
+        print(format_evaluation(ev, gamma_line(case)))
     return 0

@@ -15,6 +15,7 @@ failure (from ``oilgap.studies.cli``). Arguments in
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import warnings
 from dataclasses import replace
@@ -24,6 +25,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.case_io import write_case_toml
 from oilgap.model.errors import InputError, OilgapWarning, check_finite, check_positive
 from oilgap.model.evaluation import oil_state
+from oilgap.model.files import check_out_file
 from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.units import m2_s_to_cst
 from oilgap.optim.design import (
@@ -32,7 +34,8 @@ from oilgap.optim.design import (
     HeatingComparison,
     compare_heating,
 )
-from oilgap.studies.cli.common import load_case
+from oilgap.studies.cli.common import gamma_fields, gamma_line, load_case
+from oilgap.studies.cli.outputs import solver_log_to_stderr
 
 MODE_TEXT = {
     "none": "isothermal oil, the seed paper's model",
@@ -70,6 +73,13 @@ def thermal_line(mode: str, default: bool) -> str:
     if mode != "none":
         text += "; --thermal none for the seed's isothermal model"
     return text + ")"
+
+
+def with_gamma(text: str, case: DesignCase) -> str:
+    """The report with the gamma line after its oil line (the end of the header)."""
+    lines = text.split("\n")
+    at = next((i + 1 for i, x in enumerate(lines) if x.startswith("oil ")), 1)
+    return "\n".join(lines[:at] + [gamma_line(case)] + lines[at:])
 
 
 def _rows(prm) -> list[tuple[str, str]]:
@@ -264,14 +274,19 @@ def run(args: argparse.Namespace) -> int:
     torque_min = _number(args, "torque_min_nm", "--torque-min-nm", positive=True)
     inertia_ratio = _number(args, "inertia_max_ratio", "--inertia-max-ratio", positive=True)
     starts = _starts(args)
+    if args.out:  # before any computation: folder writable, no earlier file unless --force
+        check_out_file(args.out, args.force)
     case, mode = _mode(load_case(args), args)
     header = thermal_line(mode, args.thermal is None)
     limits = {"torque_min_Nm": torque_min, "inertia_max_ratio": inertia_ratio}
+    log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
     if mode == "none":
-        res = DesignProblem(case, verbose=args.verbose).solve(starts=starts, **limits)
+        with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
+            res = DesignProblem(case, verbose=args.verbose).solve(starts=starts, **limits)
         return _report_none(res, args, header)
-    cmp = compare_heating(DesignProblem(case, verbose=args.verbose, thermal=mode),
-                          starts=starts, **limits)
+    with log:
+        cmp = compare_heating(DesignProblem(case, verbose=args.verbose, thermal=mode),
+                              starts=starts, **limits)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         exact = (*cmp.heated.operating(), cmp.isothermal.evaluate()[1])
@@ -282,10 +297,11 @@ def run(args: argparse.Namespace) -> int:
             d[k]["mean_power_exact_W"] = ex.mean_power_W
             d[k]["oil_temp_exact_C"] = ex.oil_temp_C
         d["without_heating"]["optimal"]["mean_power_exact_W"] = exact[2].total_mean_power_W
+        d.update(gamma_fields(cmp.heated.case))
         d["out"] = str(out_path) if out_path else None
         print(json.dumps(d, indent=2))
     else:
-        print(format_comparison(cmp, exact, header))
+        print(with_gamma(format_comparison(cmp, exact, header), cmp.heated.case))
         if out_path:
             print(f"\nwrote {Path(out_path)}")
     return 0
@@ -302,11 +318,11 @@ def _report_none(res: DesignResult, args: argparse.Namespace, header: str) -> in
         d["initial"]["mean_power_exact_W"] = exact[0].total_mean_power_W
         d["optimal"]["mean_power_exact_W"] = exact[1].total_mean_power_W
         d.update(thermal_mode="none", oil_temp_C=res.parameters.oil_temp_C, sea_temp_C=None,
-                 sea_temp_cost_W_per_K=None, without_heating=None)
+                 sea_temp_cost_W_per_K=None, without_heating=None, **gamma_fields(res.case))
         d["out"] = str(out_path) if out_path else None
         print(json.dumps(d, indent=2))
     else:
-        print(format_result(res, exact, header))
+        print(with_gamma(format_result(res, exact, header), res.case))
         if out_path:
             print(f"\nwrote {Path(out_path)}")
     return 0

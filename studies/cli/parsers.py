@@ -51,6 +51,13 @@ THERMAL_MODES = ("none", "film", "full")
 same reason as :data:`EFFECT_NAMES`)."""
 
 
+def add_force(p, what: str = "--out") -> None:
+    """The one ``--force`` option of every command that writes."""
+    p.add_argument("--force", action="store_true",
+                   help=f"replace the outputs of an earlier run at {what} (default: refuse "
+                   "to overwrite anything)")
+
+
 def add_thermal_argument(p) -> None:
     """The one ``--thermal`` option of every command that reports a loss."""
     p.add_argument("--thermal", choices=THERMAL_MODES, default=None,
@@ -130,7 +137,9 @@ def add_optimize(sub) -> None:
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
-    p.add_argument("--verbose", action="store_true", help="show IPOPT's iterations")
+    add_force(p)
+    p.add_argument("--verbose", action="store_true", help="show IPOPT's iterations (on "
+                   "stderr)")
     p.set_defaults(command="optimize")
 
 
@@ -159,6 +168,7 @@ def _add_smoothing(ss) -> None:
                       "grooved T = 4 vs smoothed T = 2 with ISO VG150/320/680/1000 at 0 m; fit "
                       "gamma and the runs' effective oil temperatures; then loss against T.")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/smoothing/)")
+    add_force(s)
     s.add_argument("--method", choices=("per-oil", "shared", "heat-balance"), default=None,
                    help="run temperatures: one per oil (default), one shared steady balance "
                    "T = T_base + R_th P (isothermal loss), or heat-balance (the same with "
@@ -187,6 +197,7 @@ def _add_pareto(ss) -> None:
                       "and loss vs rotor inertia; seed and smoothed seed marked.")
     s.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/pareto/)")
+    add_force(s)
     s.add_argument("--points", type=positive_int, default=60,
                    help="points per front (>= 50, default 60)")
     s.add_argument("--torque-min-nm", type=finite_float,
@@ -201,6 +212,7 @@ def _add_oil_grade(ss) -> None:
                       "lubrication and cold-start limits, mission energy; recommended grade.")
     s.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/oil-grade/)")
+    add_force(s)
     s.add_argument("--mission", metavar="MISSION.csv",
                    help="mission profile depth_m,oil_temp_C,fraction (default: the case's "
                    "[[mission]] rows, else the stated seed mission)")
@@ -235,16 +247,22 @@ def _add_sweep(ss) -> None:
                       description="Run any grid of parameter combinations (one row per "
                       "point, columns: " + ", ".join(columns) + "). Empty cells keep the "
                       "case's value. A failed point is a row with its error; rerunning with "
-                      "the same --out computes only the points not yet done.")
+                      "the same --out and --resume computes only the points not yet done.")
     s.add_argument("grid", metavar="GRID.csv")
     s.add_argument("--case", metavar="CASE.toml", help="base case (default: seed)")
     s.add_argument("--oils", metavar="OILS.csv", help="oils table to look oil names up in")
     s.add_argument("--mode", choices=("evaluate", "optimize"), default="evaluate")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/sweep/)")
+    again = s.add_mutually_exclusive_group()
+    again.add_argument("--resume", action="store_true",
+                       help="continue the sweep stored in --out (only the points not yet "
+                       "done are computed)")
+    again.add_argument("--force", action="store_true",
+                       help="discard the sweep stored in --out and start over")
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
     s.add_argument("--chunk-size", type=positive_int, help="rows per task")
     s.add_argument("--retry-failed", action="store_true",
-                   help="recompute points stored as failed")
+                   help="recompute points stored as failed (implies --resume)")
     add_thermal_argument(s)
     _progress(s)
     s.set_defaults(command="study sweep")
@@ -268,6 +286,7 @@ def add_loop(sub) -> None:
     p.add_argument("--case", metavar="RIG.toml", help="rig geometry (default: the seed joint)")
     p.add_argument("--out", metavar="DIR", default="loop_out",
                    help="output directory (default: loop_out)")
+    add_force(p)
     p.add_argument("--json", action="store_true", help="print loop.json instead of the tables")
     p.add_argument("--margin", type=finite_float, default=0.10,
                    help="held-out RMSE fall an effect must bring (default 0.10)")
@@ -324,10 +343,12 @@ def add_synth(sub) -> None:
     p.add_argument("--effect", choices=list(EFFECT_NAMES), metavar="NAME",
                    help="inject this library effect (see --list-effects)")
     p.add_argument("--strength", type=finite_float,
-                   help="strength of the effect in its unit (default: its test strength)")
-    p.add_argument("--seed", type=int, default=0, help="noise seed (default 0)")
+                   help="strength of the effect in its unit (default: its test strength); >= 0 "
+                   "where the effect's coefficient must be, at most 1000 x the test strength")
+    p.add_argument("--seed", type=int, default=0, help="noise seed, an integer >= 0 (default 0)")
     p.add_argument("--out", metavar="data.csv", default="synth.csv",
                    help="output CSV (default: synth.csv)")
+    add_force(p)
     p.add_argument("--case", metavar="RIG.toml", help="rig geometry (default: the seed joint)")
     p.add_argument("--roughness", metavar="T,T", default="4,2",
                    help="roughness T of the two rotor builds (default 4,2)")

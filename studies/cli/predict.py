@@ -11,8 +11,6 @@ file; an existing ``--out`` is replaced only with ``--force``.
 from __future__ import annotations
 
 import argparse
-import os
-import tempfile
 import warnings
 from pathlib import Path
 
@@ -20,6 +18,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.files import atomic_to_csv, atomic_to_parquet, check_out_file
 from oilgap.model.measured_data import read_table
 from oilgap.model.oils import read_oils_csv
 from oilgap.optim.calibration.model_io import (
@@ -32,40 +31,16 @@ from oilgap.optim.calibration.model_io import (
 OUT_SUFFIXES = (".csv", ".parquet", ".pq")
 
 
-def _checked_out(path: str, force: bool) -> Path:
-    out = Path(path)
-    if out.suffix.lower() not in OUT_SUFFIXES:
-        raise InputError("--out", str(out), f"must end in {', '.join(OUT_SUFFIXES)}")
-    if not out.parent.is_dir():
-        raise InputError("--out", str(out), f"directory {str(out.parent)!r} does not exist")
-    if out.is_dir():
-        raise InputError("--out", str(out), "is a directory; a file name is required")
-    if out.exists() and not force:
-        raise InputError("--out", str(out), "exists; pass --force to overwrite it")
-    return out
-
-
-def write_atomic(df: pd.DataFrame, out: Path) -> Path:
-    """Write ``df`` (CSV or Parquet by suffix) to a temporary file, then move it to ``out``."""
-    fd, tmp = tempfile.mkstemp(prefix=f".{out.name}.", suffix=".tmp", dir=out.parent)
-    os.close(fd)
+def write_table(df: pd.DataFrame, out: Path) -> Path:
+    """Write ``df`` (CSV or Parquet by suffix) atomically (a temporary file next to
+    ``out``, then renamed)."""
+    if out.suffix.lower() == ".csv":
+        return atomic_to_csv(df, out, index=False)
     try:
-        if out.suffix.lower() == ".csv":
-            df.to_csv(tmp, index=False)
-        else:
-            try:
-                df.to_parquet(tmp, index=False)
-            except ImportError:
-                raise InputError("--out", str(out), "writing Parquet needs pyarrow "
-                                 "(pip install 'oilgap[parquet]')") from None
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp's 0600 -> what a plain write would give
-        os.replace(tmp, out)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
-    return out
+        return atomic_to_parquet(df, out, index=False)
+    except ImportError:
+        raise InputError("--out", str(out), "writing Parquet needs pyarrow "
+                         "(pip install 'oilgap[parquet]')") from None
 
 
 def _summary(table: pd.DataFrame) -> list[str]:
@@ -75,7 +50,7 @@ def _summary(table: pd.DataFrame) -> list[str]:
 
 def run(args: argparse.Namespace) -> int:
     """Predict the rows of DATA and write them with the predictions; returns the exit code."""
-    out = _checked_out(args.out, args.force)
+    out = check_out_file(args.out, args.force, suffixes=OUT_SUFFIXES)
     model = load_model(args.model)
     oils = read_oils_csv(args.oils) if args.oils else None
     raw = read_table(args.data)
@@ -95,9 +70,12 @@ def run(args: argparse.Namespace) -> int:
     cols = [PREDICTED_VISCOUS] + ([PREDICTED_POWER] if PREDICTED_POWER in table else [])
     for c in cols + [REASON]:
         res[c] = table[c].to_numpy()
-    write_atomic(res, out)
+    write_table(res, out)
     print(f"predicted {ok} of {len(table)} rows ({args.stage}: {', '.join(cols)}); "
           f"wrote {out}")
     for line in _summary(table):
         print(line)
+    g = model.laws[args.stage].gamma
+    print(f"gamma       {g:g} (groove exponent of Eq. 8; from: the {args.stage} model of "
+          f"{args.model}, as oilgap loop calibrated it)")
     return 0

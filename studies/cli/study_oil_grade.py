@@ -8,7 +8,8 @@ import argparse
 
 from oilgap.model.errors import InfeasibleError
 from oilgap.studies import oil_grade
-from oilgap.studies.cli.common import case_or_seed, file_list, study_out
+from oilgap.studies.cli.common import case_or_seed, file_list, gamma_line, study_out
+from oilgap.studies.cli.outputs import out_folder
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.oil_grade import DEFAULT_TEMP_RANGE_C, OilGradeResult, read_mission_csv
 
@@ -38,14 +39,18 @@ def run(args: argparse.Namespace) -> int:
     case = case_or_seed(args.case)
     mission = read_mission_csv(args.mission) if args.mission else None
     out = study_out(args, "oil-grade")
-    r = oil_grade.run(out, case, mission, nu_min_cSt=args.nu_min_cst,
-                      nu_max_cSt=args.nu_max_cst, iso_tolerance=args.iso_tolerance,
-                      depth_range_m=(args.depth_min_m, args.depth_max_m),
-                      temp_range_C=_temp_range(args), sea_temp_range_C=args.sea_temp_range_c,
-                      mission_hours=args.mission_hours, workers=args.workers,
-                      progress=args.progress, thermal=args.thermal)
+    with out_folder(args, out) as folder:  # checked and locked before any computation
+        folder.begin()
+        r = oil_grade.run(out, case, mission, nu_min_cSt=args.nu_min_cst,
+                          nu_max_cSt=args.nu_max_cst, iso_tolerance=args.iso_tolerance,
+                          depth_range_m=(args.depth_min_m, args.depth_max_m),
+                          temp_range_C=_temp_range(args),
+                          sea_temp_range_C=args.sea_temp_range_c,
+                          mission_hours=args.mission_hours, workers=args.workers,
+                          progress=args.progress, thermal=args.thermal)
     s = r.settings
     print(f"thermal     {thermal_description(case, r.thermal_mode, s['thermal_default'])}")
+    print(gamma_line(case))
     axis = "sea" if r.thermal_mode == "full" else "oil"
     print(f"envelope    {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m x {axis} "
           f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC\n")

@@ -9,20 +9,24 @@ import argparse
 import pandas as pd
 
 from oilgap.studies import pareto
-from oilgap.studies.cli.common import case_or_seed, file_list, study_out
+from oilgap.studies.cli.common import case_or_seed, file_list, gamma_line, study_out
+from oilgap.studies.cli.outputs import out_folder
 
 
 def run(args: argparse.Namespace) -> int:
     """``oilgap study pareto``: the two fronts; returns the exit code."""
     case = case_or_seed(args.case)
     out = study_out(args, "pareto")
-    r = pareto.run(out, case, args.points, args.torque_min_nm, args.progress)
+    with out_folder(args, out) as folder:  # checked and locked before any computation
+        folder.begin()
+        r = pareto.run(out, case, args.points, args.torque_min_nm, args.progress)
     g, i = r.gap_front, r.inertia_front
     gok = g[g["status"] == "ok"]
     iok = i[i["status"] == "ok"]
     print("thermal     none (isothermal oil at the case's temperature, the seed paper's "
           "model: the fronts do not take --thermal yet; `oilgap optimize --thermal` "
           "gives the heated optimum)")
+    print(gamma_line(case))
     print(f"gap front: {len(gok)}/{len(g)} points, delta {gok['delta_mm'].min():.3f}.."
           f"{gok['delta_mm'].max():.3f} mm, loss {gok['mean_power_W'].max():.2f}.."
           f"{gok['mean_power_W'].min():.2f} W; sweep {r.sweep_time_s:.2f} s "

@@ -10,7 +10,8 @@ import numpy as np
 
 from oilgap.model.errors import InputError
 from oilgap.studies import smoothing
-from oilgap.studies.cli.common import file_list, study_out
+from oilgap.studies.cli.common import case_or_seed, file_list, gamma_line, study_out
+from oilgap.studies.cli.outputs import out_folder
 from oilgap.studies.smoothing import SmoothingResult
 from oilgap.studies.smoothing_report import thermal_line
 
@@ -49,6 +50,7 @@ def _print(r: SmoothingResult, plateau_tol: float) -> None:
     f = r.fit
     t = r.table[r.table["group"] > 0]
     print(f"thermal     {thermal_line(f, r.thermal_default)}")
+    print(f"{gamma_line(case_or_seed(None))}; this study fits its own below")
     print(f"fitted gamma = {f.gamma:.3f} +- {f.gamma_se:.3f}"
           + ("   <- candidate calibrated default for the seed case"
              if (f.method, f.thermal_mode, f.resistance_K_W) == ("per-oil", "none", 0.0)
@@ -78,8 +80,10 @@ def run(args: argparse.Namespace) -> int:
     """``oilgap study smoothing``: fit, Table 4, loss vs T; returns the exit code."""
     T = _t_values(args)
     out = study_out(args, "smoothing")
-    r = smoothing.run(out, method=args.method, resistance_K_W=args.r_th_k_per_w, T_values=T,
-                      plateau_tol=args.plateau_tol, thermal=args.thermal)
+    with out_folder(args, out) as folder:  # checked and locked before any computation
+        folder.begin()
+        r = smoothing.run(out, method=args.method, resistance_K_W=args.r_th_k_per_w,
+                          T_values=T, plateau_tol=args.plateau_tol, thermal=args.thermal)
     _print(r, args.plateau_tol)
     print(f"\nwrote {out}/:\n" + file_list(r.files))
     return 0

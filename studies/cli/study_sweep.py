@@ -14,12 +14,14 @@ import pandas as pd
 
 from oilgap.model.joint_loss import operating_temperature
 from oilgap.model.oils import read_oils_csv
-from oilgap.studies.cli.common import case_or_seed, file_list, study_out
+from oilgap.model.result_folder import ResultFolder
+from oilgap.studies.cli.common import case_or_seed, file_list, gamma_line, study_out
+from oilgap.studies.cli.outputs import out_folder
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid_csv
-from oilgap.studies.reporting import markdown_table, new_figure, save_figure
+from oilgap.studies.reporting import markdown_table, new_figure, save_figure, write_text
 
 
 def _sweep_figure(res: pd.DataFrame, base_power: float, base_name: str, path: Path,
@@ -59,6 +61,13 @@ def _param_names() -> set[str]:
     return set(PARAM_COLUMNS) | set(OPTIMIZE_COLUMNS)
 
 
+def _empty_cells(grid: pd.DataFrame) -> str:
+    """Which columns have empty cells (they keep the base case's value), or ""."""
+    n = {c: int(grid[c].isna().sum()) for c in grid.columns if c != "label"}
+    given = ", ".join(f"{c} {k}" for c, k in n.items() if k)
+    return f"empty cells (the base case's value): {given}" if given else ""
+
+
 def _base_line(case, thermal: str) -> tuple[float, str]:
     """The base case's loss under the mode [W] and where it was taken."""
     op = operating_temperature(case, thermal)
@@ -68,11 +77,19 @@ def _base_line(case, thermal: str) -> tuple[float, str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    """``oilgap study sweep GRID.csv``: run a grid (resumable); returns the exit code."""
+    """``oilgap study sweep GRID.csv``: run a grid (resumable with --resume); returns the
+    exit code. ``--out`` is checked and locked before anything is read or computed."""
+    out = study_out(args, "sweep")
+    with out_folder(args, out, resume=args.resume or args.retry_failed) as folder:
+        return _sweep(args, out, folder)
+
+
+def _sweep(args: argparse.Namespace, out: Path, folder: ResultFolder) -> int:
+    """The sweep inside its locked result folder."""
     grid = read_grid_csv(args.grid)
     case = case_or_seed(args.case)
     cat = read_oils_csv(args.oils) if args.oils else None
-    out = study_out(args, "sweep")
+    folder.begin()
     t0 = time.perf_counter()
     res = run_grid(grid, case, mode=args.mode, out_dir=out, workers=args.workers,
                    chunk_size=args.chunk_size, progress=args.progress, catalogue=cat,
@@ -88,6 +105,10 @@ def run(args: argparse.Namespace) -> int:
     fig = _sweep_figure(res, base_p, case.name, out / "sweep.png", thermal)
     lines = [f"# Sweep of {Path(args.grid).name} ({args.mode})", "",
              f"Thermal mode: {header}.", "",
+             f"Groove exponent: gamma = {case.friction.gamma:g} ({case.gamma_source})"
+             + ("; the grid's gamma column overrides it per row." if "gamma" in grid.columns
+                else "."), "",
+             *([_empty_cells(grid) + ".", ""] if _empty_cells(grid) else []),
              f"Base case: {case.name} ({base_p:.3f} W at {base_where}). "
              f"{len(res)} points: {len(ok)} ok, {len(bad)} failed; "
              f"{res.attrs.get('computed', len(res))} computed this run, "
@@ -103,8 +124,12 @@ def run(args: argparse.Namespace) -> int:
     if len(bad):
         lines += ["", f"First failure (row {bad.index[0]}): {bad['error'].iloc[0]}"]
     md = out / "summary.md"
-    md.write_text("\n".join(lines) + "\n", encoding="utf-8")
+    write_text(md, "\n".join(lines) + "\n")
+    folder.complete()
     print(f"thermal     {header}")
+    print(gamma_line(case))
+    if _empty_cells(grid):
+        print(_empty_cells(grid))
     print(f"{len(res)} points: {len(ok)} ok, {len(bad)} failed "
           f"({res.attrs.get('computed', len(res))} computed, {res.attrs.get('reused', 0)} "
           f"reused) in {dt:.2f} s")

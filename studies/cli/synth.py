@@ -9,6 +9,7 @@ import sys
 from oilgap.model.case_io import read_case_toml
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
+from oilgap.model.files import check_out_file
 from oilgap.studies.reporting import write_data_csv
 from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize
 
@@ -22,11 +23,14 @@ def run(args: argparse.Namespace) -> int:
         return 0
     if args.strength is not None and args.effect is None:
         raise InputError("--strength", args.strength, "needs --effect NAME")
+    if args.seed < 0:
+        raise InputError("--seed", args.seed, "an integer >= 0 is required (the noise seed)")
     try:
         rough = tuple(float(x) for x in args.roughness.split(","))
     except ValueError:
         raise InputError("--roughness", args.roughness, "comma-separated numbers >= 1, "
                          "e.g. 4,2") from None
+    check_out_file(args.out, getattr(args, "force", False))  # before any computation
     case = read_case_toml(args.case) if args.case else None
     cfg = SynthConfig(case=case, roughness=rough, effect=args.effect, strength=args.strength,
                       kind="viscous_power_W" if args.viscous else "power_W")

@@ -45,7 +45,7 @@ def test_synth_then_loop(tmp_path, capsys):
         assert (res / f).stat().st_size > 10_000
 
     # the table form: error table, effects, before/after
-    assert main(["loop", str(data), "--out", str(res), "--no-figures"]) == 0
+    assert main(["loop", str(data), "--out", str(res), "--no-figures", "--force"]) == 0
     text = capsys.readouterr().out
     assert "error table" in text and "oil_inertia" in text and "held-out (by run)" in text
 

@@ -163,7 +163,7 @@ def test_none_reproduces_the_golden_numbers(name, kwargs):
     case = seed_case(smoothed="smoothed" in name)
     new = evaluate_case(case, thermal="none", **kwargs).to_dict()
     for key, value in old.items():
-        if key != "regions":
+        if key not in ("regions", "gamma", "gamma_source"):  # the CLI adds gamma's lines
             assert new[key] == value, key
     for r_old, r_new in zip(old["regions"], new["regions"], strict=True):
         assert {k: r_new[k] for k in r_old} == r_old

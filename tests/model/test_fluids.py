@@ -55,6 +55,8 @@ gap_mm = 5.0
 [operating]
 depth_m = 0.0
 oil_temp_C = 20.0
+[friction]
+gamma = 0.566
 """
 
 

@@ -153,7 +153,7 @@ def test_cli_sweep_writes_results_and_resumes(tmp_path, capsys):
         assert (out / f).stat().st_size > 0
     capsys.readouterr()
     assert main(["study", "sweep", str(g), "--out", str(out), "--workers", "1",
-                 "--thermal", "none"]) == 0
+                 "--thermal", "none", "--resume"]) == 0
     assert "0 computed, 3 reused" in capsys.readouterr().out
 
 

@@ -153,7 +153,7 @@ def test_cli_sweep_names_the_mode_and_keeps_a_store_per_mode(tmp_path, capsys):
     g.write_text("oil\nVG22\nVG32\n")
     for mode in ("film", "none"):
         assert main(["study", "sweep", str(g), "--case", str(case), "--out", str(out),
-                     "--workers", "1", "--thermal", mode]) == 0
+                     "--workers", "1", "--thermal", mode, "--resume"]) == 0
         assert "(2 computed, 0 reused)" in capsys.readouterr().out
     res = read_grid_csv(out / "results.csv")
     assert (res["thermal_mode"] == "none").all()

@@ -161,7 +161,13 @@ def test_power_rises_with_viscosity_and_speed(w, nu_cst, k, law):
     if law.form == "bilgen-boulos" and law.laminar_law == "bilgen-boulos":
         return
     assert p_nu > p * (1 - 1e-12)
-    assert p_w > p
+    if law.form == "bilgen-boulos":
+        # the exact table steps down at its boundaries (C_m falls 4.2 % at Re = 500,
+        # 2 x^0.3 500^-0.6 against 1.03 x^0.3 500^-0.5): a speed step across it may lose
+        # up to that much (hypothesis found w = 19.5 rad/s, 1 cSt: Re 495 -> 503)
+        assert p_w > p * (1 - 0.055)
+    else:
+        assert p_w > p
 
 
 @settings(max_examples=200, deadline=None)

@@ -10,6 +10,8 @@ from pathlib import Path
 
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.case_io import read_case_toml, seed_case
+from oilgap.model.errors import InputError, check_finite
+from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.oils import get_oil, read_oils_csv
 
 
@@ -54,3 +56,33 @@ def gamma_line(case: DesignCase) -> str:
     """The header line naming gamma and its source (every command that uses a case)."""
     return (f"gamma       {case.friction.gamma:g} (groove exponent of Eq. 8, T^gamma on "
             f"region 1; from: {case.gamma_source})")
+
+
+def thermal_case(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase, str]:
+    """The thermal mode of ``--thermal`` checked against the case and ``--temp-c``, and the
+    case with ``--sea-temp-c`` applied (evaluate and optimize share these options)."""
+    try:
+        mode = resolve_thermal_mode(case, args.thermal)
+    except InputError as e:
+        raise InputError("--thermal", e.value, e.allowed) from None
+    if mode == "full" and args.temp_c is not None:
+        how = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
+        raise InputError("--temp-c", args.temp_c, f"not with {how}: the heat balance sets the "
+                         "oil temperature; give --sea-temp-c, or choose --thermal film")
+    raw = getattr(args, "sea_temp_c", None)
+    if raw is None:
+        return case, mode
+    try:
+        sea = check_finite("--sea-temp-c", float(raw))
+    except ValueError:
+        raise InputError("--sea-temp-c", raw, "a finite number is required") from None
+    if case.thermal is None:
+        raise InputError("--sea-temp-c", sea, "needs the case's [thermal] table (the heat "
+                         "balance to the sea)")
+    if mode != "full":
+        raise InputError("--sea-temp-c", sea, "only under --thermal full (the heat balance "
+                         f"to the sea); the mode is '{mode}'")
+    try:
+        return replace(case, thermal=replace(case.thermal, sea_temp_C=sea)), mode
+    except InputError as e:
+        raise InputError("--sea-temp-c", sea, e.allowed) from None

@@ -5,14 +5,10 @@ from __future__ import annotations
 
 import argparse
 import json
-from dataclasses import replace
 
-from oilgap.model.case import DesignCase
-from oilgap.model.errors import InputError
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
-from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.units import m_to_mm
-from oilgap.studies.cli.common import gamma_fields, gamma_line, load_case
+from oilgap.studies.cli.common import gamma_fields, gamma_line, load_case, thermal_case
 
 MODE_TEXT = {
     "none": "isothermal oil: the seed paper's model",
@@ -138,34 +134,9 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
     return "\n".join(lines)
 
 
-def _thermal_case(case: DesignCase, args: argparse.Namespace) -> DesignCase:
-    """Check --thermal, --temp-c and --sea-temp-c together; apply --sea-temp-c."""
-    try:
-        mode = resolve_thermal_mode(case, args.thermal)
-    except InputError as e:
-        raise InputError("--thermal", e.value, e.allowed) from None
-    if mode == "full" and args.temp_c is not None:
-        how = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
-        raise InputError("--temp-c", args.temp_c, f"not with {how}: the heat balance sets the "
-                         "oil temperature; give --sea-temp-c, or choose --thermal film")
-    sea = getattr(args, "sea_temp_c", None)
-    if sea is None:
-        return case
-    if case.thermal is None:
-        raise InputError("--sea-temp-c", sea, "needs the case's [thermal] table (the heat "
-                         "balance to the sea)")
-    if mode != "full":
-        raise InputError("--sea-temp-c", sea, "only under --thermal full (the heat balance "
-                         f"to the sea); the mode is '{mode}'")
-    try:
-        return replace(case, thermal=replace(case.thermal, sea_temp_C=sea))
-    except InputError as e:
-        raise InputError("--sea-temp-c", sea, e.allowed) from None
-
-
 def run(args: argparse.Namespace) -> int:
     """Evaluate the case and print the table (or JSON); returns the exit code."""
-    case = _thermal_case(load_case(args), args)
+    case, _ = thermal_case(load_case(args), args)
     ev = evaluate_case(case, laminar_law=args.laminar_law, thermal=args.thermal)
     if args.json:
         print(json.dumps({**ev.to_dict(), **gamma_fields(case)}, indent=2))

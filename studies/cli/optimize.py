@@ -18,7 +18,6 @@ import argparse
 import contextlib
 import json
 import warnings
-from dataclasses import replace
 from pathlib import Path
 
 from oilgap.model.case import DesignCase
@@ -26,7 +25,6 @@ from oilgap.model.case_io import write_case_toml
 from oilgap.model.errors import InputError, OilgapWarning, check_finite, check_positive
 from oilgap.model.evaluation import oil_state
 from oilgap.model.files import check_out_file
-from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.units import m2_s_to_cst
 from oilgap.optim.design import (
     DesignProblem,
@@ -34,7 +32,7 @@ from oilgap.optim.design import (
     HeatingComparison,
     compare_heating,
 )
-from oilgap.studies.cli.common import gamma_fields, gamma_line, load_case
+from oilgap.studies.cli.common import gamma_fields, gamma_line, load_case, thermal_case
 from oilgap.studies.cli.outputs import solver_log_to_stderr
 
 MODE_TEXT = {
@@ -225,29 +223,6 @@ def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str) -> str
     return "\n".join(lines)
 
 
-def _mode(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase, str]:
-    """The thermal mode (checked against the case, --temp-c and --sea-temp-c) and the
-    case with --sea-temp-c applied."""
-    try:
-        mode = resolve_thermal_mode(case, args.thermal)
-    except InputError as e:
-        raise InputError("--thermal", e.value, e.allowed) from None
-    if mode == "full" and args.temp_c is not None:
-        how = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
-        raise InputError("--temp-c", args.temp_c, f"not with {how}: the heat balance sets the "
-                         "oil temperature; give --sea-temp-c, or choose --thermal film")
-    sea = _number(args, "sea_temp_c", "--sea-temp-c")
-    if sea is None:
-        return case, mode
-    if mode != "full":
-        raise InputError("--sea-temp-c", sea, "only under --thermal full (the heat balance "
-                         f"to the sea); the mode is '{mode}'")
-    try:
-        return replace(case, thermal=replace(case.thermal, sea_temp_C=sea)), mode
-    except InputError as e:
-        raise InputError("--sea-temp-c", sea, e.allowed) from None
-
-
 def _starts(args: argparse.Namespace) -> int:
     try:
         starts = int(args.starts)
@@ -276,7 +251,7 @@ def run(args: argparse.Namespace) -> int:
     starts = _starts(args)
     if args.out:  # before any computation: folder writable, no earlier file unless --force
         check_out_file(args.out, args.force)
-    case, mode = _mode(load_case(args), args)
+    case, mode = thermal_case(load_case(args), args)
     header = thermal_line(mode, args.thermal is None)
     limits = {"torque_min_Nm": torque_min, "inertia_max_ratio": inertia_ratio}
     log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()

@@ -1,8 +1,9 @@
-"""Design cases as TOML: read and validate, write back, and the seed joint.
+"""Design cases as TOML: read and validate, and the seed joint.
 
 The TOML file carries units in its key names (``T1_mm``, ``depth_m``,
 ``peak_speed_rpm``); :func:`case_from_dict` converts them to the SI dataclasses
-of :mod:`oilgap.model.case` and :func:`case_to_dict` back. Every key is listed
+of :mod:`oilgap.model.case` and :func:`oilgap.model.case_write.case_to_dict` back
+(:mod:`oilgap.model.case_write` writes case files). Every key is listed
 with its unit and default in ``docs/case-file.md``; the ``[oil]`` keys of each kind of
 fluid (``kind = "mineral" | "table" | "gas"``) in ``docs/fluids.md``.
 
@@ -14,11 +15,9 @@ References
 
 from __future__ import annotations
 
-import json
-import math
 import tomllib
 import warnings
-from dataclasses import fields, replace
+from dataclasses import replace
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -26,7 +25,6 @@ from typing import Any
 from .case import (
     DEFAULT_GAMMA,
     GAMMA_DEFAULT_SOURCE,
-    MOTOR_FIELD_TO_KEY,
     MOTOR_TOML_KEYS,
     THERMAL_TOML_KEYS,
     BearingClearance,
@@ -37,17 +35,16 @@ from .case import (
     OperatingPoint,
     RotorStatorClearance,
     ThermalSpec,
-    motor_value_in_toml_units,
 )
-from .case_bearing import BEARING_TABLE, bearing_from_doc, bearing_to_doc
+from .case_bearing import BEARING_TABLE, bearing_from_doc
+from .defaults import reader_defaults
 from .duty_cycle import DutyCycle
 from .errors import InputError, OilgapWarning, check_finite, check_range
-from .files import atomic_write_text
 from .fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
 from .inputs import cell_for_message, read_input_text
-from .oils import Oil, builtin_oils, get_oil, normalize_oil_name, read_oils_csv
+from .oils import Oil, get_oil, read_oils_csv
 from .skin_friction import FrictionLaw, check_friction_ranges
-from .units import MM_TO_M, celsius_to_kelvin, kelvin_to_celsius
+from .units import MM_TO_M, celsius_to_kelvin
 
 MAX_CASE_BYTES = 16 * 2**20
 """Largest case TOML file read [bytes] (16 MiB; the seed's is under 2 kB)."""
@@ -167,8 +164,10 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
 
     name = str(doc.get("name", "unnamed case"))
     friction, gamma_source = _gamma_default(fd, friction, region1)
+    bounds = bounds if bounds is not None else DesignBounds.around(region1)
     return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
-                      tuple(mission), oils_csv, thermal, bearing_from_doc(doc), gamma_source)
+                      tuple(mission), oils_csv, thermal, bearing_from_doc(doc), gamma_source,
+                      reader_defaults(doc, bounds, motor, thermal=thermal))
 
 
 def _gamma_default(fd: dict, friction: FrictionLaw, region1: RotorStatorClearance
@@ -393,170 +392,6 @@ def read_case_toml(path: str | Path) -> DesignCase:
     except tomllib.TOMLDecodeError as e:
         raise InputError("case TOML", str(path), f"is malformed: {e}") from None
     return case_from_dict(doc, path.parent)
-
-
-# --------------------------------------------------------------------------- TOML writer
-
-
-def case_to_dict(case: DesignCase) -> dict:
-    """The TOML document (units in key names) of a case; inverse of :func:`case_from_dict`.
-
-    Parameters
-    ----------
-    case : DesignCase
-        The case (SI inside).
-
-    Returns
-    -------
-    dict
-        Tables and keys of the case file, values in the unit of each key (``T1_mm``
-        [mm], ``depth_m`` [m]); a custom oil or gas is written out in full, a table
-        fluid by the absolute path of its CSV; a mineral oil's ``[oil]`` has no ``kind``.
-    """
-    mm = 1.0 / MM_TO_M
-    r1 = case.region1
-    doc: dict[str, Any] = {"name": case.name}
-    doc["region1"] = {"T1_mm": r1.T1 * mm, "T2_mm": r1.T2 * mm, "T3_mm": r1.T3 * mm,
-                      "T4_mm": r1.T4 * mm, "length_mm": r1.length * mm,
-                      "T1_unfilled_mm": r1.T1_unfilled * mm,
-                      "T4_unfilled_mm": r1.T4_unfilled * mm}
-    if case.region2 is not None:
-        r2 = case.region2
-        doc["region2"] = {"radius_mm": r2.radius * mm, "length_mm": r2.length * mm,
-                          "gap_mm": r2.gap * mm}
-    doc["oil"] = _oil_to_dict(case.oil, case.oils_csv)
-    doc["operating"] = {"depth_m": case.operating.depth_m,
-                        "oil_temp_C": case.operating.oil_temp_C}
-    doc["duty_cycle"] = dict(case.duty_cycle.spec)
-    f = case.friction
-    doc["friction"] = {"form": f.form, "laminar_law": f.laminar_law, "gamma": f.gamma,
-                       "scale": f.scale, "C": f.C, "alpha": f.alpha, "beta": f.beta}
-    md = {}
-    for fl in fields(case.motor):
-        key = MOTOR_FIELD_TO_KEY.get(fl.name, fl.name)
-        md[key] = motor_value_in_toml_units(fl.name, getattr(case.motor, fl.name))
-    doc["motor"] = md
-    b = case.bounds
-    bd = {k + "_mm": getattr(b, k) * mm for k in ("gap_min", "gap_max", "radius_min",
-                                                  "radius_max", "length_min", "length_max")}
-    bd["inertia_max_ratio"] = b.inertia_max_ratio
-    if b.torque_min_Nm is not None:
-        bd["torque_min_Nm"] = b.torque_min_Nm
-    doc["bounds"] = bd
-    if case.thermal is not None:  # only when given: documents of other cases are unchanged
-        th = {k: getattr(case.thermal, f) for k, f in THERMAL_TOML_KEYS.items()}
-        doc["thermal"] = {k: v for k, v in th.items() if v is not None}
-    if case.bearing is not None:  # what the user gave; without one, the document is unchanged
-        doc[BEARING_TABLE] = bearing_to_doc(case.bearing)
-    if case.mission:
-        doc["mission"] = [{"depth_m": s.depth_m, "oil_temp_C": s.oil_temp_C,
-                           "fraction": s.fraction} for s in case.mission]
-    return doc
-
-
-def _oil_to_dict(o: Fluid, oils_csv: str | None) -> dict[str, Any]:
-    """The [oil] table of a fluid (a mineral oil's is what it was before fluids had kinds)."""
-    if o.kind == "gas":
-        od: dict[str, Any] = {"kind": "gas", "name": o.name}
-        if builtin_gases().get(gas_key(o.name)) != o:
-            od.update({k: getattr(o, f) for k, f in _GAS_CONSTANTS.items()})
-            lo, hi = o.trusted_range_K
-            if lo > 0.0:
-                od["trusted_min_C"] = float(kelvin_to_celsius(lo))
-            if math.isfinite(hi):
-                od["trusted_max_C"] = float(kelvin_to_celsius(hi))
-        return od
-    if o.kind == "table":
-        if o.source is None:
-            raise InputError("oil.table_csv", None, f"the table fluid {o.name!r} was not read "
-                             "from a CSV file, so it cannot be written to a case file")
-        od = {"kind": "table", "name": o.name, "table_csv": o.source}
-        if o.outside != "refuse":
-            od["outside_table"] = o.outside
-        if o.polymer_thickened:
-            od["polymer_thickened"] = True
-        return od
-    od = {"name": o.name}
-    if oils_csv:
-        od["oils_csv"] = oils_csv
-        if o.polymer_thickened != _csv_flag(oils_csv, o.name):
-            od["polymer_thickened"] = o.polymer_thickened
-    elif builtin_oils().get(normalize_oil_name(o.name)) != o:
-        od.update(nu40_cSt=o.nu40_cSt, nu100_cSt=o.nu100_cSt, density_kg_m3=o.density_kg_m3,
-                  barus_1_GPa=o.barus_1_Pa * 1e9)
-        if o.polymer_thickened:
-            od["polymer_thickened"] = True
-    return od
-
-
-def _csv_flag(oils_csv: str, name: str) -> bool:
-    """The polymer_thickened flag the oils CSV gives the oil (False if it cannot tell)."""
-    try:
-        oil = read_oils_csv(oils_csv).get(normalize_oil_name(name))
-    except InputError:
-        return False
-    return bool(oil is not None and oil.polymer_thickened)
-
-
-def _toml_value(v: Any) -> str:
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        if not math.isfinite(v):
-            raise ValueError(f"cannot write non-finite {v} to TOML")
-        return repr(float(v))
-    return json.dumps(str(v))
-
-
-def dumps_toml(doc: dict) -> str:
-    """Serialise a two-level document (scalars, tables, arrays of tables) as TOML.
-
-    Parameters
-    ----------
-    doc : dict
-        Scalars, tables (dicts) and arrays of tables (lists of dicts), values in
-        the units of their keys (``T1_mm`` [mm]).
-
-    Returns
-    -------
-    str
-        TOML text; floats written with ``repr`` so they read back exactly.
-    """
-    lines = []
-    for k, v in doc.items():
-        if not isinstance(v, (dict, list)):
-            lines.append(f"{k} = {_toml_value(v)}")
-    for k, v in doc.items():
-        if isinstance(v, dict):
-            lines.append(f"\n[{k}]")
-            lines.extend(f"{kk} = {_toml_value(vv)}" for kk, vv in v.items())
-        elif isinstance(v, list):
-            for item in v:
-                lines.append(f"\n[[{k}]]")
-                lines.extend(f"{kk} = {_toml_value(vv)}" for kk, vv in item.items())
-    return "\n".join(lines) + "\n"
-
-
-def write_case_toml(case: DesignCase, path: str | Path) -> Path:
-    """Write a case as TOML that :func:`read_case_toml` reads back to the same case.
-
-    Parameters
-    ----------
-    case : DesignCase
-        The case (SI inside; written with units in the key names, e.g. [mm]).
-    path : str or Path
-        Output file; parent directories are created.
-
-    Returns
-    -------
-    Path
-        The file written.
-    """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    return atomic_write_text(path, dumps_toml(case_to_dict(case)))  # temp file + rename
 
 
 # --------------------------------------------------------------------------- the seed joint

@@ -48,7 +48,7 @@ from .oil_properties import seawater_gauge_pressure
 from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
 from .taylor_couette import couette_reynolds, flow_regime, taylor_number
-from .units import celsius_to_kelvin, m2_s_to_cst, rad_s_to_rpm
+from .units import celsius_to_kelvin, m2_s_to_cst, m_to_mm, rad_s_to_rpm
 from .viscous_loss import viscous_torque, weighted_mean
 
 
@@ -228,17 +228,36 @@ class CaseEvaluation:
         Returns
         -------
         dict
-            The fields with their unit-carrying names (``mean_power_W`` [W]);
-            ``bearings`` only when the case has a bearing (a case without one gives
-            the document it gave before bearings existed).
+            The fields with their unit-carrying names (``mean_power_W`` [W]); lengths
+            in mm at this edge (``radius_mm``, ``gap_mm``, ``length_mm``,
+            ``pitch_diameter_mm`` [mm]; the attributes stay in m), a bearing's
+            ``terms`` as ``terms_W`` (term -> mean power [W]); ``bearings`` only
+            when the case has a bearing (a case without one gives the document it
+            gave before bearings existed).
         """
         d = asdict(self)
-        d["regions"] = [dict(asdict(r), regimes=list(r.regimes)) for r in self.regions]
-        d["bearings"] = [dict(asdict(b), default_notes=list(b.default_notes),
-                              validity_notes=list(b.validity_notes)) for b in self.bearings]
+        d["regions"] = [_lengths_in_mm(dict(asdict(r), regimes=list(r.regimes)))
+                        for r in self.regions]
+        d["bearings"] = [_lengths_in_mm(dict(asdict(b), default_notes=list(b.default_notes),
+                                             validity_notes=list(b.validity_notes)))
+                         for b in self.bearings]
         if not self.bearings:
             del d["bearings"]
         return d
+
+
+def _lengths_in_mm(d: dict) -> dict:
+    """The ``*_m`` lengths of a region's or bearing's dict as ``*_mm`` [mm] and ``terms``
+    as ``terms_W`` [W], in place of their keys (the order kept)."""
+    return {_EDGE_KEYS.get(k, k): (m_to_mm(v) if k in _LENGTH_KEYS else v)
+            for k, v in d.items()}
+
+
+_LENGTH_KEYS = ("radius_m", "gap_m", "length_m", "pitch_diameter_m")
+"""Length fields [m] of :class:`RegionResult` and :class:`BearingResult`."""
+
+_EDGE_KEYS = {**{k: k[:-2] + "_mm" for k in _LENGTH_KEYS}, "terms": "terms_W"}
+"""Field -> its key in :meth:`CaseEvaluation.to_dict`."""
 
 
 def oil_state(case: DesignCase, oil_temp_C: float | None = None, depth_m: float | None = None):

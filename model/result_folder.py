@@ -9,6 +9,10 @@
   in place: a folder holding the marker is the unfinished output of a run that failed
   or was killed. With ``force`` the earlier outputs of the same command are removed
   when writing starts, so new and old outputs never sit side by side.
+* **Where it came from.** :meth:`ResultFolder.begin` writes :data:`PROVENANCE_NAME`
+  (oilgap's version, the UTC date-time, the command, each input's SHA-256, the
+  library versions: :func:`oilgap.model.provenance.provenance`); facts learnt during
+  the run (:meth:`ResultFolder.note`) are added when the folder is complete.
 """
 
 from __future__ import annotations
@@ -29,6 +33,8 @@ from .files import (
     existing_outputs,
     first_existing,
 )
+from .provenance import PROVENANCE_NAME, provenance
+from .serialize import dumps
 
 LOCK_NAME = ".oilgap.lock"
 """Name of the lock file of a folder an oilgap run is writing into."""
@@ -212,7 +218,7 @@ class ResultFolder:
     path : Path
         The folder.
     outputs : tuple of str
-        As given.
+        As given, and :data:`PROVENANCE_NAME`.
     """
 
     def __init__(self, path: str | Path, outputs: Sequence[str] = (), force: bool = False,
@@ -220,7 +226,7 @@ class ResultFolder:
                  hint: str = "pass --force to replace them"):
         self.path = Path(path)
         self.hint = hint
-        self.outputs = tuple(outputs)
+        self.outputs = tuple(dict.fromkeys((*outputs, PROVENANCE_NAME)))
         self.force = bool(force)
         self.resume = bool(resume)
         self.command = command
@@ -228,6 +234,29 @@ class ResultFolder:
         self._lock: FolderLock | None = None
         self._created: list[Path] = []
         self._begun = False
+        self._details: dict = {}
+
+    def note(self, **details) -> None:
+        """Facts learnt during the run (``thermal_mode``, ``gamma``) for the folder's
+        :data:`PROVENANCE_NAME`, written when the folder is complete.
+
+        Parameters
+        ----------
+        **details
+            Name -> value (JSON-able) [-].
+        """
+        self._details.update(details)
+
+    def write_provenance(self) -> Path:
+        """Write :data:`PROVENANCE_NAME` (atomically, :func:`~oilgap.model.serialize.dumps`).
+
+        Returns
+        -------
+        Path
+            The file written.
+        """
+        return atomic_write_text(self.path / PROVENANCE_NAME,
+                                 dumps(provenance(**self._details)) + "\n")
 
     def open(self) -> ResultFolder:
         """Check the path, create the folder, take its lock, then check its earlier
@@ -262,11 +291,14 @@ class ResultFolder:
             f"(pid {os.getpid()}). This file is removed when every output is written; "
             "while it is here the folder's outputs are incomplete (the run failed or was "
             "killed): rerun with --force.\n"))
+        self.write_provenance()
         self._begun = True
 
     def complete(self) -> None:
         """Every output is written: the marker is removed."""
         if self._begun:
+            if self._details:
+                self.write_provenance()
             with contextlib.suppress(FileNotFoundError):
                 (self.path / MARKER).unlink()
             self._begun = False
@@ -274,7 +306,12 @@ class ResultFolder:
     def _undo(self) -> None:
         """After a failure: the marker removed if no output was written; folders this
         run created removed if empty; the lock released."""
-        if self._begun and not existing_outputs(self.path, self.outputs):
+        prov = self.path / PROVENANCE_NAME
+        if self._begun and not [p for p in existing_outputs(self.path, self.outputs)
+                                if p != prov]:
+            with contextlib.suppress(FileNotFoundError):
+                prov.unlink()  # a stamp of nothing
+            self._details = {}
             self.complete()
         if self._lock is not None:
             self._lock.release()
@@ -300,4 +337,4 @@ class ResultFolder:
         self.close(failed=exc_type is not None)
 
 
-__all__ = ["LOCK_NAME", "MARKER", "FolderLock", "ResultFolder"]
+__all__ = ["LOCK_NAME", "MARKER", "PROVENANCE_NAME", "FolderLock", "ResultFolder"]

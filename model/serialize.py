@@ -23,6 +23,22 @@ import tomli_w
 SIGNIFICANT_DIGITS = 6
 """Significant digits of every float oilgap writes to JSON or TOML."""
 
+FULL_DIGITS = 17
+"""Digits that write a float so that it reads back to the same float (IEEE double)."""
+
+
+class Exact(dict):
+    """A block of a document written with every digit (:data:`FULL_DIGITS`), not rounded:
+    machine state that must read back to the same numbers (the fitted model of
+    ``loop.json``, which ``oilgap predict`` uses to reproduce the fit's predictions).
+    A ``dict``, so :func:`json.dumps` writes it as well.
+
+    Parameters
+    ----------
+    *args, **kwargs
+        As for ``dict`` (keys -> values in the units of their names) [-].
+    """
+
 
 def round_sig(x: float, digits: int = SIGNIFICANT_DIGITS) -> float:
     """``x`` rounded to ``digits`` significant digits (0, NaN and infinities unchanged).
@@ -30,14 +46,14 @@ def round_sig(x: float, digits: int = SIGNIFICANT_DIGITS) -> float:
     Parameters
     ----------
     x : float
-        The number.
+        The number [any unit].
     digits : int
-        Significant digits kept (>= 1).
+        Significant digits kept (>= 1) [-].
 
     Returns
     -------
     float
-        The rounded number, e.g. ``round_sig(37.713312256684894) == 37.7133``.
+        The rounded number [the unit of x], e.g. ``round_sig(37.713312256684894) == 37.7133``.
     """
     if x == 0.0 or not math.isfinite(x):
         return x
@@ -55,7 +71,7 @@ def plain(obj: Any, digits: int = SIGNIFICANT_DIGITS) -> Any:
         A document of dicts, lists, tuples, numbers, strings, booleans, None and numpy
         values.
     digits : int
-        Significant digits of the floats.
+        Significant digits of the floats [-].
 
     Returns
     -------
@@ -69,6 +85,8 @@ def plain(obj: Any, digits: int = SIGNIFICANT_DIGITS) -> Any:
     if isinstance(obj, float | np.floating):
         x = float(obj)
         return None if not math.isfinite(x) else round_sig(x, digits)
+    if isinstance(obj, Exact):
+        digits = FULL_DIGITS
     if isinstance(obj, Mapping):
         return {str(k): plain(v, digits) for k, v in obj.items()}
     if isinstance(obj, np.ndarray):
@@ -90,7 +108,7 @@ def dumps(obj: Any, digits: int = SIGNIFICANT_DIGITS, indent: int | None = 2) ->
     obj : Any
         The document.
     digits : int
-        Significant digits of the floats.
+        Significant digits of the floats [-].
     indent : int or None
         JSON indentation (None: one line).
 
@@ -111,7 +129,7 @@ def toml_dumps(doc: Mapping[str, Any], digits: int = SIGNIFICANT_DIGITS) -> str:
     doc : Mapping
         Tables (dicts) and values.
     digits : int
-        Significant digits of the floats.
+        Significant digits of the floats [-].
 
     Returns
     -------

@@ -1,7 +1,8 @@
 """The one report and figure convention of the studies and the loop report.
 
 Tables: :func:`markdown_table` (a DataFrame) or :func:`markdown_rows` (ready-made
-cells) as Markdown pipe tables, :func:`write_tables` for the CSVs. Figures:
+cells) as Markdown pipe tables written by pandas' ``DataFrame.to_markdown``
+(tabulate: columns padded, numbers right-aligned), :func:`write_tables` for the CSVs. Figures:
 :func:`new_figure` draws on the Agg canvas outside pyplot (no global backend,
 safe in worker processes) and :func:`save_figure` writes the PNG. Every file is
 written atomically (:mod:`oilgap.model.files`: a temporary file, then a rename), so
@@ -44,27 +45,51 @@ def markdown_cell(x: Any) -> str:
     return text.replace("|", "\\|")
 
 
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+def _pipe_table(header: Sequence[Any], cells: list[list[str]], right: Sequence[bool]) -> str:
+    """The pipe table of escaped text cells by ``DataFrame.to_markdown`` (tabulate; the
+    text written as given, not parsed again), ``right`` columns right-aligned."""
+    names = [markdown_cell(c) for c in header]
+    frame = pd.DataFrame(cells, columns=range(len(names)), dtype=object) if cells else \
+        pd.DataFrame(columns=range(len(names)), dtype=object)
+    frame.columns = names
+    return frame.to_markdown(index=False, tablefmt="pipe", disable_numparse=True,
+                             colalign=["right" if r else "left" for r in right])
+
+
 def markdown_rows(header: Sequence[Any], rows: Sequence[Sequence[Any]]) -> str:
     """A Markdown pipe table of ready-made cells (each written with ``str``, escaped by
-    :func:`markdown_cell`)."""
-    out = ["| " + " | ".join(markdown_cell(c) for c in header) + " |",
-           "|" + "|".join("---" for _ in header) + "|"]
-    out += ["| " + " | ".join(markdown_cell(x) for x in r) + " |" for r in rows]
-    return "\n".join(out)
+    :func:`markdown_cell`); a column whose cells are all numbers (or blank) is
+    right-aligned."""
+    cells = [[markdown_cell(x) for x in r] for r in rows]
+    right = [bool(col) and all(c == "" or _is_number(c) for c in col)
+             and any(c != "" for c in col) for col in zip(*cells, strict=True)] \
+        if cells else [False] * len(header)
+    return _pipe_table(header, cells, right)
 
 
 def markdown_table(df: pd.DataFrame, digits: int = 2) -> str:
-    """A DataFrame as a Markdown pipe table (floats to ``digits`` decimals, NaN blank)."""
+    """A DataFrame as a Markdown pipe table (floats to ``digits`` decimals, NaN blank,
+    numeric columns right-aligned)."""
 
     def fmt(v: Any) -> str:
         if v is None or (isinstance(v, float) and math.isnan(v)):
             return ""
         if isinstance(v, (float, np.floating)):
             return f"{v:.{digits}f}"
-        return str(v)
+        return markdown_cell(v)
 
-    return markdown_rows(list(df.columns),
-                         [[fmt(v) for v in row] for row in df.itertuples(index=False, name=None)])
+    cells = [[fmt(v) for v in row] for row in df.itertuples(index=False, name=None)]
+    right = [pd.api.types.is_numeric_dtype(t) and not pd.api.types.is_bool_dtype(t)
+             for t in df.dtypes]
+    return _pipe_table(list(df.columns), cells, right)
 
 
 def write_tables(out: Path, tables: dict[str, pd.DataFrame]) -> list[Path]:

@@ -12,21 +12,49 @@ exits 130 (worker processes ignore SIGINT and are ended by the parent). A closed
 stdout (``oilgap evaluate | head -1``) ends the command quietly with exit 141
 (128 + SIGPIPE, what a shell reports for a command killed by a broken pipe). No
 traceback reaches the user.
+
+Messages on stderr go through the ``"oilgap"`` :mod:`logging` logger, configured once
+here (:func:`configure_logging`; plain ``oilgap: ...`` lines): by default notes
+(INFO) and warnings; ``-q`` keeps errors and the warnings (every ``OilgapWarning``
+says something about the result: a fluid outside its trusted range, a default that
+changes a number) and drops the notes and the progress bars; ``-v`` adds debug lines
+(the command, the inputs read with their SHA-256, the library versions, the time
+taken; ``optimize -v`` shows IPOPT's iterations). Results go to stdout, never
+through the logger. ``oilgap --version`` prints ``oilgap X.Y.Z``.
 """
 
 from __future__ import annotations
 
+import argparse
 import importlib
+import logging
 import os
+import platform
 import sys
+import time
 import warnings
 from collections.abc import Sequence
+from pathlib import Path
 
 from oilgap.model.errors import InfeasibleError, InputError, OilgapWarning, SolverError
 from oilgap.model.interrupts import catching_interrupts, interrupt_pending
+from oilgap.model.provenance import (
+    PACKAGES,
+    clear_run,
+    file_sha256,
+    note_run,
+    oilgap_version,
+    package_version,
+)
 from oilgap.studies.cli.parsers import build_parser, finite_float
 
-__all__ = ["COMMANDS", "build_parser", "finite_float", "main"]
+__all__ = ["COMMANDS", "LOG", "build_parser", "configure_logging", "finite_float", "main"]
+
+LOG = logging.getLogger("oilgap")
+"""The logger of every message oilgap writes on stderr (results go to stdout)."""
+
+INPUT_ARGUMENTS = ("case", "grid", "mission", "data", "oils", "model")
+"""The options and arguments that name an input file (recorded in provenance.json)."""
 
 COMMANDS: dict[str, str] = {
     "evaluate": "oilgap.studies.cli.evaluate",
@@ -43,7 +71,67 @@ COMMANDS: dict[str, str] = {
 
 
 def _show_warning(message, category, filename, lineno, file=None, line=None):
-    print(f"oilgap: warning: {message}", file=sys.stderr)
+    LOG.warning("warning: %s", message)
+
+
+class _StderrHandler(logging.StreamHandler):
+    """A handler writing to whatever ``sys.stderr`` is when a message is emitted (a test's
+    capture, the solver-interrupt filter of :func:`main`)."""
+
+    def __init__(self):
+        super().__init__(sys.stderr)
+
+    @property
+    def stream(self):
+        return sys.stderr
+
+    @stream.setter
+    def stream(self, value) -> None:  # the stream is always the current sys.stderr
+        pass
+
+
+def configure_logging(verbose: int = 0, quiet: bool = False) -> logging.Logger:
+    """Configure the ``"oilgap"`` logger once (calling again replaces its handler):
+    ``oilgap: <message>`` lines on stderr; level WARNING with ``quiet``, DEBUG with
+    ``verbose``, INFO otherwise.
+
+    Parameters
+    ----------
+    verbose : int
+        Number of ``-v`` [-].
+    quiet : bool
+        ``-q`` [-].
+
+    Returns
+    -------
+    logging.Logger
+        :data:`LOG`.
+    """
+    for h in [h for h in LOG.handlers if isinstance(h, _StderrHandler)]:
+        LOG.removeHandler(h)
+    handler = _StderrHandler()
+    handler.setFormatter(logging.Formatter("oilgap: %(message)s"))
+    LOG.addHandler(handler)
+    LOG.setLevel(logging.WARNING if quiet else logging.DEBUG if verbose else logging.INFO)
+    LOG.propagate = False
+    return LOG
+
+
+def _inputs(args: argparse.Namespace) -> dict[str, str]:
+    """The input files named on the command line (role -> path), those that exist."""
+    return {k: str(v) for k in INPUT_ARGUMENTS
+            if isinstance(v := getattr(args, k, None), str) and Path(v).is_file()}
+
+
+def _debug_run(argv: Sequence[str] | None, inputs: dict[str, str]) -> None:
+    """With -v: the command, oilgap's and the libraries' versions, the inputs read."""
+    if not LOG.isEnabledFor(logging.DEBUG):
+        return
+    LOG.debug("command: oilgap %s", " ".join(sys.argv[1:] if argv is None else argv))
+    LOG.debug("oilgap %s, python %s, %s", oilgap_version(), platform.python_version(),
+              ", ".join(f"{n} {package_version(n)}" for n in PACKAGES))
+    for role, path in inputs.items():
+        LOG.debug("input %s: %s (sha256 %s)", role, path, file_sha256(path))
 
 
 EXIT_BROKEN_PIPE = 141
@@ -94,16 +182,33 @@ class _QuietSolverInterrupt:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Entry point of the ``oilgap`` console script; returns the exit code."""
-    args = build_parser().parse_args(argv)
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    if args.version:
+        print(f"oilgap {oilgap_version()}")
+        return 0
+    if getattr(args, "command", None) is None:
+        parser.error("the following arguments are required: COMMAND")
+    configure_logging(args.verbose, args.quiet)
+    if args.quiet and getattr(args, "progress", None) is None:
+        args.progress = False  # -q: no progress bar unless --progress asks for one
+    inputs = _inputs(args)
+    asked = {"thermal_mode_asked": args.thermal or "default"} if hasattr(args, "thermal") \
+        else {}
+    note_run(argv, inputs, **asked)
+    _debug_run(argv, inputs)
     warnings.showwarning = _show_warning
     warnings.simplefilter("default", OilgapWarning)
     stderr = sys.stderr
     sys.stderr = _QuietSolverInterrupt(stderr)
+    start = time.perf_counter()
     try:
         with catching_interrupts():
             return _dispatch(args)
     finally:
         sys.stderr = stderr
+        clear_run()
+        LOG.debug("%s took %.3f s", args.command, time.perf_counter() - start)
 
 
 def _dispatch(args) -> int:

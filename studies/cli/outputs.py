@@ -23,28 +23,32 @@ import sys
 from collections.abc import Iterator
 from pathlib import Path
 
-from oilgap.model.result_folder import ResultFolder
+from oilgap.model.result_folder import PROVENANCE_NAME, ResultFolder
 from oilgap.studies.grid.store import store_files
 
 OUTPUTS: dict[str, tuple[str, ...]] = {
     "loop": ("loop.json", "report.md", "measured_vs_model.png", "residual_vs_speed.png",
-             "residual_vs_time.png"),
-    "study sweep": ("summary.md", "sweep.png", *store_files()),
+             "residual_vs_time.png", "measured_vs_model_*.png", PROVENANCE_NAME),
+    "study sweep": ("summary.md", "sweep.png", *store_files(), PROVENANCE_NAME),
     "study smoothing": ("smoothing_table4.csv", "smoothing_fits.csv",
                         "smoothing_loss_vs_T.csv", "smoothing_plateau.csv",
                         "smoothing_run_temps.csv", "smoothing_table4.png",
-                        "smoothing_loss_vs_T.png", "summary.md", *store_files("grid/")),
+                        "smoothing_loss_vs_T.png", "summary.md", *store_files("grid/"),
+                        PROVENANCE_NAME),
     "study pareto": ("pareto_gap.csv", "pareto_inertia.csv", "pareto_seeds.csv",
+                     "pareto_design.csv",
                      "pareto_gap.png", "pareto_inertia.png", "summary.md",
-                     *store_files("grid_gap/"), *store_files("grid_inertia/")),
+                     *store_files("grid_gap/"), *store_files("grid_inertia/"), PROVENANCE_NAME),
     "study oil-grade": ("oil_grade_table.csv", "oil_grade_envelope.csv",
                         "oil_grade_rated.csv", "oil_grade_isothermal_table.csv",
                         "oil_grade_thermal_comparison.csv", "oil_grade.json",
                         "oil_grade_heatmap.png", "oil_grade_loss_vs_grade.png",
                         "oil_grade_thermal.png", "summary.md", *store_files("grid/"),
-                        *store_files("grid_isothermal/")),
+                        *store_files("grid_isothermal/"), PROVENANCE_NAME),
 }
-"""The files each folder command writes (names or glob patterns relative to ``--out``)."""
+"""The files each folder command writes (names or glob patterns relative to ``--out``);
+each writes :data:`~oilgap.model.provenance.PROVENANCE_NAME` (version, date, command,
+inputs with their SHA-256) when it starts writing."""
 
 SWEEP_HINT = "pass --resume to continue it or --force to start over"
 
@@ -58,6 +62,12 @@ def out_folder(args: argparse.Namespace, out: str | Path, resume: bool = False
                         resume=resume, command=f"oilgap {command}",
                         hint=SWEEP_HINT if command == "study sweep"
                         else "pass --force to replace them")
+
+
+def json_quiet(args: argparse.Namespace) -> contextlib.AbstractContextManager:
+    """With ``--json``, what a solver prints goes to stderr while inside (stdout carries
+    the JSON document alone); otherwise nothing changes."""
+    return solver_log_to_stderr() if getattr(args, "json", False) else contextlib.nullcontext()
 
 
 def _flush_c_stdout() -> None:

@@ -67,16 +67,42 @@ def add_thermal_argument(p) -> None:
                    "case's [thermal] table). Default: full with [thermal], else film")
 
 
+def add_verbosity(p, top: bool = False) -> None:
+    """The global ``-v``/``-q`` (on the main parser and every subparser, so that they go
+    before or after the command; a subparser's copy sets nothing unless given)."""
+    keep = {} if top else {"default": argparse.SUPPRESS}
+    g = p.add_mutually_exclusive_group()
+    g.add_argument("-v", "--verbose", action="count", **({"default": 0} if top else keep),
+                   help="debug messages on stderr: the inputs read, versions, timings "
+                   "(optimize: IPOPT's iterations too)")
+    g.add_argument("-q", "--quiet", action="store_true", **({"default": False} if top
+                                                             else keep),
+                   help="errors and warnings only: no progress bars, no notes on stderr")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """The top-level parser with every command."""
     parser = argparse.ArgumentParser(
         prog="oilgap",
         description="Viscous-loss design tool for oil-filled joints of deep-sea manipulators.")
+    parser.add_argument("--version", action="store_true",
+                        help="print oilgap's version and exit")
+    add_verbosity(parser, top=True)
     sub = parser.add_subparsers(dest="command_name", metavar="COMMAND")
-    sub.required = True
     for add in (add_evaluate, add_optimize, add_study, add_loop, add_predict, add_synth):
         add(sub)
+    _verbosity_everywhere(parser)
     return parser
+
+
+def _verbosity_everywhere(parser: argparse.ArgumentParser) -> None:
+    """:func:`add_verbosity` on every subparser below ``parser`` (``study`` and its
+    studies too)."""
+    for action in parser._actions:
+        if isinstance(action, argparse._SubParsersAction):
+            for sp in dict.fromkeys(action.choices.values()):
+                add_verbosity(sp)
+                _verbosity_everywhere(sp)
 
 
 # --------------------------------------------------------------------------- evaluate
@@ -138,9 +164,7 @@ def add_optimize(sub) -> None:
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
     add_force(p)
-    p.add_argument("--verbose", action="store_true", help="show IPOPT's iterations (on "
-                   "stderr)")
-    p.set_defaults(command="optimize")
+    p.set_defaults(command="optimize")  # -v/--verbose (every command) shows IPOPT's log
 
 
 # --------------------------------------------------------------------------- study
@@ -155,6 +179,9 @@ def add_study(sub) -> None:
     ss.required = True
     for add in (_add_smoothing, _add_pareto, _add_oil_grade, _add_sweep):
         add(ss)
+    for s in ss.choices.values():  # every study: its result as one JSON document
+        s.add_argument("--json", action="store_true", help="print one JSON document "
+                       "(numbers, defaults, files written) instead of the text")
 
 
 def _progress(s: argparse.ArgumentParser) -> None:
@@ -162,11 +189,20 @@ def _progress(s: argparse.ArgumentParser) -> None:
                    help="progress line on stderr (default: if a terminal)")
 
 
+def _scheduler(s: argparse.ArgumentParser) -> None:
+    s.add_argument("--scheduler", metavar="local|tcp://HOST:PORT",
+                   help="run on Dask (needs oilgap[dask]): local, a LocalCluster of "
+                   "--workers processes; tcp://HOST:PORT, a running Dask scheduler "
+                   "(default: local processes, no Dask); the same results")
+
+
 def _add_smoothing(ss) -> None:
     s = ss.add_parser("smoothing", help="seed joint T = 4 vs T = 2 against Table 4; loss vs T",
                       description="Reproduce the seed's smoothing experiment (Table 4): "
                       "grooved T = 4 vs smoothed T = 2 with ISO VG150/320/680/1000 at 0 m; fit "
                       "gamma and the runs' effective oil temperatures; then loss against T.")
+    s.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: the "
+                   "seed rig and Table 4; a case: what smoothing its grooves would save)")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/smoothing/)")
     add_force(s)
     s.add_argument("--method", choices=("per-oil", "shared", "heat-balance"), default=None,
@@ -182,7 +218,8 @@ def _add_smoothing(ss) -> None:
                    help="per-oil method: fixed R_th [K/W] making smoothed runs colder "
                    "(default 0)")
     s.add_argument("--t-min", type=finite_float, default=1.0, help="smallest T (>= 1)")
-    s.add_argument("--t-max", type=finite_float, default=5.0, help="largest T")
+    s.add_argument("--t-max", type=finite_float, default=None,
+                   help="largest T (default 5; on a case its own T)")
     s.add_argument("--t-step", type=finite_float, default=0.05, help="T step")
     s.add_argument("--plateau-tol", type=finite_float, default=0.05,
                    help="loss counts as levelled off within this fraction of P(T=1) "
@@ -202,6 +239,8 @@ def _add_pareto(ss) -> None:
                    help="points per front (>= 50, default 60)")
     s.add_argument("--torque-min-nm", type=finite_float,
                    help="required torque capability [N m] (default: the case's own)")
+    s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
+    _scheduler(s)
     _progress(s)
     s.set_defaults(command="study pareto")
 
@@ -236,6 +275,7 @@ def _add_oil_grade(ss) -> None:
     s.add_argument("--mission-hours", type=finite_float, default=8.0,
                    help="mission duration for the energy [h] (default 8)")
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
+    _scheduler(s)
     add_thermal_argument(s)
     _progress(s)
     s.set_defaults(command="study oil-grade")
@@ -248,7 +288,7 @@ def _add_sweep(ss) -> None:
                       "point, columns: " + ", ".join(columns) + "). Empty cells keep the "
                       "case's value. A failed point is a row with its error; rerunning with "
                       "the same --out and --resume computes only the points not yet done.")
-    s.add_argument("grid", metavar="GRID.csv")
+    s.add_argument("grid", metavar="GRID.csv", help="the grid: CSV, or Parquet (.parquet)")
     s.add_argument("--case", metavar="CASE.toml", help="base case (default: seed)")
     s.add_argument("--oils", metavar="OILS.csv", help="oils table to look oil names up in")
     s.add_argument("--mode", choices=("evaluate", "optimize"), default="evaluate")
@@ -260,7 +300,12 @@ def _add_sweep(ss) -> None:
     again.add_argument("--force", action="store_true",
                        help="discard the sweep stored in --out and start over")
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
-    s.add_argument("--chunk-size", type=positive_int, help="rows per task")
+    s.add_argument("--chunk-size", type=positive_int, help="fixed rows per task (default: "
+                   "chunks sized by time, --chunk-seconds)")
+    s.add_argument("--chunk-seconds", type=finite_float, default=3.0, metavar="S",
+                   help="target time of a chunk on a worker [s] (default 3): smooth "
+                   "progress, and Ctrl-C loses at most one chunk per worker")
+    _scheduler(s)
     s.add_argument("--retry-failed", action="store_true",
                    help="recompute points stored as failed (implies --resume)")
     add_thermal_argument(s)

@@ -17,7 +17,8 @@ import pytest
 
 from oilgap.model import duty_cycle as dc_module
 from oilgap.model import inputs
-from oilgap.model.case_io import case_from_dict, case_to_dict, read_case_toml, seed_case
+from oilgap.model.case_io import case_from_dict, read_case_toml, seed_case
+from oilgap.model.case_write import case_to_dict
 from oilgap.model.duty_cycle import MAX_SAMPLES, DutyCycle
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import evaluate_case

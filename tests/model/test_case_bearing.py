@@ -7,13 +7,8 @@ import math
 import pytest
 
 from oilgap.model.case_bearing import bearing_defaults
-from oilgap.model.case_io import (
-    case_to_dict,
-    dumps_toml,
-    read_case_toml,
-    seed_case,
-    write_case_toml,
-)
+from oilgap.model.case_io import read_case_toml, seed_case
+from oilgap.model.case_write import case_to_dict, dumps_toml, write_case_toml
 from oilgap.model.errors import InputError
 
 

@@ -11,7 +11,8 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import case_to_dict, read_case_toml, write_case_toml
+from oilgap.model.case_io import read_case_toml
+from oilgap.model.case_write import case_to_dict, write_case_toml
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import evaluate_case, oil_state
 from oilgap.model.fluids import (
@@ -370,13 +371,14 @@ def test_evaluate_json_on_a_gas_case(tmp_path, capsys):
     # = 1.81425e-5 Pa s; rho = 101325 * 0.02897 / (8.314462618 * 293.15) = 1.204318
     mu = 1.716e-5 * (293.15 / 273.0) ** 1.5 * 384.0 / 404.15
     rho = 101325.0 * 0.02897 / (R_U * 293.15)
-    assert out["oil"] == "air" and out["density_kg_m3"] == pytest.approx(rho, rel=1e-12)
-    assert out["nu_cSt"] == pytest.approx(mu / rho * 1e6, rel=1e-12)
+    # the JSON carries 6 significant digits: half a unit of the 6th is 5e-6 relative
+    assert out["oil"] == "air" and out["density_kg_m3"] == pytest.approx(rho, rel=5e-6)
+    assert out["nu_cSt"] == pytest.approx(mu / rho * 1e6, rel=5e-6)
     case = read_case_toml(p)
     nodes, weights = case.duty_cycle.speed_distribution()
     want = sum(region_mean_power(r, nodes, weights, mu / rho, rho, case.friction)
                for r in joint_regions(case))
-    assert out["total_mean_power_W"] == pytest.approx(want, rel=1e-12)
+    assert out["total_mean_power_W"] == pytest.approx(want, rel=5e-6)
     # the same joint in VG22 at 20 degC loses about three orders of magnitude more
     assert evaluate_case(case.with_changes(oil=get_oil("VG22"))).total_mean_power_W > \
         300 * out["total_mean_power_W"]
@@ -414,7 +416,7 @@ def test_table_case_outside_its_table_exits_2_with_one_line(tmp_path, capsys):
     assert len(err.strip().splitlines()) == 1 and "Traceback" not in err
     assert main(["evaluate", str(p), "--temp-c", "30", "--json"]) == 0
     out = json.loads(capsys.readouterr().out)
-    assert out["nu_cSt"] == pytest.approx(math.sqrt(1.004 * 0.658), rel=1e-12)
+    assert out["nu_cSt"] == pytest.approx(math.sqrt(1.004 * 0.658), rel=5e-6)  # 6 digits
 
 
 def test_bad_fluid_case_exits_2_with_one_line(tmp_path, capsys):

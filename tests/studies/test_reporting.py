@@ -18,15 +18,25 @@ from oilgap.studies.reporting import (
 
 def test_markdown_table_by_hand():
     df = pd.DataFrame({"oil": ["VG22", "VG46"], "P_W": [1.23456, math.nan], "n": [3, 4]})
-    assert markdown_table(df, 2) == ("| oil | P_W | n |\n"
-                                     "|---|---|---|\n"
-                                     "| VG22 | 1.23 | 3 |\n"
-                                     "| VG46 |  | 4 |")
+    # pandas' to_markdown (tabulate): padded columns, numbers right-aligned, NaN blank
+    assert markdown_table(df, 2) == ("| oil   |   P_W |   n |\n"
+                                     "|:------|------:|----:|\n"
+                                     "| VG22  |  1.23 |   3 |\n"
+                                     "| VG46  |       |   4 |")
 
 
 def test_markdown_rows_writes_cells_as_given():
     assert markdown_rows(["a", "b"], [["x", 1], [None, "2.50"]]) == (
-        "| a | b |\n|---|---|\n| x | 1 |\n| None | 2.50 |")
+        "| a    |    b |\n|:-----|-----:|\n| x    |    1 |\n| None | 2.50 |")
+
+
+def test_markdown_cells_stay_escaped_and_unparsed():
+    # a pipe in a cell cannot split it; "1e3" and "007" are written as given, not parsed
+    text = markdown_rows(["k|ey", "v"], [["a|b", "007"], ["<b>x</b>", "1e3"]])
+    assert text.splitlines() == ["| k\\|ey          |   v |",
+                                 "|:---------------|----:|",
+                                 "| a\\|b           | 007 |",
+                                 "| &lt;b>x&lt;/b> | 1e3 |"]
 
 
 def test_write_tables(tmp_path):

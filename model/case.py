@@ -425,6 +425,10 @@ class DesignCase:
         Where ``friction.gamma`` came from, for output headers: ``"case"`` (the
         case's ``[friction]``), :data:`GAMMA_DEFAULT_SOURCE` (filled in by the reader)
         or ``"given"`` (set in Python).
+    defaults : tuple of oilgap.model.defaults.Default
+        The values the case reader filled in [each in its unit]
+        (``oilgap.model.defaults.case_defaults`` lists them with the ones that follow
+        from the case); empty for a case made in Python.
     """
 
     name: str
@@ -441,6 +445,7 @@ class DesignCase:
     thermal: ThermalSpec | None = None
     bearing: BearingSpec | None = None
     gamma_source: str = field(default="given", compare=False)
+    defaults: tuple = field(default=(), compare=False)
 
     def __post_init__(self):
         if self.bounds is None:

@@ -20,8 +20,9 @@ under the thermal mode ``full``; default 0-7000 m x 0-40 degC) through
 * Both checks take the ISO 3448 grade tolerance (+-10 % on nu at 40 degC) at its
   worst: ``(1 - tol) nu_min >= nu_min_cSt`` and ``(1 + tol) nu_max <= nu_max_cSt``.
 * **Mission energy**: the mean power at each (depth, oil temperature, time
-  fraction) row of the mission profile (the case's ``[[mission]]`` rows, or
-  :data:`SEED_MISSION`), weighted by the fractions, times the mission duration.
+  fraction) row of the mission profile (the case's ``[[mission]]`` rows; without
+  them, one segment at the case's own ``[operating]`` point, or :data:`SEED_MISSION`
+  for the seed joint), weighted by the fractions, times the mission duration.
 * **Recommendation**: among the grades that pass both limits, the lowest
   mission energy; the runner-up is the next. Every other grade gets the reason
   it fails or loses.
@@ -72,6 +73,7 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint
 from oilgap.model.case_io import seed_case
+from oilgap.model.defaults import Default, case_defaults, study_default
 from oilgap.model.errors import (
     InputError,
     SolverError,
@@ -86,6 +88,7 @@ from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
 from oilgap.studies.oil_grade_thermal import compare_recommendations
+from oilgap.studies.user_case import is_seed_case
 
 ISO_GRADES = ("VG10", "VG15", "VG22", "VG32", "VG46", "VG68", "VG100", "VG150", "VG220",
               "VG320", "VG460", "VG680", "VG1000")
@@ -214,13 +217,17 @@ class OilGradeResult:
     recommended_isothermal: str | None = None
     runner_up_isothermal: str | None = None
     comparison: dict | None = None
+    defaults: tuple[Default, ...] = ()
+    """What the tool filled in: the case's and the study's (mission, envelope, limits)."""
+    is_seed: bool = True
+    """Whether the case is the seed joint (labels name "the seed design" only then)."""
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         mission=None, grades: Sequence[str] = ISO_GRADES,
         nu_min_cSt: float = DEFAULT_NU_MIN_CST, nu_max_cSt: float = DEFAULT_NU_MAX_CST,
         iso_tolerance: float = DEFAULT_ISO_TOLERANCE,
-        depth_range_m: Sequence[float] = DEFAULT_DEPTH_RANGE_M,
+        depth_range_m: Sequence[float] = DEFAULT_DEPTH_RANGE_M, scheduler: str | None = None,
         temp_range_C: Sequence[float] | None = None, n_depth: int = 29,
         n_temp: int = 21, mission_hours: float = DEFAULT_MISSION_HOURS,
         rated_temps_C: Sequence[float] | None = None, workers: int | None = None,
@@ -235,9 +242,10 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         The joint (default: the seed joint); its geometry, friction law, duty
         cycle, rated depth, mission rows and ``[thermal]`` are used; its oil is replaced.
     mission : optional
-        Mission profile (see :func:`parse_mission`); default the case's rows, or
-        :data:`SEED_MISSION` if it has none. Under ``full`` each row's temperature is
-        the sea's.
+        Mission profile (see :func:`parse_mission`); default the case's rows; without
+        them one segment at the case's ``[operating]`` point (its sea temperature under
+        ``full``), or :data:`SEED_MISSION` for the seed joint. Under ``full`` each row's
+        temperature is the sea's.
     grades : oil names (default ISO VG10..VG1000 of the catalogue)
     nu_min_cSt, nu_max_cSt : lubrication and cold limits [cSt]
     iso_tolerance : grade tolerance applied at its worst [-] (0 to switch off)
@@ -247,7 +255,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     mission_hours : mission duration [h]
     rated_temps_C : temperatures of the loss-vs-grade view at the rated depth
         (default: envelope min, the case's oil (or sea) temperature, 20 degC, envelope max)
-    workers, progress : passed to :func:`~oilgap.studies.grid.runner.run_grid`
+    workers, progress, scheduler : passed to :func:`~oilgap.studies.grid.runner.run_grid`
     thermal : {"none", "film", "full"} or None
         Thermal mode (default ``"none"``, the isothermal study; None: the best physics
         the case allows, the command line's default).
@@ -268,18 +276,20 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     settings.update(thermal_mode=mode, thermal_default=thermal is None,
                     temp_axis="sea" if mode == "full" else "oil")
     catalogue, grades = _grades(base, grades)
-    segs, source = _mission(base, mission)
+    segs, source = _mission(base, mission, mode)
     settings["rated_depth_m"] = base.operating.depth_m
     settings["rated_temp_C"] = _case_temp(base, mode)
+    rated_given = rated_temps_C is not None
     if rated_temps_C is None:
         t_lo, t_hi = settings["temp_range_C"]
         rated_temps_C = sorted({t_lo, settings["rated_temp_C"], 20.0, t_hi})
     settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated_temps_C]
     grid = _grid(grades, segs, settings)
     out = Path(out_dir) if out_dir is not None else None
-    frames_iso = _evaluate(grid, base, catalogue, "none", out, mode, workers, progress)
+    how = {"workers": workers, "progress": progress, "scheduler": scheduler}  # run_grid's
+    frames_iso = _evaluate(grid, base, catalogue, "none", out, mode, how)
     frames = frames_iso if mode == "none" else _evaluate(grid, base, catalogue, mode, out, mode,
-                                                         workers, progress)
+                                                         how)
     table, recommended, runner_up = _decide(base, catalogue, grades, frames,
                                             frames_iso["envelope"], segs, settings, mode)
     t_iso, rec_iso, run_iso = (table, recommended, runner_up) if mode == "none" else _decide(
@@ -288,7 +298,10 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         table, t_iso, recommended, rec_iso, runner_up, run_iso, mode, base, settings)
     result = OilGradeResult(table, frames["envelope"], frames["rated"], recommended, runner_up,
                             segs, source, settings, (), mode, t_iso, rec_iso, run_iso,
-                            comparison)
+                            comparison, _defaults(base, settings, mission is None, source, segs,
+                                                  temp_range_C, sea_temp_range_C,
+                                                  rated_given),
+                            is_seed_case(base))
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
     return result
@@ -328,13 +341,13 @@ def _axis(mode: str) -> str:
 
 
 def _evaluate(grid: pd.DataFrame, base: DesignCase, catalogue: dict, mode: str,
-              out: Path | None, study_mode: str, workers, progress) -> dict[str, pd.DataFrame]:
+              out: Path | None, study_mode: str, how: dict) -> dict[str, pd.DataFrame]:
     """The grid under one thermal mode: the envelope, mission and rated frames. Points
     are stored under ``out/grid`` (the study's mode) or ``out/grid_isothermal``."""
     sub = "grid" if mode == study_mode else "grid_isothermal"
     res = run_grid(grid.rename(columns={"oil_temp_C": _axis(mode)}), base,
-                   out_dir=out / sub if out is not None else None, workers=workers,
-                   progress=progress, label="oil-grade", catalogue=catalogue, thermal=mode)
+                   out_dir=out / sub if out is not None else None, label="oil-grade",
+                   catalogue=catalogue, thermal=mode, **how)
     failed = res[res["status"] != "ok"]
     if len(failed):
         where = failed.iloc[0][["oil", "depth_m", _axis(mode)]].to_dict()
@@ -378,13 +391,53 @@ def _settings(nu_min_cSt: float, nu_max_cSt: float, iso_tolerance: float,
             "n_depth": int(n_depth), "n_temp": int(n_temp), "mission_hours": hours}
 
 
-def _mission(base: DesignCase, mission) -> tuple[tuple[MissionSegment, ...], str]:
-    """The mission profile used and where it comes from."""
+def _mission(base: DesignCase, mission, mode: str = "none"
+             ) -> tuple[tuple[MissionSegment, ...], str]:
+    """The mission profile used and where it comes from: given, the case's rows, the seed
+    joint's default mission, or one segment at the case's own operating point."""
     if mission is not None:
         return parse_mission(mission), "given"
     if base.mission:
         return tuple(base.mission), "the case's [[mission]] rows"
-    return SEED_MISSION, "default seed mission (the case has none)"
+    if is_seed_case(base):
+        return SEED_MISSION, "default seed mission (the case has none)"
+    t = _case_temp(base, mode)
+    where = "sea " if mode == "full" else ""
+    return ((MissionSegment(float(base.operating.depth_m), t, 1.0),),
+            f"default: one segment at the case's [operating] point "
+            f"({base.operating.depth_m:g} m, {where}{t:g} degC; the case has no [[mission]])")
+
+
+_STUDY_DEFAULTS = (("nu_min_cSt", DEFAULT_NU_MIN_CST, "cSt"),  # settings key, default, unit
+                   ("nu_max_cSt", DEFAULT_NU_MAX_CST, "cSt"),
+                   ("iso_tolerance", DEFAULT_ISO_TOLERANCE, "-"),
+                   ("depth_range_m", DEFAULT_DEPTH_RANGE_M, "m"),
+                   ("mission_hours", DEFAULT_MISSION_HOURS, "h"))
+
+
+def _defaults(base: DesignCase, settings: dict, mission_default: bool, source: str, segs,
+              temp_range_C, sea_temp_range_C, rated_given: bool) -> tuple[Default, ...]:
+    """The case's defaults and the study's: each setting left at its default (by value),
+    the envelope's temperatures, the mission when the tool chose it, the rated view."""
+    out = list(case_defaults(base))
+    for key, default, unit in _STUDY_DEFAULTS:
+        v = settings[key]
+        if (tuple(v) if isinstance(v, (tuple, list)) else v) == default:
+            out.append(study_default(f"oil_grade.{key}", default, unit))
+    if temp_range_C is None and sea_temp_range_C is None:
+        out.append(study_default(f"oil_grade.{settings['temp_axis']}_temp_range_C",
+                                 DEFAULT_TEMP_RANGE_C, "degC"))
+    if mission_default and not base.mission:
+        seed = source.startswith("default seed")
+        out.append(study_default("oil_grade.mission", "; ".join(
+            f"{m.depth_m:g} m/{m.oil_temp_C:g} degC/{m.fraction:g}" for m in segs),
+            "depth/temp/fraction", "the seed's mission" if seed else
+            "one segment at the case's [operating] point; the case has no [[mission]]"))
+    if not rated_given:
+        out.append(study_default("oil_grade.rated_temps_C", ", ".join(
+            f"{t:g}" for t in settings["rated_temps_C"]), "degC",
+            "envelope min, the case's temperature, 20 degC, envelope max"))
+    return tuple(out)
 
 
 def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> pd.DataFrame:
@@ -533,11 +586,8 @@ def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | Non
 
 
 def oil_grade_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
-    """The oil-grade study as one call: one row per grade (see :func:`run`).
-
-    ``attrs`` carries ``recommended``, ``runner_up``, ``thermal_mode`` and
-    ``recommended_isothermal``.
-    """
+    """The oil-grade study as one call: one row per grade (see :func:`run`); ``attrs``
+    carries ``recommended``, ``runner_up``, ``thermal_mode``, ``recommended_isothermal``."""
     r = run(out_dir, **kwargs)
     t = r.table.copy()
     t.attrs.update(recommended=r.recommended, runner_up=r.runner_up,

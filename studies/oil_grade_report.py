@@ -15,6 +15,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
+from oilgap.model.defaults import defaults_block, defaults_markdown
+from oilgap.model.serialize import dumps
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.reporting import (
     markdown_table,
@@ -36,7 +38,14 @@ def _axis_words(result: OilGradeResult) -> tuple[str, str]:
     return "oil_temp_C", "oil"
 
 
-def _figure_heatmap(result: OilGradeResult, base: DesignCase, path: Path) -> Path:
+def _whose(result: OilGradeResult) -> str:
+    """Whose rated condition: the seed design's on the seed case, else the case's."""
+    return "seed design's" if result.is_seed else "the case's"
+
+
+def draw_heatmap(result: OilGradeResult, base: DesignCase, ax) -> None:
+    """The loss of the recommended (else lowest-loss) grade over the envelope on ``ax``
+    [W], the mission rows and the rated condition marked (``oil_grade_heatmap.png``)."""
     col, words = _axis_words(result)
     g = result.recommended or result.table.sort_values("mission_energy_Wh")["oil"].iloc[0]
     e = result.envelope[result.envelope["oil"] == g]
@@ -44,16 +53,15 @@ def _figure_heatmap(result: OilGradeResult, base: DesignCase, path: Path) -> Pat
     temps = np.unique(e[col])
     P = e.pivot_table(index="depth_m", columns=col, values="mean_power_W",
                       aggfunc="first").loc[depths, temps].to_numpy()
-    fig, ax = new_figure(7.5, 5.2)
     cs = ax.contourf(temps, depths, P, levels=20, cmap="viridis")
     cl = ax.contour(temps, depths, P, levels=8, colors="white", linewidths=0.6)
     ax.clabel(cl, fmt="%.0f W", fontsize=7)
-    fig.colorbar(cs, ax=ax, label="mean viscous power over the duty cycle [W]")
+    ax.figure.colorbar(cs, ax=ax, label="mean viscous power over the duty cycle [W]")
     ax.plot([s.oil_temp_C for s in result.mission], [s.depth_m for s in result.mission],
             "wo", mec="k", ms=7, label="mission profile rows")
     t_case = result.settings["rated_temp_C"]
     ax.plot(t_case, base.operating.depth_m, "r*", ms=15, mec="k",
-            label=f"seed design's rated condition ({base.operating.depth_m:g} m, "
+            label=f"{_whose(result)} rated condition ({base.operating.depth_m:g} m, "
                   f"{t_case:g} degC)")
     ax.invert_yaxis()
     ax.set_xlabel(f"{words} temperature [degC]")
@@ -62,7 +70,6 @@ def _figure_heatmap(result: OilGradeResult, base: DesignCase, path: Path) -> Pat
     ax.set_title(f"{base.name}: loss with {g} ({tag}) over the envelope, thermal "
                  f"{result.thermal_mode}", fontsize=10)
     ax.legend(fontsize=7.5, loc="lower left")
-    return save_figure(fig, path)
 
 
 def _shade_failures(ax, t: pd.DataFrame) -> None:
@@ -75,11 +82,12 @@ def _shade_failures(ax, t: pd.DataFrame) -> None:
     ax.axvspan(0, 0, color="#cfe2f3", label="fails the cold-start limit")
 
 
-def _figure_vs_grade(result: OilGradeResult, base: DesignCase, path: Path) -> Path:
+def draw_vs_grade(result: OilGradeResult, base: DesignCase, ax) -> None:
+    """Loss [W] against grade at the rated depth on ``ax``, a curve per temperature,
+    failing grades shaded (``oil_grade_loss_vs_grade.png``, ``og.OilGrade.plot``)."""
     col, words = _axis_words(result)
     t = result.table
     x = np.arange(len(t))
-    fig, ax = new_figure(8.5, 5.0)
     for k, temp in enumerate(result.settings["rated_temps_C"]):
         r = result.rated[np.isclose(result.rated[col], temp)]
         r = r.set_index("oil").loc[t["oil"]]
@@ -91,7 +99,8 @@ def _figure_vs_grade(result: OilGradeResult, base: DesignCase, path: Path) -> Pa
     if seed_oil in list(t["oil"]):
         i = list(t["oil"]).index(seed_oil)
         ax.plot(i, t.loc[i, "rated_power_W"], "ks", mfc="none", ms=12, mew=1.5,
-                label=f"seed design ({seed_oil}, {result.settings['rated_temp_C']:g} degC)")
+                label=f"{'seed design' if result.is_seed else 'this design'} ({seed_oil}, "
+                      f"{result.settings['rated_temp_C']:g} degC)")
     if result.recommended:
         i = list(t["oil"]).index(result.recommended)
         ax.plot(i, t.loc[i, "rated_power_W"], "r*", ms=16, mec="k",
@@ -103,6 +112,12 @@ def _figure_vs_grade(result: OilGradeResult, base: DesignCase, path: Path) -> Pa
                  f" m), thermal {result.thermal_mode}; curves by {words} temperature", fontsize=10)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7.5, loc="upper left")
+
+
+def _figure(draw, result: OilGradeResult, base: DesignCase, size: tuple, path: Path) -> Path:
+    """``draw`` on a new Agg figure of ``size`` [in], written as PNG."""
+    fig, ax = new_figure(*size)
+    draw(result, base, ax)
     return save_figure(fig, path)
 
 
@@ -205,7 +220,8 @@ def summary_markdown(result: OilGradeResult, base: DesignCase) -> str:
         f"Mission profile ({result.mission_source}), {s['mission_hours']:g} h:", "",
         markdown_table(mis, 2), "",
         markdown_table(show, 1),
-        *_thermal_section(result),
+        *_thermal_section(result), "",
+        *defaults_markdown(result.defaults),
     ]
     return "\n".join(lines) + "\n"
 
@@ -222,7 +238,8 @@ def result_json(result: OilGradeResult, base: DesignCase) -> dict:
            "settings": {k: (list(v) if isinstance(v, tuple) else v) for k, v in s.items()},
            "mission": [{"depth_m": m.depth_m, "temp_C": m.oil_temp_C, "fraction": m.fraction}
                        for m in result.mission],
-           "grades": json.loads(result.table.to_json(orient="records"))}
+           "grades": json.loads(result.table.to_json(orient="records")),
+           "defaults": defaults_block(result.defaults)}
     if result.comparison is not None:
         c = dict(result.comparison)
         c["grades"] = json.loads(c["grades"].to_json(orient="records"))
@@ -247,10 +264,12 @@ def write_outputs(out: Path, result: OilGradeResult, base: DesignCase) -> tuple[
         tables["oil_grade_thermal_comparison.csv"] = result.comparison["grades"]
     files = write_tables(out, tables)
     js = out / "oil_grade.json"
-    write_text(js, json.dumps(result_json(result, base), indent=2) + "\n")
+    write_text(js, dumps(result_json(result, base)) + "\n")  # 6 significant digits
     files.append(js)
-    files.append(_figure_heatmap(result, base, out / "oil_grade_heatmap.png"))
-    files.append(_figure_vs_grade(result, base, out / "oil_grade_loss_vs_grade.png"))
+    files.append(_figure(draw_heatmap, result, base, (7.5, 5.2),
+                         out / "oil_grade_heatmap.png"))
+    files.append(_figure(draw_vs_grade, result, base, (8.5, 5.0),
+                         out / "oil_grade_loss_vs_grade.png"))
     if result.comparison is not None:
         files.append(_figure_thermal(result, out / "oil_grade_thermal.png"))
     md = out / "summary.md"
@@ -259,4 +278,5 @@ def write_outputs(out: Path, result: OilGradeResult, base: DesignCase) -> tuple[
     return tuple(files)
 
 
-__all__ = ["result_json", "summary_markdown", "write_outputs"]
+__all__ = ["draw_heatmap", "draw_vs_grade", "result_json", "summary_markdown",
+           "write_outputs"]

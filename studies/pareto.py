@@ -20,13 +20,15 @@ the grid is one warm-started chain):
   lightest feasible rotor (found by bisection on the NLP's exact feasibility
   check) up to the inertia of the optimum without an inertia limit.
 
-The seed joint (T = 4) and the smoothed seed (T = 2) are evaluated with the same
-objective (smooth C_m over the duty cycle) and marked; ``mean_power_exact_W``
-gives every design with the exact Eq. 6 C_m as ``oilgap evaluate`` prints it.
+On the seed case the seed joint (T = 4) and the smoothed seed (T = 2) are evaluated
+with the same objective (smooth C_m over the duty cycle) and marked; on any other case
+only the case's own design is, as "this design (<case name>)", and titles and labels
+name the case. ``mean_power_exact_W`` gives every design with the exact Eq. 6 C_m as
+``oilgap evaluate`` prints it.
 
 Front quality is measured by the 2-D hypervolume (:func:`hypervolume_2d`)
 with respect to a stated reference point (default: the case's ``gap_max`` and
-the seed's mean power, i.e. "better than the seed on both").
+its own design's mean power, i.e. "better than this design on both").
 
 References
 ----------
@@ -49,6 +51,7 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
+from oilgap.model.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.errors import (
     InfeasibleError,
     InputError,
@@ -61,7 +64,6 @@ from oilgap.optim.multiobjective import arc_length_epsilons, hypervolume_2d
 from oilgap.studies.grid.evaluate import evaluate_cases
 from oilgap.studies.grid.optimize import solve_design_point
 from oilgap.studies.grid.runner import run_grid
-from oilgap.studies.grid.store import case_fingerprint
 from oilgap.studies.reporting import (
     markdown_table,
     new_figure,
@@ -69,22 +71,34 @@ from oilgap.studies.reporting import (
     write_tables,
     write_text,
 )
+from oilgap.studies.user_case import design_label, is_seed_case
 
 MIN_POINTS = 50
 """The fewest points a front may have."""
 DEFAULT_POINTS = 60
+"""Points per front when ``points`` is left out."""
+SEED_LABELS = ("seed (T = 4)", "smoothed seed (T = 2)")
+"""The ``design`` labels of the seed joint's rows (seed case only)."""
 
 
 # --------------------------------------------------------------------------- fronts
 
 
 def seed_points(case: DesignCase | None = None) -> pd.DataFrame:
-    """The seed joint (T = 4) and the smoothed seed (T = 2) in the fronts' objective space.
+    """The designs marked on the fronts, in the fronts' objective space.
 
-    Both through the grooved seed's DesignProblem (smooth C_m, inertia with the
-    epoxy fill of the smoothed one) and with the exact C_m (``mean_power_exact_W``).
-    If ``case`` is given, it is marked as ``case`` too.
+    On the seed case (``case`` None or the seed joint, grooved or smoothed): the seed
+    joint (T = 4) and the smoothed seed (T = 2), both through the grooved seed's
+    DesignProblem (smooth C_m, inertia with the epoxy fill of the smoothed one). On any
+    other case: only the case's own design, ``design`` = "this design (<case name>)".
+    Each with the exact C_m too (``mean_power_exact_W``).
     """
+    if not is_seed_case(case):
+        p = DesignProblem(case)
+        pt = p.point(p.x_case_m)
+        return pd.DataFrame([dict(pt.to_dict(), design=design_label(case),
+                                  mean_power_exact_W=float(evaluate_cases([case])
+                                                           ["mean_power_W"].iloc[0]))])
     grooved, smoothed = seed_case(False), seed_case(True)
     prob = DesignProblem(grooved)
     rows = []
@@ -94,13 +108,6 @@ def seed_points(case: DesignCase | None = None) -> pd.DataFrame:
         pt = prob.point(x)
         rows.append(dict(pt.to_dict(), design=label,
                          mean_power_exact_W=float(evaluate_cases([c])["mean_power_W"].iloc[0])))
-    if case is not None and case_fingerprint(case) not in (case_fingerprint(grooved),
-                                                           case_fingerprint(smoothed)):
-        p = DesignProblem(case)
-        pt = p.point(p.x_case_m)
-        rows.append(dict(pt.to_dict(), design="case",
-                         mean_power_exact_W=float(evaluate_cases([case])["mean_power_W"]
-                                                  .iloc[0])))
     return pd.DataFrame(rows)
 
 
@@ -111,19 +118,24 @@ def _check_points(n: int) -> int:
 
 
 def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
-           progress: bool | None, label: str) -> pd.DataFrame:
+           progress: bool | None, label: str, scheduler: str | None = None,
+           workers: int | None = None) -> pd.DataFrame:
+    """One front: one warm-started chain (one chunk) on this process, or on ``workers``
+    processes of a Dask ``scheduler`` (:func:`~oilgap.studies.grid.runner.run_grid`)."""
     grid = pd.DataFrame({column: eps})
     for k, v in extra.items():
         grid[k] = v
-    res = run_grid(grid, case, mode="optimize", out_dir=out_dir, workers=1,
-                   chunk_size=len(grid), progress=progress, label=label)
+    res = run_grid(grid, case, mode="optimize", out_dir=out_dir,
+                   workers=1 if scheduler is None else (workers or 1),
+                   chunk_size=len(grid), progress=progress, label=label, scheduler=scheduler)
     res["epsilon"] = eps
     return res
 
 
 def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
               torque_min_Nm: float | None = None, out_dir: str | Path | None = None,
-              progress: bool | None = False, spacing: str = "arc") -> pd.DataFrame:
+              progress: bool | None = False, spacing: str = "arc",
+              scheduler: str | None = None, workers: int | None = None) -> pd.DataFrame:
     """The gap-loss front: ``min P s.t. delta <= eps`` for ``points`` values of eps.
 
     eps runs from the gap of the unconstrained optimum down to the case's
@@ -160,7 +172,8 @@ def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
                                       points)
         except (InfeasibleError, SolverError):
             pass  # the sweep reports the failing end as a row; keep equal steps
-    return _sweep(base, "delta_max_mm", eps, extra, out_dir, progress, "pareto gap")
+    return _sweep(base, "delta_max_mm", eps, extra, out_dir, progress, "pareto gap",
+                  scheduler, workers)
 
 
 def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = None,
@@ -191,7 +204,8 @@ def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = N
 
 def inertia_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
                   torque_min_Nm: float | None = None, out_dir: str | Path | None = None,
-                  progress: bool | None = False) -> pd.DataFrame:
+                  progress: bool | None = False, scheduler: str | None = None,
+                  workers: int | None = None) -> pd.DataFrame:
     """The loss-inertia front: ``min P s.t. J <= eps`` for ``points`` values of eps.
 
     eps (as ``inertia_max_ratio`` of the case's unfilled rotor) runs from just
@@ -210,7 +224,8 @@ def inertia_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
     r_max = max(free["inertia_ratio"], r_min)
     s = np.linspace(1.0, 0.0, points)
     eps = r_min + (r_max - r_min) * s * s  # denser towards the steep end at the lightest rotor
-    return _sweep(base, "inertia_max_ratio", eps, extra, out_dir, progress, "pareto inertia")
+    return _sweep(base, "inertia_max_ratio", eps, extra, out_dir, progress, "pareto inertia",
+                  scheduler, workers)
 
 
 # --------------------------------------------------------------------------- the study
@@ -227,21 +242,42 @@ class ParetoResult:
     hypervolume: float
     sweep_time_s: float
     files: tuple[Path, ...] = ()
+    defaults: tuple[Default, ...] = ()
+    """What the tool filled in: the case's (:func:`~oilgap.model.defaults.case_defaults`)
+    and the study's (points, reference point)."""
+    is_seed: bool = True
+    """Whether the case is the seed joint (the seed's designs are marked only then)."""
+    case_name: str = ""
+    """The case's name (titles and labels of a case other than the seed)."""
 
 
 def default_reference_point(case: DesignCase, seeds: pd.DataFrame) -> tuple[float, float]:
     """Reference point of the gap front's hypervolume: (the case's gap_max [mm], the
     mean power [W] of the case's own design, NLP objective): the region better than
     the design on both. For the seed case that is the seed's power."""
-    own = seeds[seeds["design"] == "case"]
+    own = seeds[~seeds["design"].isin(SEED_LABELS)]
     if own.empty:
-        own = seeds[seeds["design"] == "seed (T = 4)"]
+        own = seeds[seeds["design"] == SEED_LABELS[0]]
     return case.bounds.gap_max / MM_TO_M, float(own["mean_power_W"].iloc[0])
+
+
+def study_defaults(base: DesignCase, points: int, ref: tuple[float, float]
+                   ) -> tuple[Default, ...]:
+    """The case's defaults and the study's: ``points`` when it is the default, and the
+    reference point (always the tool's)."""
+    out = list(case_defaults(base))
+    if points == DEFAULT_POINTS:
+        out.append(study_default("pareto.points", DEFAULT_POINTS, "-"))
+    who = "the seed's" if is_seed_case(base) else "this design's"
+    out.append(study_default("pareto.reference_point", f"({ref[0]:g} mm, {ref[1]:.6g} W)",
+                             "", f"the case's gap_max and {who} mean power"))
+    return tuple(out)
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         points: int = DEFAULT_POINTS, torque_min_Nm: float | None = None,
-        progress: bool | None = False) -> ParetoResult:
+        progress: bool | None = False, scheduler: str | None = None,
+        workers: int | None = None) -> ParetoResult:
     """Run both sweeps; with ``out_dir`` write CSVs, figures and ``summary.md``.
 
     Parameters
@@ -255,20 +291,28 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         Required torque capability [N m] (default: the case's own).
     progress : bool, optional
         Progress line on stderr.
+    scheduler : str, optional
+        Run the sweeps on Dask: ``"local"`` (a LocalCluster of ``workers`` processes)
+        or ``"tcp://HOST:PORT"`` (:mod:`oilgap.studies.grid.backends`); each front is
+        one warm-started chain, so one task.
+    workers : int, optional
+        Processes of the LocalCluster (default 1).
     """
     base = case if case is not None else seed_case()
     points = _check_points(points)
     out = Path(out_dir) if out_dir is not None else None
     t0 = time.perf_counter()
-    gf = gap_front(base, points, torque_min_Nm, out / "grid_gap" if out else None, progress)
+    gf = gap_front(base, points, torque_min_Nm, out / "grid_gap" if out else None, progress,
+                   scheduler=scheduler, workers=workers)
     sweep_t = time.perf_counter() - t0
     inf = inertia_front(base, points, torque_min_Nm, out / "grid_inertia" if out else None,
-                        progress)
+                        progress, scheduler=scheduler, workers=workers)
     seeds = seed_points(base)
     ref = default_reference_point(base, seeds)
     ok = gf[gf["status"] == "ok"]
     hv = hypervolume_2d(ok[["delta_mm", "mean_power_W"]].to_numpy(), ref)
-    result = ParetoResult(gf, inf, seeds, ref, hv, sweep_t)
+    result = ParetoResult(gf, inf, seeds, ref, hv, sweep_t, (),
+                          study_defaults(base, points, ref), is_seed_case(base), base.name)
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
     return result
@@ -290,17 +334,22 @@ def pareto_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
 
 
 def _mark_seeds(ax, seeds: pd.DataFrame, xcol: str, xscale: float = 1.0) -> None:
-    style = {"seed (T = 4)": ("s", "k"), "smoothed seed (T = 2)": ("o", "#1f4e79"),
-             "case": ("^", "purple")}
+    style = {SEED_LABELS[0]: ("s", "k"), SEED_LABELS[1]: ("o", "#1f4e79")}
     for _, s in seeds.iterrows():
-        mk, col = style.get(s["design"], ("x", "k"))
+        mk, col = style.get(s["design"], ("^", "purple"))
         ax.plot(s[xcol] * xscale, s["mean_power_W"], mk, color=col, ms=9, mfc="white",
                 mew=2, label=f"{s['design']}: {s['mean_power_W']:.1f} W")
 
 
-def _figure_gap(result: ParetoResult, path: Path) -> Path:
+def _whose(result: ParetoResult) -> str:
+    """Whose torque the fronts keep: ``seed's`` or ``<case name>'s``."""
+    return "seed's" if result.is_seed else f"{result.case_name}'s"
+
+
+def draw_gap_front(result: ParetoResult, ax) -> None:
+    """The gap-loss front on ``ax``: loss [W] against delta [mm], its hypervolume shaded,
+    the case's designs marked (``pareto_gap.png``, ``og.Pareto.plot``)."""
     f = result.gap_front[result.gap_front["status"] == "ok"]
-    fig, ax = new_figure(7.8, 5.0)
     f = f.sort_values("delta_mm")
     ax.fill_between(np.r_[f["delta_mm"], result.reference_point[0]],
                     np.r_[f["mean_power_W"], f["mean_power_W"].iloc[-1]],
@@ -312,23 +361,30 @@ def _figure_gap(result: ParetoResult, path: Path) -> Path:
     _mark_seeds(ax, result.seeds, "delta_mm")
     ax.set_xlabel("magnetic gap = clearance delta [mm]")
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
-    ax.set_title("Magnetic gap against viscous loss (torque >= seed's, inertia limited)")
+    ax.set_title(f"Magnetic gap against viscous loss (torque >= {_whose(result)}, inertia "
+                 "limited)")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
-    return save_figure(fig, path)
 
 
-def _figure_inertia(result: ParetoResult, path: Path) -> Path:
+def draw_inertia_front(result: ParetoResult, ax) -> None:
+    """The loss-inertia front on ``ax``: loss [W] against rotor inertia [kg mm^2], the
+    case's designs marked (``pareto_inertia.png``, ``og.Pareto.plot``)."""
     f = result.inertia_front[result.inertia_front["status"] == "ok"]
-    fig, ax = new_figure(7.8, 5.0)
     ax.plot(f["inertia_kgm2"] * 1e6, f["mean_power_W"], "o-", ms=3, color="C2",
             label=f"Pareto front ({len(f)} NLP solves, warm-started)")
     _mark_seeds(ax, result.seeds, "inertia_kgm2", 1e6)
     ax.set_xlabel("rotor inertia incl. epoxy fill [kg mm^2]")
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
-    ax.set_title("Viscous loss against rotor inertia (torque >= seed's)")
+    ax.set_title(f"Viscous loss against rotor inertia (torque >= {_whose(result)})")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
+
+
+def _figure(draw, result: ParetoResult, path: Path) -> Path:
+    """``draw`` on a new Agg figure, written as PNG."""
+    fig, ax = new_figure(7.8, 5.0)
+    draw(result, ax)
     return save_figure(fig, path)
 
 
@@ -336,12 +392,21 @@ _SHOW = ["epsilon", "status", "delta_mm", "R_mm", "L_mm", "T", "mean_power_W",
          "mean_power_exact_W", "torque_capability_Nm", "inertia_ratio", "active_constraints"]
 
 
+def _own_design(result: ParetoResult) -> tuple[pd.Series, str, str]:
+    """(the row the fronts are compared with, its name in sentences, the rotor the inertia
+    ratio is relative to): the seed (T = 4) on the seed case, else the case's design."""
+    s = result.seeds
+    if result.is_seed:
+        return s[s["design"] == SEED_LABELS[0]].iloc[0], "the seed's", "the seed rotor's"
+    return s.iloc[0], "this design's", "this design's rotor"
+
+
 def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
-    """The study's short Markdown summary."""
+    """The study's short Markdown summary (the seed's designs only on the seed case)."""
     g, i = result.gap_front, result.inertia_front
     gok, iok = g[g["status"] == "ok"], i[i["status"] == "ok"]
     s = result.seeds
-    seed = s[s["design"] == "seed (T = 4)"].iloc[0]
+    seed, whose, rotor = _own_design(result)
     at_seed_gap = gok.iloc[(gok["delta_mm"] - seed["delta_mm"]).abs().argmin()]
     pick = np.unique(np.linspace(0, len(gok) - 1, 7).round().astype(int))
     pick_i = np.unique(np.linspace(0, len(iok) - 1, 7).round().astype(int))
@@ -361,22 +426,23 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
         f"(delta = {result.reference_point[0]:g} mm, P = {result.reference_point[1]:.3f} W: "
         "the case's gap_max and its own design's mean power).",
         "",
-        "Seed designs in the same objective (`mean_power_W`: the NLP's smooth C_m; "
+        ("Seed designs" if result.is_seed else "This design") + " in the same objective "
+        "(`mean_power_W`: the NLP's smooth C_m; "
         "`mean_power_exact_W`: the exact Eq. 6 form, as `oilgap evaluate` prints it):",
         "",
         markdown_table(s.assign(inertia_kgmm2=s["inertia_kgm2"] * 1e6)[
             ["design", "delta_mm", "T", "mean_power_W", "mean_power_exact_W",
              "torque_capability_Nm", "inertia_kgmm2"]], 3),
         "",
-        f"At the seed's gap ({seed['delta_mm']:g} mm) the front reaches "
+        f"At {whose} gap ({seed['delta_mm']:g} mm) the front reaches "
         f"{at_seed_gap['mean_power_W']:.2f} W (T = {at_seed_gap['T']:.2f}, R = "
-        f"{at_seed_gap['R_mm']:.2f} mm, L = {at_seed_gap['L_mm']:.2f} mm) against the seed's "
+        f"{at_seed_gap['R_mm']:.2f} mm, L = {at_seed_gap['L_mm']:.2f} mm) against {whose} "
         f"{seed['mean_power_W']:.2f} W.",
         "",
         markdown_table(gok.iloc[pick][_SHOW], 3),
         "",
         f"Inertia front: {len(iok)}/{len(i)} points; loss {iok['mean_power_W'].max():.2f} W "
-        f"at {iok['inertia_ratio'].min():.3f} x the seed rotor's inertia down to "
+        f"at {iok['inertia_ratio'].min():.3f} x {rotor} inertia down to "
         f"{iok['mean_power_W'].min():.2f} W at {iok['inertia_ratio'].max():.3f} x.",
         "",
         markdown_table(iok.iloc[pick_i][_SHOW], 3),
@@ -384,19 +450,21 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
     failed = pd.concat([g[g["status"] != "ok"], i[i["status"] != "ok"]])
     if len(failed):
         lines += ["", f"{len(failed)} points failed; first: {failed['error'].iloc[0]}"]
+    lines += ["", *defaults_markdown(result.defaults)]
     return "\n".join(lines) + "\n"
 
 
 def write_outputs(out: Path, result: ParetoResult, base: DesignCase) -> tuple[Path, ...]:
-    """Write ``pareto_gap.csv``, ``pareto_inertia.csv``, ``pareto_seeds.csv``, the two
-    PNG figures and ``summary.md`` into ``out``."""
+    """Write ``pareto_gap.csv``, ``pareto_inertia.csv``, the marked designs
+    (``pareto_seeds.csv`` on the seed case, else ``pareto_design.csv``), the two PNG
+    figures and ``summary.md`` into ``out``."""
     files = write_tables(out, {
         "pareto_gap.csv": result.gap_front,
         "pareto_inertia.csv": result.inertia_front,
-        "pareto_seeds.csv": result.seeds,
+        "pareto_seeds.csv" if result.is_seed else "pareto_design.csv": result.seeds,
     })
-    files.append(_figure_gap(result, out / "pareto_gap.png"))
-    files.append(_figure_inertia(result, out / "pareto_inertia.png"))
+    files.append(_figure(draw_gap_front, result, out / "pareto_gap.png"))
+    files.append(_figure(draw_inertia_front, result, out / "pareto_inertia.png"))
     md = out / "summary.md"
     write_text(md, summary_markdown(result, base))
     files.append(md)

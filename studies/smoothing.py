@@ -61,8 +61,10 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
+from oilgap.model.defaults import case_defaults
 from oilgap.model.errors import InputError, SolverError
 from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.smoothing_case import NO_TABLE4, run_case
 from oilgap.studies.smoothing_fit import (
     PLATEAU_TOL,
     RIG_DEPTH_M,
@@ -78,6 +80,7 @@ from oilgap.studies.smoothing_fit import (
     steady_temperatures,
 )
 from oilgap.studies.smoothing_report import write_outputs
+from oilgap.studies.user_case import is_seed_case
 
 # --------------------------------------------------------------------------- the study
 
@@ -98,14 +101,23 @@ class SmoothingResult:
     files : files written (empty without ``out_dir``)
     """
 
-    table: pd.DataFrame
-    fit: SmoothingFit
-    checks: pd.DataFrame
+    table: pd.DataFrame | None
+    fit: SmoothingFit | None
+    checks: pd.DataFrame | None
     loss_vs_T: pd.DataFrame
     plateau: pd.DataFrame
     files: tuple[Path, ...] = ()
     run_temps: pd.DataFrame | None = None
     thermal_default: bool = True
+    seed_rig: bool = True
+    """False on a case other than the seed joint: then ``table``, ``fit``, ``checks`` and
+    ``run_temps`` are None (Table 4 is the seed rig's) and ``loss_vs_T``/``plateau`` are
+    the case's own (:mod:`oilgap.studies.smoothing_case`)."""
+    defaults: tuple = ()
+    """What the tool filled in (:class:`oilgap.model.defaults.Default`)."""
+    case_name: str = ""
+    thermal_mode: str = ""
+    """The thermal mode of the loss (the fit's on the seed rig, the case's otherwise)."""
 
 
 def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
@@ -325,7 +337,11 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     ----------
     out_dir : path, optional
     case : DesignCase, optional
-        Base joint (default: the seed joint); T = 4 and T = 2 are set on it.
+        Default: the seed joint, whose T = 4 and T = 2 are compared with Table 4. Any
+        other case: what smoothing its grooves would save at its own operating point
+        with its own gamma, T from its own value down to 1
+        (:func:`oilgap.studies.smoothing_case.run_case`); no fit, no Table 4 (the seed
+        rig's measurement); ``method`` and ``resistance_K_W`` are refused.
     method, resistance_K_W, thermal : see :func:`fit_smoothing`
         (method None and thermal None: ``per-oil`` with the isothermal loss, the
         default; ``thermal="full"`` is the heat-balance fit).
@@ -340,6 +356,8 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     base = case if case is not None else seed_case()
     if not (0.0 < plateau_tol < 1.0):
         raise InputError("plateau_tol", plateau_tol, "must lie in (0, 1)", "smoothing study")
+    if not is_seed_case(base):
+        return _run_case(out_dir, base, method, resistance_K_W, T_values, plateau_tol, thermal)
     method, thermal, default = resolve_fit_mode(method, thermal)
     table4 = load_table4()
     fit = fit_smoothing(method, resistance_K_W, base, table4, thermal)
@@ -352,7 +370,21 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     if out is not None:
         files = write_outputs(out, table, fit, checks, curves, plateau, base, run_temps,
                               default)
-    return SmoothingResult(table, fit, checks, curves, plateau, files, run_temps, default)
+    return SmoothingResult(table, fit, checks, curves, plateau, files, run_temps, default,
+                           True, case_defaults(base), base.name, fit.thermal_mode)
+
+
+def _run_case(out_dir, base: DesignCase, method, resistance_K_W: float, T_values,
+              plateau_tol: float, thermal: str | None) -> SmoothingResult:
+    """The smoothing study on a case other than the seed joint."""
+    for name, v, unset in (("method", method, None), ("resistance_K_W", resistance_K_W, 0.0)):
+        if v != unset:
+            raise InputError(name, v, "applies to the seed rig's Table 4 fit only; " + NO_TABLE4,
+                             "smoothing study")
+    out = Path(out_dir) if out_dir is not None else None
+    curve, saving, mode, defaults, files = run_case(out, base, T_values, plateau_tol, thermal)
+    return SmoothingResult(None, None, None, curve, saving, files, None, thermal is None,
+                           False, defaults, base.name, mode)
 
 
 def smoothing_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:

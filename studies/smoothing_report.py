@@ -95,9 +95,10 @@ def verdict(checks: pd.DataFrame) -> str:
     return text
 
 
-def _figure_table4(table: pd.DataFrame, path: Path) -> Path:
+def draw_table4(table: pd.DataFrame, ax) -> None:
+    """Table 4 on ``ax``: measured and modelled loss [W] per oil, grooved and smoothed
+    (``smoothing_table4.png``)."""
     rows = table[table["group"] > 0]
-    fig, ax = new_figure(8.0, 4.8)
     x = np.arange(len(rows))
     w = 0.38
     ax.bar(x - w / 2, rows["measured_before_W"], w, color="#b0b0b0",
@@ -117,12 +118,12 @@ def _figure_table4(table: pd.DataFrame, path: Path) -> Path:
     ax.set_title("Seed joint on the rig (0 m): Table 4 measured vs model, before/after smoothing")
     ax.legend(fontsize=8, loc="upper left")
     ax.grid(axis="y", alpha=0.3)
-    return save_figure(fig, path)
 
 
-def _figure_loss_vs_T(curves: pd.DataFrame, plateau: pd.DataFrame, fit: SmoothingFit,
-                      path: Path) -> Path:
-    fig, ax = new_figure(8.0, 5.0)
+def draw_loss_vs_T(curves: pd.DataFrame, plateau: pd.DataFrame, fit: SmoothingFit,
+                   ax) -> None:
+    """Mean loss [W] against roughness T [-] on ``ax``, a curve per oil, the plateau
+    shaded (``smoothing_loss_vs_T.png``, ``og.Smoothing.plot``)."""
     for k, (curve, sub) in enumerate(curves.groupby("curve", sort=False)):
         color = f"C{k}"
         ls = "--" if "rated" in curve else "-"
@@ -144,7 +145,6 @@ def _figure_loss_vs_T(curves: pd.DataFrame, plateau: pd.DataFrame, fit: Smoothin
     ax.set_ylim(bottom=0)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7.5, loc="upper left")
-    return save_figure(fig, path)
 
 
 def _pct_range(x: pd.Series) -> str:
@@ -255,8 +255,12 @@ def write_outputs(out: Path, table: pd.DataFrame, fit: SmoothingFit, checks: pd.
     if run_temps is not None:
         tables["smoothing_run_temps.csv"] = run_temps
     files = write_tables(out, tables)
-    files.append(_figure_table4(table, out / "smoothing_table4.png"))
-    files.append(_figure_loss_vs_T(curves, plateau, fit, out / "smoothing_loss_vs_T.png"))
+    fig, ax = new_figure(8.0, 4.8)
+    draw_table4(table, ax)
+    files.append(save_figure(fig, out / "smoothing_table4.png"))
+    fig, ax = new_figure(8.0, 5.0)
+    draw_loss_vs_T(curves, plateau, fit, ax)
+    files.append(save_figure(fig, out / "smoothing_loss_vs_T.png"))
     md = out / "summary.md"
     write_text(md, summary_markdown(table, fit, checks, plateau, base, run_temps, default))
     files.append(md)

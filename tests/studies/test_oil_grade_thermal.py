@@ -8,7 +8,8 @@ from dataclasses import replace
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case, write_case_toml
+from oilgap.model.case_io import seed_case
+from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.joint_loss import joint_mean_power, operating_temperature

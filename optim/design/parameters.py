@@ -127,7 +127,8 @@ def _oil_state(problem: DesignProblem, oil: Fluid | None, oil_temp_C: float | No
         nu, rho = problem.nu_m2_s, problem.rho_kg_m3
     else:
         OperatingPoint(d, t)  # validates the ranges
-        nu, _, rho = (float(v) for v in oil_state(replace(case, oil=the_oil), t, d))
+        with_oil = case if the_oil is case.oil else replace(case, oil=the_oil)
+        nu, _, rho = (float(v) for v in oil_state(with_oil, t, d))
     if nu_m2_s is not None:
         nu = check_positive("nu_m2_s", nu_m2_s, "optimize")
     if rho_kg_m3 is not None:

@@ -17,11 +17,12 @@ from dataclasses import replace
 from typing import Any
 
 from oilgap.model.case import DesignCase
-from oilgap.model.errors import OilgapWarning
+from oilgap.model.errors import OilgapWarning, SolverError
 from oilgap.model.joint_loss import THERMAL_MODES
 from oilgap.model.oils import Oil, get_oil
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
+from oilgap.optim.design.lean import LeanStart, add_constant_powers, optimal_case, solve_lean
 from oilgap.studies.grid.columns import OPERATING_COLUMNS, OPTIMIZE_COLUMNS
 from oilgap.studies.grid.evaluate import evaluate_arrays
 from oilgap.studies.grid.schema import apply_params, is_missing
@@ -65,6 +66,104 @@ def design_problem(case: DesignCase, problems: dict | None = None, thermal: str 
     return key, cache[key]
 
 
+def _kwargs(overrides: Mapping[str, float], operating: Mapping[str, Any] | None
+            ) -> dict[str, Any]:
+    """The solve's keyword arguments from grid overrides and operating columns (SI)."""
+    kw: dict[str, Any] = {}
+    for k, v in overrides.items():
+        name, f = _OVERRIDE_MAP[k]
+        kw[name] = float(v) * f
+    for k, v in (operating or {}).items():
+        kw[k] = get_oil(str(v)) if k == "oil" else float(v)
+    return kw
+
+
+def _solve(case: DesignCase, overrides: Mapping[str, float], x0, problems: dict | None,
+           operating: Mapping[str, Any] | None, thermal: str, constant: bool = True
+           ) -> tuple[dict, Any, DesignCase, tuple | None]:
+    """(record without the exact columns, warm start, the optimum's case to evaluate,
+    (problem, parameters) of a record whose constant powers are still to add).
+
+    Isothermal: the lean solve (:func:`oilgap.optim.design.lean.solve_lean`, only the
+    sweep's columns; ``constant=False``: region 2 and the bearing left to
+    :func:`~oilgap.optim.design.lean.add_constant_powers`); film/full:
+    :meth:`DesignProblem.solve` and its result."""
+    key, prob = design_problem(case, problems, thermal)
+    kw = _kwargs(overrides, operating)
+    t0 = time.perf_counter()
+    if thermal == "none":
+        start = x0[1] if x0 is not None and isinstance(x0[1], LeanStart) else None
+        if start is not None and x0[0] != key:  # another problem's multipliers: primal only
+            start = LeanStart(start.x_m, None, None)
+        rec, nxt, params = solve_lean(prob, start, constant=constant, **kw)
+        rec.update(solve_time_s=time.perf_counter() - t0, thermal_mode=thermal)
+        return (rec, (key, nxt), optimal_case(prob, params, nxt.x_m),
+                None if constant else (prob, params))
+    start = None
+    if x0 is not None:
+        k0, r0 = x0
+        start = r0 if k0 == key else r0.optimal
+    res = prob.solve(x0=start, **kw)
+    dt = time.perf_counter() - t0
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OilgapWarning)
+        opt_case = res.to_case()
+    rec = dict(res.optimal.to_dict(), initial_mean_power_W=res.initial.mean_power_W,
+               thermal_mode=thermal, solve_time_s=dt, iterations=res.iterations,
+               active_constraints=" ".join(res.active_constraints),
+               torque_min_Nm_used=res.parameters.torque_min_Nm,
+               inertia_max_kgm2_used=res.parameters.inertia_max_kgm2)
+    return rec, (key, res), opt_case, None
+
+
+def _exact(recs: list[dict], cases: list[DesignCase], thermal: str) -> None:
+    """``mean_power_exact_W`` and ``oil_temp_op_C`` of each optimum (the case's exact C_m
+    under the thermal mode), evaluated together (:func:`evaluate_arrays`); should that
+    fail, one by one, a failing point becoming an error row."""
+    if not recs:
+        return
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OilgapWarning)
+        try:
+            arrays = evaluate_arrays(cases, thermal)[0]
+        except Exception:  # noqa: BLE001 - find the point that fails
+            if len(recs) == 1:
+                raise
+            for i, (rec, c) in enumerate(zip(recs, cases, strict=True)):
+                try:
+                    _exact([rec], [c], thermal)
+                except Exception as e:  # noqa: BLE001 - a failed point is a row
+                    recs[i] = _error_row(e)
+            return
+    for i, rec in enumerate(recs):
+        rec.update(mean_power_exact_W=float(arrays["mean_power_W"][i]),
+                   oil_temp_op_C=float(arrays["oil_temp_op_C"][i]))
+
+
+def _error_row(e: Exception) -> dict:
+    """The row of a point that failed."""
+    return {"status": "error", "error": f"{type(e).__name__}: {e}"}
+
+
+def _constant(recs: list[dict], pending: list[tuple]) -> None:
+    """Region 2 and the bearing of the lean records (``pending``: (problem, parameters)
+    of each), one call per problem (:func:`add_constant_powers`); should that fail, one
+    by one, a failing point becoming an error row."""
+    groups: dict[int, list[int]] = {}
+    for i, (prob, _) in enumerate(pending):
+        groups.setdefault(id(prob), []).append(i)
+    for idx in groups.values():
+        prob = pending[idx[0]][0]
+        try:
+            add_constant_powers(prob, [recs[i] for i in idx], [pending[i][1] for i in idx])
+        except Exception:  # noqa: BLE001 - find the point that fails
+            for i in idx:
+                try:
+                    add_constant_powers(prob, [recs[i]], [pending[i][1]])
+                except Exception as e:  # noqa: BLE001 - a failed point is a row
+                    recs[i] = _error_row(e)
+
+
 def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None,
                        problems: dict | None = None, operating: Mapping[str, Any] | None = None,
                        thermal: str = "none") -> tuple[dict, Any]:
@@ -91,68 +190,87 @@ def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None
     Returns
     -------
     record : dict
-        The result columns of :data:`oilgap.studies.grid.columns.OPTIMIZE_RESULTS`.
+        The result columns of :data:`oilgap.studies.grid.columns.OPTIMIZE_RESULTS`
+        (powers [W], lengths [mm], ``solve_time_s`` [s]).
     warm : tuple
-        (problem key, DesignResult), to pass as the next ``x0``.
+        (problem key, start), to pass as the next ``x0``.
 
     Raises
     ------
     InputError, InfeasibleError, SolverError
         As :meth:`DesignProblem.solve`.
     """
-    key, prob = design_problem(case, problems, thermal)
-    kw: dict[str, Any] = {}
-    for k, v in overrides.items():
-        name, f = _OVERRIDE_MAP[k]
-        kw[name] = float(v) * f
-    for k, v in (operating or {}).items():
-        kw[k] = get_oil(str(v)) if k == "oil" else float(v)
-    start = None
-    if x0 is not None:
-        k0, r0 = x0
-        start = r0 if k0 == key else r0.optimal
-    t0 = time.perf_counter()
-    res = prob.solve(x0=start, **kw)
-    dt = time.perf_counter() - t0
-    o = res.optimal
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", OilgapWarning)
-        arrays = evaluate_arrays([res.to_case()], thermal)[0]
-    rec = dict(o.to_dict(), initial_mean_power_W=res.initial.mean_power_W,
-               mean_power_exact_W=float(arrays["mean_power_W"][0]), thermal_mode=thermal,
-               oil_temp_op_C=float(arrays["oil_temp_op_C"][0]), solve_time_s=dt,
-               iterations=res.iterations,
-               active_constraints=" ".join(res.active_constraints),
-               torque_min_Nm_used=res.parameters.torque_min_Nm,
-               inertia_max_kgm2_used=res.parameters.inertia_max_kgm2)
-    return rec, (key, res)
+    rec, warm, opt_case, _ = _solve(case, overrides, x0, problems, operating, thermal)
+    recs = [rec]
+    _exact(recs, [opt_case], thermal)
+    if recs[0].get("status") == "error":
+        raise SolverError(recs[0]["error"])
+    return recs[0], warm
 
 
 def optimize_chunk(base: DesignCase, rows: list[dict],
-                   catalogue: Mapping[str, Oil] | None, thermal: str = "none") -> list[dict]:
-    """Optimize each row (one design NLP each), warm-starting from the previous success.
+                   catalogue: Mapping[str, Oil] | None, thermal: str = "none",
+                   chain: int | None = None) -> list[dict]:
+    """Optimize each row (one design NLP each), warm-starting from the previous success
+    of its chain (``chain`` rows each, from the chunk's start; default: the chunk).
 
     The rows' structural parameters give the case (one DesignProblem per distinct
     case, built once); ``oil``, ``oil_temp_C``, ``depth_m`` and the
     :data:`OPTIMIZE_COLUMNS` are parameters of each solve.
     """
+    memo: dict = {}
     results: list[dict] = []
+    solved: list[int] = []
+    cases: list[DesignCase] = []
+    pending: list[tuple] = []
     x_prev = None
-    for row in rows:
-        struct = {k: v for k, v in row.items()
-                  if k not in OPTIMIZE_COLUMNS and k not in OPERATING_COLUMNS}
-        overrides = {k: float(v) for k, v in row.items()
-                     if k in OPTIMIZE_COLUMNS and not is_missing(v)}
-        operating = {k: v for k, v in row.items()
-                     if k in OPERATING_COLUMNS and not is_missing(v)}
+    for i, row in enumerate(rows):
+        if chain and i % chain == 0:
+            x_prev = None  # a new chain starts cold, as the chunk's first row
         try:
-            case = apply_params(base, struct, catalogue)
-            if "oil" in operating:
-                operating["oil"] = get_oil(str(operating["oil"]), catalogue).name
-                case = replace(case, oil=get_oil(operating.pop("oil"), catalogue))
-            rec, x_prev = solve_design_point(case, overrides, x0=x_prev, operating=operating,
-                                             thermal=thermal)
+            case, overrides, operating = _row_case(base, row, catalogue, memo)
+            rec, x_prev, opt_case, todo = _solve(case, overrides, x_prev, None, operating,
+                                                 thermal, constant=False)
             results.append(dict(rec, status="ok", error=None, warning=None))
+            solved.append(len(results) - 1)
+            cases.append(opt_case)
+            pending.append(todo)
         except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
-            results.append({"status": "error", "error": f"{type(e).__name__}: {e}"})
+            results.append(_error_row(e))
+    lean = [k for k, todo in enumerate(pending) if todo is not None]
+    recs = [results[solved[k]] for k in lean]
+    _constant(recs, [pending[k] for k in lean])  # region 2 of every lean optimum at once
+    for k, rec in zip(lean, recs, strict=True):
+        results[solved[k]] = rec
+    keep = [k for k in range(len(solved)) if results[solved[k]]["status"] == "ok"]
+    recs = [results[solved[k]] for k in keep]
+    _exact(recs, [cases[k] for k in keep], thermal)  # the exact C_m of every optimum at once
+    for k, rec in zip(keep, recs, strict=True):
+        results[solved[k]] = rec
     return results
+
+
+def _row_case(base: DesignCase, row: Mapping[str, Any], catalogue: Mapping[str, Oil] | None,
+              memo: dict) -> tuple[DesignCase, dict, dict]:
+    """(case, optimize overrides, operating parameters) of a grid row; the case is built
+    once per distinct structure and oil (``memo``)."""
+    struct = {k: v for k, v in row.items()
+              if k not in OPTIMIZE_COLUMNS and k not in OPERATING_COLUMNS}
+    overrides = {k: float(v) for k, v in row.items()
+                 if k in OPTIMIZE_COLUMNS and not is_missing(v)}
+    operating = {k: v for k, v in row.items()
+                 if k in OPERATING_COLUMNS and not is_missing(v)}
+    oil = operating.pop("oil", None)
+    key = (tuple((k, _hashable(v)) for k, v in struct.items()), oil)
+    case = memo.get(key)
+    if case is None:
+        case = apply_params(base, struct, catalogue)
+        if oil is not None:
+            case = replace(case, oil=get_oil(str(oil), catalogue))
+        memo[key] = case
+    return case, overrides, operating
+
+
+def _hashable(v: Any) -> Any:
+    """A memo key of a grid value (NaN and None are one missing value)."""
+    return None if is_missing(v) else v

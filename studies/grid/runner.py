@@ -6,8 +6,10 @@ or optimizes it (``mode="optimize"``: one design NLP per row, warm-started from
 the previous row of the same chunk, :mod:`oilgap.studies.grid.optimize`) and
 returns one result row per grid row.
 
-* Speed: the grid is cut into chunks that run on all local cores
-  (:mod:`concurrent.futures`); inside a chunk, evaluation is vectorised.
+* Speed: the grid is cut into chunks of a few seconds each
+  (:mod:`oilgap.studies.grid.chunking`) that run on all local cores, or on a Dask
+  cluster (``scheduler``, :mod:`oilgap.studies.grid.backends`), with the same rows
+  and numbers; inside a chunk, evaluation is vectorised.
 * Robustness: a point that fails (a geometry the case refuses, a solver
   failure) is a row with ``status = "error"`` and its message in ``error``;
   the sweep goes on.
@@ -15,10 +17,13 @@ returns one result row per grid row.
   at all, and folded into ``out_dir/points_<mode>.csv``
   (:mod:`oilgap.studies.grid.store`); a rerun with the same folder checks the
   store (partial rows dropped and counted) and computes only the points not in it.
+  The results are ``results.csv`` and ``results.parquet``.
 * One run per folder: ``out_dir`` is locked for the run
   (:class:`oilgap.model.result_folder.FolderLock`); a second run is refused.
 * Ctrl-C: the workers ignore SIGINT; the pool is stopped and its workers ended, and
-  ``KeyboardInterrupt`` reaches the caller alone (no worker tracebacks).
+  :class:`SweepInterrupted` (a ``KeyboardInterrupt`` saying how many points are
+  stored) reaches the caller alone (no worker tracebacks); at most one chunk per
+  worker is lost.
 """
 
 from __future__ import annotations
@@ -26,25 +31,26 @@ from __future__ import annotations
 import contextlib
 import math
 import os
-import signal
 import sys
 import time
 import warnings
 from collections.abc import Callable, Iterable, Mapping
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor, wait
 from pathlib import Path
 from typing import IO
 
 import numpy as np
 import pandas as pd
+from tqdm import tqdm
 
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, OilgapWarning
-from oilgap.model.files import OutputError, atomic_to_csv
+from oilgap.model.files import OutputError, atomic_to_csv, atomic_to_parquet
 from oilgap.model.joint_loss import default_thermal_mode, resolve_thermal_mode
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
 from oilgap.model.result_folder import FolderLock
+from oilgap.studies.grid.backends import InlineBackend, check_scheduler, make_backend
+from oilgap.studies.grid.chunking import DEFAULT_CHUNK_SECONDS, ChunkSizer
 from oilgap.studies.grid.columns import THERMAL_COLUMNS, result_columns
 from oilgap.studies.grid.evaluate import evaluate_chunk
 from oilgap.studies.grid.optimize import nlp_thermal_modes, optimize_chunk
@@ -59,59 +65,27 @@ from oilgap.studies.grid.store import (
     repair_store,
 )
 
-DEFAULT_EVAL_CHUNK = 1000
-"""Rows per chunk in evaluate mode (vectorised inside a chunk)."""
-
-
 # --------------------------------------------------------------------------- progress
 
 
-class Progress:
-    """A one-line progress bar on stderr: bar, percent, count, elapsed time and ETA."""
+def progress_bar(total: int, label: str = "sweep", enabled: bool | None = None,
+                 stream: IO[str] | None = None, initial: int = 0) -> tqdm:
+    """The progress bar of a run on stderr (tqdm [1]): bar, percent, count, points per
+    second, elapsed time and ETA; ``initial`` points already done (a resumed run).
 
-    def __init__(self, total: int, label: str = "sweep", enabled: bool = True,
-                 stream: IO[str] | None = None, width: int = 30, min_interval_s: float = 0.1):
-        self.total = max(int(total), 0)
-        self.label = label
-        self.enabled = enabled
-        self.stream = stream if stream is not None else sys.stderr
-        self.width = width
-        self.min_interval_s = min_interval_s
-        self.done = 0
-        self.t0 = time.perf_counter()
-        self._last = -1.0
+    ``enabled`` None: shown when ``stream`` (default stderr) is a terminal.
 
-    def line(self) -> str:
-        """The current progress line (without carriage return)."""
-        frac = 1.0 if self.total == 0 else self.done / self.total
-        filled = int(frac * self.width)
-        el = time.perf_counter() - self.t0
-        eta = el / frac - el if 0 < frac < 1 else 0.0
-        return (f"oilgap {self.label} [{'#' * filled}{'-' * (self.width - filled)}] "
-                f"{100 * frac:5.1f}% {self.done}/{self.total} points  {el:.1f} s"
-                + (f"  ETA {eta:.1f} s" if 0 < frac < 1 else ""))
-
-    def update(self, n: int = 1) -> None:
-        """Advance by ``n`` points and redraw (at most every ``min_interval_s``)."""
-        self.done += n
-        now = time.perf_counter()
-        if self.enabled and (now - self._last >= self.min_interval_s or self.done >= self.total):
-            self._last = now
-            self.stream.write("\r" + self.line())
-            self.stream.flush()
-
-    def abort(self) -> None:
-        """End the line where it stands (a failure or Ctrl-C: the message that follows
-        starts on a line of its own)."""
-        if self.enabled and self._last >= 0:
-            self.stream.write("\n")
-            self.stream.flush()
-
-    def close(self) -> None:
-        """Finish the line."""
-        if self.enabled:
-            self.stream.write("\r" + self.line() + "\n")
-            self.stream.flush()
+    References
+    ----------
+    .. [1] C. da Costa-Luis et al., *tqdm: a fast, extensible progress meter*,
+       https://tqdm.github.io
+    """
+    stream = stream if stream is not None else sys.stderr
+    if enabled is None:
+        enabled = bool(getattr(stream, "isatty", lambda: False)())
+    return tqdm(total=max(int(total), 0), initial=int(initial), desc=f"oilgap {label}",
+                unit=" points", file=stream, disable=not enabled, mininterval=0.1,
+                dynamic_ncols=True, leave=True)
 
 
 # --------------------------------------------------------------------------- chunks
@@ -124,14 +98,25 @@ def chunks(items: list, size: int) -> Iterable[list]:
 
 
 def run_chunk(mode: str, base: DesignCase, rows: list[dict],
-              catalogue: Mapping[str, Oil] | None, thermal: str = "none") -> list[dict]:
+              catalogue: Mapping[str, Oil] | None, thermal: str = "none",
+              chain: int | None = None) -> list[dict]:
     """One task: evaluate or optimize a chunk of rows under a thermal mode (OilgapWarnings
-    silenced; they are reported per row in ``warning``)."""
+    silenced; they are reported per row in ``warning``); in optimize mode each run of
+    ``chain`` rows is one warm-started chain (default: the whole chunk)."""
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         if mode == "evaluate":
             return evaluate_chunk(base, rows, catalogue, thermal)
-        return optimize_chunk(base, rows, catalogue, thermal)
+        return optimize_chunk(base, rows, catalogue, thermal, chain=chain)
+
+
+def timed_chunk(mode: str, base: DesignCase, rows: list[dict],
+                catalogue: Mapping[str, Oil] | None, thermal: str = "none",
+                chain: int | None = None) -> tuple[list[dict], float]:
+    """:func:`run_chunk` and its wall time on the worker [s] (what chunks are sized by)."""
+    t0 = time.perf_counter()
+    recs = run_chunk(mode, base, rows, catalogue, thermal, chain)
+    return recs, time.perf_counter() - t0
 
 
 def resolve_grid_thermal(base: DesignCase, mode: str, thermal: str | None
@@ -182,15 +167,6 @@ def _catalogue(grid: pd.DataFrame, base: DesignCase,
     return catalogue
 
 
-def _chunk_size(chunk_size: int | None, mode: str, n: int, workers: int) -> int:
-    """Rows per task: given, else 1000 (evaluate) or ``n`` split evenly over the workers
-    (optimize: each chunk one warm-started chain)."""
-    if chunk_size is None:
-        chunk_size = DEFAULT_EVAL_CHUNK if mode == "evaluate" else max(
-            1, math.ceil(n / max(workers, 1)))
-    return max(1, int(chunk_size))
-
-
 def _open_store(out_dir: str | Path | None, mode: str, retry_failed: bool,
                 stack: contextlib.ExitStack) -> tuple[Path | None, dict[str, dict]]:
     """The points file in ``out_dir`` (created and locked for the run; the lock is
@@ -230,60 +206,30 @@ def _todo(keys: list[str], grid: pd.DataFrame, done: Mapping[str, dict]
     return todo_keys, todo_rows
 
 
-def _execute(tasks: list[tuple[list[str], list[dict]]], mode: str, base: DesignCase,
-             catalogue: Mapping[str, Oil] | None, workers: int,
-             finish: Callable[[list[str], list[dict]], None], thermal: str = "none",
-             on_abort: Callable[[], None] | None = None) -> None:
-    """Run the tasks here (one worker or one task) or on a process pool; ``finish`` each
-    chunk as it completes; ``on_abort`` when a failure or Ctrl-C stops them."""
+def _execute(backend, sizer: ChunkSizer, todo_keys: list[str], todo_rows: list[dict],
+             job: tuple, finish: Callable[[list[str], list[dict]], None]) -> None:
+    """Submit the rows chunk by chunk (sized by ``sizer``, at most two chunks per worker
+    in flight) and ``finish`` each chunk as it completes; on a failure or Ctrl-C the
+    backend is stopped at once (the chunks not finished are not stored)."""
+    slots = 1 if isinstance(backend, InlineBackend) else 2 * backend.workers
+    pos, n, inflight = 0, len(todo_rows), {}
     try:
-        _run_tasks(tasks, mode, base, catalogue, workers, finish, thermal)
+        while pos < n or inflight:
+            while pos < n and len(inflight) < slots:
+                size = sizer.next_size(n - pos)
+                ks, rows = todo_keys[pos:pos + size], todo_rows[pos:pos + size]
+                pos += size
+                inflight[backend.submit(timed_chunk, *job[:2], rows, *job[2:],
+                                        sizer.chain)] = ks
+            for f in backend.wait_any(list(inflight)):
+                ks = inflight.pop(f)
+                recs, seconds = f.result()
+                sizer.observe(len(ks), seconds)
+                finish(ks, recs)
     except BaseException:
-        if on_abort is not None:
-            on_abort()
+        backend.close(abort=True, pending=list(inflight))
         raise
-
-
-def _run_tasks(tasks, mode, base, catalogue, workers, finish, thermal) -> None:
-    if not tasks:
-        return
-    if workers == 1 or len(tasks) == 1:
-        for ks, rows in tasks:
-            finish(ks, run_chunk(mode, base, rows, catalogue, thermal))
-        return
-    ex = ProcessPoolExecutor(max_workers=min(workers, len(tasks)),
-                             initializer=_ignore_sigint)
-    try:
-        futs = {ex.submit(run_chunk, mode, base, rows, catalogue, thermal): ks
-                for ks, rows in tasks}
-        pending = set(futs)
-        while pending:
-            fin, pending = wait(pending, return_when=FIRST_COMPLETED)
-            for f in fin:
-                finish(futs[f], f.result())
-    except BaseException:
-        _stop_pool(ex)
-        raise
-    ex.shutdown(wait=True)
-
-
-def _ignore_sigint() -> None:
-    """Worker initializer: Ctrl-C goes to the whole process group; the parent alone
-    handles it (no traceback per worker)."""
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
-
-
-def _stop_pool(ex: ProcessPoolExecutor) -> None:
-    """Stop a pool at once: pending chunks cancelled, running workers ended (their
-    chunks are not stored; a rerun computes them)."""
-    procs = list((getattr(ex, "_processes", None) or {}).values())
-    ex.shutdown(wait=False, cancel_futures=True)
-    for p in procs:
-        with contextlib.suppress(Exception):
-            p.terminate()
-    for p in procs:
-        with contextlib.suppress(Exception):
-            p.join(5)
+    backend.close()
 
 
 def _assemble(grid: pd.DataFrame, keys: list[str], done: Mapping[str, dict],
@@ -306,17 +252,23 @@ def _assemble(grid: pd.DataFrame, keys: list[str], done: Mapping[str, dict],
 # --------------------------------------------------------------------------- the engine
 
 
-def _bar(total: int, todo: int, label: str, progress: bool | None) -> Progress:
-    """The progress line (default: shown when stderr is a terminal), ``total - todo``
-    points already done."""
-    if progress is None:
-        progress = bool(getattr(sys.stderr, "isatty", lambda: False)())
-    bar = Progress(total, label, progress)
-    bar.done = total - todo
-    return bar
+class SweepInterrupted(KeyboardInterrupt):
+    """Ctrl-C during a run with an ``out_dir``: how many of the grid's points are stored.
+
+    Attributes
+    ----------
+    saved, total : int
+        Grid rows whose points are stored, and all rows [-].
+    out_dir : Path
+        The folder [-].
+    """
+
+    def __init__(self, saved: int, total: int, out_dir: str | Path):
+        self.saved, self.total, self.out_dir = int(saved), int(total), Path(out_dir)
+        super().__init__(f"{self.saved} of {self.total} points saved in {self.out_dir}")
 
 
-def _finisher(done: dict, store: Path | None, mode: str, bar: Progress,
+def _finisher(done: dict, store: Path | None, mode: str, bar: tqdm,
               on_chunk: Callable[[int], None] | None
               ) -> Callable[[list[str], list[dict]], None]:
     """What happens to each finished chunk: kept, appended to the store, counted."""
@@ -349,7 +301,8 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
              catalogue: Mapping[str, Oil] | None = None,
              label: str = "sweep", retry_failed: bool = False,
              on_chunk: Callable[[int], None] | None = None,
-             thermal: str | None = "none") -> pd.DataFrame:
+             thermal: str | None = "none", scheduler: str | None = None,
+             chunk_seconds: float = DEFAULT_CHUNK_SECONDS) -> pd.DataFrame:
     """Evaluate or optimize every row of a grid of parameter combinations.
 
     Parameters
@@ -362,15 +315,23 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
         Base case (default: the seed joint, grooved).
     mode : {"evaluate", "optimize"}
     out_dir : path, optional
-        Folder for ``points_<mode>.csv`` (finished points, appended chunk by
-        chunk) and ``results.csv``; a rerun with the same folder skips the
-        points already there.
+        Folder for ``points_<mode>.csv`` (finished points, stored chunk by chunk)
+        and ``results.csv``/``results.parquet``; a rerun with the same folder skips
+        the points already there.
     workers : int, optional
-        Processes (default: all local cores; 1 runs in this process).
+        Processes (default: all local cores; 1 runs in this process); with
+        ``scheduler="local"`` the processes of the LocalCluster.
     chunk_size : int, optional
-        Rows per task (default: 1000 in evaluate mode; in optimize mode the
-        grid split evenly over the workers so that each chunk is one
-        warm-started chain).
+        Fixed rows per task (in optimize mode each chunk is then one warm-started
+        chain). Default: chunks sized by time (``chunk_seconds``,
+        :mod:`oilgap.studies.grid.chunking`), with fixed chains of
+        :data:`~oilgap.studies.grid.chunking.WARM_CHAIN` rows in optimize mode.
+    chunk_seconds : float
+        Target wall time of a chunk on its worker [s] (default 3).
+    scheduler : str, optional
+        None (local processes), ``"local"`` (a Dask LocalCluster of ``workers``
+        processes) or ``"tcp://HOST:PORT"`` (a running Dask scheduler;
+        :mod:`oilgap.studies.grid.backends`). The same rows and numbers.
     progress : bool, optional
         Progress line on stderr (default: when stderr is a terminal).
     catalogue : mapping, optional
@@ -391,33 +352,78 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
         ``warning``, ``thermal_mode`` and the result columns
         (:data:`EVALUATE_RESULTS` or :data:`OPTIMIZE_RESULTS`); ``point_key``
         identifies the point. ``attrs``: ``thermal_mode``, ``thermal_default``,
-        ``computed``, ``reused``, ``elapsed_s``.
+        ``computed``, ``reused``, ``elapsed_s`` [s], ``backend``, ``chunks``,
+        ``worker_s`` (the chunks' wall time on their workers, summed) [s],
+        ``backend_start_s`` (starting the pool or cluster, or connecting) [s].
 
     Raises
     ------
     InputError
         Bad grid (:func:`validate_grid`), unknown oil, bad ``workers``, a thermal
-        mode or column the case refuses (:func:`check_thermal_columns`).
+        mode or column the case refuses (:func:`check_thermal_columns`), a bad
+        ``scheduler`` (no dask, nobody answering at the address).
+    SweepInterrupted
+        Ctrl-C with an ``out_dir``: the points finished so far are stored (a
+        ``KeyboardInterrupt`` saying how many).
     """
     grid, base, thermal, by_default = _checked(grid, case, mode, thermal)
     catalogue = _catalogue(grid, base, catalogue)
     workers = _check_workers(workers)
+    scheduler = check_scheduler(scheduler)
+    sizer = ChunkSizer(mode, workers, chunk_seconds, chunk_size)
     keys = point_keys(grid, base, mode, {"thermal": thermal})
+    t0 = time.perf_counter()
     with contextlib.ExitStack() as stack:
         store, done = _open_store(out_dir, mode, retry_failed, stack)
         todo_keys, todo_rows = _todo(keys, grid, done)
         n = len(todo_rows)
-        chunk_size = _chunk_size(chunk_size, mode, n, workers)
-        bar = _bar(len(keys), n, label, progress)
+        t_start = time.perf_counter()
+        backend = make_backend(scheduler, workers, _tasks(sizer, n)) if n else None
+        started_s = time.perf_counter() - t_start
+        bar = stack.enter_context(progress_bar(len(keys), label, progress,
+                                               initial=len(keys) - n))
         finish = _finisher(done, store, mode, bar, on_chunk)
-        tasks = list(zip(chunks(todo_keys, chunk_size), chunks(todo_rows, chunk_size),
-                         strict=True))
-        _execute(tasks, mode, base, catalogue, workers, finish, thermal, bar.abort)
-        bar.close()
+        try:
+            if backend is not None:
+                _execute(backend, sizer, todo_keys, todo_rows,
+                         (mode, base, catalogue, thermal), finish)
+        except KeyboardInterrupt:
+            if store is None:
+                raise
+            saved = sum(k in done for k in keys)
+            raise SweepInterrupted(saved, len(keys), out_dir) from None
         result = _assemble(grid, keys, done, mode)
         result.attrs.update(thermal_mode=thermal, thermal_default=by_default, computed=n,
-                            reused=len(keys) - n, elapsed_s=time.perf_counter() - bar.t0)
+                            reused=len(keys) - n, elapsed_s=time.perf_counter() - t0,
+                            backend=backend.name if backend is not None else "none",
+                            chunks=sizer.chunks, worker_s=sizer.seconds,
+                            backend_start_s=started_s)
         if store is not None:
             fold_chunks(store, mode)
-            atomic_to_csv(result, Path(out_dir) / "results.csv", index=False)
+            write_results(result, Path(out_dir))
     return result
+
+
+def _tasks(sizer: ChunkSizer, n: int) -> int:
+    """Chunks a run of ``n`` rows takes at least (1 or more) [-]."""
+    first = sizer.next_size(n)
+    return math.ceil(n / first) if first else 0
+
+
+def write_results(result: pd.DataFrame, out_dir: Path) -> tuple[Path, Path]:
+    """``results.csv`` and ``results.parquet`` in ``out_dir``, each written atomically."""
+    csv = atomic_to_csv(result, out_dir / "results.csv", index=False)
+    pq = atomic_to_parquet(_for_parquet(result), out_dir / "results.parquet", index=False)
+    return csv, pq
+
+
+def _for_parquet(result: pd.DataFrame) -> pd.DataFrame:
+    """Text columns as text (None kept), the rest as they are: Arrow needs one type per
+    column."""
+    out = result.copy()
+    out.attrs = {}
+    for c in out.columns:
+        if out[c].dtype == object:
+            out[c] = out[c].map(lambda v: None if v is None or (isinstance(v, float)
+                                                                and math.isnan(v)) else str(v))
+    return out

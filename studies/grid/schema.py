@@ -18,6 +18,8 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
+import pyarrow.parquet as pq
 
 from oilgap.model.case import DesignCase
 from oilgap.model.duty_cycle import DutyCycle
@@ -34,7 +36,11 @@ from oilgap.studies.grid.columns import (
 )
 
 __all__ = ["MODES", "OPTIMIZE_COLUMNS", "PARAM_COLUMNS", "STRING_COLUMNS", "apply_params",
-           "check_thermal_columns", "is_missing", "read_grid_csv", "validate_grid"]
+           "check_thermal_columns", "is_missing", "read_grid", "read_grid_csv",
+           "read_grid_parquet", "validate_grid"]
+
+PARQUET_SUFFIXES = (".parquet", ".pq")
+"""Suffixes of a grid read as Parquet (:func:`read_grid`); anything else is CSV."""
 
 WHERE = "trade study"
 """Context named by every InputError of the engine."""
@@ -195,6 +201,57 @@ def read_grid_csv(path: str | Path) -> pd.DataFrame:
         df[c] = num if c not in STRING_COLUMNS and num.notna().sum() == col.notna().sum() \
             else col
     return df
+
+
+def read_grid_parquet(path: str | Path) -> pd.DataFrame:
+    """Read a grid stored as Parquet: the same columns and rules as a CSV grid
+    (:func:`read_grid_csv`); a missing value (null) is an empty cell, the base case's
+    value.
+
+    Raises
+    ------
+    InputError
+        Not a readable Parquet file, no rows, a column name given twice.
+    """
+    p = Path(path)
+    if not p.is_file():
+        raise InputError("grid", str(p), "must be an existing CSV or Parquet file", WHERE)
+    try:
+        schema = pq.read_schema(p)
+        names = [str(c).strip() for c in schema.names]
+        dup = [c for c in dict.fromkeys(names) if names.count(c) > 1]
+        if dup:
+            raise InputError("column", dup[0], f"appears {names.count(dup[0])} times in the "
+                             "header; column names must be unique", WHERE)
+        df = pq.read_table(p).to_pandas()
+    except (pa.ArrowException, OSError) as e:
+        first = (str(e).strip().splitlines() or [type(e).__name__])[0][:160]
+        raise InputError("grid", str(p), f"is not a readable Parquet file ({first})",
+                         WHERE) from None
+    df.columns = names
+    if len(df) == 0:
+        raise InputError("grid", str(p), "holds no rows; it must hold at least one", WHERE)
+    for c in df.columns:
+        if c in STRING_COLUMNS or df[c].dtype == object:
+            col = df[c].astype(object)
+            df[c] = col.where(col.notna() & (col.astype(str).str.strip() != ""), np.nan)
+        if c in STRING_COLUMNS:
+            df[c] = df[c].map(lambda v: v if is_missing(v) else str(v))
+    return df
+
+
+def read_grid(path: str | Path) -> pd.DataFrame:
+    """Read a grid by its suffix: Parquet (``.parquet``, ``.pq``,
+    :func:`read_grid_parquet`) or CSV (anything else, :func:`read_grid_csv`).
+
+    Raises
+    ------
+    InputError
+        As the reader of the format.
+    """
+    if Path(path).suffix.lower() in PARQUET_SUFFIXES:
+        return read_grid_parquet(path)
+    return read_grid_csv(path)
 
 
 # --------------------------------------------------------------------------- one point's case

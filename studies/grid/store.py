@@ -32,7 +32,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import case_to_dict
+from oilgap.model.case_write import case_to_dict
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.files import OutputError, atomic_to_csv, atomic_write_text
 from oilgap.model.result_folder import LOCK_NAME
@@ -95,7 +95,8 @@ def store_files(sub: str = "") -> tuple[str, ...]:
     relative to a result folder: what ``--force`` removes."""
     lock = (f"{sub}{LOCK_NAME}",) if sub else ()  # a subfolder's lock left by a killed run
     return (f"{sub}points_*.csv", f"{sub}points_*.chunks/*.csv",
-            f"{sub}points_*.chunks/.*.tmp", f"{sub}results.csv", *lock)
+            f"{sub}points_*.chunks/.*.tmp", f"{sub}results.csv", f"{sub}results.parquet",
+            *lock)
 
 
 def chunks_dir(path: Path) -> Path:

@@ -17,7 +17,7 @@ from oilgap.model.evaluation import mean_viscous_power, oil_state
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main
 from oilgap.studies.grid.evaluate import evaluate_cases
-from oilgap.studies.grid.runner import Progress, run_grid
+from oilgap.studies.grid.runner import progress_bar, run_grid
 from oilgap.studies.grid.schema import apply_params, read_grid_csv, validate_grid
 
 
@@ -159,9 +159,14 @@ def test_cli_sweep_writes_results_and_resumes(tmp_path, capsys):
 
 def test_progress_line():
     buf = io.StringIO()
-    bar = Progress(200, "sweep", True, buf, width=10, min_interval_s=0.0)
-    bar.update(60)
-    assert "oilgap sweep [###-------]  30.0% 60/200 points" in buf.getvalue()
-    bar.update(140)
-    bar.close()
-    assert buf.getvalue().rstrip().endswith("s") and "100.0% 200/200" in buf.getvalue()
+    with progress_bar(200, "sweep", True, buf) as bar:
+        bar.update(60)
+        bar.refresh()
+        assert "oilgap sweep:  30%" in buf.getvalue() and "60/200" in buf.getvalue()
+        bar.update(140)
+    assert "100%" in buf.getvalue() and "200/200" in buf.getvalue()
+    assert "points/s" in buf.getvalue()
+    quiet = io.StringIO()  # not a terminal: no bar unless asked
+    with progress_bar(10, "sweep", None, quiet) as bar:
+        bar.update(10)
+    assert quiet.getvalue() == ""

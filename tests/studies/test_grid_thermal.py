@@ -10,7 +10,8 @@ import pandas as pd
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case, write_case_toml
+from oilgap.model.case_io import seed_case
+from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case, mean_viscous_power
 from oilgap.model.joint_loss import case_film, joint_mean_power, operating_temperature

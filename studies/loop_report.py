@@ -1,17 +1,21 @@
 """Report of the measured-data loop: terminal summary, ``loop.json``, ``report.md``, figures.
 
-Tables and figures follow :mod:`oilgap.studies.reporting`. Figures (matplotlib,
-Agg canvas), written next to the report:
+Tables and figures follow :mod:`oilgap.studies.reporting`. Figures (drawn by
+:mod:`oilgap.studies.loop_figures` on the Agg canvas), written next to the report:
 
-* ``measured_vs_model.png``: per run, the measured viscous power against time
-  with the model without T, with T (before) and with the accepted effects (after);
+* ``measured_vs_model.png``: per run, the whole record: measured viscous power with the
+  model without T, with T (before) and with the accepted effects (after);
+* ``measured_vs_model_window.png``: per run, the last three speed cycles (the shape),
+  measured, base model and with effect, one y scale;
 * ``residual_vs_speed.png``: residual against signed speed, before and after;
-* ``residual_vs_time.png``: residual against time, before and after, per run.
+* ``residual_vs_time.png``: residual against time, before and after, one line per run
+  named in the legend.
+
+More than 12 runs: ``measured_vs_model_2.png``... and ``measured_vs_model_window_2.png``...
 """
 
 from __future__ import annotations
 
-import json
 import math
 import warnings
 from pathlib import Path
@@ -19,11 +23,24 @@ from pathlib import Path
 import numpy as np
 
 from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.serialize import Exact, dumps
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.ranges import effective_scale
-from oilgap.studies.reporting import markdown_rows, new_figure, save_figure, write_text
+from oilgap.studies.loop_figures import (
+    OVERVIEW,
+    SPEED,
+    TIME,
+    LoopCurves,
+    figure_names,
+    pages,
+    plot_overview,
+    plot_residuals,
+    plot_windows,
+)
+from oilgap.studies.reporting import markdown_rows, save_figure, write_text
 
-FIGURES = ("measured_vs_model.png", "residual_vs_speed.png", "residual_vs_time.png")
+FIGURES = (OVERVIEW, SPEED, TIME, f"{OVERVIEW[:-4]}_*.png")
+"""The figures' files (names or glob patterns; :func:`figure_names` for a given loop)."""
 DPI = 110
 """Resolution of the loop's figures [dots per inch]."""
 
@@ -202,86 +219,31 @@ def format_summary(est: LoopEstimator) -> str:
     return "\n".join(x for x in lines if x is not None)
 
 
-def _figure_runs(est: LoopEstimator, path: Path) -> Path:
-    """Per run: measured viscous power against time with the model without T, with T
-    (before) and with the accepted effects (after)."""
-    s = est.samples_
-    runs = s.run_names
-    ncol = min(4, len(runs))
-    nrow = math.ceil(len(runs) / ncol)
-    fig, axes = new_figure(4 * ncol, 2.8 * nrow, ncols=ncol, nrows=nrow, squeeze=False,
-                           sharex=False)
-    steady = not getattr(s, "has_time", True)
-    for i, name in enumerate(runs):
-        ax = axes[i // ncol][i % ncol]
-        m = s.run_code == i
-        t = np.arange(int(m.sum())) if steady else s.time_s[m]
-        ax.plot(t, s.viscous_W[m], ".", ms=1.5, color="0.5", label="measured")
-        ax.plot(t, est.pred_["without_T"][m], lw=0.8, color="tab:red", label="without T")
-        ax.plot(t, est.pred_["with_T"][m], lw=0.8, color="tab:blue", label="with T (before)")
-        if est.effects_:
-            ax.plot(t, est.pred_["with_effect"][m], lw=0.8, color="tab:green", ls="--",
-                    label="with effect (after)")
-        ax.set_title(name, fontsize=9)
-        ax.set_xlabel("operating point" if steady else "time [s]", fontsize=8)
-        ax.set_ylabel("viscous power [W]", fontsize=8)
-        ax.tick_params(labelsize=7)
-    for j in range(len(runs), nrow * ncol):
-        axes[j // ncol][j % ncol].axis("off")
-    axes[0][0].legend(fontsize=7, loc="upper right")
-    return save_figure(fig, path, DPI)
+def _figure_runs(curves: LoopCurves, path: Path, runs: list[int], windows: bool) -> Path:
+    """The overview (whole runs) or the windows (a few cycles) of ``runs``, written."""
+    axs = (plot_windows if windows else plot_overview)(curves, runs)
+    return save_figure(axs[0].figure, path, DPI)
 
 
-def _bin_means(xv: np.ndarray, res: np.ndarray, bins: int = 24
-               ) -> tuple[np.ndarray, np.ndarray]:
-    """Centres and means of ``res`` in ``bins`` equal-count bins of ``xv``."""
-    edges = np.quantile(xv, np.linspace(0, 1, bins + 1))
-    idx = np.clip(np.searchsorted(edges, xv, side="right") - 1, 0, bins - 1)
-    count = np.maximum(np.bincount(idx, None, bins), 1)
-    return np.bincount(idx, xv, bins) / count, np.bincount(idx, res, bins) / count
-
-
-def _figure_residuals(est: LoopEstimator, path: Path, xv: np.ndarray, xlabel: str,
-                      per_run: bool) -> Path:
-    """Residual before and after against ``xv``: one line per run (``per_run``) or the
-    samples with their bin means."""
-    s = est.samples_
-    y = s.viscous_W
-    fig, axes = new_figure(11, 3.8, ncols=2, sharey=True)
-    for ax, res, title in ((axes[0], y - est.pred_["with_T"], "before (calibrated, with T)"),
-                           (axes[1], y - est.pred_["with_effect"],
-                            "after (with accepted effects)")):
-        if per_run:
-            for i, name in enumerate(s.run_names):
-                m = s.run_code == i
-                ax.plot(xv[m], res[m], lw=0.4, alpha=0.7, label=name)
-        else:
-            ax.plot(xv, res, ".", ms=1, alpha=0.3, color="0.4")
-            cen, mean = _bin_means(xv, res)
-            ax.plot(cen, mean, "o-", ms=3, color="tab:red", label="bin means")
-            ax.legend(fontsize=8)
-        ax.axhline(0, color="k", lw=0.5)
-        ax.set_title(f"residual {title}: RMSE {math.sqrt(np.mean(res * res)):.3g} W",
-                     fontsize=9)
-        ax.set_xlabel(xlabel)
-    axes[0].set_ylabel("measured - model [W]")
-    return save_figure(fig, path, DPI)
+def _figure_residuals(curves: LoopCurves, path: Path, against: str) -> Path:
+    """The residual before and after against time or speed, written."""
+    axs = plot_residuals(curves, against)
+    return save_figure(axs[0].figure, path, DPI)
 
 
 def _figures(est: LoopEstimator, out: Path) -> list[Path]:
-    """The three figures of :data:`FIGURES`, written into ``out``."""
-    s = est.samples_
-    steady = not getattr(s, "has_time", True)
-    order = s.time_s
-    if steady:  # operating-point number within its run
-        order = np.zeros(s.n)
-        for c in np.unique(s.run_code):
-            idx = np.nonzero(s.run_code == c)[0]
-            order[idx] = np.arange(len(idx))
-    return [_figure_runs(est, out / FIGURES[0]),
-            _figure_residuals(est, out / FIGURES[1], s.speed_rpm, "speed [rpm]", False),
-            _figure_residuals(est, out / FIGURES[2], order,
-                              "operating point" if steady else "time [s]", True)]
+    """The figures of :func:`oilgap.studies.loop_figures.figure_names`, written into
+    ``out`` in that order (at most 12 runs a figure)."""
+    c = LoopCurves.of(est)
+    names = figure_names(len(c.run_names))
+    pg = pages(len(c.run_names))
+    paths = [_figure_runs(c, out / names[0], pg[0], False),
+             _figure_residuals(c, out / names[1], "speed"),
+             _figure_residuals(c, out / names[2], "time")]
+    more, windows = names[3:2 + len(pg)], names[2 + len(pg):]
+    paths += [_figure_runs(c, out / n, p, False) for n, p in zip(more, pg[1:], strict=True)]
+    paths += [_figure_runs(c, out / n, p, True) for n, p in zip(windows, pg, strict=True)]
+    return paths
 
 
 def _md_data(est: LoopEstimator) -> list[str]:
@@ -416,7 +378,8 @@ def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
                                 f"{x['rmse_with_effect_W']:.3f}",
                                 f"{x['heldout_rmse_before_W']:.3f}",
                                 f"{x['heldout_rmse_after_W']:.3f}"] for x in est.per_run_]), "",
-            "## Figures", "", *((f"![{f}]({f})" for f in FIGURES) if figures
+            "## Figures", "", *((f"![{f}]({f})" for f in
+                                 figure_names(len(est.samples_.run_names))) if figures
                                 else ["Not drawn (`--no-figures`)."])]
 
 
@@ -446,7 +409,7 @@ def loop_json(est: LoopEstimator) -> dict:
     """The ``loop.json`` document (non-finite numbers as null): the estimator's, with the
     rig case's ``gamma`` and ``gamma_source``, ``data.notes`` and ``not_identifiable`` (the
     fitted parameters whose interval is null)."""
-    doc = est.to_dict()
+    doc = LoopEstimator.to_dict(est)  # the estimator's own (og.Loop.to_dict calls this)
     case = est.case_
     doc = {"gamma": float(case.friction.gamma), "gamma_source": case.gamma_source,
            "gamma_use": "the rig case's; used only where the oil runs cannot identify gamma "
@@ -455,7 +418,10 @@ def loop_json(est: LoopEstimator) -> dict:
            "not_identifiable": not_identifiable(est), "unit_hints": unit_hints(est)}
     if isinstance(doc.get("data"), dict):
         doc["data"] = {**doc["data"], "notes": list(getattr(est.data_, "notes", ()))}
-    return _json_safe(doc)
+    doc = _json_safe(doc)
+    if isinstance(doc.get("model"), dict):  # every digit: predict reproduces the fit
+        doc["model"] = Exact(doc["model"])
+    return doc
 
 
 def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) -> dict:
@@ -472,7 +438,7 @@ def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) 
     paths = {"json": out / "loop.json", "report": out / "report.md"}
     paths["figures"] = _figures(est, out) if figures else []
     text = report_markdown(est, figures)
-    doc = json.dumps(loop_json(est), indent=2)
+    doc = dumps(loop_json(est))  # 6 significant digits; the model block in full
     write_text(paths["report"], text)
     write_text(paths["json"], doc)
     return paths

@@ -2,16 +2,66 @@
 
 ``import oilgap as og`` gives the notebook API (the façade over
 :mod:`oilgap.model`, :mod:`oilgap.optim` and :mod:`oilgap.studies`); the
-``oilgap`` command line calls exactly these functions.
+``oilgap`` command line calls exactly these functions::
+
+    import oilgap as og
+    ev = og.evaluate("my_joint.toml", thermal="none")   # og.Evaluation
+    ev.to_frame(); ev.plot(); print(ev)
+    opt = og.optimize("my_joint.toml", starts=8)         # og.Optimization
+
+Each name is loaded on first use (:data:`EXPORTS`), so ``import oilgap`` stays fast
+and loads neither pandas, CasADi nor dask. The user guide is ``docs/api.md``.
 """
 
 from __future__ import annotations
 
+import importlib
 from importlib.metadata import PackageNotFoundError, version
+from typing import Any
 
 try:
     __version__ = version("oilgap")
 except PackageNotFoundError:  # running from a source tree that was never installed
     __version__ = "0+unknown"
 
-__all__ = ["__version__"]
+EXPORTS: dict[str, str] = {
+    "read_case": "oilgap.studies.api",
+    "seed_case": "oilgap.studies.api",
+    "write_case": "oilgap.studies.api",
+    "evaluate": "oilgap.studies.api",
+    "optimize": "oilgap.studies.api_design",
+    "pareto": "oilgap.studies.api_studies",
+    "oil_grade": "oilgap.studies.api_studies",
+    "smoothing": "oilgap.studies.api_studies",
+    "sweep": "oilgap.studies.api_studies",
+    "Loop": "oilgap.studies.api_loop",
+    "predict": "oilgap.studies.api_loop",
+    "synth": "oilgap.studies.api_loop",
+    "read_measured": "oilgap.studies.api_loop",
+    "Evaluation": "oilgap.studies.results",
+    "Optimization": "oilgap.studies.results_design",
+    "Pareto": "oilgap.studies.results_studies",
+    "OilGrade": "oilgap.studies.results_studies",
+    "Smoothing": "oilgap.studies.results_studies",
+    "Sweep": "oilgap.studies.results_sweep",
+    "InputError": "oilgap.model.errors",
+    "InfeasibleError": "oilgap.model.errors",
+    "SolverError": "oilgap.model.errors",
+}
+"""The façade's names and the module each is loaded from on first use (the one table, as
+the command line's dispatch table)."""
+
+__all__ = ["__version__", *EXPORTS]
+
+
+def __getattr__(name: str) -> Any:
+    """``og.<name>``: loaded from its module in :data:`EXPORTS` on first use."""
+    if name not in EXPORTS:
+        raise AttributeError(f"module 'oilgap' has no attribute {name!r}")
+    value = getattr(importlib.import_module(EXPORTS[name]), name)
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(__all__))

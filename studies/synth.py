@@ -38,7 +38,8 @@ import pandas as pd
 from scipy.integrate import solve_ivp
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import case_to_dict, seed_case
+from oilgap.model.case_io import seed_case
+from oilgap.model.case_write import case_to_dict
 from oilgap.model.effects import (
     EFFECTS,
     EffectContext,

@@ -1,10 +1,9 @@
 """Helpers shared by the command modules: the case named on the command line, the
-output folder of a study and the list of files written."""
+output folder of a study, and a result printed as text or (``--json``) as JSON."""
 
 from __future__ import annotations
 
 import argparse
-from collections.abc import Iterable
 from dataclasses import replace
 from pathlib import Path
 
@@ -41,21 +40,10 @@ def study_out(args: argparse.Namespace, study: str) -> Path:
     return Path(args.out) if args.out else Path("out") / study
 
 
-def file_list(files: Iterable) -> str:
-    """The files written, one indented line each."""
-    return "\n".join(f"  {f}" for f in files)
-
-
-def gamma_fields(case: DesignCase) -> dict:
-    """The groove exponent in use and where it came from, for a JSON output's top level:
-    ``gamma`` [-] and ``gamma_source`` ("case", "default (seed rig fit)", "given")."""
-    return {"gamma": float(case.friction.gamma), "gamma_source": case.gamma_source}
-
-
-def gamma_line(case: DesignCase) -> str:
-    """The header line naming gamma and its source (every command that uses a case)."""
-    return (f"gamma       {case.friction.gamma:g} (groove exponent of Eq. 8, T^gamma on "
-            f"region 1; from: {case.gamma_source})")
+def show(view, args: argparse.Namespace) -> None:
+    """Print a result view: its JSON document with ``--json``, else its summary (the
+    text the command prints)."""
+    print(view.to_json() if getattr(args, "json", False) else view.summary())
 
 
 def thermal_case(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase, str]:

@@ -1,5 +1,6 @@
 """``oilgap predict``: the power of new rows with the model ``oilgap loop`` fitted
-(arguments in :func:`oilgap.studies.cli.parsers.add_predict`).
+(arguments in :func:`oilgap.studies.cli.parsers.add_predict`); a thin layer over
+:func:`oilgap.studies.api_loop.predict` (``og.predict``).
 
 The output is the input table with ``predicted_viscous_power_W`` (and
 ``predicted_power_W`` where a baseline was fitted) and ``prediction_note`` (why a
@@ -11,22 +12,14 @@ file; an existing ``--out`` is replaced only with ``--force``.
 from __future__ import annotations
 
 import argparse
-import warnings
 from pathlib import Path
 
-import numpy as np
 import pandas as pd
 
-from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.errors import InputError
 from oilgap.model.files import atomic_to_csv, atomic_to_parquet, check_out_file
-from oilgap.model.measured_data import read_table
-from oilgap.model.oils import read_oils_csv
-from oilgap.optim.calibration.model_io import (
-    PREDICTED_POWER,
-    PREDICTED_VISCOUS,
-    REASON,
-    load_model,
-)
+from oilgap.optim.calibration.model_io import REASON
+from oilgap.studies.api_loop import predict
 
 OUT_SUFFIXES = (".csv", ".parquet", ".pq")
 
@@ -51,31 +44,12 @@ def _summary(table: pd.DataFrame) -> list[str]:
 def run(args: argparse.Namespace) -> int:
     """Predict the rows of DATA and write them with the predictions; returns the exit code."""
     out = check_out_file(args.out, args.force, suffixes=OUT_SUFFIXES)
-    model = load_model(args.model)
-    oils = read_oils_csv(args.oils) if args.oils else None
-    raw = read_table(args.data)
-    table = model.predict_table(raw, args.stage, oils, source=args.data)
-    ok = int(table[PREDICTED_VISCOUS].notna().sum())
-    if ok == 0:
-        reasons = "; ".join(f"{n} x {r}" for r, n in table[REASON].value_counts().items())
-        raise InputError("data", args.data, f"no row can be predicted ({reasons})")
-    ext = table["outside_fitted_range"].to_numpy()
-    if ext.any():
-        lines = ", ".join(str(i + 2) for i in np.flatnonzero(ext)[:5])
-        warnings.warn(OilgapWarning(f"{int(ext.sum())} row(s) outside the fitted range of "
-                                    f"speed, temperature, viscosity, gap or T (lines {lines}"
-                                    f"{', ...' if ext.sum() > 5 else ''}): extrapolated"),
-                      stacklevel=1)
-    res = raw.copy(deep=False)
-    cols = [PREDICTED_VISCOUS] + ([PREDICTED_POWER] if PREDICTED_POWER in table else [])
-    for c in cols + [REASON]:
-        res[c] = table[c].to_numpy()
+    res = predict(args.model, args.data, stage=args.stage, oils=args.oils)
     write_table(res, out)
-    print(f"predicted {ok} of {len(table)} rows ({args.stage}: {', '.join(cols)}); "
-          f"wrote {out}")
-    for line in _summary(table):
+    print(f"predicted {res.attrs['predicted']} of {len(res)} rows ({args.stage}: "
+          f"{', '.join(res.attrs['columns'])}); wrote {out}")
+    for line in _summary(res):
         print(line)
-    g = model.laws[args.stage].gamma
-    print(f"gamma       {g:g} (groove exponent of Eq. 8; from: the {args.stage} model of "
-          f"{args.model}, as oilgap loop calibrated it)")
+    print(f"gamma       {res.attrs['gamma']:g} (groove exponent of Eq. 8; from: the "
+          f"{args.stage} model of {args.model}, as oilgap loop calibrated it)")
     return 0

@@ -1,17 +1,18 @@
 """``oilgap synth``: synthetic rig data in the measured-data format (arguments in
-:func:`oilgap.studies.cli.parsers.add_synth`)."""
+:func:`oilgap.studies.cli.parsers.add_synth`); a thin layer over
+:func:`oilgap.studies.api_loop.synth` (``og.synth``)."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
-from oilgap.model.case_io import read_case_toml
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
 from oilgap.model.files import check_out_file
+from oilgap.studies.api_loop import synth
 from oilgap.studies.reporting import write_data_csv
-from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize
+from oilgap.studies.synth import DEFAULT_STRENGTH
 
 
 def run(args: argparse.Namespace) -> int:
@@ -31,21 +32,18 @@ def run(args: argparse.Namespace) -> int:
         raise InputError("--roughness", args.roughness, "comma-separated numbers >= 1, "
                          "e.g. 4,2") from None
     check_out_file(args.out, getattr(args, "force", False))  # before any computation
-    case = read_case_toml(args.case) if args.case else None
-    cfg = SynthConfig(case=case, roughness=rough, effect=args.effect, strength=args.strength,
-                      kind="viscous_power_W" if args.viscous else "power_W")
-    df = synthesize(cfg, seed=args.seed)
+    df = synth(args.case, roughness=rough, effect=args.effect, strength=args.strength,
+               seed=args.seed, viscous=args.viscous)
     try:
         path = write_data_csv(df, args.out)
     except OSError as e:
         raise InputError("--out", args.out, f"cannot write the file ({e.strerror})") from None
     runs = df["run"].nunique()
-    col = "viscous_power_W" if args.viscous else "power_W"
+    col = df.attrs["power_column"]
     print(f"wrote {path}: {len(df)} rows, {runs} runs, columns {', '.join(df.columns)}")
     if args.effect:
-        s = cfg.resolved().strength
-        unit = EFFECTS[args.effect].strength_unit
+        s, unit = df.attrs["strength"], df.attrs["strength_unit"]
         print(f"injected {args.effect} at strength {s:g}{'' if unit == '-' else ' ' + unit}"
-              f" (not recorded in the file); {col} noise {cfg.noise_power_W:g} W",
+              f" (not recorded in the file); {col} noise {df.attrs['noise_power_W']:g} W",
               file=sys.stderr)
     return 0

@@ -118,7 +118,8 @@ def classify(rc: int, err: str, ends: str = "") -> str:
     lines = [ln for ln in err.splitlines() if ln.strip()]
     if "Traceback" in err or "Exception ignored" in err:
         return "still failing"
-    if ends == "sigint" and rc == 130 and lines == ["oilgap: interrupted"]:
+    if ends == "sigint" and rc == 130 and len(lines) == 1 and \
+            lines[0].startswith("oilgap: interrupted"):
         return "ended cleanly"
     if ends == "pipe" and rc in (0, 1, 141) and not lines:
         return "ended cleanly"

@@ -14,6 +14,9 @@ from oilgap.studies.cli import main
 POINT_KEYS = {"mean_power_W", "T", "delta_mm", "R_mm", "L_mm", "T1_mm", "T2_mm", "T3_mm",
               "T4_mm", "torque_capability_Nm", "inertia_kgm2"}
 
+JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.serialize)
+JSON_ABS = 1e-4  # [K] or [W]: a temperature or power rounded to 6 digits
+
 
 @pytest.fixture(scope="module")
 def api_result():
@@ -32,8 +35,8 @@ def test_json_has_the_issue_keys_and_the_api_numbers(capsys, api_result):
         assert POINT_KEYS <= set(d[k])
     assert d["status"] == "Solve_Succeeded"
     o = api_result.optimal
-    assert d["optimal"]["mean_power_W"] == pytest.approx(o.mean_power_W, rel=1e-9)
-    assert d["optimal"]["delta_mm"] == pytest.approx(o.delta_m * 1e3, rel=1e-7)
+    assert d["optimal"]["mean_power_W"] == pytest.approx(o.mean_power_W, rel=JSON_REL)
+    assert d["optimal"]["delta_mm"] == pytest.approx(o.delta_m * 1e3, rel=JSON_REL)
     # lengths in mm are the SI values times 1000, T is (T4 - T1)/(T3 - T2)
     oo = d["optimal"]
     assert oo["T"] == pytest.approx((oo["T4_mm"] - oo["T1_mm"]) / (oo["T3_mm"] - oo["T2_mm"]))
@@ -61,11 +64,13 @@ def test_out_is_a_case_that_evaluate_accepts(tmp_path, capsys):
     assert path.is_file() and d["out"] == str(path)
     assert main(["evaluate", str(path), "--json"]) == 0
     ev = json.loads(capsys.readouterr().out)
+    # the case file and the JSON carry 6 significant digits (radii to 0.1 um): the gap
+    # T3 - T2 of the file is within 1e-4 mm of the optimum's, the loss within 1e-4
     assert ev["total_mean_power_W"] == pytest.approx(d["optimal"]["mean_power_exact_W"],
-                                                     rel=1e-9)
+                                                     rel=1e-4)
     r1 = ev["regions"][0]
-    assert r1["gap_m"] * 1e3 == pytest.approx(d["optimal"]["delta_mm"], rel=1e-9)
-    assert r1["roughness_T"] == pytest.approx(d["optimal"]["T"], rel=1e-9)
+    assert r1["gap_mm"] == pytest.approx(d["optimal"]["delta_mm"], abs=1e-4)
+    assert r1["roughness_T"] == pytest.approx(d["optimal"]["T"], rel=1e-4)
 
 
 def test_overrides_reach_the_problem(capsys):
@@ -121,7 +126,7 @@ def test_bad_out_path_exits_2(tmp_path, capsys):
 
 def test_bad_case_bounds_exit_2(tmp_path, capsys):
     """radius_min 11 mm leaves the 1.5 mm deep rotor grooves inside the 10 mm shaft bore."""
-    from oilgap.model.case_io import case_to_dict, dumps_toml
+    from oilgap.model.case_write import case_to_dict, dumps_toml
 
     doc = case_to_dict(seed_case())
     doc["bounds"]["radius_min_mm"] = 11.0

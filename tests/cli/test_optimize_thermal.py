@@ -8,10 +8,14 @@ from pathlib import Path
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case, write_case_toml
+from oilgap.model.case_io import seed_case
+from oilgap.model.case_write import write_case_toml
 from oilgap.studies.cli import main
 
 GOLDEN = Path(__file__).resolve().parents[1] / "golden" / "data" / "optimize_none.json"
+
+JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.serialize)
+JSON_ABS = 1e-4  # [K] or [W]: a temperature or power rounded to 6 digits
 
 
 @pytest.fixture(scope="module")
@@ -64,7 +68,7 @@ def test_default_on_the_seed_is_film_beside_the_isothermal_optimum(capsys):
     assert d["optimal"]["mean_power_W"] < w["optimal"]["mean_power_W"]
     ch = d["heating_changes"]["mean_power_W"]
     assert ch["change"] == pytest.approx(d["optimal"]["mean_power_W"]
-                                         - w["optimal"]["mean_power_W"], rel=1e-12)
+                                         - w["optimal"]["mean_power_W"], rel=JSON_REL)
 
 
 def test_full_json_has_the_balance_and_the_sea_temperature_cost(capsys, thermal_toml):
@@ -74,7 +78,7 @@ def test_full_json_has_the_balance_and_the_sea_temperature_cost(capsys, thermal_
     assert w["oil_temp_C"] == 2.0
     # the balance holds at the optimum (R = 0.5 K/W, Q = 0)
     assert d["oil_temp_C"] - 2.0 == pytest.approx(0.5 * d["optimal"]["mean_power_W"],
-                                                  abs=1e-8)
+                                                  abs=JSON_ABS)
     assert d["initial_oil_temp_C"] > d["oil_temp_C"]  # a design that loses less runs colder
     assert d["sea_temp_cost_W_per_K"] < 0
     warm = run_json(capsys, thermal_toml, "--sea-temp-c", "3")

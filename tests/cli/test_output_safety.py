@@ -71,20 +71,20 @@ GRID = "T,oil\n1,VG22\n2,VG32\n3,VG46\n4,VG68\n5,VG100\n6,VG150\n"
 
 # command argv (folder/file relative to tmp_path), existing output, computation replaced
 EXISTING = [
-    (["synth", "--out", "d.csv"], "d.csv", "synth", ("synthesize", "read_case_toml")),
+    (["synth", "--out", "d.csv"], "d.csv", "synth", ("synth",)),
     (["optimize", "--starts", "1", "--out", "o.toml"], "o.toml", "optimize",
-     ("DesignProblem", "load_case")),
+     ("optimize", "load_case")),
     (["predict", "g.csv", "--model", "m.json", "--out", "p.csv"], "p.csv", "predict",
-     ("load_model", "read_table")),
-    (["loop", "g.csv", "--out", "o"], "o/report.md", "loop", ("load_measured",)),
+     ("predict",)),
+    (["loop", "g.csv", "--out", "o"], "o/report.md", "loop", ("Loop",)),
     (["study", "sweep", "g.csv", "--out", "o"], "o/points_evaluate.csv", "study sweep",
-     ("read_grid_csv", "run_grid")),
-    (["study", "pareto", "--out", "o"], "o/pareto_gap.png", "study pareto", ("pareto.run",)),
+     ("sweep",)),
+    (["study", "pareto", "--out", "o"], "o/pareto_gap.png", "study pareto", ("pareto",)),
     (["study", "oil-grade", "--out", "o"], "o/grid/points_evaluate.csv", "study oil-grade",
-     ("oil_grade.run",)),
+     ("oil_grade",)),
     (["study", "smoothing", "--out", "o"], "o/summary.md", "study smoothing",
-     ("smoothing.run",)),
-    (["loop", "g.csv", "--out", "o"], f"o/{MARKER}", "loop", ("load_measured",)),
+     ("smoothing",)),
+    (["loop", "g.csv", "--out", "o"], f"o/{MARKER}", "loop", ("Loop",)),
 ]
 
 
@@ -105,24 +105,24 @@ def test_an_earlier_output_is_refused_before_any_computation(
 
 
 BAD_OUT = [
-    (["study", "pareto", "--out", "/proc/x"], "study pareto", ("pareto.run",), "/proc"),
-    (["study", "oil-grade", "--out", "/proc/x"], "study oil-grade", ("oil_grade.run",),
+    (["study", "pareto", "--out", "/proc/x"], "study pareto", ("pareto",), "/proc"),
+    (["study", "oil-grade", "--out", "/proc/x"], "study oil-grade", ("oil_grade",),
      "/proc"),
-    (["study", "sweep", "g.csv", "--out", "/proc/x"], "study sweep", ("read_grid_csv",),
+    (["study", "sweep", "g.csv", "--out", "/proc/x"], "study sweep", ("sweep",),
      "/proc"),
-    (["study", "smoothing", "--out", "FILE"], "study smoothing", ("smoothing.run",),
+    (["study", "smoothing", "--out", "FILE"], "study smoothing", ("smoothing",),
      "a folder is required"),
-    (["study", "sweep", "g.csv", "--out", "FILE"], "study sweep", ("read_grid_csv",),
+    (["study", "sweep", "g.csv", "--out", "FILE"], "study sweep", ("sweep",),
      "a folder is required"),
-    (["loop", "g.csv", "--out", "o"], "loop", ("load_measured",), "is a directory"),
-    (["synth", "--out", "/proc/x/s.csv"], "synth", ("synthesize",), "does not exist"),
-    (["synth", "--out", "nodir/s.csv"], "synth", ("synthesize",), "does not exist"),
+    (["loop", "g.csv", "--out", "o"], "loop", ("Loop",), "is a directory"),
+    (["synth", "--out", "/proc/x/s.csv"], "synth", ("synth",), "does not exist"),
+    (["synth", "--out", "nodir/s.csv"], "synth", ("synth",), "does not exist"),
     (["optimize", "--starts", "1", "--out", "/proc/x.toml"], "optimize",
-     ("DesignProblem", "load_case"), "cannot write"),
-    (["optimize", "--starts", "1", "--out", "o"], "optimize", ("DesignProblem",),
+     ("optimize", "load_case"), "cannot write"),
+    (["optimize", "--starts", "1", "--out", "o"], "optimize", ("optimize",),
      "is a directory"),
     (["predict", "g.csv", "--model", "m.json", "--out", "nodir/p.csv"], "predict",
-     ("load_model",), "does not exist"),
+     ("predict",), "does not exist"),
 ]
 
 
@@ -175,7 +175,8 @@ def test_force_starts_over_and_keeps_what_is_not_an_output(tmp_path, capsys):
     assert len(points) == 2  # the earlier store is gone, not appended to
     assert (out / "notes.txt").read_text() == "mine\n"
     assert sorted(p.name for p in out.iterdir()) == [
-        "notes.txt", "points_evaluate.csv", "results.csv", "summary.md", "sweep.png"]
+        "notes.txt", "points_evaluate.csv", "provenance.json", "results.csv", "results.parquet",
+        "summary.md", "sweep.png"]
 
 
 def test_a_cut_short_store_row_is_dropped_counted_and_recomputed(tmp_path, capsys):
@@ -236,7 +237,8 @@ def test_sigkill_mid_chunk_then_resume_gives_the_same_results(tmp_path, capsys):
     assert main(argv + ["--resume"]) == 0  # the dead run's lock is taken over
     assert "(6 computed, 6 reused)" in capsys.readouterr().out
     assert sorted(p.name for p in out.iterdir()) == [
-        "points_evaluate.csv", "results.csv", "summary.md", "sweep.png"]
+        "points_evaluate.csv", "provenance.json", "results.csv", "results.parquet", "summary.md",
+        "sweep.png"]
     assert main(sweep(tmp_path, grid=grid, out="fresh")) == 0
     cols = ["T", "status", "mean_power_W", "point_key"]
     pd.testing.assert_frame_equal(read_grid_csv(out / "results.csv")[cols],
@@ -308,11 +310,11 @@ def quick_loop(fitted, monkeypatch):
 def test_loop_force_clears_the_earlier_figures(tmp_path, quick_loop, capsys):
     out = tmp_path / "o"
     assert main(["loop", str(quick_loop), "--out", str(out)]) == 0
-    assert len(list(out.glob("*.png"))) == 3
+    assert len(list(out.glob("*.png"))) == 4  # overview, window, 2 residual figures
     assert main(["loop", str(quick_loop), "--out", str(out), "--no-figures"]) == 2
     one_error_line(capsys, "--force")
     assert main(["loop", str(quick_loop), "--out", str(out), "--no-figures", "--force"]) == 0
-    assert sorted(p.name for p in out.iterdir()) == ["loop.json", "report.md"]
+    assert sorted(p.name for p in out.iterdir()) == ["loop.json", "provenance.json", "report.md"]
     assert "![" not in (out / "report.md").read_text()  # links no figure
 
 
@@ -336,7 +338,7 @@ def test_a_failure_while_drawing_leaves_the_folder_marked_incomplete(tmp_path, q
     names = sorted(p.name for p in out.iterdir())
     # the earlier run's outputs are gone (no new loop.json beside old figures, no old
     # loop.json beside new ones), the folder is marked, no temporary file is left
-    assert names == [MARKER, "measured_vs_model.png"]
+    assert names == [MARKER, "measured_vs_model.png", "provenance.json"]
     assert "incomplete" in (out / MARKER).read_text()
 
 
@@ -349,7 +351,8 @@ def test_a_crash_while_drawing_leaves_no_report_linking_missing_figures(tmp_path
     out = tmp_path / "o"
     with pytest.raises(ValueError):  # a bug keeps its traceback; the folder is marked
         main(["loop", str(quick_loop), "--out", str(out)])
-    assert sorted(p.name for p in out.iterdir()) == [MARKER, "measured_vs_model.png"]
+    assert sorted(p.name for p in out.iterdir()) == [MARKER, "measured_vs_model.png",
+                                                     "provenance.json"]
 
 
 def test_result_folder_leaves_nothing_when_nothing_was_written(tmp_path):
@@ -357,18 +360,18 @@ def test_result_folder_leaves_nothing_when_nothing_was_written(tmp_path):
     with pytest.raises(RuntimeError), ResultFolder(out, ("a.csv",)) as folder:
         folder.begin()
         raise RuntimeError("failed before writing")
-    assert not (tmp_path / "new").exists()
+    assert not (tmp_path / "new").exists()  # provenance.json of nothing removed too
     with pytest.raises(RuntimeError), ResultFolder(out, ("a.csv",)) as folder:
         folder.begin()
         atomic_write_text(out / "a.csv", "x\n")
         raise RuntimeError("failed after writing")
-    assert sorted(p.name for p in out.iterdir()) == [MARKER, "a.csv"]
+    assert sorted(p.name for p in out.iterdir()) == [MARKER, "a.csv", "provenance.json"]
 
 
 def test_outputs_list_every_file_the_loop_writes():
     from oilgap.studies.loop_report import FIGURES
 
-    assert set(OUTPUTS["loop"]) == {"loop.json", "report.md", *FIGURES}
+    assert set(OUTPUTS["loop"]) == {"loop.json", "report.md", "provenance.json", *FIGURES}
 
 
 # --------------------------------------------------------------------------- streams
@@ -418,7 +421,9 @@ def test_ctrl_c_in_a_parallel_sweep_is_one_line(tmp_path):
     os.killpg(p.pid, signal.SIGINT)  # Ctrl-C goes to the whole process group
     out, err = p.communicate(timeout=60)
     assert p.returncode == 130, err.decode()
-    assert err.decode().strip().splitlines() == ["oilgap: interrupted"]
+    lines = err.decode().strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("oilgap: interrupted: ")
+    assert lines[0].endswith("; rerun the same command with --resume to continue")
     assert (tmp_path / "o" / MARKER).is_file()
 
 

@@ -71,7 +71,8 @@ COMMANDS: list[tuple[str, list[str]]] = [
 
 def seed_thermal_toml() -> str:
     """The seed joint with a ``[thermal]`` table: sea 2 degC, R 0.5 K/W, C 5e4 J/K."""
-    from oilgap.model.case_io import case_to_dict, dumps_toml, seed_case
+    from oilgap.model.case_io import seed_case
+    from oilgap.model.case_write import case_to_dict, dumps_toml
 
     return dumps_toml(case_to_dict(seed_case())) + (
         "\n[thermal]\nsea_temp_C = 2.0\nresistance_K_per_W = 0.5\n"
@@ -178,8 +179,10 @@ def regenerate() -> None:
     if DATA.exists():
         shutil.rmtree(DATA)
     produce(DATA)
-    for p in list(DATA.rglob("*.png")):
+    for p in [*DATA.rglob("*.png"), *DATA.rglob("*.parquet")]:  # binary: results.csv holds the same
         p.unlink()
+    for p in list(DATA.rglob("provenance.json")):
+        p.unlink()  # date, paths and versions of the run: checked by tests/cli/test_hygiene.py
     for p in (DATA / "synth_clean.csv", DATA / "synth_seal.csv"):
         p.unlink()  # regenerated from the seed by the synth commands; compared via the loop
 

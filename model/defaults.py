@@ -15,7 +15,7 @@ them the same way: :func:`defaults_lines` for a command's header,
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, fields
+from dataclasses import dataclass, fields, replace
 from typing import TYPE_CHECKING, Any
 
 from .case import (
@@ -30,6 +30,7 @@ from .case import (
 )
 from .case_bearing import bearing_default_notes, bearing_defaults
 from .duty_cycle import DutyCycle
+from .motor import motor_torque
 from .serialize import round_sig
 from .skin_friction import FrictionLaw
 from .units import MM_TO_M
@@ -224,7 +225,7 @@ def case_defaults(case: DesignCase) -> tuple[Default, ...]:
     tuple of Default
         Each with its value in its unit ([mm], [degC], [-] ...).
     """
-    out = [d for d in getattr(case, "defaults", ())
+    out = [_torque_valued(d, case) for d in getattr(case, "defaults", ())
            if d.field not in _CURRENT or _CURRENT[d.field](case) == d.value]
     if case.gamma_source == GAMMA_DEFAULT_SOURCE:
         out.append(Default("friction.gamma", float(DEFAULT_GAMMA), "-", GAMMA_DEFAULT_SOURCE))
@@ -238,6 +239,16 @@ def case_defaults(case: DesignCase) -> tuple[Default, ...]:
         for k, v in bearing_defaults(case.bearing).items():
             out.append(Default(f"bearing.{k}", v, _key_unit(k), notes.get(k, "default")))
     return tuple(out)
+
+
+def _torque_valued(d: Default, case: DesignCase) -> Default:
+    """The torque bound's default with its value: the case's own torque capability [N m]
+    (:func:`oilgap.model.motor.motor_torque` at the case's R, delta and L)."""
+    if d.field != "bounds.torque_min_Nm" or d.value is not None:
+        return d
+    r1 = case.region1
+    tau = float(motor_torque(case.motor, r1.T2, r1.gap, r1.length)[0])
+    return replace(d, value=tau)
 
 
 def _note(line: str) -> tuple[str, str]:

@@ -368,13 +368,14 @@ def draw_gap_front(result: ParetoResult, ax) -> None:
 
 
 def draw_inertia_front(result: ParetoResult, ax) -> None:
-    """The loss-inertia front on ``ax``: loss [W] against rotor inertia [kg mm^2], the
+    """The loss-inertia front on ``ax``: loss [W] against rotor inertia [kg m^2], the
     case's designs marked (``pareto_inertia.png``, ``og.Pareto.plot``)."""
     f = result.inertia_front[result.inertia_front["status"] == "ok"]
-    ax.plot(f["inertia_kgm2"] * 1e6, f["mean_power_W"], "o-", ms=3, color="C2",
+    ax.plot(f["inertia_kgm2"], f["mean_power_W"], "o-", ms=3, color="C2",
             label=f"Pareto front ({len(f)} NLP solves, warm-started)")
-    _mark_seeds(ax, result.seeds, "inertia_kgm2", 1e6)
-    ax.set_xlabel("rotor inertia incl. epoxy fill [kg mm^2]")
+    _mark_seeds(ax, result.seeds, "inertia_kgm2")
+    ax.set_xlabel("rotor inertia incl. epoxy fill [kg m^2]")
+    ax.ticklabel_format(axis="x", style="sci", scilimits=(-3, 3))
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
     ax.set_title(f"Viscous loss against rotor inertia (torque >= {_whose(result)})")
     ax.grid(alpha=0.3)
@@ -430,9 +431,9 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
         "(`mean_power_W`: the NLP's smooth C_m; "
         "`mean_power_exact_W`: the exact Eq. 6 form, as `oilgap evaluate` prints it):",
         "",
-        markdown_table(s.assign(inertia_kgmm2=s["inertia_kgm2"] * 1e6)[
+        markdown_table(s.assign(inertia_kgm2=s["inertia_kgm2"].map("{:.4e}".format))[
             ["design", "delta_mm", "T", "mean_power_W", "mean_power_exact_W",
-             "torque_capability_Nm", "inertia_kgmm2"]], 3),
+             "torque_capability_Nm", "inertia_kgm2"]], 3),
         "",
         f"At {whose} gap ({seed['delta_mm']:g} mm) the front reaches "
         f"{at_seed_gap['mean_power_W']:.2f} W (T = {at_seed_gap['T']:.2f}, R = "

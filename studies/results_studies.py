@@ -130,7 +130,7 @@ class Pareto(StudyView):
     def plot(self, ax: Any = None, front: str = "gap") -> Any:
         """The study's figure of one front (``pareto_gap.png`` for ``front="gap"``:
         loss [W] against delta [mm]; ``pareto_inertia.png`` for ``"inertia"``: loss
-        against rotor inertia [kg mm^2]), the case's designs marked."""
+        against rotor inertia [kg m^2]), the case's designs marked."""
         ax = new_axes(ax)
         (draw_gap_front if front == "gap" else draw_inertia_front)(self.raw, ax)
         return ax

@@ -173,7 +173,7 @@ def paper_row(table4: pd.DataFrame) -> dict:
                 t["paper_model_after_W"] - t["measured_after_W"]]
     red = (t["paper_model_change_W"] - t["measured_change_W"]).to_numpy(dtype=float)
     return {"variant": PAPER_LABEL, "method": "paper", "thermal_mode": "none",
-            "resistance_K_W": np.nan, "resistance_fitted": False, "gamma": np.nan,
+            "resistance_K_per_W": np.nan, "resistance_fitted": False, "gamma": np.nan,
             "gamma_se": np.nan, "temperatures": "measured on the motor coil (not published)",
             "rms_W": float(np.sqrt(np.mean(res ** 2))), "max_abs_W": float(np.abs(res).max()),
             "reduction_rms_W": float(np.sqrt(np.mean(red ** 2))),
@@ -203,7 +203,7 @@ def fit_comparison(base: DesignCase, table4: pd.DataFrame, main: SmoothingFit,
     Returns
     -------
     comparison : DataFrame
-        ``variant, method, thermal_mode, resistance_K_W, resistance_fitted, gamma,
+        ``variant, method, thermal_mode, resistance_K_per_W, resistance_fitted, gamma,
         gamma_se, temperatures, rms_W, max_abs_W`` (eight powers),
         ``reduction_rms_W, reduction_max_abs_W`` (four reductions), ``n_params, used,
         aic`` (over the powers), ``description``.
@@ -224,7 +224,7 @@ def fit_comparison(base: DesignCase, table4: pd.DataFrame, main: SmoothingFit,
         variant = f.label + (f" R_th {f.resistance_K_W:g}" if f.method == "per-oil"
                              and f.resistance_K_W else "")
         rows.append({"variant": variant, "method": f.method, "thermal_mode": f.thermal_mode,
-                     "resistance_K_W": f.resistance_K_W,
+                     "resistance_K_per_W": f.resistance_K_W,
                      "resistance_fitted": f.method != "per-oil", "gamma": f.gamma,
                      "gamma_se": f.gamma_se, "temperatures": _temperatures(f),
                      "rms_W": f.rms_W, "max_abs_W": f.max_abs_W,

@@ -67,7 +67,7 @@ def verdict(checks: pd.DataFrame) -> str:
     paper = checks.iloc[0]
     hb = checks[checks["method"] == "heat-balance"].iloc[0]
     po = checks[(checks["method"] == "per-oil") & (checks["thermal_mode"] == "none")
-                & (checks["resistance_K_W"] == 0.0)].iloc[0]
+                & (checks["resistance_K_per_W"] == 0.0)].iloc[0]
     pof = by.loc["per-oil/film"] if "per-oil/film" in by.index else None
     beats = (hb["reduction_rms_W"] <= paper["reduction_rms_W"]
              and hb["reduction_max_abs_W"] <= paper["reduction_max_abs_W"])
@@ -82,7 +82,7 @@ def verdict(checks: pd.DataFrame) -> str:
     text += ("It beats the paper's model with fewer free parameters." if beats else
              "The data do not allow it to beat the paper's model: ")
     if not beats:
-        if hb["resistance_K_W"] == 0.0:
+        if hb["resistance_K_per_W"] == 0.0:
             text += ("the fit drives R_th to its bound 0, i.e. every run at one "
                      "temperature. ")
         if pof is not None:

@@ -73,7 +73,7 @@ def leave_one_oil_out(base: DesignCase | None = None,
             rows.append({"oil": oil, "roughness_T": T, "measured_W": measured[k],
                          "uncalibrated_W": float(p_unc[k]), "calibrated_W": float(p_cal[k]),
                          "gamma": fit.gamma, "base_temp_C": fit.base_temp_C["all"],
-                         "resistance_K_W": fit.resistance_K_W,
+                         "resistance_K_per_W": fit.resistance_K_W,
                          "oil_temp_C": float(temps[k])})
     return pd.DataFrame(rows)
 

@@ -16,12 +16,20 @@ More than 12 runs: ``measured_vs_model_2.png``... and ``measured_vs_model_window
 
 from __future__ import annotations
 
+import inspect
 import math
 import warnings
 from pathlib import Path
 
 import numpy as np
 
+from oilgap.model.defaults import (
+    Default,
+    case_defaults,
+    defaults_block,
+    defaults_lines,
+    study_default,
+)
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.serialize import Exact, dumps
 from oilgap.optim.calibration.estimator import LoopEstimator
@@ -155,6 +163,49 @@ def _ci_text(ci) -> str:
     return f" [{_num(ci[0])}, {_num(ci[1])}]"
 
 
+LOOP_OPTIONS: dict[str, tuple[str, str]] = {
+    "margin": ("-", "held-out gain an effect must bring to be accepted"),
+    "min_explained": ("-", "share of the residual's structure an effect must explain"),
+    "max_effects": ("-", "effects accepted at most"),
+    "cv": ("", "cross-validation scheme"),
+    "base": ("", "the base law calibrated"),
+    "cv_by": ("", "column whose groups are held out"),
+}
+"""The estimator's options listed as defaults when left at their value (unit, meaning)."""
+
+
+def loop_defaults(est: LoopEstimator) -> tuple[Default, ...]:
+    """What the loop filled in: the rig case (the seed rig without ``--case``) and those of
+    its defaults the loop uses (not the motor, the NLP's bounds or the duty cycle), the effect
+    library, and every option left at its default.
+
+    Parameters
+    ----------
+    est : LoopEstimator
+        A fitted estimator.
+
+    Returns
+    -------
+    tuple of Default
+        Each with its value and unit ([-] for the options).
+    """
+    out = []
+    if est.case is None:
+        out.append(study_default("loop.case", est.case_.name, "", "the seed rig (the seed "
+                                 "paper's experiment): no --case given"))
+    out += [d for d in case_defaults(est.case_)  # motor, bounds, duty cycle: unused here
+            if not d.field.startswith(("motor.", "bounds.", "design.", "duty_cycle."))]
+    if est.effects is None:
+        out.append(study_default("loop.effects", "the whole library", "",
+                                 "oilgap synth --list-effects"))
+    given = inspect.signature(LoopEstimator.__init__).parameters
+    for name, (unit, meaning) in LOOP_OPTIONS.items():
+        value = getattr(est, name)
+        if value == given[name].default:
+            out.append(study_default(f"loop.{name}", value, unit, f"default: {meaning}"))
+    return tuple(out)
+
+
 def format_summary(est: LoopEstimator) -> str:
     """What ``oilgap loop`` prints: data, calibration, error table, effects, before/after."""
     d = est.data_
@@ -168,6 +219,7 @@ def format_summary(est: LoopEstimator) -> str:
         lines.append(f"            ignored columns: {', '.join(d.ignored_columns)}")
     lines += [f"            {n}" for n in getattr(d, "notes", ())]
     lines.append(f"gamma       {gamma_text(est)}")
+    lines += defaults_lines(loop_defaults(est))
     for b in est.baselines_.values():
         lines.append(f"baseline    T = {b.roughness_T:g}: oil-free fit RMSE {b.rmse_W:.3f} W "
                      f"({b.n_samples} samples)" + ("; " + "; ".join(b.notes) if b.notes else ""))
@@ -415,7 +467,8 @@ def loop_json(est: LoopEstimator) -> dict:
            "gamma_use": "the rig case's; used only where the oil runs cannot identify gamma "
                         "(one value of T > 1); calibration.gamma is the fitted one",
            **doc, "identifiability": identifiability(est),
-           "not_identifiable": not_identifiable(est), "unit_hints": unit_hints(est)}
+           "not_identifiable": not_identifiable(est), "unit_hints": unit_hints(est),
+           "defaults": defaults_block(loop_defaults(est))}
     if isinstance(doc.get("data"), dict):
         doc["data"] = {**doc["data"], "notes": list(getattr(est.data_, "notes", ()))}
     doc = _json_safe(doc)

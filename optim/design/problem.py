@@ -11,26 +11,22 @@ Problem (variables ``x = (R, delta, d_r, d_s, L)``, :mod:`.variables`)::
 with ``P1 = sum_i w_i clearance_power(omega_i, nu, rho, R, delta, L, law_smooth, T)``
 over the exact speed distribution (omega_i, w_i) of the duty cycle
 (:meth:`DutyCycle.speed_distribution`), the smooth C_m (no ``if_else`` in the
-NLP), and P2 the (constant) bearing-annulus power: the objective of
-:mod:`.objective`, Eqs. 4-10 of the seed paper [1]. A case's rolling bearing
-(``[bearing]``, :mod:`oilgap.model.bearing` [5]) adds its mean friction and drag at the
-oil's viscosity: constant in the design variables like P2, so the optimum is the same
-and the reported totals include it (:meth:`DesignProblem.constant_power`). The torque capability and
-inertia are :mod:`oilgap.model.motor` (Carter coefficient with slot pitch
+NLP), and P2 the (constant) bearing-annulus power: the objective of :mod:`.objective`,
+Eqs. 4-10 of the seed paper [1]. A rolling bearing (``[bearing]``, [5]) adds its friction
+and drag, constant in x like P2 (:meth:`DesignProblem.constant_power`). The torque
+capability and inertia are :mod:`oilgap.model.motor` (Carter coefficient with slot pitch
 2 pi T3 / Q_s, B_g, tau = 2 pi R^2 L k_w B_g A / sqrt 2, grooved rotor with
 T1_unfilled = R - d_r0) [2].
 
-Scaling: IPOPT [3] sees the variables of :func:`.variables.to_nlp`, the
-objective ln P1 and the constraints ln(tau/tau_ref) >= ln(tau_min/tau_ref),
-ln(J/J_ref) <= ln(J_max/J_ref) (tau_ref, J_ref: the case's motor and unfilled
-rotor). All are O(1). The same optimum; the multipliers are converted back to
-d(P*)/d(bound) in physical units (:func:`.results.convert_multipliers`) [4].
+Scaling: IPOPT [3] sees the variables of :func:`.variables.to_nlp`, the objective ln P1 and
+the constraints ln(tau/tau_ref) >= ln(tau_min/tau_ref), ln(J/J_ref) <= ln(J_max/J_ref)
+(tau_ref, J_ref: the case's motor and unfilled rotor), all O(1). The same optimum; the
+multipliers go back to d(P*)/d(bound) in physical units (:func:`.results.convert_multipliers`) [4].
 
-The NLP is built once per case (:class:`DesignProblem`); the oil state
-(nu, rho), tau_min, J_max and every bound are parameters of each
-:meth:`DesignProblem.solve` (``p`` and the bound vectors of ``nlpsol``;
-:mod:`.parameters`), so studies re-solve it without rebuilding. Infeasible
-limits are caught before IPOPT is called (:mod:`.feasibility`).
+The NLP is built once per case (:class:`DesignProblem`); the oil state (nu, rho), tau_min,
+J_max and every bound are parameters of each :meth:`DesignProblem.solve` (:mod:`.parameters`),
+so studies re-solve it without rebuilding; infeasible limits are caught before IPOPT
+(:mod:`.feasibility`).
 
 Built with a thermal mode (``thermal="film"`` or ``"full"``, :mod:`oilgap.model.joint_loss`)
 the problem's :meth:`DesignProblem.solve` solves the NLP of :mod:`.thermal` instead,

@@ -140,17 +140,36 @@ def with_operating(case: DesignCase, oil: str | None = None,
     return case
 
 
+API_NAMES = {"thermal": "thermal", "oil_temp_C": "oil_temp_C", "sea_temp_C": "sea_temp_C",
+             "full": "thermal 'full'", "film": "thermal='film'"}
+"""How :func:`thermal_case` names the arguments in its messages (the command line passes
+its own spellings: ``--thermal``, ``--temp-c``, ``--sea-temp-c``)."""
+
+
 def thermal_case(case: DesignCase, thermal: str | None = None,
-                 oil_temp_C: float | None = None, sea_temp_C: float | None = None
-                 ) -> tuple[DesignCase, str]:
+                 oil_temp_C: float | None = None, sea_temp_C: float | None = None,
+                 names: dict[str, str] | None = None) -> tuple[DesignCase, str]:
     """The thermal mode checked against the case and a given oil temperature, and the case
     with the sea temperature [degC] applied (``full`` only).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (its ``[thermal]`` table decides what is allowed).
+    thermal : {"none", "film", "full"} or None
+        The mode asked for (None: the best physics the case allows).
+    oil_temp_C : float, optional
+        A given oil temperature [degC] (refused under ``full``).
+    sea_temp_C : float, optional
+        A given sea temperature [degC] (``full`` only).
+    names : dict, optional
+        The spellings of the arguments in the messages (:data:`API_NAMES`).
 
     Returns
     -------
     case : DesignCase
     mode : str
-        ``"none"``, ``"film"`` or ``"full"`` (None: the best physics the case allows).
+        ``"none"``, ``"film"`` or ``"full"``.
 
     Raises
     ------
@@ -158,20 +177,28 @@ def thermal_case(case: DesignCase, thermal: str | None = None,
         ``full`` without ``[thermal]``, ``oil_temp_C`` under ``full`` (the balance sets
         it), ``sea_temp_C`` without ``[thermal]`` or outside ``full``.
     """
-    mode = resolve_thermal_mode(case, thermal)
+    n = {**API_NAMES, **(names or {})}
+    try:
+        mode = resolve_thermal_mode(case, thermal)
+    except InputError as e:
+        raise InputError(n["thermal"], e.value, e.allowed) from None
     if mode == "full" and oil_temp_C is not None:
-        raise InputError("oil_temp_C", oil_temp_C, "not with thermal 'full': the heat balance "
-                         "sets the oil temperature; give sea_temp_C, or thermal='film'")
+        raise InputError(n["oil_temp_C"], oil_temp_C, f"not with {n['full']}: the heat "
+                         f"balance sets the oil temperature; give {n['sea_temp_C']}, or "
+                         f"{n['film']}")
     if sea_temp_C is None:
         return case, mode
-    sea = check_finite("sea_temp_C", sea_temp_C)
+    sea = check_finite(n["sea_temp_C"], sea_temp_C)
     if case.thermal is None:
-        raise InputError("sea_temp_C", sea, "needs the case's [thermal] table (the heat "
+        raise InputError(n["sea_temp_C"], sea, "needs the case's [thermal] table (the heat "
                          "balance to the sea)")
     if mode != "full":
-        raise InputError("sea_temp_C", sea, "only under thermal 'full' (the heat balance "
+        raise InputError(n["sea_temp_C"], sea, f"only under {n['full']} (the heat balance "
                          f"to the sea); the mode is '{mode}'")
-    return replace(case, thermal=replace(case.thermal, sea_temp_C=sea)), mode
+    try:
+        return replace(case, thermal=replace(case.thermal, sea_temp_C=sea)), mode
+    except InputError as e:
+        raise InputError(n["sea_temp_C"], sea, e.allowed) from None
 
 
 def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = None,

@@ -9,9 +9,9 @@ from pathlib import Path
 
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.case_io import read_case_toml, seed_case
-from oilgap.model.errors import InputError, check_finite
-from oilgap.model.joint_loss import resolve_thermal_mode
+from oilgap.model.errors import InputError
 from oilgap.model.oils import get_oil, read_oils_csv
+from oilgap.studies.api import thermal_case as api_thermal_case
 
 
 def load_case(args: argparse.Namespace) -> DesignCase:
@@ -48,29 +48,14 @@ def show(view, args: argparse.Namespace) -> None:
 
 def thermal_case(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase, str]:
     """The thermal mode of ``--thermal`` checked against the case and ``--temp-c``, and the
-    case with ``--sea-temp-c`` applied (evaluate and optimize share these options)."""
-    try:
-        mode = resolve_thermal_mode(case, args.thermal)
-    except InputError as e:
-        raise InputError("--thermal", e.value, e.allowed) from None
-    if mode == "full" and args.temp_c is not None:
-        how = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
-        raise InputError("--temp-c", args.temp_c, f"not with {how}: the heat balance sets the "
-                         "oil temperature; give --sea-temp-c, or choose --thermal film")
+    case with ``--sea-temp-c`` applied (evaluate and optimize share these options): the
+    façade's :func:`oilgap.studies.api.thermal_case`, its messages naming the options."""
     raw = getattr(args, "sea_temp_c", None)
-    if raw is None:
-        return case, mode
     try:
-        sea = check_finite("--sea-temp-c", float(raw))
+        sea = None if raw is None else float(raw)
     except ValueError:
         raise InputError("--sea-temp-c", raw, "a finite number is required") from None
-    if case.thermal is None:
-        raise InputError("--sea-temp-c", sea, "needs the case's [thermal] table (the heat "
-                         "balance to the sea)")
-    if mode != "full":
-        raise InputError("--sea-temp-c", sea, "only under --thermal full (the heat balance "
-                         f"to the sea); the mode is '{mode}'")
-    try:
-        return replace(case, thermal=replace(case.thermal, sea_temp_C=sea)), mode
-    except InputError as e:
-        raise InputError("--sea-temp-c", sea, e.allowed) from None
+    full = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
+    return api_thermal_case(case, args.thermal, args.temp_c, sea, names={
+        "thermal": "--thermal", "oil_temp_C": "--temp-c", "sea_temp_C": "--sea-temp-c",
+        "full": full, "film": "choose --thermal film"})

@@ -41,6 +41,12 @@ def test_synth_then_loop(tmp_path, capsys):
     assert [e["name"] for e in doc["effects"]] == ["oil_inertia"]
     assert EFFECT_KEYS <= set(doc["effects"][0])
     assert (res / "report.md").read_text().startswith("# Measured-data loop report")
+    # what the loop filled in: no --case (the seed rig), the library, the options left out;
+    # the seed rig's motor and design bounds are not the loop's business
+    fields = {d["field"]: d for d in doc["defaults"]}
+    assert {"loop.case", "loop.effects", "loop.margin", "loop.cv_by", "loop.base"} <= set(fields)
+    assert fields["loop.margin"]["value"] == 0.1 and fields["loop.cv_by"]["value"] == "run"
+    assert not any(f.startswith(("motor.", "bounds.")) for f in fields)
     for f in ("measured_vs_model.png", "residual_vs_speed.png", "residual_vs_time.png"):
         assert (res / f).stat().st_size > 10_000
 
@@ -57,6 +63,7 @@ def test_loop_on_clean_data_says_so(tmp_path, capsys):
     text = capsys.readouterr().out
     assert "no missing effect found" in text
     doc = json.loads((tmp_path / "r" / "loop.json").read_text())
+    assert "loop.case" in text and "loop.margin = 0.1" in text  # the defaults header line
     assert doc["effects"] == [] and doc["heldout_rmse_W"]["before"] == \
         doc["heldout_rmse_W"]["after"]
 

@@ -12,6 +12,7 @@ import pytest
 from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.defaults import case_defaults, defaults_block, defaults_lines
 from oilgap.model.evaluation import evaluate_case
+from oilgap.optim.design import DesignProblem
 from oilgap.studies import oil_grade, pareto, smoothing
 from oilgap.studies.cli import main
 
@@ -56,6 +57,9 @@ def test_reader_records_every_default(case):
     assert fields["bounds.radius_min_mm"].value == pytest.approx(36.0)  # 0.9 x 40 mm
     assert fields["bounds.length_max_mm"].value == pytest.approx(36.0)  # 1.2 x 30 mm
     assert fields["duty_cycle.peak_speed_rpm"].value == 3000.0
+    # the torque bound left out: the NLP keeps the case's own torque capability
+    assert fields["bounds.torque_min_Nm"].value == pytest.approx(
+        DesignProblem(c).parameters().torque_min_Nm, rel=1e-12)
     assert "oil.name" not in fields and "operating.depth_m" not in fields
     assert "friction.gamma" not in fields  # given
     lines = "\n".join(defaults_lines(case_defaults(c)))

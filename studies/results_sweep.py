@@ -175,7 +175,7 @@ def write_sweep_outputs(view: Sweep, out: Path) -> list[Path]:
     """Write ``sweep.png`` and ``summary.md`` into ``out``; return every file of the sweep
     (``results.csv``, ``results.parquet``, the store, the figure, the summary)."""
     fig = write_sweep_figure(view.raw, view.base()[0], view.case.name, out / "sweep.png",
-                             view.thermal_mode)
+                             view.thermal_mode, view.mode, view.grid_name)
     md = out / "summary.md"
     write_text(md, view.summary_markdown())
     return [out / "results.csv", out / "results.parquet", out / f"points_{view.mode}.csv",

@@ -129,11 +129,29 @@ def new_figure(width: float = 7.5, height: float = 4.8, ncols: int = 1, nrows: i
     return fig, axes
 
 
+def _named_texts(fig: Figure) -> list[Text]:
+    """The texts a study writes (titles, axis labels, legends, annotations), not the
+    tick labels the axes' formatters make."""
+    out = list(fig.texts) + [t for leg in fig.legends for t in (*leg.get_texts(),
+                                                                 leg.get_title())]
+    if getattr(fig, "_suptitle", None) is not None:
+        out.append(fig._suptitle)
+    for ax in fig.axes:
+        out += [ax.title, ax.xaxis.label, ax.yaxis.label, *ax.texts]
+        out += [t for t in ax.get_children() if isinstance(t, Text) and t not in out
+                and t.get_text() and t is not ax.xaxis.offsetText
+                and t is not ax.yaxis.offsetText]
+        leg = ax.get_legend()
+        if leg is not None:
+            out += [*leg.get_texts(), leg.get_title()]
+    return out
+
+
 def save_figure(fig: Figure, path: Path, dpi: int = DPI) -> Path:
     """Save a figure made by :func:`new_figure` as PNG (tight layout), atomically; return
     the path."""
     path.parent.mkdir(parents=True, exist_ok=True)
-    for text in fig.findobj(Text):  # names are drawn as written: "$" is no mathtext
-        text.set_parse_math(False)
+    for text in _named_texts(fig):  # names are drawn as written: "$" is no mathtext
+        text.set_parse_math(False)  # (tick labels keep it: a log axis writes 10^2 so)
     fig.tight_layout()
     return atomic_savefig(fig, path, dpi=dpi)

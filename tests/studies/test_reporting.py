@@ -54,3 +54,16 @@ def test_new_figure_is_on_the_agg_canvas_and_saves_at_its_size(tmp_path):
     assert head[:8] == b"\x89PNG\r\n\x1a\n"
     width, height = int.from_bytes(head[16:20], "big"), int.from_bytes(head[20:24], "big")
     assert (width, height) == (200, 125)  # 4 in x 50 dpi, 2.5 in x 50 dpi
+
+
+def test_save_figure_draws_names_as_written_and_log_ticks_as_powers(tmp_path):
+    """A "$" in a title or legend is text, not mathtext; a log axis keeps its 10^k ticks
+    (the formatter writes them as mathtext: turned off they printed ``$\\mathdefault``)."""
+    fig, ax = new_figure()
+    ax.semilogy([1, 2, 3], [10, 100, 1000], label="oil $VG15$")
+    ax.set_title("cost $5")
+    ax.legend()
+    save_figure(fig, tmp_path / "f.png")
+    assert not ax.title.get_parse_math()
+    assert not ax.get_legend().get_texts()[0].get_parse_math()
+    assert all(t.get_parse_math() for t in ax.get_yticklabels())

@@ -344,7 +344,8 @@ def _probe_folder(folder: Path, field: str, shown: Path) -> None:
 
 
 def check_out_file(path: str | Path, force: bool = False, field: str = "--out",
-                   suffixes: Sequence[str] | None = None, make_parents: bool = False) -> Path:
+                   suffixes: Sequence[str] | None = None, make_parents: bool = False,
+                   option: str = "--force") -> Path:
     """Check an output file before any computation.
 
     Parameters
@@ -360,6 +361,9 @@ def check_out_file(path: str | Path, force: bool = False, field: str = "--out",
     make_parents : bool
         A missing folder will be created (its nearest existing ancestor must be a
         writable folder); else the folder must exist [-].
+    option : str
+        How the caller asks for an overwrite, for messages (``--force``; the Python
+        API's ``force=True``) [-].
 
     Returns
     -------
@@ -384,7 +388,7 @@ def check_out_file(path: str | Path, force: bool = False, field: str = "--out",
         what = "is not a folder" if parent.exists() else "does not exist"
         raise InputError(field, str(out), f"directory {str(parent)!r} {what}")
     _probe_folder(parent, field, out)
-    refuse_existing(out, force, field)
+    refuse_existing(out, force, field, option)
     return out
 
 

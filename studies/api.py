@@ -68,7 +68,7 @@ def write_case(case: DesignCase, path: str | Path, force: bool = False) -> Path:
     Path
         The file written.
     """
-    return write_case_toml(case, check_out_file(path, force, field="path"))
+    return write_case_toml(case, check_out_file(path, force, field="path", option="force=True"))
 
 
 def seed_case(smoothed: bool = False) -> DesignCase:

@@ -99,7 +99,8 @@ class ResultView:
         ``force``)."""
         text = dumps(self.to_dict())
         if path is not None:
-            atomic_write_text(check_out_file(path, force, field="path"), text + "\n")
+            out = check_out_file(path, force, field="path", option="force=True")
+            atomic_write_text(out, text + "\n")
         return text
 
     def header(self) -> list[str]:

@@ -190,7 +190,7 @@ def neutralise_formulas(df: Any) -> Any:
         if getattr(s.dtype, "kind", "O") not in "OSU":  # numbers, bools, dates: no text
             continue
         text = s.astype(object).where(s.map(lambda v: isinstance(v, str)), "")
-        risky = text.str[:1].isin(FORMULA_START) & ~text.map(_is_number)
+        risky = text.str[:1].isin(FORMULA_START) & ~text.map(is_number)
         if risky.any():
             if out is df:
                 out = df.copy()
@@ -198,7 +198,9 @@ def neutralise_formulas(df: Any) -> Any:
     return out
 
 
-def _is_number(text: str) -> bool:
+def is_number(text: str) -> bool:
+    """Whether ``text`` reads as a number (``float(text)`` succeeds: ``-1.5``, ``1e3``,
+    ``nan``) [-]; a cell such as ``-1.5`` is data, not a spreadsheet formula."""
     try:
         float(text)
     except ValueError:
@@ -477,4 +479,4 @@ def check_out_dir(path: str | Path, outputs: Sequence[str] = (), force: bool = F
 __all__ = ["FORMULA_START", "MARKER", "OutputError", "atomic_savefig", "atomic_to_csv",
            "atomic_to_parquet", "atomic_write", "atomic_write_bytes", "atomic_write_text",
            "check_out_dir", "check_out_file", "existing_outputs", "first_existing",
-           "neutralise_formulas", "refuse_existing"]
+           "is_number", "neutralise_formulas", "refuse_existing"]

@@ -25,7 +25,7 @@ from matplotlib.figure import Figure
 from matplotlib.text import Text
 
 from oilgap.model.errors import InputError
-from oilgap.model.files import atomic_savefig, atomic_to_csv, atomic_write_text
+from oilgap.model.files import atomic_savefig, atomic_to_csv, atomic_write_text, is_number
 
 DPI = 120
 """Resolution of the studies' PNG figures [dots per inch]."""
@@ -45,14 +45,6 @@ def markdown_cell(x: Any) -> str:
     return text.replace("|", "\\|")
 
 
-def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return True
-
-
 def _pipe_table(header: Sequence[Any], cells: list[list[str]], right: Sequence[bool]) -> str:
     """The pipe table of escaped text cells by ``DataFrame.to_markdown`` (tabulate; the
     text written as given, not parsed again), ``right`` columns right-aligned."""
@@ -69,7 +61,7 @@ def markdown_rows(header: Sequence[Any], rows: Sequence[Sequence[Any]]) -> str:
     :func:`markdown_cell`); a column whose cells are all numbers (or blank) is
     right-aligned."""
     cells = [[markdown_cell(x) for x in r] for r in rows]
-    right = [bool(col) and all(c == "" or _is_number(c) for c in col)
+    right = [bool(col) and all(c == "" or is_number(c) for c in col)
              and any(c != "" for c in col) for col in zip(*cells, strict=True)] \
         if cells else [False] * len(header)
     return _pipe_table(header, cells, right)

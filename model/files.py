@@ -199,8 +199,19 @@ def neutralise_formulas(df: Any) -> Any:
 
 
 def is_number(text: str) -> bool:
-    """Whether ``text`` reads as a number (``float(text)`` succeeds: ``-1.5``, ``1e3``,
-    ``nan``) [-]; a cell such as ``-1.5`` is data, not a spreadsheet formula."""
+    """Whether ``text`` reads as a number: a cell such as ``-1.5`` is data, not a
+    spreadsheet formula.
+
+    Parameters
+    ----------
+    text : str
+        A table cell [-].
+
+    Returns
+    -------
+    bool
+        ``float(text)`` succeeds (``-1.5``, ``1e3``, ``nan``) [-].
+    """
     try:
         float(text)
     except ValueError:

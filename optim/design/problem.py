@@ -87,6 +87,15 @@ from .variables import (
 )
 
 
+def _memo(cache: dict, key: Any, compute: Any) -> float:
+    """``cache[key]``, computed by ``compute()`` once (the cache emptied past 4096 keys)."""
+    if key not in cache:
+        if len(cache) > 4096:
+            cache.clear()
+        cache[key] = float(compute())
+    return cache[key]
+
+
 class DesignProblem:
     """The design NLP of a case, built once and re-solved with parameters.
 
@@ -218,14 +227,9 @@ class DesignProblem:
         """
         if self.case.region2 is None:
             return 0.0
-        key = (float(nu_m2_s), float(rho_kg_m3))
-        if key not in self._p2_cache:
-            if len(self._p2_cache) > 4096:
-                self._p2_cache.clear()
-            self._p2_cache[key] = float(region_mean_power(
-                joint_regions(self.case)[1], self.nodes_rad_s, self.weights, nu_m2_s,
-                rho_kg_m3, self.law))
-        return self._p2_cache[key]
+        return _memo(self._p2_cache, (float(nu_m2_s), float(rho_kg_m3)),
+                     lambda: region_mean_power(joint_regions(self.case)[1], self.nodes_rad_s,
+                                               self.weights, nu_m2_s, rho_kg_m3, self.law))
 
     def bearing_power(self, nu_m2_s: float) -> float | None:
         """Mean power of the case's rolling bearing (constant for the design).
@@ -249,13 +253,9 @@ class DesignProblem:
         """
         if self.case.bearing is None:
             return None
-        key = float(nu_m2_s)
-        if key not in self._bearing_cache:
-            if len(self._bearing_cache) > 4096:
-                self._bearing_cache.clear()
-            self._bearing_cache[key] = float(bearing_mean_power(
-                self.case.bearing, self.nodes_rad_s, self.weights, key))
-        return self._bearing_cache[key]
+        return _memo(self._bearing_cache, float(nu_m2_s),
+                     lambda: bearing_mean_power(self.case.bearing, self.nodes_rad_s,
+                                                self.weights, float(nu_m2_s)))
 
     def constant_power(self, nu_m2_s: float, rho_kg_m3: float) -> float:
         """The mean power the design variables do not change: region 2 and the bearing.

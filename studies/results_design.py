@@ -13,6 +13,7 @@ from oilgap.model.defaults import gamma_fields, gamma_line
 from oilgap.model.evaluation import oil_state
 from oilgap.model.units import m2_s_to_cst
 from oilgap.optim.design import DesignResult, HeatingComparison
+from oilgap.optim.design.results import POINT_MEANINGS
 from oilgap.studies.results import ResultView, case_defaults, new_axes
 
 MODE_TEXT = {
@@ -49,26 +50,10 @@ def with_gamma(text: str, case: DesignCase) -> str:
 
 
 def _rows(prm) -> list[tuple[str, str]]:
-    return [
-        ("delta_mm", "clearance delta = T3 - T2 (magnetic gap)"),
-        ("R_mm", "radius R = T2"),
-        ("L_mm", "length L"),
-        ("T1_mm", "rotor groove bottom"),
-        ("T2_mm", "rotor surface"),
-        ("T3_mm", "stator bore"),
-        ("T4_mm", "stator groove bottom"),
-        ("rotor_groove_depth_mm", "open rotor groove depth"),
-        ("stator_groove_depth_mm", "open stator groove depth"),
-        ("T", "roughness (T4 - T1)/(T3 - T2)"),
-        ("region1_power_W", "rotor-stator clearance"),
-        ("region2_power_W", "bearing annulus"),
-        ("bearing_power_W", "rolling bearing (friction and drag)"),
-        ("mean_power_W", "mean viscous power (smooth C_m)"),
-        ("torque_capability_Nm", f"torque capability (>= {prm.torque_min_Nm:.5g})"),
-        ("airgap_flux_density_T", "air-gap flux density B_g"),
-        ("inertia_kgm2", f"rotor inertia (<= {prm.inertia_max_kgm2:.5g})"),
-        ("inertia_ratio", "inertia / the case's unfilled rotor"),
-    ]
+    """(key, meaning) of each quantity reported, the limits named where they bind."""
+    bounds = {"torque_capability_Nm": f" (>= {prm.torque_min_Nm:.5g})",
+              "inertia_kgm2": f" (<= {prm.inertia_max_kgm2:.5g})"}
+    return [(k, m + bounds.get(k, "")) for k, m in POINT_MEANINGS.items()]
 
 
 def _change(a: float, b: float) -> str:

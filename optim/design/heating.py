@@ -23,22 +23,12 @@ from typing import Any
 from oilgap.model.errors import InputError
 
 from .problem import DesignProblem
-from .results import DesignResult, ThermalDesignResult
+from .results import POINT_MEANINGS, DesignResult, ThermalDesignResult
 
-COMPARED = (
-    ("delta_mm", "clearance delta = T3 - T2 (magnetic gap)"),
-    ("R_mm", "radius R = T2"),
-    ("L_mm", "length L"),
-    ("rotor_groove_depth_mm", "open rotor groove depth"),
-    ("stator_groove_depth_mm", "open stator groove depth"),
-    ("T", "roughness (T4 - T1)/(T3 - T2)"),
-    ("region1_power_W", "rotor-stator clearance"),
-    ("region2_power_W", "bearing annulus"),
-    ("bearing_power_W", "rolling bearing (friction and drag)"),
-    ("mean_power_W", "mean viscous power (smooth C_m)"),
-    ("torque_capability_Nm", "torque capability"),
-    ("inertia_ratio", "inertia / the case's unfilled rotor"),
-)
+COMPARED = tuple((k, POINT_MEANINGS[k]) for k in (
+    "delta_mm", "R_mm", "L_mm", "rotor_groove_depth_mm", "stator_groove_depth_mm", "T",
+    "region1_power_W", "region2_power_W", "bearing_power_W", "mean_power_W",
+    "torque_capability_Nm", "inertia_ratio"))
 """Quantities of the optimal DesignPoint compared (key of ``to_dict``, meaning);
 ``bearing_power_W`` only for a case with a ``[bearing]``."""
 

@@ -33,6 +33,29 @@ from oilgap.model.units import MM_TO_M
 from .parameters import DesignParameters
 from .variables import ACTIVE_RTOL, VARIABLE_LABELS, VARIABLES
 
+POINT_MEANINGS: dict[str, str] = {
+    "delta_mm": "clearance delta = T3 - T2 (magnetic gap)",
+    "R_mm": "radius R = T2",
+    "L_mm": "length L",
+    "T1_mm": "rotor groove bottom",
+    "T2_mm": "rotor surface",
+    "T3_mm": "stator bore",
+    "T4_mm": "stator groove bottom",
+    "rotor_groove_depth_mm": "open rotor groove depth",
+    "stator_groove_depth_mm": "open stator groove depth",
+    "T": "roughness (T4 - T1)/(T3 - T2)",
+    "region1_power_W": "rotor-stator clearance",
+    "region2_power_W": "bearing annulus",
+    "bearing_power_W": "rolling bearing (friction and drag)",
+    "mean_power_W": "mean viscous power (smooth C_m)",
+    "torque_capability_Nm": "torque capability",
+    "airgap_flux_density_T": "air-gap flux density B_g",
+    "inertia_kgm2": "rotor inertia",
+    "inertia_ratio": "inertia / the case's unfilled rotor",
+}
+"""What each quantity of :meth:`DesignPoint.to_dict` is, in report order (the one label
+table of the optimize reports and the heating comparison)."""
+
 
 @dataclass(frozen=True)
 class DesignPoint:
@@ -507,5 +530,5 @@ class ThermalDesignResult(DesignResult):
                 operating_temperature(opt, self.thermal_mode))
 
 
-__all__ = ["DesignPoint", "DesignResult", "Multiplier", "ThermalDesignResult",
+__all__ = ["POINT_MEANINGS", "DesignPoint", "DesignResult", "Multiplier", "ThermalDesignResult",
            "convert_multipliers", "design_point"]

@@ -4,35 +4,23 @@ output folder of a study, and a result printed as text or (``--json``) as JSON."
 from __future__ import annotations
 
 import argparse
-from dataclasses import replace
 from pathlib import Path
 
-from oilgap.model.case import DesignCase, OperatingPoint
+from oilgap.model.case import DesignCase
 from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.errors import InputError
-from oilgap.model.oils import get_oil, read_oils_csv
 from oilgap.studies.api import thermal_case as api_thermal_case
+from oilgap.studies.api import with_operating
 
 
 def load_case(args: argparse.Namespace) -> DesignCase:
     """The case named on the command line (or the seed), with --oil/--oils, --temp-c and
-    --depth-m applied and validated. Shared by the subcommands that take a CASE."""
+    --depth-m applied (:func:`oilgap.studies.api.with_operating`). Shared by the
+    subcommands that take a CASE."""
     case = read_case_toml(args.case) if args.case else seed_case(getattr(args, "smoothed",
                                                                          False))
-    if getattr(args, "oil", None) or getattr(args, "oils", None):
-        cat = read_oils_csv(args.oils) if getattr(args, "oils", None) else None
-        case = replace(case, oil=get_oil(args.oil or case.oil.name, cat))
-    op = case.operating
-    if getattr(args, "temp_c", None) is not None or getattr(args, "depth_m", None) is not None:
-        op = OperatingPoint(op.depth_m if args.depth_m is None else args.depth_m,
-                            op.oil_temp_C if args.temp_c is None else args.temp_c)
-        case = replace(case, operating=op)
-    return case
-
-
-def case_or_seed(path: str | None) -> DesignCase:
-    """The case TOML at ``path``, or the seed joint (grooved) without one."""
-    return read_case_toml(path) if path else seed_case()
+    return with_operating(case, getattr(args, "oil", None), getattr(args, "oils", None),
+                          getattr(args, "temp_c", None), getattr(args, "depth_m", None))
 
 
 def study_out(args: argparse.Namespace, study: str) -> Path:

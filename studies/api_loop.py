@@ -27,7 +27,6 @@ from oilgap.optim.calibration.model_io import (
     load_model,
 )
 from oilgap.studies.api import as_case, oil_catalogue
-from oilgap.studies.cli.outputs import OUTPUTS
 from oilgap.studies.loop_figures import pages, plot_overview, plot_residuals, plot_windows
 from oilgap.studies.loop_report import (
     format_summary,
@@ -36,6 +35,7 @@ from oilgap.studies.loop_report import (
     warn_unit_hints,
     write_report,
 )
+from oilgap.studies.outputs import OUTPUTS
 from oilgap.studies.results import ResultView, case_defaults, lazy
 from oilgap.studies.synth import SynthConfig, synthesize
 

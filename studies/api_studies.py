@@ -27,7 +27,6 @@ from oilgap.studies import oil_grade as oil_grade_study
 from oilgap.studies import pareto as pareto_study
 from oilgap.studies import smoothing as smoothing_study
 from oilgap.studies.api import as_case, oil_catalogue
-from oilgap.studies.cli.outputs import OUTPUTS
 from oilgap.studies.grid.chunking import DEFAULT_CHUNK_SECONDS
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid
@@ -38,6 +37,7 @@ from oilgap.studies.oil_grade import (
     DEFAULT_NU_MIN_CST,
     read_mission_csv,
 )
+from oilgap.studies.outputs import OUTPUTS
 from oilgap.studies.results_studies import OilGrade, Pareto, Smoothing
 from oilgap.studies.results_sweep import Sweep, write_sweep_outputs
 

@@ -15,7 +15,7 @@ import oilgap
 from oilgap.model.case_io import seed_case
 from oilgap.model.case_write import case_to_dict, dumps_toml
 from oilgap.studies.cli import LOG, build_parser, configure_logging, main
-from oilgap.studies.cli.outputs import OUTPUTS
+from oilgap.studies.outputs import OUTPUTS
 
 NOMENCLATURE = Path(__file__).parents[2] / "docs" / "nomenclature.md"
 

@@ -27,8 +27,8 @@ from oilgap.model.measured_data import load_measured
 from oilgap.model.result_folder import LOCK_NAME, FolderLock, ResultFolder
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.studies.cli import COMMANDS, main
-from oilgap.studies.cli.outputs import OUTPUTS
 from oilgap.studies.grid.schema import read_grid_csv
+from oilgap.studies.outputs import OUTPUTS
 from oilgap.studies.synth import SynthConfig, synthesize
 
 PY = sys.executable

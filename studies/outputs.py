@@ -1,0 +1,35 @@
+"""The files each folder command writes: the one list that ``--force`` / ``force=True``
+removes before a new run writes (never anything else in the folder), shared by the
+façade's studies (:mod:`oilgap.studies.api_studies`, :mod:`oilgap.studies.api_loop`)
+and the command line (:mod:`oilgap.studies.cli.outputs`)."""
+
+from __future__ import annotations
+
+from oilgap.model.result_folder import PROVENANCE_NAME
+from oilgap.studies.grid.store import store_files
+
+OUTPUTS: dict[str, tuple[str, ...]] = {
+    "loop": ("loop.json", "report.md", "measured_vs_model.png", "residual_vs_speed.png",
+             "residual_vs_time.png", "measured_vs_model_*.png", PROVENANCE_NAME),
+    "study sweep": ("summary.md", "sweep.png", *store_files(), PROVENANCE_NAME),
+    "study smoothing": ("smoothing_table4.csv", "smoothing_fits.csv",
+                        "smoothing_loss_vs_T.csv", "smoothing_plateau.csv",
+                        "smoothing_run_temps.csv", "smoothing_table4.png",
+                        "smoothing_loss_vs_T.png", "summary.md", *store_files("grid/"),
+                        PROVENANCE_NAME),
+    "study pareto": ("pareto_gap.csv", "pareto_inertia.csv", "pareto_seeds.csv",
+                     "pareto_design.csv",
+                     "pareto_gap.png", "pareto_inertia.png", "summary.md",
+                     *store_files("grid_gap/"), *store_files("grid_inertia/"), PROVENANCE_NAME),
+    "study oil-grade": ("oil_grade_table.csv", "oil_grade_envelope.csv",
+                        "oil_grade_rated.csv", "oil_grade_isothermal_table.csv",
+                        "oil_grade_thermal_comparison.csv", "oil_grade.json",
+                        "oil_grade_heatmap.png", "oil_grade_loss_vs_grade.png",
+                        "oil_grade_thermal.png", "summary.md", *store_files("grid/"),
+                        *store_files("grid_isothermal/"), PROVENANCE_NAME),
+}
+"""The files each folder command writes (names or glob patterns relative to ``--out``);
+each writes :data:`~oilgap.model.provenance.PROVENANCE_NAME` (version, date, command,
+inputs with their SHA-256) when it starts writing."""
+
+__all__ = ["OUTPUTS"]

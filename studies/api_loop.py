@@ -4,7 +4,6 @@ runs, find the missing effect), ``og.predict`` (``oilgap predict``), ``og.synth`
 
 from __future__ import annotations
 
-import contextlib
 import warnings
 from pathlib import Path
 from typing import Any
@@ -35,7 +34,7 @@ from oilgap.studies.loop_report import (
     warn_unit_hints,
     write_report,
 )
-from oilgap.studies.outputs import OUTPUTS
+from oilgap.studies.outputs import result_folder
 from oilgap.studies.results import ResultView, case_defaults, lazy
 from oilgap.studies.synth import SynthConfig, synthesize
 
@@ -247,11 +246,7 @@ class Loop(LoopEstimator, ResultView):
         (an earlier report refused unless ``force``; ``folder``: a result folder the
         caller already opened). Returns the paths (``json``, ``report``, ``figures``)."""
         self._check_fitted()
-        own = folder is None
-        ctx = (ResultFolder(out, OUTPUTS["loop"], force=force, command="oilgap loop",
-                            field="out", hint="pass force=True to replace them")
-               if own else contextlib.nullcontext(folder))
-        with ctx as f:
+        with result_folder("loop", out, force, folder=folder) as f:
             f.begin()
             paths = write_report(self, out, figures=figures)
             f.complete()

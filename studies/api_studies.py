@@ -11,7 +11,6 @@ that folder as the command does: the folder is checked and locked before any com
 
 from __future__ import annotations
 
-import contextlib
 import time
 from collections.abc import Sequence
 from pathlib import Path
@@ -37,24 +36,9 @@ from oilgap.studies.oil_grade import (
     DEFAULT_NU_MIN_CST,
     read_mission_csv,
 )
-from oilgap.studies.outputs import OUTPUTS
+from oilgap.studies.outputs import result_folder
 from oilgap.studies.results_studies import OilGrade, Pareto, Smoothing
 from oilgap.studies.results_sweep import Sweep, write_sweep_outputs
-
-
-def result_folder(command: str, out: str | Path | None, force: bool = False,
-                  resume: bool = False, folder: ResultFolder | None = None) -> Any:
-    """The context of a study writing into ``out``: ``folder`` if the caller opened one,
-    a new :class:`ResultFolder` (its outputs from the command's list), or nothing when
-    ``out`` is None (the study writes no file)."""
-    if folder is not None:
-        return contextlib.nullcontext(folder)
-    if out is None:
-        return contextlib.nullcontext(None)
-    hint = ("pass resume=True to continue it or force=True to start over"
-            if command == "study sweep" else "pass force=True to replace them")
-    return ResultFolder(out, OUTPUTS[command], force=force, resume=resume,
-                        command=f"oilgap {command}", field="out", hint=hint)
 
 
 def _begin(folder: ResultFolder | None) -> None:

@@ -5,7 +5,11 @@ and the command line (:mod:`oilgap.studies.cli.outputs`)."""
 
 from __future__ import annotations
 
-from oilgap.model.result_folder import PROVENANCE_NAME
+import contextlib
+from pathlib import Path
+from typing import Any
+
+from oilgap.model.result_folder import PROVENANCE_NAME, ResultFolder
 from oilgap.studies.grid.store import store_files
 
 OUTPUTS: dict[str, tuple[str, ...]] = {
@@ -32,4 +36,36 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
 each writes :data:`~oilgap.model.provenance.PROVENANCE_NAME` (version, date, command,
 inputs with their SHA-256) when it starts writing."""
 
-__all__ = ["OUTPUTS"]
+
+def result_folder(command: str, out: str | Path | None, force: bool = False,
+                  resume: bool = False, folder: ResultFolder | None = None) -> Any:
+    """The context of a façade study or loop report writing into ``out``.
+
+    Parameters
+    ----------
+    command : str
+        The command whose outputs :data:`OUTPUTS` lists (``"loop"``, ``"study sweep"``...).
+    out : str, Path or None
+        The folder; None: the study writes no file.
+    force, resume : bool
+        Replace the earlier outputs; continue an unfinished sweep.
+    folder : ResultFolder, optional
+        A folder the caller already opened (the command line's).
+
+    Returns
+    -------
+    context manager
+        ``folder`` if given, a new :class:`ResultFolder` (refusals naming ``out`` and
+        ``force=True``/``resume=True``), or one yielding None.
+    """
+    if folder is not None:
+        return contextlib.nullcontext(folder)
+    if out is None:
+        return contextlib.nullcontext(None)
+    hint = ("pass resume=True to continue it or force=True to start over"
+            if command == "study sweep" else "pass force=True to replace them")
+    return ResultFolder(out, OUTPUTS[command], force=force, resume=resume,
+                        command=f"oilgap {command}", field="out", hint=hint)
+
+
+__all__ = ["OUTPUTS", "result_folder"]

@@ -7,8 +7,10 @@
   computation (:func:`oilgap.model.files.check_out_dir`), writes the marker file
   :data:`MARKER` when the command starts writing and removes it when every output is
   in place: a folder holding the marker is the unfinished output of a run that failed
-  or was killed. With ``force`` the earlier outputs of the same command are removed
-  when writing starts, so new and old outputs never sit side by side.
+  or was killed. With ``force`` the earlier outputs of the same command are moved
+  aside (:data:`STASH_NAME`) when writing starts, so new and old outputs never sit side
+  by side; they are deleted when the run completes, and put back if it fails before
+  writing an output of its own (a refused input loses nothing).
 * **Where it came from.** :meth:`ResultFolder.begin` writes :data:`PROVENANCE_NAME`
   (oilgap's version, the UTC date-time, the command, each input's SHA-256, the
   library versions: :func:`oilgap.model.provenance.provenance`); facts learnt during
@@ -19,6 +21,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
 import socket
 import time
 from collections.abc import Iterable, Sequence
@@ -38,6 +41,9 @@ from .serialize import dumps
 
 LOCK_NAME = ".oilgap.lock"
 """Name of the lock file of a folder an oilgap run is writing into."""
+
+STASH_NAME = ".oilgap-replaced"
+"""Subfolder holding the outputs a ``force`` run replaces until it completes."""
 
 STALE_EMPTY_LOCK_S = 10.0
 """Age [s] after which an empty or unreadable lock file (a run killed between creating
@@ -165,22 +171,40 @@ class FolderLock:
 # --------------------------------------------------------------------------- result folders
 
 
-def _remove_outputs(folder: Path, outputs: Iterable[str]) -> None:
-    """Remove the existing outputs (files only) and the subfolders they leave empty; a
-    folder holding anything else stays."""
+def _stash_outputs(folder: Path, outputs: Iterable[str]) -> None:
+    """Move the existing outputs (files only) into :data:`STASH_NAME`, keeping their
+    paths, and remove the subfolders they leave empty; a folder holding anything else
+    stays. A stash left by a killed run is emptied first."""
+    stash = folder / STASH_NAME
+    shutil.rmtree(stash, ignore_errors=True)
     dirs: set[Path] = set()
     for p in existing_outputs(folder, outputs):
         if p.is_dir() and not p.is_symlink():
             dirs.add(p)
             continue
+        dest = stash / p.relative_to(folder)
         try:
-            p.unlink()
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            os.replace(p, dest)
         except OSError as e:
             raise OutputError(p, e) from None
         dirs.update(q for q in p.parents if folder in q.parents)
     for d in sorted(dirs, key=lambda x: len(x.parts), reverse=True):
         with contextlib.suppress(OSError):
             d.rmdir()
+
+
+def _restore_outputs(folder: Path) -> None:
+    """Put the stashed outputs back where they were, then drop the stash."""
+    stash = folder / STASH_NAME
+    if not stash.is_dir():
+        return
+    for p in sorted(q for q in stash.rglob("*") if not q.is_dir() or q.is_symlink()):
+        dest = folder / p.relative_to(stash)
+        with contextlib.suppress(OSError):
+            dest.parent.mkdir(parents=True, exist_ok=True)
+            os.replace(p, dest)
+    shutil.rmtree(stash, ignore_errors=True)
 
 
 class ResultFolder:
@@ -280,12 +304,12 @@ class ResultFolder:
         return self
 
     def begin(self) -> None:
-        """Writing starts: earlier outputs removed (``force`` without ``resume``), the
-        marker written."""
+        """Writing starts: earlier outputs moved aside (``force`` without ``resume``),
+        the marker written."""
         if self._begun:
             return
         if self.force and not self.resume:
-            _remove_outputs(self.path, self.outputs)
+            _stash_outputs(self.path, self.outputs)
         atomic_write_text(self.path / MARKER, (
             f"{self.command} started writing here at {time.strftime('%Y-%m-%d %H:%M:%S')} "
             f"(pid {os.getpid()}). This file is removed when every output is written; "
@@ -295,24 +319,30 @@ class ResultFolder:
         self._begun = True
 
     def complete(self) -> None:
-        """Every output is written: the marker is removed."""
+        """Every output is written: the replaced outputs and the marker are removed."""
         if self._begun:
             if self._details:
                 self.write_provenance()
+            shutil.rmtree(self.path / STASH_NAME, ignore_errors=True)
             with contextlib.suppress(FileNotFoundError):
                 (self.path / MARKER).unlink()
             self._begun = False
 
     def _undo(self) -> None:
-        """After a failure: the marker removed if no output was written; folders this
-        run created removed if empty; the lock released."""
+        """After a failure: if no output was written, the marker removed and the outputs
+        a ``force`` run moved aside put back (else they stay replaced: the folder is
+        marked incomplete); folders this run created removed if empty; the lock
+        released."""
         prov = self.path / PROVENANCE_NAME
         if self._begun and not [p for p in existing_outputs(self.path, self.outputs)
                                 if p != prov]:
             with contextlib.suppress(FileNotFoundError):
                 prov.unlink()  # a stamp of nothing
+            _restore_outputs(self.path)
             self._details = {}
             self.complete()
+        elif self._begun:
+            shutil.rmtree(self.path / STASH_NAME, ignore_errors=True)
         if self._lock is not None:
             self._lock.release()
             self._lock = None
@@ -337,4 +367,4 @@ class ResultFolder:
         self.close(failed=exc_type is not None)
 
 
-__all__ = ["LOCK_NAME", "MARKER", "PROVENANCE_NAME", "FolderLock", "ResultFolder"]
+__all__ = ["LOCK_NAME", "MARKER", "PROVENANCE_NAME", "STASH_NAME", "FolderLock", "ResultFolder"]

@@ -179,6 +179,20 @@ def test_force_starts_over_and_keeps_what_is_not_an_output(tmp_path, capsys):
         "summary.md", "sweep.png"]
 
 
+@pytest.mark.parametrize("bad", [["--scheduler", "foo"], ["--thermal", "full"],
+                                 ["--chunk-seconds", "-1"]])
+def test_force_with_a_refused_input_loses_nothing(tmp_path, capsys, bad):
+    """--force replaces the earlier outputs only with new ones: a run refused for its
+    input (after the folder was opened) leaves them as they were, byte for byte."""
+    out = tmp_path / "o"
+    assert main(sweep(tmp_path)) == 0
+    before = {p.name: p.read_bytes() for p in out.iterdir()}
+    capsys.readouterr()
+    assert main(sweep(tmp_path, "--force", *bad)) == 2
+    one_error_line(capsys, bad[0].lstrip("-").replace("-", "_"))
+    assert {p.name: p.read_bytes() for p in out.iterdir()} == before
+
+
 def test_a_cut_short_store_row_is_dropped_counted_and_recomputed(tmp_path, capsys):
     out = tmp_path / "o"
     assert main(sweep(tmp_path, "--chunk-size", "2")) == 0
@@ -366,6 +380,33 @@ def test_result_folder_leaves_nothing_when_nothing_was_written(tmp_path):
         atomic_write_text(out / "a.csv", "x\n")
         raise RuntimeError("failed after writing")
     assert sorted(p.name for p in out.iterdir()) == [MARKER, "a.csv", "provenance.json"]
+
+
+def test_force_puts_the_earlier_outputs_back_when_nothing_new_was_written(tmp_path):
+    out = tmp_path / "o"
+    out.mkdir()
+    (out / "a.csv").write_text("old\n")
+    (out / "sub").mkdir()
+    (out / "sub" / "b.csv").write_text("old b\n")
+    outputs = ("a.csv", "sub/b.csv")
+    with pytest.raises(RuntimeError), ResultFolder(out, outputs, force=True) as folder:
+        folder.begin()
+        assert not (out / "a.csv").exists()  # moved aside while the run writes
+        raise RuntimeError("refused before writing")
+    assert (out / "a.csv").read_text() == "old\n"
+    assert (out / "sub" / "b.csv").read_text() == "old b\n"
+    assert sorted(p.name for p in out.iterdir()) == ["a.csv", "sub"]
+    with pytest.raises(RuntimeError), ResultFolder(out, outputs, force=True) as folder:
+        folder.begin()
+        atomic_write_text(out / "a.csv", "new\n")
+        raise RuntimeError("failed after writing")
+    # old and new never side by side: the old b.csv is gone, the folder marked
+    assert (out / "a.csv").read_text() == "new\n" and not (out / "sub").exists()
+    assert sorted(p.name for p in out.iterdir()) == [MARKER, "a.csv", "provenance.json"]
+    with ResultFolder(out, outputs, force=True) as folder:
+        folder.begin()
+        atomic_write_text(out / "a.csv", "newer\n")
+    assert sorted(p.name for p in out.iterdir()) == ["a.csv", "provenance.json"]
 
 
 def test_outputs_list_every_file_the_loop_writes():

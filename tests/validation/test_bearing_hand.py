@@ -215,7 +215,7 @@ COMPARISON_NU = (10, 22, 46, 100, 150, 220, 320, 460, 680, 1000)
 
 
 def comparison_rows():
-    """Seed cycle means [W] of 61809 at F_r = 50 N: SKF (vm), SKF (vm+rs), Palmgren."""
+    """Seed cycle means [W] of 61809 at F_r = 50 N: SKF (V_M term), SKF (full drag), Palmgren."""
     rows = []
     for nu in COMPARISON_NU:
         skf = cycle_mean(spec(), nu)
@@ -236,8 +236,8 @@ def mean_powers(nu=NU, peak=N, scale=1.0, fr=FR, f0=4.0):
            "radial_load_N": fr, "static_load_rating_N": C0}
     skf = term_means(bearing_spec_from({**geo, "drag": "skf-full"}), nu, cycle)
     palm = cycle_mean(bearing_spec_from({**geo, "model": "palmgren", "f0": f0}), nu, cycle)
-    return {**skf, "skf (vm)": skf["rolling"] + skf["sliding"] + skf["drag_vm"],
-            "skf (vm+rs)": sum(skf.values()), "palmgren": palm}
+    return {**skf, "skf (V_M term)": skf["rolling"] + skf["sliding"] + skf["drag_vm"],
+            "skf (full drag)": sum(skf.values()), "palmgren": palm}
 
 
 def elasticities(h=0.01):
@@ -297,13 +297,13 @@ def test_comparison_table_ratio():
     assert skf == pytest.approx(4.66 + 0.02 + 5.34, rel=5e-3)  # notes section 5
     assert skf_rs == pytest.approx(156.1, rel=5e-3)
     assert ratio == pytest.approx(89.5 / 10.02, rel=5e-3)
-    # Palmgren grows as nu^(2/3), SKF (vm) more slowly: the ratio rises with nu
+    # Palmgren grows as nu^(2/3), SKF (V_M term) more slowly: the ratio rises with nu
     assert all(a[5] < b[5] for a, b in zip(rows, rows[1:], strict=False))
 
 
 if __name__ == "__main__":  # the tables of docs/bearing.md
-    print("| nu cSt | SKF vm W | SKF vm+rs W | Palmgren f0=2 W | Palmgren f0=4 W | "
-          "Palmgren(4)/SKF(vm) |")
+    print("| nu cSt | SKF V_M term W | SKF full drag W | Palmgren f0=2 W | Palmgren f0=4 W | "
+          "Palmgren(4)/SKF(V_M term) |")
     print("|---|---|---|---|---|---|")
     for nu, skf, skf_rs, p2, p4, ratio in comparison_rows():
         print(f"| {nu} | {skf:.2f} | {skf_rs:.1f} | {p2:.1f} | {p4:.1f} | {ratio:.2f} |")

@@ -483,3 +483,37 @@ def bearing_validity(spec: BearingSpec, omega_rad_s: float, nu_m2_s: float) -> B
     if spec.model == "palmgren" and nu * n < PALMGREN_MIN_NU_N:
         notes.append(f"nu n = {nu * n:.4g} < 2000: Palmgren's M_0 is its constant floor")
     return BearingValidity(nu1, kappa, n * dm, tuple(notes))
+
+
+def bearing_vm_drag_power(spec: BearingSpec, omega_rad_s):
+    """Power of SKF's V_M drag term of the bearing, whatever its model [W] [1]_.
+
+    ``0.4 V_M K_ball dm^5 n^2 |omega|`` (N mm to N m), with the series' K_Z and rows of
+    balls (3.1 and 1, the deep-groove values, without a series) and V_M at the bearing's
+    oil level. The loop's ``bearing_ball_drag`` effect scales it: the drag of the balls
+    in the oil, calibrated apart from the rolling and sliding. It does not depend on the
+    oil (the V_M term has neither viscosity nor density).
+
+    Parameters
+    ----------
+    spec : BearingSpec
+        The bearing (d, D, oil level; series if known).
+    omega_rad_s : float or array
+        Shaft speed [rad/s] (sign ignored).
+
+    Returns
+    -------
+    float or array
+        Power [W] (0 at rest).
+
+    References
+    ----------
+    SKF catalogue, "Friction", drag losses [1]_ (:func:`drag_vm_moment`).
+    """
+    c = SERIES_CONSTANTS.get(spec.series)
+    k_z, rows = (c.k_z, c.ball_rows) if c is not None else (3.1, 1)
+    d, D = m_to_mm(spec.bore_m), m_to_mm(spec.outside_m)
+    w = m.fabs(omega_rad_s)
+    moment = drag_vm_moment(rad_s_to_rpm(w), 0.5 * (d + D), ball_drag_constant(d, D, k_z, rows),
+                            drag_loss_factor(spec.oil_level_ratio))
+    return mm_to_m(moment) * w

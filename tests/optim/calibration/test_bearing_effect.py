@@ -22,6 +22,7 @@ from oilgap.model.bearing import bearing_power, bearing_vm_drag_power
 from oilgap.model.bearing_catalogue import bearing_spec_from
 from oilgap.model.case_io import seed_case
 from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts, effect_context
+from oilgap.model.errors import InputError
 from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_geometry
 from oilgap.model.units import celsius_to_kelvin, rpm_to_rad_s
@@ -160,3 +161,8 @@ def test_plausible_range_of_the_drag_scale():
     assert DRAG.plausible.range(skf) == (0.0, 30.0)
     assert DRAG.implausibility(0.9, skf) is None  # the spheres in still oil
     assert "outside the plausible" in DRAG.implausibility(40.0, skf)
+
+
+def test_synthetic_rig_refuses_the_drag_without_a_bearing():
+    with pytest.raises(InputError, match=r"bearing_ball_drag.*\[bearing\]"):
+        synthesize(SynthConfig(n_samples=40, effect="bearing_ball_drag"), 0)

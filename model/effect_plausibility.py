@@ -261,6 +261,12 @@ PLAUSIBLE = {
         "bearing differ this much)",
         "Harris & Kotzalas 2006 ch. 9; Palmgren 1959; SKF catalogue 'Friction'",
         bounds=_churning_bounds),
+    "bearing_ball_drag": Plausibility(
+        0.0, SKF_CORRECTION_MAX, "k = 1 is SKF's V_M drag term and the balls as spheres in "
+        "still oil give about 0.9 of it; SKF's R_s term, outside its validity in a "
+        "submerged bearing, would add 10-130x at 150-1000 cSt; the bound is that of the "
+        "correction factor on SKF's model", "SKF catalogue 'Friction'; Schiller & Naumann "
+        "1933; docs/bearing.md"),
     "seal_coulomb_friction": Plausibility(
         0.0, np.inf, "a lip seal's torque is bounded by its size: at most "
         f"{SEAL_TANGENTIAL_FORCE_N_M / 1000:g} N/mm of circumference (radial lip load "

@@ -14,7 +14,8 @@ import math
 
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
-EFFECT_NAMES = ("end_face_disc", "bearing_ball_churning", "seal_coulomb_friction",
+EFFECT_NAMES = ("end_face_disc", "bearing_ball_churning", "bearing_ball_drag",
+                "seal_coulomb_friction",
                 "oil_inertia", "thermal_lag", "taylor_vortex_onset", "shear_thinning",
                 "sensor_delay", "film_heating")
 """The keys of :data:`oilgap.model.effects.EFFECTS`, in order (``synth --effect``

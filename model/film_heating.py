@@ -154,7 +154,7 @@ def wall_z_factor(walls):
     References
     ----------
     R. Nahme, Ingenieur-Archiv 11:191-209, 1940 (the two limits); the Robin wall's
-    first-order solution in docs/thermal.md#wall-floating.
+    first-order solution in docs/thermal.md#film-strength-and-wall-floating.
     """
     if isinstance(walls, str):
         return 0.25 if wall_floating_of(walls) == 0.0 else 1.0

@@ -115,6 +115,16 @@ def wall_floating_of(walls):
     """The wall parameter w [-] of a wall condition: 0 for ``"isothermal-walls"``, 1 for
     ``"adiabatic-rotor"``, a number (float, array or CasADi symbol) in [0, 1] as it is.
 
+    Parameters
+    ----------
+    walls : str, float, array or CasADi symbol
+        A name of :data:`WALL_CONDITIONS` or w [-].
+
+    Returns
+    -------
+    float, array or CasADi symbol
+        w in [0, 1] [-].
+
     Raises
     ------
     InputError

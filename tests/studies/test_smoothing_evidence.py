@@ -71,3 +71,16 @@ def test_issue_numbers_on_the_seed_table4():
     assert pf["slope_K_W"] == pytest.approx(-0.08, abs=0.005)
     assert ev.vg1000["film_W_at_22C"] == pytest.approx(107.0, abs=0.5)
     assert ev.vg1000["none_temp_C"] == pytest.approx(47.0, abs=0.5)
+
+
+def test_cli_flag_and_seed_only():
+    from oilgap.model.errors import InputError
+    from oilgap.studies import smoothing
+    from oilgap.studies.cli import build_parser
+
+    args = build_parser().parse_args(["study", "smoothing", "--film-evidence"])
+    assert args.film_evidence is True
+    assert build_parser().parse_args(["study", "smoothing"]).film_evidence is False
+    other = rig_case("VG150", 3.0, 0.5)  # not the seed joint: no Table 4
+    with pytest.raises(InputError, match="film_evidence"):
+        smoothing.run(case=other, film_evidence=True)

@@ -130,3 +130,32 @@ def test_thermal_keys_ranges():
         FilmHeating(strength=1.2)
     with pytest.raises(InputError):
         film_factor(1.0, 1.3)
+
+
+def test_loop_film_coefficient_is_the_strength_to_first_order():
+    from oilgap.model.case_io import seed_case
+    from oilgap.model.effect_laws import film_strength_of, film_theory_coefficient
+    from oilgap.model.effects import film_temperature
+
+    # hand: delta 1 mm, R 25 mm, L 15 mm, k 0.13: 12 k 2 pi R L = 3.6757e-3 W/(K m)
+    c = film_theory_coefficient(1e-3, 0.025, 0.015)
+    assert c == pytest.approx(1e-3 / 3.6757e-3, rel=1e-4)  # 0.27206 K/W
+    assert film_theory_coefficient(1e-3, 0.025, 0.015, 1.0) == pytest.approx(4 * c)
+    assert film_strength_of(0.5 * c, c) == pytest.approx(0.5)
+    # the lumped film T_f = T + c P(T_f) at c = c_theory against the Nahme factor, on a
+    # plane laminar Couette film P = mu U^2 A/delta of the seed's VG22 (its own mu(T))
+    oil = seed_case().oil
+    gap, radius, length, k = 1e-3, 0.025, 0.015, 0.13
+    area = 2 * math.pi * radius * length
+    t0 = 313.15
+
+    def power(temp_C, u):
+        nu, _, rho = oil.properties(np.asarray(temp_C) + 273.15, 0.0)
+        return nu * rho * u * u * area / gap
+
+    for u in (1.0, 2.0):
+        nu, _, rho = oil.properties(t0, 0.0)
+        na = float(oil.temperature_slope(t0, 0.0)) * float(nu * rho) * u * u / k
+        tf = film_temperature(np.array([40.0]), lambda t, u=u: power(t, u), c)
+        lumped = 1.0 - float(power(tf, u)[0] / power(40.0, u))
+        assert lumped == pytest.approx(1.0 - float(film_factor(na, 0.0)), rel=0.05 + na)

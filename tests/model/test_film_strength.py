@@ -159,3 +159,32 @@ def test_loop_film_coefficient_is_the_strength_to_first_order():
         tf = film_temperature(np.array([40.0]), lambda t, u=u: power(t, u), c)
         lumped = 1.0 - float(power(tf, u)[0] / power(40.0, u))
         assert lumped == pytest.approx(1.0 - float(film_factor(na, 0.0)), rel=0.05 + na)
+
+
+def test_thermal_keys_round_trip_and_change_the_film_loss():
+    from dataclasses import replace
+
+    from oilgap.model.case_io import case_from_dict, seed_case
+    from oilgap.model.case_write import case_to_dict
+    from oilgap.model.defaults import case_defaults
+    from oilgap.model.joint_loss import joint_mean_power
+
+    base = replace(seed_case(), thermal=ThermalSpec(2.0, 0.5, 5e4))
+    doc = case_to_dict(base)
+    assert "film_strength" not in doc["thermal"]  # not given: not written
+    doc["thermal"].update(film_strength=0.5, wall_floating=0.25)
+    back = case_from_dict(doc)
+    assert (back.thermal.film_strength, back.thermal.wall_floating) == (0.5, 0.25)
+    assert case_to_dict(back)["thermal"]["film_strength"] == 0.5
+    assert "thermal.film_strength" in [d.field for d in case_defaults(case_from_dict(
+        case_to_dict(base)))]
+    t = base.operating.oil_temp_C
+    p_none, p_full = (joint_mean_power(base, t, m) for m in ("none", "film"))
+    half = joint_mean_power(back, t, "film")
+    zero = joint_mean_power(replace(base, thermal=replace(base.thermal, film_strength=0.0)),
+                            t, "film")
+    assert zero == pytest.approx(p_none, rel=1e-9)
+    assert p_full < half < p_none
+    doc["thermal"]["film_strength"] = 1.5
+    with pytest.raises(InputError, match="film_strength"):
+        case_from_dict(doc)

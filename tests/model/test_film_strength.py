@@ -188,3 +188,38 @@ def test_thermal_keys_round_trip_and_change_the_film_loss():
     doc["thermal"]["film_strength"] = 1.5
     with pytest.raises(InputError, match="film_strength"):
         case_from_dict(doc)
+
+
+def test_constant_b_uncertainty_on_the_seed_peak():
+    # docs/thermal.md#evidence: with VG22's own viscosity law (not exponential) the film
+    # at the seed's rated peak (2 degC, 3000 m, 3000 rpm on R = 25.4 mm) has Phi 2.7 %
+    # above the constant-b closed form. Second method: collocation (solve_bvp) of
+    # theta'' = -Na Phi^2 mu0/mu(T), Phi int mu0/mu = 1, theta(0) = theta(1) = 0.
+    from scipy.integrate import solve_bvp
+
+    from oilgap.model.case_io import seed_case
+    from oilgap.model.film_heating import nahme_number
+
+    oil = seed_case().oil
+    p = 1025.0 * 9.80665 * 3000.0  # gauge pressure at 3000 m, rho g h
+    t0 = 275.15
+    nu, _, rho = oil.properties(t0, p)
+    mu0, b = float(nu * rho), float(oil.temperature_slope(t0, p))
+    na = float(nahme_number(b, mu0, 3000 * 2 * math.pi / 60 * 0.0254, 0.13))
+
+    def ratio(theta):  # mu(T)/mu0 at T = T0 + theta/b
+        n, _, r = oil.properties(t0 + np.asarray(theta) / b, p)
+        return n * r / mu0
+
+    def f(x, y, q):
+        return np.vstack([y[1], -na * q[0] ** 2 / ratio(y[0]), 1.0 / ratio(y[0])])
+
+    def bc(ya, yb, q):
+        return np.array([ya[0], yb[0], ya[2], q[0] * yb[2] - 1.0])
+
+    x = np.linspace(0.0, 1.0, 201)
+    y = np.vstack([np.zeros_like(x), np.zeros_like(x), x])
+    sol = solve_bvp(f, bc, x, y, p=[0.8], tol=1e-9, max_nodes=100000)
+    assert sol.success
+    assert 9.0 < na < 9.4
+    assert sol.p[0] / phi_closed(na, "iso") - 1.0 == pytest.approx(0.027, abs=0.003)

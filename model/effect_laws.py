@@ -56,10 +56,6 @@ References
 .. [13] F. Wendt, "Turbulente Strömungen zwischen zwei rotierenden konaxialen
    Zylindern", Ing.-Arch. 4:577-595, 1933 (torque ~ Re^1.5 well above onset
    against the laminar ~ Re: an excess ~ (Ta/Ta_c)^0.5 - 1 in the seed's Ta).
-.. [14] R. Nahme, "Beitraege zur hydrodynamischen Theorie der Lagerreibung",
-   Ingenieur-Archiv 11:191-209, 1940 (the heated film, :mod:`oilgap.model.film_heating`).
-.. [15] R. B. Bird, W. E. Stewart, E. N. Lightfoot, *Transport Phenomena*, 2nd ed.,
-   Wiley 2002, sec. 10.4 (viscous heating of a Couette film).
 """
 
 from __future__ import annotations
@@ -69,7 +65,6 @@ from scipy.signal import lfilter
 
 from . import _math as m
 from .bearing_laws import PALMGREN_MIN_NU_N, palmgren_viscous_moment  # noqa: F401 (re-export)
-from .film_heating import MINERAL_OIL_CONDUCTIVITY_W_MK
 from .taylor_couette import CRITICAL_TAYLOR_NUMBER
 from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
 
@@ -546,61 +541,3 @@ def sensor_delay_power(dpower_dt_W_s, delay_s):
     First-order expansion of a dead time (Taylor series in d).
     """
     return -delay_s * dpower_dt_W_s
-
-
-def film_theory_coefficient(gap_m, radius_m, length_m, wall_floating=0.0,
-                            conductivity_W_mK=MINERAL_OIL_CONDUCTIVITY_W_MK):
-    """The loop's film coefficient c [K/W] that the smooth-film theory gives at strength 1.
-
-    The loop's ``film_heating`` effect lumps the film at ``T_film = T + c P(T_film)``.
-    Its first-order loss change ``c P dP/dT = -b c P^2`` (laminar Couette, P ~ mu)
-    equals the Nahme-Griffith film's first-order loss ``-(1 - Phi) P = -P Na (1 + 3w)/12``
-    (:mod:`oilgap.model.film_heating`, z/3) when ``c = delta (1 + 3w)/(12 k A)``, A =
-    2 pi R L the wetted area: Na = b mu U^2/k and P = mu U^2 A/delta. So a fitted c is the
-    film strength ``s = c / film_theory_coefficient(...)`` (:func:`film_strength_of`) of
-    the clearance, to first order in Na.
-
-    Parameters
-    ----------
-    gap_m, radius_m, length_m : float or array
-        Clearance delta, rotor radius R and length L [m].
-    wall_floating : float
-        Wall parameter w in [0, 1] (0 isothermal walls, 1 insulated rotor) [-].
-    conductivity_W_mK : float
-        Oil thermal conductivity k [W/(m K)] (default 0.13, mineral oil).
-
-    Returns
-    -------
-    float or array
-        c at s = 1 [K/W].
-
-    References
-    ----------
-    Nahme [14]; the mean rise of uniform dissipation P delta/(12 k A), Bird, Stewart &
-    Lightfoot [15].
-    """
-    area = 2.0 * np.pi * radius_m * length_m
-    return gap_m * (1.0 + 3.0 * wall_floating) / (12.0 * conductivity_W_mK * area)
-
-
-def film_strength_of(coefficient_K_W, theory_K_W):
-    """Film strength s [-] of a fitted loop coefficient c: ``c / c_theory``.
-
-    Parameters
-    ----------
-    coefficient_K_W : float or array
-        Fitted ``film_heating`` coefficient c (or an end of its interval) [K/W].
-    theory_K_W : float
-        :func:`film_theory_coefficient` of the clearance [K/W].
-
-    Returns
-    -------
-    float or array
-        s [-] (1: the smooth-film theory; the seed's Table 4 does not support s = 1,
-        docs/thermal.md#evidence).
-
-    References
-    ----------
-    Nahme [14] (first-order equivalence, :func:`film_theory_coefficient`).
-    """
-    return coefficient_K_W / theory_K_W

@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .effect_laws import film_strength_of, film_theory_coefficient
+from .film_heating import film_strength_of, film_theory_coefficient
 from .regions import JointGeometry
 
 FILM_CONDUCTIVITY_MIN_W_MK = 0.1
@@ -82,7 +82,7 @@ class RigFacts:
     film_theory_K_W : float
         The ``film_heating`` coefficient of the smooth-film theory (strength 1,
         isothermal walls, k = 0.13 W/(m K)) on the rotor-stator clearance [K/W]
-        (:func:`~oilgap.model.effect_laws.film_theory_coefficient`; nan: unknown): a
+        (:func:`~oilgap.model.film_heating.film_theory_coefficient`; nan: unknown): a
         fitted c is the film strength ``s = c / film_theory_K_W``.
     """
 

@@ -371,3 +371,61 @@ def film_time_constant_s(gap_m, diffusivity_m2_s=MINERAL_OIL_DIFFUSIVITY_M2_S,
         w = wall_floating_of(walls)
         factor = (1.0 + w) * (1.0 + w)
     return factor * gap_m * gap_m / (math.pi ** 2 * diffusivity_m2_s)
+
+
+def film_theory_coefficient(gap_m, radius_m, length_m, wall_floating=0.0,
+                            conductivity_W_mK=MINERAL_OIL_CONDUCTIVITY_W_MK):
+    """The loop's film coefficient c [K/W] that the smooth-film theory gives at strength 1.
+
+    The loop's ``film_heating`` effect lumps the film at ``T_film = T + c P(T_film)``.
+    Its first-order loss change ``c P dP/dT = -b c P^2`` (laminar Couette, P ~ mu)
+    equals the Nahme-Griffith film's first-order loss ``-(1 - Phi) P = -P Na (1 + 3w)/12``
+    (:func:`film_factor`, z/3) when ``c = delta (1 + 3w)/(12 k A)``, A =
+    2 pi R L the wetted area: Na = b mu U^2/k and P = mu U^2 A/delta. So a fitted c is the
+    film strength ``s = c / film_theory_coefficient(...)`` (:func:`film_strength_of`) of
+    the clearance, to first order in Na.
+
+    Parameters
+    ----------
+    gap_m, radius_m, length_m : float or array
+        Clearance delta, rotor radius R and length L [m].
+    wall_floating : float
+        Wall parameter w in [0, 1] (0 isothermal walls, 1 insulated rotor) [-].
+    conductivity_W_mK : float
+        Oil thermal conductivity k [W/(m K)] (default 0.13, mineral oil).
+
+    Returns
+    -------
+    float or array
+        c at s = 1 [K/W].
+
+    References
+    ----------
+    Nahme [1]_; the mean rise of uniform dissipation P delta/(12 k A), Bird, Stewart &
+    Lightfoot [4]_.
+    """
+    area = 2.0 * math.pi * radius_m * length_m
+    return gap_m * (1.0 + 3.0 * wall_floating) / (12.0 * conductivity_W_mK * area)
+
+
+def film_strength_of(coefficient_K_W, theory_K_W):
+    """Film strength s [-] of a fitted loop coefficient c: ``c / c_theory``.
+
+    Parameters
+    ----------
+    coefficient_K_W : float or array
+        Fitted ``film_heating`` coefficient c (or an end of its interval) [K/W].
+    theory_K_W : float
+        :func:`film_theory_coefficient` of the clearance [K/W].
+
+    Returns
+    -------
+    float or array
+        s [-] (1: the smooth-film theory; the seed's Table 4 does not support s = 1,
+        docs/thermal.md#evidence).
+
+    References
+    ----------
+    Nahme [1]_ (first-order equivalence, :func:`film_theory_coefficient`).
+    """
+    return coefficient_K_W / theory_K_W

@@ -17,8 +17,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from oilgap.model.effect_laws import film_theory_coefficient
 from oilgap.model.effects import EFFECTS
+from oilgap.model.film_heating import film_theory_coefficient
 from oilgap.model.measured_data import Samples
 from oilgap.model.skin_friction import FrictionLaw
 
@@ -52,7 +52,7 @@ class EffectResult:
     shape : dict or None
         Chosen shape parameter (Taylor-vortex onset: ``{"exponent": m}`` [-]); for
         ``film_heating`` the film strength ``s = c/c_theory`` and its interval [-]
-        (:func:`oilgap.model.effect_laws.film_theory_coefficient`, docs/thermal.md#evidence).
+        (:func:`oilgap.model.film_heating.film_theory_coefficient`, docs/thermal.md#evidence).
     """
 
     name: str

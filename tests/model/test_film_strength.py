@@ -134,8 +134,8 @@ def test_thermal_keys_ranges():
 
 def test_loop_film_coefficient_is_the_strength_to_first_order():
     from oilgap.model.case_io import seed_case
-    from oilgap.model.effect_laws import film_strength_of, film_theory_coefficient
     from oilgap.model.effects import film_temperature
+    from oilgap.model.film_heating import film_strength_of, film_theory_coefficient
 
     # hand: delta 1 mm, R 25 mm, L 15 mm, k 0.13: 12 k 2 pi R L = 3.6757e-3 W/(K m)
     c = film_theory_coefficient(1e-3, 0.025, 0.015)

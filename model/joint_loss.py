@@ -145,7 +145,9 @@ def case_film(case: DesignCase) -> FilmHeating:
         Walls, k [W/(m K)], alpha [m^2/s], heating spectrum [rad/s], [-].
     """
     cache = case.duty_cycle.__dict__.setdefault("_film_cache", {})
-    key = (case.thermal.walls, case.thermal.conductivity_W_mK) if case.thermal else None
+    th = case.thermal
+    key = ((th.walls, th.conductivity_W_mK, th.film_strength, th.wall_floating) if th
+           else None)
     if key not in cache:
         cache[key] = film_heating_for(case.duty_cycle, case.thermal)
     return cache[key]

@@ -225,6 +225,9 @@ def _add_smoothing(ss) -> None:
     s.add_argument("--plateau-tol", type=finite_float, default=0.05,
                    help="loss counts as levelled off within this fraction of P(T=1) "
                    "(default 0.05)")
+    s.add_argument("--film-evidence", action="store_true",
+                   help="seed rig: also fit the film strength s in [0, 1] with the rig's "
+                   "heat balance T = T0 + R P (docs/thermal.md#evidence)")
     s.set_defaults(command="study smoothing")
 
 

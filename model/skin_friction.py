@@ -16,7 +16,8 @@ law (Eq. 7) and the groove-roughness law (Eq. 8):
   762; the break at 1e4 is one, at 9996), so between 55.9 and 64 and between 500
   and 762 the default branches form is the larger branch, up to 5.6 % and 4.3 %
   above Eq. 6; elsewhere it is Eq. 6 within the smoothing (at most
-  ``BRANCHES_WIDTH ln 2`` = 1.4 % at a crossing, < 0.1 % beyond +-20 % of Re).
+  ``BRANCHES_WIDTH ln 2`` = 1.4 % at a crossing, < 0.1 % where the next branch is
+  6 % or more lower: beyond a factor 1.25 in Re from 55.9 and 9996, 1.9 from 762).
 * laminar law ``"couette"`` (default): ``C_m = max(C_m,Couette, C_m,Eq.6)`` with
   the exact circular-Couette coefficient ``8 (1+x)^2 / ((2+x) Re)``. No flow
   between the cylinders dissipates less than laminar Couette flow (Helmholtz's

@@ -77,6 +77,13 @@ def error_table(est: LoopEstimator) -> str:
 
 def _base_text(est: LoopEstimator, long: bool = False) -> str:
     """The base model in words."""
+    if est.spec_.base == "branches":
+        return ("the smooth maximum of Eq. 6's branches, C_k (delta/R)^alpha_k Re^beta_k, x "
+                "T^gamma" if not long else
+                f"the smooth maximum of Eq. 6's four branches (laminar law "
+                f"`{est.spec_.laminar_law}`), each C_k (delta/R)^alpha_k Re^beta_k with only "
+                "the C_k, alpha_k and beta_k the data identify freed (the others held at "
+                "their published values, see the identifiability statements), times T^gamma")
     if est.spec_.base == "eq6":
         return ("the smooth Eq. 6 x scale x T^gamma" if not long else
                 f"the design tool's Eq. 6 in its smooth form (laminar law "

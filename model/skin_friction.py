@@ -14,8 +14,8 @@ law (Eq. 7) and the groove-roughness law (Eq. 8):
   Its defaults are the four branches of Eq. 6. Eq. 6's published breaks at 64
   and 500 are not crossings of its branches (the branches cross at Re = 55.9 and
   762; the break at 1e4 is one, at 9996), so between 55.9 and 64 and between 500
-  and 762 the default branches form is the larger branch, up to 5.6 % and 4.3 %
-  above Eq. 6; elsewhere it is Eq. 6 within the smoothing (at most
+  and 762 the default branches form is the larger branch, up to 5.7 % and 4.5 %
+  above Eq. 6 (smoothing included); elsewhere it is Eq. 6 within the smoothing (at most
   ``BRANCHES_WIDTH ln 2`` = 1.4 % at a crossing, < 0.1 % where the next branch is
   6 % or more lower: beyond a factor 1.25 in Re from 55.9 and 9996, 1.9 from 762).
 * laminar law ``"couette"`` (default): ``C_m = max(C_m,Couette, C_m,Eq.6)`` with
@@ -369,7 +369,7 @@ def branches_cm(reynolds, gap_ratio, C=BRANCH_C, alpha=BRANCH_ALPHA, beta=BRANCH
     branch (seed Eq. 7) has its own gap exponent, and a regime ends where the next
     branch overtakes it, so the boundaries follow from the branches (no fixed Re
     breaks). With the defaults it is Eq. 6 except between Re 55.9 and 64 (up to
-    +5.6 %) and 500 and 762 (up to +4.3 %), where Eq. 6's breaks are not crossings
+    +5.7 %) and 500 and 762 (up to +4.5 %), where Eq. 6's breaks are not crossings
     of its branches, and within ``width ln 2`` at the crossings.
 
     Parameters

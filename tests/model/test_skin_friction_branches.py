@@ -73,7 +73,7 @@ def test_deviation_from_eq6_where_its_breaks_are_not_crossings():
     re = np.logspace(0, 6, 4001)
     ratio = moment_coefficient(re, x, BB) / np.array([eq6_by_hand(r, x) for r in re])
     assert ratio.min() > 1 - 1e-12           # never below Eq. 6 (a max of its branches)
-    assert ratio.max() < 1.057
+    assert ratio.max() < 1.058   # 5.5 % + the smoothing (measured 5.68 %)
     # within 0.1 % wherever the next branch is 6 % (0.06 in ln C_m) or more below the
     # largest: width * exp(-0.06 / width) = 0.02 * e^-3 = 0.001. The slopes differ by 0.4,
     # 0.1 and 0.3 at the crossings 55.9, 762 and 9996: a factor exp(0.06 / 0.4) = 1.16,

@@ -162,6 +162,12 @@ def identifiability(est: LoopEstimator) -> dict:
     return out
 
 
+def _range_text(ranges: dict, k: str) -> str:
+    """A parameter's physical range as text; a branch's alpha_k, beta_k take alpha's, beta's."""
+    r = ranges.get(k, ranges.get(k.rstrip("0123456789")) if k[-1:].isdigit() else None)
+    return f"{r['range'][0]:g} .. {r['range'][1]:g}" if r else "-"
+
+
 def _ci_text(ci) -> str:
     if not isinstance(ci, list):
         return " (fixed)"
@@ -347,8 +353,7 @@ def _md_calibration(est: LoopEstimator) -> list[str]:
                                                   if k in not_identifiable(est) else
                                                   f"{_num(ci[k][0], 5)} .. {_num(ci[k][1], 5)}")
                                                  if isinstance(ci[k], list) else "fixed"),
-                             (f"{ranges[k]['range'][0]:g} .. {ranges[k]['range'][1]:g}"
-                              if k in ranges else "-"),
+                             _range_text(ranges, k),
                              identifiability(est).get(k, "")]
                             for k in c]), ""]
     parts += [f"Possible unit mistake: {h}." for h in unit_hints(est)]

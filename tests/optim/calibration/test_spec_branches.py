@@ -15,8 +15,9 @@ from oilgap.optim.calibration import LoopEstimator, decide_spec
 from oilgap.optim.calibration.spec import BRANCH_PARAMS
 from oilgap.studies.synth import SynthConfig, synthesize
 
-PUBLISHED = {"scale": 1.0, "C1": 10.0, "C2": 2.0, "C3": 1.03, "C4": 0.065, **{f"alpha{k}": 0.3 for k in
-             range(1, 5)}, "beta1": -1.0, "beta2": -0.6, "beta3": -0.5, "beta4": -0.2}
+PUBLISHED = {"scale": 1.0, "C1": 10.0, "C2": 2.0, "C3": 1.03, "C4": 0.065,
+             **{f"alpha{k}": 0.3 for k in range(1, 5)},
+             "beta1": -1.0, "beta2": -0.6, "beta3": -0.5, "beta4": -0.2}
 
 
 def test_one_gap_frees_no_alpha_and_says_why(samples_factory):

@@ -11,11 +11,13 @@ two cylinders (outer at rest) at radius ratios eta = 0.68, 0.85 and 0.935 and fi
 with G = T / (rho nu^2 L) (T the torque on a length L) and Re = omega r1 d / nu, the
 seed's Couette Reynolds number (Eq. 4). These are the coefficients as commonly quoted
 from Wendt (Lathrop, Fineberg & Swinney, Phys. Rev. A 46:6390, 1992; Dubrulle et al.,
-Phys. Fluids 17:095103, 2005); the original was not at hand. Two checks on the quote:
-the turbulent exponent is 1.7, not 1.5 (with 1.5 in both ranges the two laws would
-differ 6.3-fold at Re = 1e4; with 1.7 they meet within 0.1 %: 1.45e6 against
-0.23 * 1e4^1.7 = 1.4512e6), and Donnelly & Simon (J. Fluid Mech. 7:401, 1960), fitting
-Wendt's and Taylor's data, give G ~ Omega^1.51 well above onset.
+Phys. Fluids 17:095103, 2005), written from that quotation; neither the original nor
+those papers' text could be retrieved. Two checks on the quote: the turbulent exponent
+is 1.7, not 1.5 (with 1.5 in both ranges the two laws would differ 6.3-fold at Re = 1e4;
+with 1.7 they meet within 0.1 %: 1.45e6 against 0.23 * 1e4^1.7 = 1.4512e6), and the
+abstract of Donnelly & Simon (J. Fluid Mech. 7:401, 1960; retrieved from
+scilit.net/publications/e3f053d5443a0850dd75dda5e6998366), fitting Wendt's, Taylor's and
+Donnelly's data, gives G ~ Omega^1.51 well above onset and a gap power of about 0.31.
 
 Conversion to the seed's C_m (Eq. 5, ``P = T omega = 0.5 pi C_m rho omega^3 R^4 L``, see
 ``model/viscous_loss.py``): ``C_m = 2 T / (pi rho omega^2 R^4 L) = (2/pi) G nu^2 /

@@ -43,7 +43,7 @@ from .errors import InputError, OilgapWarning, check_finite, check_range
 from .fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
 from .inputs import cell_for_message, read_input_text
 from .oils import Oil, get_oil, read_oils_csv
-from .skin_friction import FrictionLaw, check_friction_ranges
+from .skin_friction import BRANCH_KEYS, FrictionLaw, check_friction_ranges
 from .units import MM_TO_M, celsius_to_kelvin
 
 MAX_CASE_BYTES = 16 * 2**20
@@ -61,7 +61,7 @@ _TABLES = {
     "operating": {"depth_m", "oil_temp_C"},
     "duty_cycle": {"kind", "peak_speed_rpm", "frequency_hz", "duration_s", "sample_interval_s",
                    "csv"},
-    "friction": {"form", "laminar_law", "gamma", "scale", "C", "alpha", "beta"},
+    "friction": {"form", "laminar_law", "gamma", "scale", "C", "alpha", "beta", *BRANCH_KEYS},
     "motor": {"remanence_T", "magnet_thickness_mm", "recoil_permeability", "slot_count",
               "slot_opening_mm", "saturation_factor", "electric_loading_A_per_m",
               "winding_factor", "shaft_bore_radius_mm", "rotor_density_kg_m3",
@@ -154,9 +154,8 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     duty = _duty_cycle_from(dict(doc.get("duty_cycle", {})), base_dir)
 
     fd = doc.get("friction", {})
-    friction = check_friction_ranges(FrictionLaw(**{
-        k: (str(v) if k in ("form", "laminar_law") else check_finite(k, v, "friction"))
-        for k, v in fd.items()}))
+    friction = check_friction_ranges(FrictionLaw(**{k: _friction_value(k, v, fd)
+                                                    for k, v in fd.items()}))
     motor = _motor_from(doc.get("motor", {}))
     bounds = _bounds_from(doc, region1)
     mission = _mission_from(doc.get("mission", []))
@@ -168,6 +167,21 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
                       tuple(mission), oils_csv, thermal, bearing_from_doc(doc), gamma_source,
                       reader_defaults(doc, bounds, motor, thermal=thermal))
+
+
+def _friction_value(key: str, value, fd: dict):
+    """One ``[friction]`` value checked: the branch arrays element by element (form
+    ``"branches"`` only), the others as text or a finite number."""
+    if key in ("form", "laminar_law"):
+        return str(value)
+    if key not in BRANCH_KEYS:
+        return check_finite(key, value, "friction")
+    if fd.get("form") != "branches":
+        raise InputError(key, value, 'applies to form = "branches" only', "friction")
+    if not isinstance(value, list) or not value:
+        raise InputError(key, value, "an array of numbers, one per branch (e.g. four for "
+                         "the branches of Eq. 6)", "friction")
+    return tuple(check_finite(f"{key}[{i + 1}]", v, "friction") for i, v in enumerate(value))
 
 
 def _gamma_default(fd: dict, friction: FrictionLaw, region1: RotorStatorClearance

@@ -32,7 +32,7 @@ from .case_bearing import bearing_default_notes, bearing_defaults
 from .duty_cycle import DutyCycle
 from .motor import motor_torque
 from .serialize import round_sig
-from .skin_friction import FrictionLaw
+from .skin_friction import BRANCH_KEYS, FrictionLaw
 from .units import MM_TO_M
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
@@ -168,6 +168,11 @@ def reader_defaults(doc: Mapping[str, Any], bounds: DesignBounds, motor: Motor,
     for k in ("form", "laminar_law"):
         if k not in fd:
             out.append(Default(f"friction.{k}", getattr(FrictionLaw(), k), "", "default"))
+    if fd.get("form") == "branches":
+        for k in BRANCH_KEYS:
+            if k not in fd:
+                out.append(Default(f"friction.{k}", list(getattr(FrictionLaw(), k)), "-",
+                                   "Eq. 6's four branches (Bilgen & Boulos 1973)"))
     md = doc.get("motor", {})
     for f in fields(Motor):
         key = MOTOR_FIELD_TO_KEY.get(f.name, f.name)

@@ -8,6 +8,16 @@ law (Eq. 7) and the groove-roughness law (Eq. 8):
   in ln Re (width :data:`SMOOTH_WIDTH`), twice differentiable everywhere, for
   the optimizer. Outside a +-10 % band of Re around each break it is within
   3 % of the exact form (tested in ``tests/model/test_skin_friction.py``).
+* ``branches_cm`` (form ``"branches"``): a smooth maximum (log-sum-exp in ln C_m,
+  width :data:`BRANCHES_WIDTH`) of power-law branches ``C_k x^alpha_k Re^beta_k``,
+  each with its own gap exponent; the regime boundaries are where branches cross.
+  Its defaults are the four branches of Eq. 6. Eq. 6's published breaks at 64
+  and 500 are not crossings of its branches (the branches cross at Re = 55.9 and
+  762; the break at 1e4 is one, at 9996), so between 55.9 and 64 and between 500
+  and 762 the default branches form is the larger branch, up to 5.7 % and 4.5 %
+  above Eq. 6 (smoothing included); elsewhere it is Eq. 6 within the smoothing (at most
+  ``BRANCHES_WIDTH ln 2`` = 1.4 % at a crossing, < 0.1 % where the next branch is
+  6 % or more lower: beyond a factor 1.25 in Re from 55.9 and 9996, 1.9 from 762).
 * laminar law ``"couette"`` (default): ``C_m = max(C_m,Couette, C_m,Eq.6)`` with
   the exact circular-Couette coefficient ``8 (1+x)^2 / ((2+x) Re)``. No flow
   between the cylinders dissipates less than laminar Couette flow (Helmholtz's
@@ -48,6 +58,24 @@ BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2
 BILGEN_BOULOS_ALPHA = 0.3
 """Gap-ratio exponent alpha of every branch of Eq. 6 [1]."""
 
+BRANCH_C = tuple(c for c, _ in BILGEN_BOULOS_BRANCHES)
+"""Default C_k of the ``"branches"`` form: Eq. 6's (10, 2.00, 1.03, 0.065) [1]."""
+
+BRANCH_ALPHA = (BILGEN_BOULOS_ALPHA,) * len(BILGEN_BOULOS_BRANCHES)
+"""Default gap exponents alpha_k of the ``"branches"`` form: 0.3 each, as in Eq. 6 [1]."""
+
+BRANCH_BETA = tuple(b for _, b in BILGEN_BOULOS_BRANCHES)
+"""Default Reynolds exponents beta_k of the ``"branches"`` form: Eq. 6's (-1, -0.6, -0.5,
+-0.2) [1]."""
+
+BRANCH_KEYS = ("branch_C", "branch_alpha", "branch_beta")
+"""The ``[friction]`` keys (arrays, one number per branch) of the ``"branches"`` form."""
+
+BRANCHES_WIDTH = 0.02
+"""Width in ln C_m of the log-sum-exp maximum of the ``"branches"`` form [-]: it exceeds the
+largest branch by at most ``width ln n`` (1.4 % where two branches cross) and by
+``width exp(-d/width)`` at a distance d in ln C_m from the next one."""
+
 SMOOTH_WIDTH = 0.025
 """Width in ln Re of the logistic blends of the smooth form [-]."""
 
@@ -57,7 +85,7 @@ SMOOTH_MAX_WIDTH = 0.02
 RE_FLOOR = 1.0e-12
 """Reynolds numbers below this are evaluated at it (power there is ~0 anyway)."""
 
-FORMS = ("bilgen-boulos", "smooth", "power-law")
+FORMS = ("bilgen-boulos", "smooth", "power-law", "branches")
 LAMINAR_LAWS = ("couette", "bilgen-boulos")
 
 FRICTION_RANGES = {
@@ -300,16 +328,95 @@ def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
     return m.exp(ln_cc + m.smooth_relu(ln_bb - ln_cc, max_width))
 
 
+def log_sum_exp_max(terms, width):
+    """Smooth maximum ``width ln sum_k exp(t_k / width)`` of a list of terms [-].
+
+    Evaluated shifted by the largest term so that it never overflows; the shift
+    cancels exactly, so the value and its derivatives (CasADi's too) are those of
+    the unshifted expression. It exceeds ``max_k t_k`` by at most ``width ln n``.
+
+    Parameters
+    ----------
+    terms : list of float, array or CasADi symbol
+        The terms t_k (here ln C_m of each branch) [-].
+    width : float
+        Smoothing width, in the unit of the terms [-].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        The smooth maximum [-].
+
+    References
+    ----------
+    S. Boyd, L. Vandenberghe, *Convex Optimization*, Cambridge 2004, sec. 3.1.5
+    (log-sum-exp as a smooth maximum).
+    """
+    top = terms[0]
+    for t in terms[1:]:
+        top = m.fmax(top, t)
+    total = 0.0
+    for t in terms:
+        total = total + m.exp((t - top) / width)
+    return top + width * m.log(total)
+
+
+def branches_cm(reynolds, gap_ratio, C=BRANCH_C, alpha=BRANCH_ALPHA, beta=BRANCH_BETA,
+                width=BRANCHES_WIDTH, floor=None):
+    """Smooth maximum of power-law branches ``C_k x^alpha_k Re^beta_k`` [-].
+
+    ``ln C_m = LSE_width(ln C_k + alpha_k ln x + beta_k ln Re [, ln floor])``: each
+    branch (seed Eq. 7) has its own gap exponent, and a regime ends where the next
+    branch overtakes it, so the boundaries follow from the branches (no fixed Re
+    breaks). With the defaults it is Eq. 6 except between Re 55.9 and 64 (up to
+    +5.7 %) and 500 and 762 (up to +4.5 %), where Eq. 6's breaks are not crossings
+    of its branches, and within ``width ln 2`` at the crossings.
+
+    Parameters
+    ----------
+    reynolds : float, array or CasADi symbol
+        Couette Reynolds number [-] (> 0).
+    gap_ratio : float, array or CasADi symbol
+        x = delta / R [-].
+    C, alpha, beta : sequence of float
+        Coefficients C_k [-] (> 0), gap exponents alpha_k [-] and Reynolds
+        exponents beta_k [-], one per branch (defaults: the four of Eq. 6).
+    width : float
+        Width of the maximum in ln C_m [-] (:data:`BRANCHES_WIDTH`).
+    floor : float, array or CasADi symbol, optional
+        A lower bound taken into the maximum as one more term (the laminar Couette
+        coefficient) [-].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Moment coefficient C_m [-].
+
+    References
+    ----------
+    Bilgen & Boulos [1] (the default branches);
+    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
+    Deep-Sea Electric Manipulator, Eqs. 6-7) [3].
+    """
+    ln_re = m.log(reynolds)
+    ln_x = m.log(gap_ratio)
+    terms = [math.log(c) + a * ln_x + b * ln_re for c, a, b in zip(C, alpha, beta, strict=True)]
+    if floor is not None:
+        terms.append(m.log(floor))
+    return m.exp(log_sum_exp_max(terms, width))
+
+
 @dataclass(frozen=True)
 class FrictionLaw:
     """How C_m is computed.
 
     Attributes
     ----------
-    form : {"bilgen-boulos", "smooth", "power-law"}
-        Eq. 6 exactly, its smooth form, or one power law (Eq. 7) with C, alpha, beta
+    form : {"bilgen-boulos", "smooth", "power-law", "branches"}
+        Eq. 6 exactly, its smooth form, one power law (Eq. 7) with C, alpha, beta
         (equations of the seed paper, *Modeling and Optimization of Compensating Oil
-        Viscous Power for a Deep-Sea Electric Manipulator*).
+        Viscous Power for a Deep-Sea Electric Manipulator*), or the smooth maximum of
+        branches with their own C_k, alpha_k, beta_k (:func:`branches_cm`).
     laminar_law : {"couette", "bilgen-boulos"}
         ``"couette"``: Eq. 6 bounded below by the exact laminar Couette law;
         ``"bilgen-boulos"``: Eq. 6 as published (both Eq. 6 forms).
@@ -321,20 +428,28 @@ class FrictionLaw:
         Coefficient [-] and exponents [-] of the power-law form (default: the Eq. 6
         laminar branch); alpha is also the gap-ratio exponent of the Eq. 6 forms
         (0.3 as published).
+    branch_C, branch_alpha, branch_beta : tuple of float
+        C_k [-], alpha_k [-] and beta_k [-] of the ``"branches"`` form, one per branch,
+        of equal length (default: the four branches of Eq. 6, alpha_k = 0.3); the
+        scale and T^gamma apply to it as to Eq. 6.
 
     Raises
     ------
     InputError
-        Unknown form or laminar law, non-finite exponents, C or scale <= 0.
+        Unknown form or laminar law, non-finite exponents, C, C_k or scale <= 0,
+        branch arrays empty or of different lengths.
     """
 
-    form: Literal["bilgen-boulos", "smooth", "power-law"] = "bilgen-boulos"
+    form: Literal["bilgen-boulos", "smooth", "power-law", "branches"] = "bilgen-boulos"
     laminar_law: Literal["couette", "bilgen-boulos"] = "couette"
     gamma: float = 0.0
     scale: float = 1.0
     C: float = 10.0
     alpha: float = 0.3
     beta: float = -1.0
+    branch_C: tuple[float, ...] = BRANCH_C
+    branch_alpha: tuple[float, ...] = BRANCH_ALPHA
+    branch_beta: tuple[float, ...] = BRANCH_BETA
 
     def __post_init__(self):
         where = "friction"
@@ -347,6 +462,21 @@ class FrictionLaw:
             check_finite(f, getattr(self, f), where)
         check_positive("scale", self.scale, where)
         check_positive("C", self.C, where)
+        self._check_branches(where)
+
+    def _check_branches(self, where: str) -> None:
+        n = len(self.branch_C)
+        for key in BRANCH_KEYS:
+            vals = getattr(self, key)
+            if isinstance(vals, (str, bytes)) or not hasattr(vals, "__len__"):
+                raise InputError(key, vals, "an array of numbers, one per branch", where)
+            if len(vals) == 0 or len(vals) != n:
+                raise InputError(key, list(vals), f"{n or 'one or more'} numbers (branch_C, "
+                                 "branch_alpha and branch_beta have one per branch)", where)
+            object.__setattr__(self, key, tuple(float(check_finite(key, v, where))
+                                                for v in vals))
+        for c in self.branch_C:
+            check_positive("branch_C", c, where)
 
     def smooth(self) -> FrictionLaw:
         """The same law with the smooth form of Eq. 6 (power law stays as it is).
@@ -354,9 +484,10 @@ class FrictionLaw:
         Returns
         -------
         FrictionLaw
-            ``form = "smooth"`` unless the form is ``"power-law"``; C_m stays [-].
+            ``form = "smooth"`` unless the form is ``"power-law"`` or ``"branches"``
+            (smooth already); C_m stays [-].
         """
-        return self if self.form == "power-law" else replace(self, form="smooth")
+        return self if self.form in ("power-law", "branches") else replace(self, form="smooth")
 
 
 def check_friction_ranges(law: FrictionLaw, where: str = "friction") -> FrictionLaw:
@@ -385,6 +516,11 @@ def check_friction_ranges(law: FrictionLaw, where: str = "friction") -> Friction
     """
     for name, (lo, hi, reason) in FRICTION_RANGES.items():
         check_physical(name, getattr(law, name), lo, hi, reason, where)
+    if law.form == "branches":
+        for key, name in zip(BRANCH_KEYS, ("C", "alpha", "beta"), strict=True):
+            lo, hi, reason = FRICTION_RANGES[name]
+            for k, v in enumerate(getattr(law, key)):
+                check_physical(f"{key}[{k + 1}]", v, lo, hi, reason, where)
     return law
 
 
@@ -405,7 +541,8 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
     Returns
     -------
     float, array or CasADi expression
-        ``scale * C_m,form(Re, x) * T^gamma`` [-] (no scale for the power law).
+        ``scale * C_m,form(Re, x) * T^gamma`` [-] (no scale for the power law; the
+        ``"branches"`` form takes the Couette law into its smooth maximum).
 
     References
     ----------
@@ -415,6 +552,11 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
     re = m.fmax(reynolds, RE_FLOOR)
     if law.form == "power-law":
         base = power_law_cm(re, gap_ratio, law.C, law.alpha, law.beta)
+    elif law.form == "branches":
+        floor = (couette_moment_coefficient(re, gap_ratio) if law.laminar_law == "couette"
+                 else None)
+        base = law.scale * branches_cm(re, gap_ratio, law.branch_C, law.branch_alpha,
+                                       law.branch_beta, floor=floor)
     elif law.laminar_law == "couette":
         base = law.scale * (couette_law_cm_smooth(re, gap_ratio, alpha=law.alpha)
                             if law.form == "smooth" else couette_law_cm(re, gap_ratio, law.alpha))

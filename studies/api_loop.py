@@ -143,7 +143,7 @@ class Loop(LoopEstimator, ResultView):
         Library effects to consider (default: all).
     margin : float
         Held-out RMSE fall an effect must bring [-].
-    base : {"eq6", "power-law"}
+    base : {"eq6", "power-law", "branches"}
     cv_by : str
         Column whose values are the groups of leave-one-group-out validation.
     **options

@@ -77,6 +77,13 @@ def error_table(est: LoopEstimator) -> str:
 
 def _base_text(est: LoopEstimator, long: bool = False) -> str:
     """The base model in words."""
+    if est.spec_.base == "branches":
+        return ("the smooth maximum of Eq. 6's branches, C_k (delta/R)^alpha_k Re^beta_k, x "
+                "T^gamma" if not long else
+                f"the smooth maximum of Eq. 6's four branches (laminar law "
+                f"`{est.spec_.laminar_law}`), each C_k (delta/R)^alpha_k Re^beta_k with only "
+                "the C_k, alpha_k and beta_k the data identify freed (the others held at "
+                "their published values, see the identifiability statements), times T^gamma")
     if est.spec_.base == "eq6":
         return ("the smooth Eq. 6 x scale x T^gamma" if not long else
                 f"the design tool's Eq. 6 in its smooth form (laminar law "
@@ -153,6 +160,12 @@ def identifiability(est: LoopEstimator) -> dict:
             why = "every cross-validation fold gives it the same value, or too few groups"
         out[k] = f"not identifiable by these data (no interval: {why}); by design: {out.get(k)}"
     return out
+
+
+def _range_text(ranges: dict, k: str) -> str:
+    """A parameter's physical range as text; a branch's alpha_k, beta_k take alpha's, beta's."""
+    r = ranges.get(k, ranges.get(k.rstrip("0123456789")) if k[-1:].isdigit() else None)
+    return f"{r['range'][0]:g} .. {r['range'][1]:g}" if r else "-"
 
 
 def _ci_text(ci) -> str:
@@ -340,8 +353,7 @@ def _md_calibration(est: LoopEstimator) -> list[str]:
                                                   if k in not_identifiable(est) else
                                                   f"{_num(ci[k][0], 5)} .. {_num(ci[k][1], 5)}")
                                                  if isinstance(ci[k], list) else "fixed"),
-                             (f"{ranges[k]['range'][0]:g} .. {ranges[k]['range'][1]:g}"
-                              if k in ranges else "-"),
+                             _range_text(ranges, k),
                              identifiability(est).get(k, "")]
                             for k in c]), ""]
     parts += [f"Possible unit mistake: {h}." for h in unit_hints(est)]

@@ -129,10 +129,12 @@ class LoopEstimator:
         How each leave-one-run-out fold is refitted for the reported held-out
         errors and the jackknife: one Gauss-Newton step from the all-runs fit
         (default, fast) or a complete nonlinear refit.
-    base : {"eq6", "power-law"}
+    base : {"eq6", "power-law", "branches"}
         Base model: the design tool's Eq. 6 regime structure (smooth form, the
-        case's laminar law) times one scale and T^gamma (default), or a free
-        power law C (delta/R)^alpha Re^beta T^gamma.
+        case's laminar law) times one scale and T^gamma (default), a free
+        power law C (delta/R)^alpha Re^beta T^gamma, or Eq. 6's branches each with
+        its own C_k, alpha_k, beta_k, freed only where the data identify them
+        (:func:`.spec.branch_identifiability`).
     cv_by : str
         Column of the data whose values are the groups of leave-one-group-out
         validation (default ``"run"``; e.g. ``"gap_mm"``, ``"oil"``).

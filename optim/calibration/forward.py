@@ -205,7 +205,8 @@ class ForwardModel:
         it, its shape, is evaluated once per (form, laminar law, alpha, beta, oil state)
         and kept (the last few)."""
         unit = replace(law, scale=1.0, C=1.0, gamma=0.0)
-        key = (unit.form, unit.laminar_law, unit.alpha, unit.beta, state)
+        key = (unit.form, unit.laminar_law, unit.alpha, unit.beta, unit.branch_C,
+               unit.branch_alpha, unit.branch_beta, state)
         if key not in self._shapes:
             s = self.samples
             nu, rho = (s.nu_m2_s, s.density_kg_m3) if state is None else self._lags[state]

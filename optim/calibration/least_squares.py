@@ -328,10 +328,13 @@ def rescale_level(model: ForwardModel, spec: BaseSpec, x0: np.ndarray) -> np.nda
     x0 = np.array(x0, dtype=float)
     y = model.samples.viscous_W
     p0 = model.base_power(spec.law(x0))
-    level = next((k for k in ("C", "scale") if k in spec.free), None)
+    levels = [k for k in spec.free if k in ("C", "scale")
+              or (spec.base == "branches" and k.startswith("C"))]
     den = float(p0 @ p0)
-    if level is not None and den > 0 and np.isfinite(den):
-        x0[spec.free.index(level)] += math.log(max(1e-12, float(p0 @ y) / den))
+    if levels and den > 0 and np.isfinite(den):
+        step = math.log(max(1e-12, float(p0 @ y) / den))
+        for k in levels[:1] if spec.base != "branches" else levels:
+            x0[spec.free.index(k)] += step  # branches: every fitted C_k by the same factor
     return x0
 
 

@@ -54,7 +54,7 @@ from oilgap.model.measured_data import (
 from oilgap.model.oils import Oil, builtin_fluids, normalize_oil_name
 from oilgap.model.regions import joint_geometry
 from oilgap.model.serialize import Exact, dumps
-from oilgap.model.skin_friction import FrictionLaw
+from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
 from oilgap.model.units import m2_s_to_cst, m_to_mm
 
 from .baseline import BASELINE_TERMS, BaselineFit
@@ -154,7 +154,8 @@ def fluid_from_dict(doc: dict):
 
 
 def _law_to_dict(law: FrictionLaw) -> dict:
-    return _enc({f.name: getattr(law, f.name) for f in fields(law)})
+    return _enc({f.name: getattr(law, f.name) for f in fields(law)
+                 if law.form == "branches" or f.name not in BRANCH_KEYS})
 
 
 def _baseline_to_dict(b: BaselineFit) -> dict:

@@ -78,6 +78,8 @@ PARAM_RANGES = {
         "laminar Couette torque at narrow gaps, nothing in the compiled smooth-cylinder data "
         "above 0.5", "Bilgen & Boulos 1973; seed Eq. 6"),
 }
+# The branches base's alpha_k and beta_k take the ranges of alpha and beta (the range of
+# beta spans every branch of Eq. 6; turbulent data give alpha_k near 0, inside [0, 0.5]).
 """Physical range of each calibrated parameter, with its basis and source. The power-law
 base's C is judged through its effective scale on the data (:func:`effective_scale`)."""
 
@@ -163,8 +165,8 @@ def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> li
                                "data do not identify it (no interval is given)",
                     "held_at": None})
     for k in spec.free:
-        if k in limit:
-            continue
+        if k in limit or (spec.base == "branches" and k.startswith("C")):
+            continue  # a branch's C_k: its level is judged by the loss, not one number
         if k == "C":
             eff = effective_scale(model, fit.law, spec.laminar_law)
             rng = PARAM_RANGES["scale"]
@@ -175,12 +177,14 @@ def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> li
                              vals["C"] * bound / eff)
                 out.append({**f, "parameter": "C", "effective_scale": eff})
             continue
-        rng = PARAM_RANGES[k]
+        kind = k.rstrip("0123456789")  # alpha3 -> alpha: a branch's exponent, same range
+        rng = PARAM_RANGES[kind]
         v = vals[k]
         if not rng.low <= v <= rng.high:
             shown = (f"the scale is {v:.3g}x the published law" if k == "scale"
                      else f"{k} = {v:.3g}")
-            out.append(_finding(k, v, shown, rng, rng.high if v > rng.high else rng.low))
+            f = _finding(kind, v, shown, rng, rng.high if v > rng.high else rng.low)
+            out.append({**f, "parameter": k})
     return out
 
 

@@ -20,7 +20,7 @@ import pandas as pd
 from oilgap.model.effects import EFFECTS
 from oilgap.model.film_heating import film_theory_coefficient
 from oilgap.model.measured_data import Samples
-from oilgap.model.skin_friction import FrictionLaw
+from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
 
 from .candidates import Candidates
 from .forward import ForwardModel
@@ -308,5 +308,8 @@ def law_dict(law: FrictionLaw) -> dict:
     dict
         form, laminar_law, gamma, scale, C, alpha, beta [-].
     """
-    return {"form": law.form, "laminar_law": law.laminar_law, "gamma": law.gamma,
-            "scale": law.scale, "C": law.C, "alpha": law.alpha, "beta": law.beta}
+    out = {"form": law.form, "laminar_law": law.laminar_law, "gamma": law.gamma,
+           "scale": law.scale, "C": law.C, "alpha": law.alpha, "beta": law.beta}
+    if law.form == "branches":
+        out.update({k: list(getattr(law, k)) for k in BRANCH_KEYS})
+    return out

@@ -9,6 +9,12 @@ Two base models of the clearance loss (seed Eqs. 6-8):
   where several region-1 gap ratios identify it.
 * ``"power-law"``: one free power law ``C (delta/R)^alpha Re^beta T^gamma``
   (Eq. 7/8 with a free slope beta), the model of the seed's Table 3 fit.
+* ``"branches"``: the smooth maximum of Eq. 6's four branches, each with its own
+  ``C_k (delta/R)^alpha_k Re^beta_k`` (``FrictionLaw(form="branches")`` with the
+  case's laminar law) times ``T^gamma``. Only what the data identify is fitted
+  (:func:`branch_identifiability`): C_k of a branch that governs samples, its
+  alpha_k where those samples have several gap ratios, its beta_k where they span
+  a speed range at one gap; the rest stay at Eq. 6's published values.
 
 Positive parameters (``C``, ``scale``) are fitted as their logarithm. Every
 parameter is kept inside a numerical box (:data:`PARAM_LIMITS`) so that no
@@ -34,11 +40,32 @@ import numpy as np
 from oilgap.model.case import DesignCase
 from oilgap.model.measured_data import Samples
 from oilgap.model.regions import JointGeometry
-from oilgap.model.skin_friction import BILGEN_BOULOS_ALPHA, FrictionLaw
-from oilgap.model.taylor_couette import couette_reynolds
+from oilgap.model.skin_friction import (
+    BILGEN_BOULOS_ALPHA,
+    BRANCH_ALPHA,
+    BRANCH_BETA,
+    BRANCH_C,
+    BRANCH_KEYS,
+    FrictionLaw,
+)
+from oilgap.model.taylor_couette import couette_moment_coefficient, couette_reynolds
 
-BASES = ("eq6", "power-law")
+BASES = ("eq6", "power-law", "branches")
 """The base models of the calibration."""
+
+N_BRANCHES = len(BRANCH_C)
+"""Branches of the ``"branches"`` base: Eq. 6's four."""
+
+BRANCH_PARAMS = (("scale",) + tuple(f"C{k + 1}" for k in range(N_BRANCHES))
+                 + tuple(f"alpha{k + 1}" for k in range(N_BRANCHES))
+                 + tuple(f"beta{k + 1}" for k in range(N_BRANCHES)) + ("gamma",))
+"""The parameters of the branches base, in the order they are reported (the scale, 1, is
+fitted only where no branch governs enough samples: the level of the Couette bound)."""
+
+BRANCH_START = {"scale": 1.0, **{f"C{k + 1}": v for k, v in enumerate(BRANCH_C)},
+                **{f"alpha{k + 1}": v for k, v in enumerate(BRANCH_ALPHA)},
+                **{f"beta{k + 1}": v for k, v in enumerate(BRANCH_BETA)}}
+"""Published values of the branch parameters (Eq. 6 [2]): start values and held values."""
 
 BASE_PARAMS = ("C", "alpha", "beta", "gamma")
 """The parameters of the power-law base, in the order they are reported."""
@@ -46,16 +73,18 @@ BASE_PARAMS = ("C", "alpha", "beta", "gamma")
 EQ6_PARAMS = ("scale", "alpha", "gamma")
 """The parameters of the Eq. 6 base, in the order they are reported."""
 
-LOG_PARAMS = ("C", "scale")
+LOG_PARAMS = ("C", "scale") + tuple(f"C{k + 1}" for k in range(N_BRANCHES))
 """Parameters that must be positive: fitted, and given intervals, as their logarithm."""
 
 PARAM_LIMITS = {"C": (-50.0, 50.0), "scale": (-50.0, 50.0), "alpha": (-3.0, 3.0),
-                "beta": (-3.0, 3.0), "gamma": (-10.0, 10.0)}
+                "beta": (-3.0, 3.0), "gamma": (-10.0, 10.0),
+                **{k: (-50.0, 50.0) if k.startswith("C") else (-3.0, 3.0)
+                   for k in BRANCH_PARAMS if k not in ("gamma", "scale")}}
 """Numerical box of each parameter in the solver's unknown (ln C, ln scale) [-]: far
 outside every physical range, it keeps each evaluation finite (x^alpha, Re^beta, exp)."""
 
 START_VALUES = {"C": 10.0, "scale": 1.0, "alpha": BILGEN_BOULOS_ALPHA, "beta": -1.0,
-                "gamma": 0.0}
+                "gamma": 0.0, **BRANCH_START}
 """Start of the free parameters before C (or the scale) is rescaled to the data."""
 
 BETA_MIN_SPREAD = 0.2
@@ -64,6 +93,133 @@ BETA_MIN_SPREAD = 0.2
 ALPHA_MIN_R2_GAP = 1e-6
 """alpha is identifiable only if its Jacobian column is not (1 - this) explained by the
 others' (with the Couette laminar law, Eq. 6 may lie below Couette at every sample)."""
+
+
+BRANCH_MIN_SAMPLES = 3
+"""Samples a branch must govern (be the largest at) for its C_k to be fitted."""
+
+BRANCH_MIN_GAPS = 2
+"""Distinct gap ratios among a branch's samples for its alpha_k to be fitted (3 or more
+give a check of the power in delta/R; 2 determine it)."""
+
+BRANCH_MIN_LN_GAP_SPAN = 0.1
+"""... and their spread ln(x_max / x_min) [-] (10 %): closer gaps cannot separate
+alpha_k from the scatter."""
+
+BRANCH_MIN_LN_RE_OVERLAP = 0.2
+"""... and they must share a Reynolds range: two gaps count for alpha_k only where their
+spans of ln Re inside the regime overlap by this much [-] (a factor 1.22); gaps met at
+different Re alone confound alpha_k with beta_k."""
+
+BRANCH_MIN_LN_RE_SPAN = 0.5
+"""Span of ln Re [-] (a factor 1.65) a branch's samples must cover at one gap ratio for
+its beta_k to be fitted: the speed range inside the regime, not across gaps, where
+alpha_k and beta_k would be confounded."""
+
+
+def branch_regimes(reynolds, gap_ratio, law: FrictionLaw) -> np.ndarray:
+    """Index of the branch that governs each sample under ``law`` (form ``"branches"``).
+
+    Parameters
+    ----------
+    reynolds : array
+        Couette Reynolds number [-] (> 0).
+    gap_ratio : array
+        delta / R [-].
+    law : FrictionLaw
+        Its branch_C, branch_alpha, branch_beta [-] and laminar law.
+
+    Returns
+    -------
+    array of int
+        k (0-based) of the largest branch ``C_k x^alpha_k Re^beta_k`` [2]; -1 where the
+        laminar Couette bound is above every branch (laminar law ``"couette"``).
+    """
+    re = np.atleast_1d(np.asarray(reynolds, float))
+    lnx = np.log(np.broadcast_to(np.asarray(gap_ratio, float), re.shape))
+    lnre = np.log(np.maximum(re, 1e-12))
+    terms = np.column_stack([math.log(c) + a * lnx + b * lnre for c, a, b in zip(
+        law.branch_C, law.branch_alpha, law.branch_beta, strict=True)])
+    k = np.argmax(terms, axis=1)
+    if law.laminar_law == "couette":
+        lnc = np.log(couette_moment_coefficient(np.maximum(re, 1e-12), np.exp(lnx)))
+        k = np.where(lnc > terms.max(axis=1), -1, k)
+    return k
+
+
+def branch_identifiability(reynolds, gap_ratio, law: FrictionLaw) -> dict[str, tuple]:
+    """Which C_k, alpha_k, beta_k of a ``"branches"`` law samples identify, and why.
+
+    A sample belongs to the branch that is largest there under ``law`` (the
+    published branches of Eq. 6 by default). C_k needs
+    :data:`BRANCH_MIN_SAMPLES` samples of branch k; alpha_k needs
+    :data:`BRANCH_MIN_GAPS` distinct gap ratios among them spread by
+    :data:`BRANCH_MIN_LN_GAP_SPAN` whose Re ranges in the regime overlap by
+    :data:`BRANCH_MIN_LN_RE_OVERLAP`; beta_k needs a span of ln Re of
+    :data:`BRANCH_MIN_LN_RE_SPAN` inside the regime at one gap ratio. The others
+    stay at their values in ``law``.
+
+    Parameters
+    ----------
+    reynolds : array
+        Couette Reynolds number of each sample [-].
+    gap_ratio : array
+        delta / R of each sample [-].
+    law : FrictionLaw
+        The law whose branches the samples are assigned to [-].
+
+    Returns
+    -------
+    dict
+        ``"C1"``, ``"alpha1"``, ``"beta1"``, ... (1-based) -> (free, statement).
+
+    References
+    ----------
+    Bilgen & Boulos [2] (the branches); seed paper [1] (Eq. 7).
+    """
+    re = np.atleast_1d(np.asarray(reynolds, float))
+    x = np.broadcast_to(np.asarray(gap_ratio, float), re.shape)
+    ok = np.isfinite(re) & (re > 0) & np.isfinite(x) & (x > 0)
+    k_of = np.where(ok, branch_regimes(np.where(ok, re, 1.0), np.where(ok, x, 1.0), law), -2)
+    out = {}
+    for k, (c, a, b) in enumerate(zip(law.branch_C, law.branch_alpha, law.branch_beta,
+                                      strict=True)):
+        n = k + 1
+        sel = k_of == k
+        xs, rs = x[sel], re[sel]
+        gaps = _distinct(xs, 6)
+        if sel.sum() < BRANCH_MIN_SAMPLES:
+            why = (f"branch {n} governs {int(sel.sum())} sample(s) (< {BRANCH_MIN_SAMPLES})")
+            for name, v in (("C", c), ("alpha", a), ("beta", b)):
+                out[f"{name}{n}"] = (False, f"not identifiable: {why}; held at {v:g}")
+            continue
+        out[f"C{n}"] = (True, f"identified: the level of branch {n} ({int(sel.sum())} samples, "
+                              f"Re {rs.min():.3g}..{rs.max():.3g})")
+        lnre = {g: np.log(rs[np.round(xs, 6) == g]) for g in gaps}
+        shared = _overlapping_gaps(lnre)
+        span_x = math.log(max(shared) / min(shared)) if shared else 0.0
+        if len(shared) >= BRANCH_MIN_GAPS and span_x >= BRANCH_MIN_LN_GAP_SPAN:
+            out[f"alpha{n}"] = (True, f"identified from {len(shared)} gap ratios "
+                                      f"{min(shared):.4g}..{max(shared):.4g} at a shared Re "
+                                      f"range in branch {n}" + (
+                                          " (only 2: no check of the power law in delta/R)"
+                                          if len(shared) == 2 else ""))
+        else:
+            out[f"alpha{n}"] = (False, f"not identifiable: branch {n}'s samples have "
+                                       f"{len(gaps)} gap ratio(s), {len(shared)} of them at a "
+                                       f"shared Re range (overlap >= "
+                                       f"{BRANCH_MIN_LN_RE_OVERLAP:g} in ln Re), spanning "
+                                       f"{span_x:.2f} in ln(delta/R) (needs {BRANCH_MIN_GAPS} "
+                                       f"spanning {BRANCH_MIN_LN_GAP_SPAN:g}); held at {a:g}")
+        span_re = max(float(np.ptp(v)) for v in lnre.values())
+        if span_re >= BRANCH_MIN_LN_RE_SPAN:
+            out[f"beta{n}"] = (True, f"identified from a span of {span_re:.2f} in ln Re inside "
+                                     f"branch {n} at one gap ratio")
+        else:
+            out[f"beta{n}"] = (False, f"not identifiable: branch {n}'s samples span {span_re:.2f}"
+                                      f" in ln Re at any one gap ratio (needs "
+                                      f"{BRANCH_MIN_LN_RE_SPAN:g}); held at {b:g}")
+    return out
 
 
 def _clip(name: str, value: float) -> float:
@@ -81,7 +237,7 @@ class BaseSpec:
         Fitted parameters, in the base's order (C and scale enter as logarithms).
     fixed : dict
         Values of the others [-].
-    base : {"power-law", "eq6"}
+    base : {"power-law", "eq6", "branches"}
         The base model (:data:`BASES`).
     laminar_law : {"couette", "bilgen-boulos"}
         Laminar law of the Eq. 6 base (the case's).
@@ -95,7 +251,7 @@ class BaseSpec:
     @property
     def params(self) -> tuple[str, ...]:
         """All parameters of the base, in their reported order."""
-        return EQ6_PARAMS if self.base == "eq6" else BASE_PARAMS
+        return {"eq6": EQ6_PARAMS, "branches": BRANCH_PARAMS}.get(self.base, BASE_PARAMS)
 
     def values(self, x: np.ndarray) -> dict:
         """All parameters by name [-] (positive ones exponentiated, all within the box).
@@ -127,10 +283,17 @@ class BaseSpec:
         Returns
         -------
         FrictionLaw
-            ``form="power-law"`` with C, alpha, beta, gamma, or ``form="smooth"`` (the
-            Eq. 6 regime structure) with scale, alpha, gamma.
+            ``form="power-law"`` with C, alpha, beta, gamma, ``form="smooth"`` (the
+            Eq. 6 regime structure) with scale, alpha, gamma, or ``form="branches"``
+            with C_k, alpha_k, beta_k, gamma.
         """
         v = self.values(x)
+        if self.base == "branches":
+            return FrictionLaw(form="branches", laminar_law=self.laminar_law, gamma=v["gamma"],
+                               scale=v["scale"],
+                               **{key: tuple(v[f"{name}{k + 1}"] for k in range(N_BRANCHES))
+                                  for key, name in zip(BRANCH_KEYS, ("C", "alpha", "beta"),
+                                                       strict=True)})
         if self.base == "eq6":
             return FrictionLaw(form="smooth", laminar_law=self.laminar_law, scale=v["scale"],
                                alpha=v["alpha"], gamma=v["gamma"])
@@ -274,8 +437,8 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
         Rig regions (region 1's radius [m]).
     case : DesignCase
         Rig (its friction law's gamma and laminar law).
-    base : {"power-law", "eq6"}
-        Base model.
+    base : {"power-law", "eq6", "branches"}
+        Base model (``"branches"``: see :func:`branch_identifiability`).
 
     Returns
     -------
@@ -284,10 +447,10 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
     """
     radius1 = geometry.regions[0].radius_m
     why = identifiable(s, radius1)
-    level = "scale" if base == "eq6" else "C"
-    stmt = {level: "identified: the level of the loss" + (
+    level = {"eq6": "scale", "branches": "C_k"}.get(base, "C")
+    stmt = {} if base == "branches" else {level: "identified: the level of the loss" + (
         " (1 = the published Eq. 6)" if base == "eq6" else "")}
-    free = [level]
+    free = [] if base == "branches" else [level]
     fixed = {"scale": 1.0, "C": 10.0, "alpha": BILGEN_BOULOS_ALPHA, "beta": -1.0,
              "gamma": case.friction.gamma}
     Ts = _distinct(s.roughness_T, 9)
@@ -298,6 +461,12 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
         fixed["gamma"] = 0.0 if Ts == [1.0] else case.friction.gamma
         stmt["gamma"] = (f"not identifiable: every oil run has T = {Ts[0]:g}; fixed at "
                          f"{fixed['gamma']:g} (only {level} T^gamma is identified)")
+    if base == "branches":
+        bfree, bstmt = _branch_spec(s, radius1, case.friction.laminar_law)
+        order = [p for p in BRANCH_PARAMS if p in free or p in bfree]
+        return BaseSpec(tuple(order), {k: {**BRANCH_START, **fixed}[k] for k in BRANCH_PARAMS
+                                       if k not in order}, base,
+                        case.friction.laminar_law), {**bstmt, **stmt}
     ratios = _distinct(s.gap1_m / radius1, 6)
     if why["alpha"] is None:
         free.append("alpha")
@@ -322,6 +491,53 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
                     case.friction.laminar_law), stmt
 
 
+BRANCH_SPEED_SHARE = 0.1
+"""Samples below this share of the data's largest |speed| do not count for a branch: their
+loss (~ omega^2 or faster) is under 1 % of the peak's, noise rather than a regime."""
+
+
+def _overlapping_gaps(lnre: dict) -> list[float]:
+    """Gap ratios whose ln Re range overlaps another gap's by BRANCH_MIN_LN_RE_OVERLAP."""
+    keep = set()
+    gaps = list(lnre)
+    for i, g in enumerate(gaps):
+        for h in gaps[i + 1:]:
+            lo = max(lnre[g].min(), lnre[h].min())
+            hi = min(lnre[g].max(), lnre[h].max())
+            if hi - lo >= BRANCH_MIN_LN_RE_OVERLAP:
+                keep |= {g, h}
+    return sorted(keep)
+
+
+def _region1_re_x(s: Samples, radius1_m: float) -> tuple[np.ndarray, np.ndarray]:
+    """Region 1's Couette Reynolds number [-] and gap ratio [-] at the samples that carry
+    loss (|speed| at least :data:`BRANCH_SPEED_SHARE` of the largest)."""
+    re = couette_reynolds(s.omega, radius1_m, s.gap1_m, s.nu_m2_s)
+    x = np.broadcast_to(np.asarray(s.gap1_m, float) / radius1_m, re.shape)
+    w = np.abs(np.asarray(s.omega, float))
+    ok = (w > 0) & (w >= BRANCH_SPEED_SHARE * float(np.max(w, initial=0.0)))
+    return re[ok], x[ok]
+
+
+def _branch_spec(s: Samples, radius1_m: float, laminar_law: str) -> tuple[list[str], dict]:
+    """Free branch parameters and a statement for each (:func:`branch_identifiability` on
+    region 1's samples under the published branches); if no branch governs enough
+    samples, the C_k of the one governing most is fitted as the level."""
+    re, x = _region1_re_x(s, radius1_m)
+    pub = FrictionLaw(form="branches", laminar_law=laminar_law)
+    ident = branch_identifiability(re, x, pub)
+    free = [k for k in BRANCH_PARAMS[1:-1] if ident[k][0]]
+    stmt = {k: t for k, (_, t) in ident.items()}
+    if not any(k.startswith("C") for k in free):
+        free.insert(0, "scale")
+        stmt["scale"] = (f"fitted as the level of the loss: no branch governs "
+                         f"{BRANCH_MIN_SAMPLES} samples (the laminar Couette bound governs "
+                         "the rest), so no C_k is identified")
+    else:
+        stmt["scale"] = "held at 1: the fitted C_k carry the level"
+    return free, stmt
+
+
 def fold_spec(spec: BaseSpec, s_train: Samples, radius1_m: float) -> tuple[str, ...]:
     """Free parameters that the training samples of one fold cannot identify.
 
@@ -343,4 +559,12 @@ def fold_spec(spec: BaseSpec, s_train: Samples, radius1_m: float) -> tuple[str, 
         Parameters of ``spec.free`` to hold in this fold.
     """
     why = identifiable(s_train, radius1_m)
+    if spec.base == "branches":
+        free, _ = _branch_spec(s_train, radius1_m, spec.laminar_law)
+        hold = [k for k in spec.free if (k == "gamma" and why["gamma"] is not None)
+                or (k != "gamma" and k not in free)]
+        levels = [k for k in spec.free if k.startswith("C") or k == "scale"]
+        if levels and all(k in hold for k in levels):
+            hold.remove(levels[0])  # the fold keeps a level
+        return tuple(hold)
     return tuple(k for k in spec.free if why.get(k) is not None)

@@ -52,79 +52,20 @@ from .film_cycle import FilmHeating, film_heating_for
 from .oil_properties import seawater_gauge_pressure
 from .regions import Region, joint_regions, region_mean_power
 from .thermal import joint_steady_temperature
+from .thermal_modes import (  # noqa: F401  (re-exported: the modes' one list)
+    BALANCE_MODES,
+    FILM_EVIDENCE,
+    FILM_MODES,
+    THERMAL_MODE_TEXT,
+    THERMAL_MODES,
+    applies_film,
+    film_counterpart,
+    uses_balance,
+)
 from .units import celsius_to_kelvin
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from .case import DesignCase
-
-THERMAL_MODES = ("none", "bulk", "film", "full")
-"""Thermal modes: isothermal at the given temperature, isothermal at the bulk balance's,
-film heating at the given temperature, film heating at the bulk balance's [-]."""
-
-FILM_MODES = ("film", "full")
-"""The modes that apply the film-heating correction [-]."""
-
-BALANCE_MODES = ("bulk", "full")
-"""The modes whose bulk oil temperature is the heat balance's (need ``[thermal]``) [-]."""
-
-THERMAL_MODE_TEXT = {
-    "none": "isothermal oil, the seed paper's model",
-    "bulk": "isothermal film at the oil temperature of the heat balance to the sea",
-    "film": "the film's own shear heating at the given oil temperature",
-    "full": "film heating at the oil temperature of the heat balance to the sea",
-}
-"""What each thermal mode computes (the words of the reports' header lines)."""
-
-FILM_EVIDENCE = ("not supported by the seed's Table 4, see docs/thermal.md#evidence")
-"""The evidence of the film-heated modes, as the reports label their band."""
-
-
-def applies_film(mode: str) -> bool:
-    """Whether a thermal mode applies the film-heating correction.
-
-    Parameters
-    ----------
-    mode : str
-        A mode of :data:`THERMAL_MODES`.
-
-    Returns
-    -------
-    bool
-        True under ``film`` and ``full``.
-    """
-    return mode in FILM_MODES
-
-
-def uses_balance(mode: str) -> bool:
-    """Whether a thermal mode takes the bulk temperature from the heat balance.
-
-    Parameters
-    ----------
-    mode : str
-        A mode of :data:`THERMAL_MODES`.
-
-    Returns
-    -------
-    bool
-        True under ``bulk`` and ``full``.
-    """
-    return mode in BALANCE_MODES
-
-
-def film_counterpart(mode: str) -> str:
-    """The mode with the same bulk temperature and the opposite film choice.
-
-    Parameters
-    ----------
-    mode : str
-        A mode of :data:`THERMAL_MODES`.
-
-    Returns
-    -------
-    str
-        ``none`` <-> ``film``, ``bulk`` <-> ``full``: the other side of the film band.
-    """
-    return {"none": "film", "film": "none", "bulk": "full", "full": "bulk"}[mode]
 
 @dataclass(frozen=True)
 class OperatingTemperature:

@@ -556,8 +556,8 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     ------
     InputError
         An unknown mode, ``bulk``/``full`` without ``[thermal]``, or ``oil_temp_C``
-        under ``bulk``/``full``; a loss that is not a finite number, named by the inputs that drive it (the
-        fluid's state, the friction law, the speed, the bearing).
+        under ``bulk``/``full``; a loss that is not a finite number, named by the inputs
+        that drive it (the fluid's state, the friction law, the speed, the bearing).
     SolverError
         The heat balance did not converge, or a non-finite result that no input
         explains.

@@ -517,6 +517,18 @@ class ThermalDesignResult(DesignResult):
             :func:`~oilgap.model.joint_loss.operating_temperature` of each design
             (oil temperature [degC], mean loss [W]), as ``oilgap evaluate`` gives it.
         """
+        start, opt = self.design_cases()
+        return (operating_temperature(start, self.thermal_mode),
+                operating_temperature(opt, self.thermal_mode))
+
+    def design_cases(self) -> tuple[DesignCase, DesignCase]:
+        """The initial and optimal designs as cases, with the balance solved.
+
+        Returns
+        -------
+        initial, optimal : DesignCase
+            The case with each design's region 1 (and ``thermal``: the solve's balance).
+        """
         i = self.initial
         base = self.case if self.thermal is None else replace(self.case, thermal=self.thermal)
         start = base.with_region1(
@@ -526,8 +538,7 @@ class ThermalDesignResult(DesignResult):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)
             opt = replace(self.to_case(), thermal=base.thermal)
-        return (operating_temperature(start, self.thermal_mode),
-                operating_temperature(opt, self.thermal_mode))
+        return start, opt
 
 
 __all__ = ["POINT_MEANINGS", "DesignPoint", "DesignResult", "Multiplier", "ThermalDesignResult",

@@ -19,17 +19,12 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
 from oilgap.model.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
-from oilgap.studies.grid.evaluate import thermal_description
+from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_json
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
 from oilgap.studies.results import ResultView, new_axes
 from oilgap.studies.smoothing_case import NO_TABLE4, draw_case, saving_lines
 from oilgap.studies.smoothing_report import draw_loss_vs_T, thermal_line
-
-PARETO_THERMAL = ("thermal     none (isothermal oil at the case's temperature, the seed "
-                  "paper's model: the fronts do not take --thermal yet; `oilgap optimize "
-                  "--thermal` gives the heated optimum)")
-"""The Pareto study's thermal header line."""
 
 
 def records(df: pd.DataFrame | None) -> list[dict] | None:
@@ -91,7 +86,8 @@ class Pareto(StudyView):
         """Hypervolume [mm W], its reference point, both fronts, the marked designs, the
         files written and the defaults (``oilgap study pareto --json``)."""
         r = self.raw
-        return {"case": self.case.name, **gamma_fields(self.case), "thermal_mode": "none",
+        return {"case": self.case.name, **gamma_fields(self.case),
+                "thermal_mode": r.thermal_mode, "thermal_default": r.thermal_default,
                 "points": len(r.gap_front), "hypervolume_mm_W": r.hypervolume,
                 "reference_point": {"delta_mm": r.reference_point[0],
                                     "mean_power_W": r.reference_point[1]},
@@ -105,7 +101,8 @@ class Pareto(StudyView):
         r = self.raw
         g, i = r.gap_front, r.inertia_front
         gok, iok = g[g["status"] == "ok"], i[i["status"] == "ok"]
-        lines = [PARETO_THERMAL, gamma_line(self.case), *defaults_lines(r.defaults),
+        thermal = thermal_description(self.case, r.thermal_mode, r.thermal_default)
+        lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
                  f"gap front: {len(gok)}/{len(g)} points, delta {gok['delta_mm'].min():.3f}.."
                  f"{gok['delta_mm'].max():.3f} mm, loss {gok['mean_power_W'].max():.2f}.."
                  f"{gok['mean_power_W'].min():.2f} W; sweep {r.sweep_time_s:.2f} s "
@@ -120,6 +117,8 @@ class Pareto(StudyView):
         lines += [f"  {s['design']:<{width}} delta {s['delta_mm']:.3f} mm  T {s['T']:.2f}  "
                   f"P {s['mean_power_W']:.2f} W  inertia {s['inertia_ratio']:.3f} x"
                   for _, s in r.seeds.iterrows()]
+        lines += [f"  film band of {s['design']} (exact C_m {s['mean_power_exact_W']:.4g} W): "
+                  f"{band_text(s)}" for _, s in r.seeds.iterrows()]
         bad = pd.concat([g[g["status"] != "ok"], i[i["status"] != "ok"]])
         if len(bad):
             lines.append(f"{len(bad)} points failed (rows kept with their error); first: "

@@ -19,6 +19,7 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
 from oilgap.model.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
+from oilgap.model.thermal_modes import uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_json
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
@@ -156,7 +157,7 @@ class OilGrade(StudyView):
 
     def _table(self) -> list[str]:
         r = self.raw
-        full = r.thermal_mode == "full"
+        full = uses_balance(r.thermal_mode)
         lines = [f"{'oil':<8}{'nu min':>9}" + (f"{'T oil max':>10}" if full else "")
                  + f"{'nu max':>10}{'mission W':>11}{'energy Wh':>11}  verdict"]
         for _, row in r.table.iterrows():
@@ -171,11 +172,14 @@ class OilGrade(StudyView):
         """What ``oilgap study oil-grade`` prints: header (thermal, gamma, defaults,
         envelope), the recommendation, the grade table, the mission, the files written."""
         r, s = self.raw, self.raw.settings
-        axis = "sea" if r.thermal_mode == "full" else "oil"
+        axis = "sea" if uses_balance(r.thermal_mode) else "oil"
         thermal = thermal_description(self.case, r.thermal_mode, s["thermal_default"])
         lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
                  f"envelope    {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m x {axis} "
                  f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC", ""]
+        if r.film_band is not None:
+            lines += [f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
+                      f"film band: {r.film_band.line()}", ""]
         if r.recommended is not None:
             lines += [f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}", ""]
         lines += self._table()

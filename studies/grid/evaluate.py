@@ -214,9 +214,9 @@ def evaluate_cases(cases: list[DesignCase], thermal: str = "none") -> pd.DataFra
     Parameters
     ----------
     cases : list of DesignCase
-    thermal : {"none", "film", "full"}
-        Thermal mode (default ``"none"``, the seed's isothermal model; ``"full"``
-        needs every case's ``[thermal]`` table).
+    thermal : {"none", "bulk", "film", "full"}
+        Thermal mode (default ``"none"``, the seed's isothermal model; ``"bulk"`` and
+        ``"full"`` need every case's ``[thermal]`` table).
 
     Returns
     -------

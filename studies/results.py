@@ -213,7 +213,8 @@ def _film_notes(ev: CaseEvaluation) -> list[str]:
              "film's hottest point above the bulk at Na_eff"]
     if not ev.film_applied:
         notes.append(f"film_applied: false under --thermal {ev.thermal_mode}: Na and Phi_st "
-                     "are diagnostics of the film heating the model leaves out (Phi_app 1; "
+                     "are diagnostics of the film heating the model leaves out, not applied "
+                     "(Phi_app 1; "
                      f"--thermal {film_counterpart(ev.thermal_mode)} applies it)")
     else:
         notes.append(f"film_applied: true under --thermal {ev.thermal_mode}: Phi_app is Phi at "

@@ -56,12 +56,12 @@ def applies_film(mode: str) -> bool:
     Parameters
     ----------
     mode : str
-        A mode of :data:`THERMAL_MODES`.
+        A mode of :data:`THERMAL_MODES` [-].
 
     Returns
     -------
     bool
-        True under ``film`` and ``full``.
+        True under ``film`` and ``full`` [-].
     """
     return mode in FILM_MODES
 
@@ -72,12 +72,12 @@ def uses_balance(mode: str) -> bool:
     Parameters
     ----------
     mode : str
-        A mode of :data:`THERMAL_MODES`.
+        A mode of :data:`THERMAL_MODES` [-].
 
     Returns
     -------
     bool
-        True under ``bulk`` and ``full``.
+        True under ``bulk`` and ``full`` [-].
     """
     return mode in BALANCE_MODES
 
@@ -88,12 +88,13 @@ def film_counterpart(mode: str) -> str:
     Parameters
     ----------
     mode : str
-        A mode of :data:`THERMAL_MODES`.
+        A mode of :data:`THERMAL_MODES` [-].
 
     Returns
     -------
     str
-        ``none`` <-> ``film``, ``bulk`` <-> ``full``: the other side of the film band.
+        ``none`` <-> ``film``, ``bulk`` <-> ``full``: the other side of the film band
+        [-].
     """
     return {"none": "film", "film": "none", "bulk": "full", "full": "bulk"}[mode]
 

@@ -42,11 +42,11 @@ THERMAL_MODE_TEXT = {
 }
 """What each thermal mode computes (the words of the reports' header lines)."""
 
-DEFAULT_MODE_WHY = ("the model the evidence supports: the isothermal film reproduces the "
-                    "seed's Table 4")
+DEFAULT_MODE_WHY = ("the model the evidence supports: the isothermal film reproduces "
+                    "Table 4 of the seed paper")
 """Why the default thermal mode is the default (the reports' header lines)."""
 
-FILM_EVIDENCE = "not supported by the seed's Table 4, see docs/thermal.md#evidence"
+FILM_EVIDENCE = "not supported by Table 4 of the seed paper, see docs/thermal.md#evidence"
 """The evidence of the film-heated modes, as the reports label their band."""
 
 

@@ -36,7 +36,7 @@ def thermal_line(mode: str, default: bool) -> str:
         text += f"default: {DEFAULT_MODE_WHY}; "
     text += MODE_TEXT[mode]
     if mode != "none":
-        text += "; --thermal none for the seed's isothermal model"
+        text += "; --thermal none for the seed paper's isothermal model"
     return text + ")"
 
 

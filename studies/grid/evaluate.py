@@ -294,7 +294,7 @@ def thermal_description(case: DesignCase, thermal: str, by_default: bool,
     the mode, whether it is the default, what it computes and, under ``bulk``/``full``,
     the heat path, e.g. ``bulk (default: the model the evidence supports: ...; isothermal
     film at the oil temperature of the heat balance to the sea; R 0.5 K/W, Q 0 W,
-    isothermal-walls; --thermal none for the seed's isothermal model)``.
+    isothermal-walls; --thermal none for the seed paper's isothermal model)``.
 
     ``why`` replaces :data:`~oilgap.model.thermal_modes.DEFAULT_MODE_WHY`."""
     text = f"{thermal} ("
@@ -305,5 +305,5 @@ def thermal_description(case: DesignCase, thermal: str, by_default: bool,
     if uses_balance(thermal) and th is not None:
         text += f"; R {th.resistance_K_W:g} K/W, Q {th.other_heat_W:g} W, {th.walls}"
     if thermal != "none":
-        text += "; --thermal none for the seed's isothermal model"
+        text += "; --thermal none for the seed paper's isothermal model"
     return text + ")"

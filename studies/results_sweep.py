@@ -78,10 +78,8 @@ class Sweep(ResultView):
 
     def thermal_text(self) -> str:
         """The text after ``thermal`` in the header."""
-        why = ("the design NLP is isothermal so far" if self.mode == "optimize"
-               and self.thermal_mode == "none" and self.case.thermal is not None else None)
         return thermal_description(self.case, self.thermal_mode,
-                                   self.raw.attrs.get("thermal_default", False), why)
+                                   self.raw.attrs.get("thermal_default", False))
 
     def base(self) -> tuple[float, str]:
         """The base case's loss under the mode [W] and where it was taken."""

@@ -7,9 +7,12 @@ moment [N m] is given by one of two published models (``BearingSpec.model``):
     ``M = phi_ish phi_rs M_rr + M_sl + M_drag`` with the rolling moment
     ``M_rr = G_rr (nu n)^0.6``, the sliding moment ``M_sl = G_sl mu_sl``, the
     inlet-shear and replenishment factors and the drag of the balls in the oil
-    bath: ``0.4 V_M K_ball dm^5 n^2`` (``drag = "vm"``, the default) plus, with
-    ``drag = "vm+rs"``, ``1.093e-7 n^2 dm^3 (n dm^2 f_t/nu)^-1.379 R_s``. Seal
-    moments are not modelled (an oil-filled joint's bearing runs open).
+    bath. SKF's drag is ``M_drag = 0.4 V_M K_ball dm^5 n^2 + 1.093e-7 n^2 dm^3
+    (n dm^2 f_t/nu)^-1.379 R_s``; the option ``drag`` says which of its terms are
+    kept: ``"skf-vm-term"`` (the V_M term only, the default: not SKF's full model,
+    see docs/bearing.md), ``"skf-full"`` (both terms, SKF's equation) or ``"none"``
+    (no drag: rolling and sliding only). Seal moments are not modelled (an
+    oil-filled joint's bearing runs open).
 ``palmgren`` (Palmgren [3]_, Harris & Kotzalas [4]_)
     ``M = M_0 + M_1``: ``M_0 = 1e-7 f_0 (nu n)^(2/3) dm^3``, ``M_1 = f_1 P_1 dm``.
 
@@ -41,6 +44,7 @@ References
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 
 import casadi as ca
@@ -69,7 +73,7 @@ from .bearing_laws import (
     sliding_friction_coefficient,
     sliding_load_factor,
 )
-from .errors import InputError
+from .errors import InputError, OilgapWarning
 from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
 from .viscous_loss import weighted_mean
 
@@ -77,8 +81,12 @@ MODELS = ("skf", "palmgren")
 """Friction models [-]."""
 KINDS = ("deep-groove-ball",)
 """Bearing types the models are implemented for [-]."""
-DRAG_CHOICES = ("vm", "vm+rs")
-"""SKF drag terms: the V_M term alone (default) or with the R_s term [-]."""
+DRAG_CHOICES = ("skf-vm-term", "skf-full", "none")
+"""Terms of SKF's drag kept [-]: the V_M term alone (the default; not SKF's full model),
+both the V_M and R_s terms (SKF's equation), or no drag (rolling and sliding only)."""
+DRAG_ALIASES = {"vm": "skf-vm-term", "vm+rs": "skf-full"}
+"""Former names of the drag options [-], read with a deprecation OilgapWarning (a saved
+case still reads; it is written back under the new name)."""
 OMEGA_FLOOR_RAD_S = 1.0e-300
 """Floor of a CasADi |omega| in the moments [rad/s] (finite derivatives at rest)."""
 
@@ -119,7 +127,9 @@ class BearingSpec:
     f0 : float or None
         Palmgren factor f_0 [-]; None: 4 submerged, 2 in an oil bath.
     drag : str
-        SKF drag terms, ``"vm"`` or ``"vm+rs"`` [-].
+        Terms of SKF's drag kept [-]: ``"skf-vm-term"``, ``"skf-full"`` or ``"none"``
+        (:data:`DRAG_CHOICES`; the former ``"vm"`` and ``"vm+rs"`` are read with a
+        deprecation warning, :data:`DRAG_ALIASES`).
     mu_ehl, mu_bl : float
         Full-film and boundary sliding coefficients [-].
     k_rs : float or None
@@ -145,7 +155,7 @@ class BearingSpec:
     submerged: bool = True
     oil_level_m: float | None = None
     f0: float | None = None
-    drag: str = "vm"
+    drag: str = DRAG_CHOICES[0]
     mu_ehl: float = MU_EHL_MINERAL
     mu_bl: float = MU_BL_DEFAULT
     k_rs: float | None = None
@@ -156,6 +166,12 @@ class BearingSpec:
         where = f"[bearing] {self.name}"
         _choice("model", self.model, MODELS, where)
         _choice("type", self.kind, KINDS, where)
+        if self.drag in DRAG_ALIASES:
+            new = DRAG_ALIASES[self.drag]
+            warnings.warn(OilgapWarning(
+                f"{where}: drag = {self.drag!r} is deprecated; it reads as drag = {new!r}, "
+                "the name that says what it contains (docs/bearing.md)"), stacklevel=3)
+            object.__setattr__(self, "drag", new)
         _choice("drag", self.drag, DRAG_CHOICES, where)
         if self.model == "skf" and self.series not in SERIES_CONSTANTS:
             raise InputError("series", self.series, "a deep-groove series of the SKF "
@@ -237,8 +253,9 @@ def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
     """Every term of SKF's frictional moment [N mm] [1]_, [2]_ (catalogue units).
 
     ``rolling = phi_ish phi_rs G_rr nu^0.6 n^0.6``, ``sliding = G_sl mu_sl``,
-    ``drag_vm``, ``drag_rs`` (0 unless ``spec.drag == "vm+rs"``). The powers of nu and
-    n are taken separately, so that a symbolic nu has finite derivatives at n = 0.
+    ``drag_vm`` (0 when ``spec.drag == "none"``), ``drag_rs`` (0 unless
+    ``spec.drag == "skf-full"``). The powers of nu and n are taken separately, so that a
+    symbolic nu has finite derivatives at n = 0.
 
     Parameters
     ----------
@@ -265,12 +282,14 @@ def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
     level = spec.oil_level_ratio
     k_ball = ball_drag_constant(d, D, c.k_z, c.ball_rows)
     rs = (drag_rs_moment(speed_rpm, nu_cSt, d, D, level, c.k_z)
-          if spec.drag == "vm+rs" else 0.0 * speed_rpm)
+          if spec.drag == "skf-full" else 0.0 * speed_rpm)
+    vm = (drag_vm_moment(speed_rpm, dm, k_ball, drag_loss_factor(level))
+          if spec.drag != "none" else 0.0 * speed_rpm)
     return {
         "rolling": reduction * g_rr * nu_cSt**0.6 * speed_rpm**0.6,
         "sliding": g_sl * sliding_friction_coefficient(speed_rpm, nu_cSt, dm, spec.mu_bl,
                                                        spec.mu_ehl),
-        "drag_vm": drag_vm_moment(speed_rpm, dm, k_ball, drag_loss_factor(level)),
+        "drag_vm": vm,
         "drag_rs": rs,
     }
 
@@ -456,7 +475,7 @@ def bearing_validity(spec: BearingSpec, omega_rad_s: float, nu_m2_s: float) -> B
     if not 1.0 <= kappa <= 4.0:
         notes.append(f"viscosity ratio kappa = {kappa:.3g} outside 1-4 (nu_1 = {nu1:.3g} "
                      "cSt): the bearing friction models are extrapolated")
-    if spec.model == "skf" and spec.drag == "vm+rs":
+    if spec.model == "skf" and spec.drag == "skf-full":
         limit = 250.0 if spec.oil_level_ratio * dm > 0.5 * m_to_mm(spec.outside_m) else 500.0
         if nu > limit:
             notes.append(f"nu = {nu:.4g} cSt above the SKF R_s drag term's limit "
@@ -464,3 +483,37 @@ def bearing_validity(spec: BearingSpec, omega_rad_s: float, nu_m2_s: float) -> B
     if spec.model == "palmgren" and nu * n < PALMGREN_MIN_NU_N:
         notes.append(f"nu n = {nu * n:.4g} < 2000: Palmgren's M_0 is its constant floor")
     return BearingValidity(nu1, kappa, n * dm, tuple(notes))
+
+
+def bearing_vm_drag_power(spec: BearingSpec, omega_rad_s):
+    """Power of SKF's V_M drag term of the bearing, whatever its model [W] [1]_.
+
+    ``0.4 V_M K_ball dm^5 n^2 |omega|`` (N mm to N m), with the series' K_Z and rows of
+    balls (3.1 and 1, the deep-groove values, without a series) and V_M at the bearing's
+    oil level. The loop's ``bearing_ball_drag`` effect scales it: the drag of the balls
+    in the oil, calibrated apart from the rolling and sliding. It does not depend on the
+    oil (the V_M term has neither viscosity nor density).
+
+    Parameters
+    ----------
+    spec : BearingSpec
+        The bearing (d, D, oil level; series if known).
+    omega_rad_s : float or array
+        Shaft speed [rad/s] (sign ignored).
+
+    Returns
+    -------
+    float or array
+        Power [W] (0 at rest).
+
+    References
+    ----------
+    SKF catalogue, "Friction", drag losses [1]_ (:func:`drag_vm_moment`).
+    """
+    c = SERIES_CONSTANTS.get(spec.series)
+    k_z, rows = (c.k_z, c.ball_rows) if c is not None else (3.1, 1)
+    d, D = m_to_mm(spec.bore_m), m_to_mm(spec.outside_m)
+    w = m.fabs(omega_rad_s)
+    moment = drag_vm_moment(rad_s_to_rpm(w), 0.5 * (d + D), ball_drag_constant(d, D, k_z, rows),
+                            drag_loss_factor(spec.oil_level_ratio))
+    return mm_to_m(moment) * w

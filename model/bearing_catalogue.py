@@ -286,7 +286,8 @@ def bearing_spec_from(table: dict, where: str = "[bearing]") -> BearingSpec:
     for skf), ``width_mm``, ``balls``, ``ball_diameter_mm``, ``radial_load_N`` (default
     50), ``axial_load_N`` (0), ``static_load_rating_N`` (catalogue, or ISO 76 from the
     balls), ``submerged`` (true; false with ``oil_level_mm``), ``f0`` (4 submerged, 2 oil
-    bath), ``drag`` (vm | vm+rs, default vm), ``mu_ehl`` (0.05), ``mu_bl`` (0.12),
+    bath), ``drag`` (skf-vm-term | skf-full | none, default skf-vm-term; the former
+    vm | vm+rs read with a deprecation warning), ``mu_ehl`` (0.05), ``mu_bl`` (0.12),
     ``k_rs`` (0 submerged, 3e-8 oil bath), ``seals`` (only "none"). Everything taken
     from the catalogue or a default is listed in ``defaults_used``, except the series
     and bore a designation states exactly.
@@ -398,10 +399,11 @@ def describe_defaults(spec: BearingSpec) -> tuple[str, ...]:
         "type": (spec.kind, "the only type implemented"),
         "outside_mm": (_mm(spec.outside_m), cat),
         "width_mm": (None if spec.width_m is None else _mm(spec.width_m), cat),
-        "balls": (spec.balls, "estimate: 60 % of the pitch circle filled; not used by the "
-                  "models"),
+        "balls": (spec.balls, "estimate: 60 % of the pitch circle filled; not used by "
+                  "SKF or Palmgren, only by the band's balls in still oil"),
         "ball_diameter_mm": (_mm(spec.ball_diameter_m), "estimate: 0.3 (D - d) to 1/32 in; "
-                             "not used by the models"),
+                             "not used by SKF or Palmgren, only by the band's balls in "
+                             "still oil"),
         "static_load_rating_N": (spec.static_load_rating_N, cat or "ISO 76 from the "
                                  "estimated balls"),
         "radial_load_N": (spec.radial_load_N, "guess; the loss hardly depends on it"),
@@ -409,7 +411,9 @@ def describe_defaults(spec: BearingSpec) -> tuple[str, ...]:
         "submerged": (spec.submerged, "an oil-filled joint"),
         "f0": (spec.f0, "Palmgren, 2x the oil-bath value 2 (recalled guidance)"
                if spec.submerged else "Palmgren, oil bath"),
-        "drag": (spec.drag, "the R_s term is outside its validity here, docs/bearing.md"),
+        "drag": (spec.drag, "only the V_M term of SKF's drag, not SKF's full model: its "
+                 "R_s term is outside its validity in a submerged bearing; balls as spheres "
+                 "in still oil give about the same drag; docs/bearing.md"),
         "mu_ehl": (spec.mu_ehl, "SKF, mineral oil"),
         "mu_bl": (spec.mu_bl, "SKF 2013"),
         "k_rs": (spec.k_rs, "flooded (submerged)" if spec.submerged

@@ -25,6 +25,14 @@ References
    table of f_0 for radial ball bearings; recalled).
 .. [6] ISO 281:2007, *Rolling bearings -- Dynamic load ratings and rating life* (rated
    viscosity nu_1; recalled, exponents checked against the SKF diagram).
+.. [7] L. Schiller, A. Naumann, "Über die grundlegenden Berechnungen bei der
+   Schwerkraftaufbereitung", *Z. Ver. Dtsch. Ing.* 77 (1933) 318-320: the sphere drag
+   coefficient ``C_D = 24/Re (1 + 0.15 Re^0.687)``, Re <= 1000, as tabulated with its
+   accuracy (within about 5 % of the standard drag curve below Re = 800) by R. Clift,
+   J. R. Grace, M. E. Weber, *Bubbles, Drops, and Particles*, Academic Press 1978, ch. 5.
+.. [8] T. A. Harris, M. N. Kotzalas, *Essential Concepts of Bearing Technology*, 5th ed.,
+   CRC 2006, the chapter on bearing kinematics: the cage (ball-set) speed of a ball
+   bearing with a rotating inner ring, ``omega_c = omega/2 (1 - D_w cos(a)/d_m)``.
 """
 
 from __future__ import annotations
@@ -103,6 +111,18 @@ ball's centre) [-] [4]_ (recalled)."""
 F0_SUBMERGED = 4.0
 """Palmgren f_0 of a fully submerged bearing [-]: twice the oil-bath value (the usual
 guidance "up to about 2x" for high levels, recalled and not located)."""
+F0_OIL_RANGE = (F0_OIL_BATH, F0_SUBMERGED)
+"""Published range of Palmgren's f_0 for a deep-groove ball bearing lubricated by oil at
+a level (oil bath or submerged) [-] [4]_ (recalled): 2 for an oil bath with a horizontal
+shaft, 4 for an oil bath with a vertical shaft or an oil jet, the value the guidance
+"up to about 2x the oil-bath value" gives a submerged bearing. The band of models
+(:func:`oilgap.model.bearing_band.bearing_model_band`) spans it; grease (0.7-2) and oil
+mist (1) do not apply to an oil-filled joint."""
+SPHERE_DRAG_RE_NEWTON = 1000.0
+"""Reynolds number above which a sphere's drag coefficient is taken constant, 0.44 [-]
+(the Newton range; Schiller-Naumann below [7]_)."""
+SPHERE_DRAG_CD_NEWTON = 0.44
+"""Sphere drag coefficient in the Newton range, 1e3 < Re < 2e5 [-] [7]_."""
 
 # ISO 76 factor f_0 of radial ball bearings against D_w cos(a)/D_pw (recalled) [5].
 _ISO76_RATIO = np.round(np.arange(0.0, 0.405, 0.01), 2)
@@ -468,3 +488,97 @@ def palmgren_load_moment(pitch_diameter_mm, fr_N, fa_N, static_rating_N, z=PALMG
     p1 = max(3.0 * fa_N - 0.1 * fr_N, fr_N)
     p0 = max(0.6 * fr_N + 0.5 * fa_N, fr_N)
     return z * (p0 / static_rating_N) ** y * p1 * pitch_diameter_mm
+
+
+# --------------------------------------------------------------------------- balls in still oil
+
+
+def sphere_drag_force(speed_m_s, diameter_m, nu_m2_s, rho_kg_m3):
+    """Drag of a sphere moving steadily through still fluid [N] (Schiller-Naumann) [7]_.
+
+    ``F = 1/2 rho C_D (pi D^2/4) U^2`` with ``C_D = 24/Re (1 + 0.15 Re^0.687)``,
+    ``Re = U D/nu`` <= 1000, and ``C_D = 0.44`` above. Written as
+    ``F = 3 pi mu D U (1 + 0.15 Re^0.687)`` below Re = 1000, which is Stokes' drag at
+    Re -> 0 and finite at U = 0. The two branches meet within 0.5 % at Re = 1000.
+
+    Parameters
+    ----------
+    speed_m_s : float or array
+        |U|, the sphere's speed through the fluid [m/s] (sign ignored).
+    diameter_m : float
+        Sphere diameter D [m].
+    nu_m2_s : float or array
+        Kinematic viscosity of the fluid [m^2/s].
+    rho_kg_m3 : float or array
+        Density of the fluid [kg/m^3].
+
+    Returns
+    -------
+    float or array
+        Drag force [N], opposing the motion (a magnitude here).
+    """
+    u = np.abs(np.asarray(speed_m_s, dtype=float))
+    re = u * diameter_m / nu_m2_s
+    viscous = 3.0 * math.pi * rho_kg_m3 * nu_m2_s * diameter_m * u * (1.0 + 0.15 * re**0.687)
+    newton = 0.5 * rho_kg_m3 * SPHERE_DRAG_CD_NEWTON * 0.25 * math.pi * diameter_m**2 * u * u
+    return np.where(re <= SPHERE_DRAG_RE_NEWTON, viscous, newton)
+
+
+def cage_pitch_speed(omega_rad_s, pitch_diameter_m, ball_diameter_m):
+    """Speed of the balls' centres on the pitch circle, inner ring rotating [m/s] [8]_.
+
+    ``U = omega_c d_m/2`` with the cage speed ``omega_c = |omega|/2 (1 - D_w/d_m)``
+    (contact angle 0, outer ring fixed, no skidding).
+
+    Parameters
+    ----------
+    omega_rad_s : float or array
+        Speed of the rotating ring relative to the fixed one [rad/s] (sign ignored).
+    pitch_diameter_m : float
+        Pitch diameter d_m [m].
+    ball_diameter_m : float
+        Ball diameter D_w [m].
+
+    Returns
+    -------
+    float or array
+        U [m/s].
+    """
+    omega_cage = 0.5 * np.abs(omega_rad_s) * (1.0 - ball_diameter_m / pitch_diameter_m)
+    return omega_cage * 0.5 * pitch_diameter_m
+
+
+def balls_in_still_oil_power(omega_rad_s, balls, ball_diameter_m, pitch_diameter_m,
+                             nu_m2_s, rho_kg_m3):
+    """First-principles drag power of a bearing's balls moving through still oil [W].
+
+    ``P = Z F(U) U``: each of the Z balls an isolated sphere moving at the cage's pitch
+    speed U (:func:`cage_pitch_speed` [8]_) through oil at rest, with the
+    Schiller-Naumann drag :func:`sphere_drag_force` [7]_. An estimate, not a bearing
+    model: it leaves out the cage, the rings' walls (confinement raises the drag), the
+    wakes of the balls ahead (shielding lowers it), the balls' spin and the oil the
+    cage drags along (which lowers the relative speed). docs/bearing.md compares it with
+    SKF's V_M drag term.
+
+    Parameters
+    ----------
+    omega_rad_s : float or array
+        Shaft speed [rad/s] (sign ignored).
+    balls : int
+        Number of balls Z [-].
+    ball_diameter_m : float
+        Ball diameter D_w [m].
+    pitch_diameter_m : float
+        Pitch diameter d_m [m].
+    nu_m2_s : float or array
+        Kinematic viscosity of the oil [m^2/s].
+    rho_kg_m3 : float or array
+        Density of the oil [kg/m^3].
+
+    Returns
+    -------
+    float or array
+        Drag power [W] (0 at rest).
+    """
+    u = cage_pitch_speed(omega_rad_s, pitch_diameter_m, ball_diameter_m)
+    return balls * sphere_drag_force(u, ball_diameter_m, nu_m2_s, rho_kg_m3) * u

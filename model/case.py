@@ -353,6 +353,12 @@ class ThermalSpec:
         :mod:`oilgap.model.film_heating` [-].
     conductivity_W_mK : float or None
         Oil thermal conductivity [W/(m K)], > 0; None: the film model's default.
+    film_strength : float or None
+        Film strength s in [0, 1] on the Nahme number (``film``/``full`` modes) [-];
+        None: 1, the smooth-film theory (docs/thermal.md#evidence).
+    wall_floating : float or None
+        Wall parameter w in [0, 1]: 0 isothermal walls, 1 an insulated rotor [-];
+        None: from ``walls``. Given with ``walls = "adiabatic-rotor"`` it must be 1.
 
     Raises
     ------
@@ -366,6 +372,8 @@ class ThermalSpec:
     other_heat_W: float = 0.0
     walls: str = "isothermal-walls"
     conductivity_W_mK: float | None = None
+    film_strength: float | None = None
+    wall_floating: float | None = None
 
     def __post_init__(self):
         where = "thermal"
@@ -377,12 +385,21 @@ class ThermalSpec:
             raise InputError("walls", self.walls, f"one of {', '.join(WALL_CONDITIONS)}", where)
         if self.conductivity_W_mK is not None:
             check_positive("conductivity_W_per_mK", self.conductivity_W_mK, where)
+        for key in ("film_strength", "wall_floating"):
+            if getattr(self, key) is not None:
+                check_range(key, getattr(self, key), 0.0, 1.0, where)
+        if (self.wall_floating is not None and self.walls == "adiabatic-rotor"
+                and self.wall_floating != 1.0):
+            raise InputError("wall_floating", self.wall_floating, "1 (or leave it out) with "
+                             "walls = 'adiabatic-rotor'; give walls = 'isothermal-walls' "
+                             "or leave walls out to set w in [0, 1]", where)
 
 
 THERMAL_TOML_KEYS = {  # TOML key of [thermal] -> ThermalSpec field (same unit, SI)
     "sea_temp_C": "sea_temp_C", "resistance_K_per_W": "resistance_K_W",
     "heat_capacity_J_per_K": "heat_capacity_J_K", "other_heat_W": "other_heat_W",
-    "walls": "walls", "conductivity_W_per_mK": "conductivity_W_mK"}
+    "walls": "walls", "conductivity_W_per_mK": "conductivity_W_mK",
+    "film_strength": "film_strength", "wall_floating": "wall_floating"}
 """``[thermal]`` key -> :class:`ThermalSpec` field."""
 
 

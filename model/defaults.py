@@ -39,6 +39,8 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
     from .case import DesignCase
 
 SEED_SOURCE = "the seed joint's"
+FILM_STRENGTH_SOURCE = ("the smooth-film theory, used by the film/full modes; the seed's "
+                        "Table 4 does not support it at full strength: docs/thermal.md#evidence")
 """Source of the values that stand for the seed joint (motor, operating point, cycle)."""
 
 _MOTOR_UNITS = {"remanence_T": "T", "magnet_thickness_mm": "mm", "recoil_permeability": "-",
@@ -188,6 +190,8 @@ def reader_defaults(doc: Mapping[str, Any], bounds: DesignBounds, motor: Motor,
         for k, unit in (("other_heat_W", "W"), ("walls", "")):
             if k not in td:
                 out.append(Default(f"thermal.{k}", getattr(thermal, k), unit, "default"))
+        if "film_strength" not in td:
+            out.append(Default("thermal.film_strength", 1.0, "", FILM_STRENGTH_SOURCE))
     return tuple(out)
 
 

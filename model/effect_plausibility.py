@@ -32,6 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from .film_heating import film_strength_of, film_theory_coefficient
 from .regions import JointGeometry
 
 FILM_CONDUCTIVITY_MIN_W_MK = 0.1
@@ -78,6 +79,11 @@ class RigFacts:
     bearing : BearingSpec or None
         The case's rolling bearing (``[bearing]``), if any: the churning coefficient is
         then a correction factor on its model.
+    film_theory_K_W : float
+        The ``film_heating`` coefficient of the smooth-film theory (strength 1,
+        isothermal walls, k = 0.13 W/(m K)) on the rotor-stator clearance [K/W]
+        (:func:`~oilgap.model.film_heating.film_theory_coefficient`; nan: unknown): a
+        fitted c is the film strength ``s = c / film_theory_K_W``.
     """
 
     fluids: tuple[FluidFacts, ...]
@@ -85,6 +91,22 @@ class RigFacts:
     wetted_length_m: float
     film_resistance_K_W: float = np.inf
     bearing: object = None
+    film_theory_K_W: float = np.nan
+
+    def film_strength(self, coefficient_K_W: float) -> float:
+        """Film strength s [-] of a fitted ``film_heating`` coefficient c [K/W].
+
+        Parameters
+        ----------
+        coefficient_K_W : float
+            c (or an end of its interval) [K/W].
+
+        Returns
+        -------
+        float
+            ``c / film_theory_K_W`` [-] (nan when the rig's clearance is unknown).
+        """
+        return film_strength_of(coefficient_K_W, self.film_theory_K_W)
 
     @classmethod
     def of(cls, geometry: JointGeometry, fluids) -> RigFacts:
@@ -106,8 +128,11 @@ class RigFacts:
                 + [geometry.disc_radii_m[0]])
         film = max(float(np.max(g.gap_m)) / (FILM_CONDUCTIVITY_MIN_W_MK * 2.0 * np.pi
                                             * g.radius_m * g.length_m) for g in regions)
+        g0 = regions[0]
+        theory = float(np.max(film_theory_coefficient(np.asarray(g0.gap_m), g0.radius_m,
+                                                      g0.length_m)))
         return cls(tuple(fluids), r, float(sum(g.length_m for g in regions)), film,
-                   getattr(geometry, "bearing", None))
+                   getattr(geometry, "bearing", None), theory)
 
 
 @dataclass(frozen=True)
@@ -261,6 +286,12 @@ PLAUSIBLE = {
         "bearing differ this much)",
         "Harris & Kotzalas 2006 ch. 9; Palmgren 1959; SKF catalogue 'Friction'",
         bounds=_churning_bounds),
+    "bearing_ball_drag": Plausibility(
+        0.0, SKF_CORRECTION_MAX, "k = 1 is SKF's V_M drag term and the balls as spheres in "
+        "still oil give about 0.9 of it; SKF's R_s term, outside its validity in a "
+        "submerged bearing, would add 10-130x at 150-1000 cSt; the bound is that of the "
+        "correction factor on SKF's model", "SKF catalogue 'Friction'; Schiller & Naumann "
+        "1933; docs/bearing.md"),
     "seal_coulomb_friction": Plausibility(
         0.0, np.inf, "a lip seal's torque is bounded by its size: at most "
         f"{SEAL_TANGENTIAL_FORCE_N_M / 1000:g} N/mm of circumference (radial lip load "
@@ -290,7 +321,9 @@ PLAUSIBLE = {
     "film_heating": Plausibility(
         0.0, np.inf, "uniform dissipation in a film of thickness delta and wetted area "
         "A = 2 pi R L raises its mean temperature by P delta/(12 k A) with both walls at the "
-        "measured temperature and by P delta/(3 k A) with an insulated rotor; c <= delta/(k A) "
+        "measured temperature and by P delta/(3 k A) with an insulated rotor (c/(delta/(12 "
+        "k A)) is the film strength s of the Nahme-Griffith film, RigFacts.film_strength); "
+        "c <= delta/(k A) "
         f"(the largest of the clearances, k = {FILM_CONDUCTIVITY_MIN_W_MK} W/(m K)) leaves "
         "three times the insulated film's rise for walls above the sensor",
         "Bird, Stewart & Lightfoot 2002 sec. 10.4; Nahme 1940", bounds=_film_bounds),

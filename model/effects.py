@@ -17,6 +17,13 @@ coefficient c is a correction factor on the bearing model: c = 1 means the model
 right. For a case without one it is Palmgren's load-independent loss with f0 = 1 at
 the annulus' pitch diameter, and the coefficient is f0.
 
+``bearing_ball_drag`` is the drag of the balls in the oil alone: SKF's V_M drag term of
+the case's ``[bearing]`` (:func:`oilgap.model.bearing.bearing_vm_drag_power`), so the
+fitted k is a drag scale (k = 1: the V_M term; balls as spheres in still oil give about
+0.9). With ``bearing_ball_churning`` beside it the bearing's loss is
+``c P_model + k P_V_M``: the rolling and sliding scale by c, the drag by about c + k.
+Without a ``[bearing]`` it does not apply.
+
 The library (:data:`EFFECTS`) maps each stable name to an :class:`Effect`
 carrying its formula, reference, coefficient unit, sign constraint and the
 function that turns an :class:`EffectContext` (per-sample arrays of a run set)
@@ -43,7 +50,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .bearing import bearing_power
+from .bearing import bearing_power, bearing_vm_drag_power
 from .effect_laws import (
     CRITICAL_TAYLOR_NUMBER,
     FREE_DISC_TRANSITION_RE,
@@ -305,6 +312,12 @@ def _f_churning(c: EffectContext):
     return ball_churning_power(c.omega_rad_s, c.nu_m2_s, c.bearing_pitch_diameter_m, 1.0)
 
 
+def _f_ball_drag(c: EffectContext):
+    if c.bearing is None:  # the drag term needs the bearing's rings (d, D)
+        return None
+    return bearing_vm_drag_power(c.bearing, c.omega_rad_s)
+
+
 def _f_seal(c: EffectContext):
     return coulomb_friction_power(c.omega_rad_s, 1.0)
 
@@ -509,6 +522,13 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            "f0 or c (Palmgren factor; with [bearing]: c multiplies the case's bearing "
            "model P_bearing(w, nu) of oilgap.model.bearing, 1 = the model is right)", "-",
            True, _f_churning, "-"),
+    Effect("bearing_ball_drag", "drag of the bearing's balls in the oil",
+           "k * 0.4 V_M K_ball d_m[mm]^5 n[rpm]^2 |w| N mm (SKF's V_M drag term of the "
+           "case's [bearing])",
+           "SKF catalogue 'Friction' (10000 EN), drag losses; balls as spheres in still "
+           "oil: Schiller & Naumann 1933 (docs/bearing.md#the-bearing-model-band)",
+           "k (drag scale: multiple of SKF's V_M drag term; with bearing_ball_churning the "
+           "drag is scaled by about c + k)", "-", True, _f_ball_drag, "-"),
     Effect("seal_coulomb_friction", "seal / Coulomb friction", "tau_c |w|",
            "Coulomb friction; Müller & Nau 1998 ch. 5 (lip-seal torque)",
            "tau_c (friction torque)", "N m", True, _f_seal, "N m"),

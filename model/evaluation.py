@@ -35,6 +35,7 @@ from .bearing import (
     bearing_torque,
     bearing_validity,
 )
+from .bearing_band import BearingModelBand, bearing_model_band
 from .case import DesignCase
 from .case_bearing import bearing_default_notes, bearing_defaults
 from .errors import InputError, SolverError
@@ -86,18 +87,12 @@ class RegionResult:
     nahme_peak : float
         Raw Nahme-Griffith number b mu U^2/k at the peak speed and the operating
         temperature (plane film, rotor surface speed) [-].
-    nahme_effective_peak : float
-        The effective (curvature-corrected, lagged) Nahme number the film modes use
-        there [-].
-    film_factor_steady_peak : float
-        Steady heated/isothermal torque ratio Phi of a film held at the peak speed (the
-        raw Nahme number, curvature-corrected, not lagged) [-].
-    film_factor_effective_peak : float
-        The factor the ``film``/``full`` modes apply at the peak: Phi at the effective
-        Nahme number, faded out above Taylor onset [-].
+    nahme_effective_peak, film_factor_steady_peak, film_factor_effective_peak : float
+        The film at the peak speed as :class:`~oilgap.model.film_cycle.FilmPeak` gives
+        it: effective Na, steady Phi, the factor ``film``/``full`` apply [-].
     film_factor_applied_peak : float
-        The factor this evaluation applied there [-]: the effective one under
-        ``film``/``full``, 1.0 under ``none``/``bulk``.
+        The factor this evaluation applied there: the effective one under
+        ``film``/``full``, 1.0 under ``none``/``bulk`` [-].
     film_applied : bool
         Whether the mode applies the film correction.
     film_temp_rise_peak_K : float or None
@@ -160,6 +155,10 @@ class BearingResult:
         Speed factor n d_m at the peak speed [mm rpm].
     validity_notes : tuple of str
         One sentence per range of validity of the model the point is outside.
+    model_band : BearingModelBand or None
+        Its mean power under every available bearing model at the same oil state [W]
+        (:func:`~oilgap.model.bearing_band.bearing_model_band`), beside the chosen one;
+        ``model_band_W`` in the JSON.
     """
 
     name: str
@@ -174,6 +173,7 @@ class BearingResult:
     kappa_peak: float
     speed_factor_peak_mm_rpm: float
     validity_notes: tuple[str, ...]
+    model_band: BearingModelBand | None = None
 
 
 @dataclass(frozen=True)
@@ -287,7 +287,8 @@ def _lengths_in_mm(d: dict) -> dict:
 _LENGTH_KEYS = ("radius_m", "gap_m", "length_m", "pitch_diameter_m")
 """Length fields [m] of :class:`RegionResult` and :class:`BearingResult`."""
 
-_EDGE_KEYS = {**{k: k[:-2] + "_mm" for k in _LENGTH_KEYS}, "terms": "terms_W"}
+_EDGE_KEYS = {**{k: k[:-2] + "_mm" for k in _LENGTH_KEYS}, "terms": "terms_W",
+              "model_band": "model_band_W"}
 """Field -> its key in :meth:`CaseEvaluation.to_dict`."""
 
 
@@ -397,7 +398,8 @@ def _region_result(case: DesignCase, region, p_mean: float, nu, rho, b, film,
         peak.applied(apply_film), bool(apply_film), peak.film_temp_rise_peak_K)
 
 
-def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float) -> BearingResult:
+def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float,
+                   rho_kg_m3: float | None = None) -> BearingResult:
     """The rolling bearing's row at a kinematic viscosity (the bulk oil's).
 
     Parameters
@@ -408,12 +410,15 @@ def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float) -> Beari
         The bearing.
     nu_m2_s : float
         Kinematic viscosity of the oil [m^2/s].
+    rho_kg_m3 : float or None
+        Density of the oil [kg/m^3]; given, the row carries the band of bearing models.
 
     Returns
     -------
     BearingResult
         Mean power [W] in total and per term, moment at the peak speed [N m], the
-        defaults the tool filled in, kappa [-] and n d_m [mm rpm] at the peak speed.
+        defaults the tool filled in, kappa [-] and n d_m [mm rpm] at the peak speed,
+        the band of bearing models [W].
 
     References
     ----------
@@ -431,7 +436,9 @@ def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float) -> Beari
         float(bearing_mean_power(spec, nodes, weights, nu_m2_s)),
         float(bearing_torque(spec, cycle.peak_omega_rad_s, nu_m2_s)), terms,
         bearing_defaults(spec), bearing_default_notes(spec), float(valid.kappa),
-        float(valid.speed_factor_mm_rpm), valid.notes)
+        float(valid.speed_factor_mm_rpm), valid.notes,
+        None if rho_kg_m3 is None else bearing_model_band(spec, nodes, weights, nu_m2_s,
+                                                          rho_kg_m3))
 
 
 def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regions):
@@ -498,7 +505,7 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float):
             results = tuple(_region_result(case, r, p, nu, rho, b, film, applies_film(mode))
                             for r, p in zip(regions, means, strict=True))
             bearings = () if case.bearing is None else (bearing_result(case, case.bearing,
-                                                                       nu),)
+                                                                       nu, rho),)
             total = sum(r.mean_power_W for r in results + bearings)
             iso = total if mode == "none" else float(joint_mean_power(case, t_case, "none", d))
     except (OverflowError, ZeroDivisionError) as e:

@@ -82,6 +82,13 @@ class FilmHeating:
         Angular frequencies of the heating spectrum [rad/s] (empty: quasi-steady).
     spectral_weights : tuple of float
         Variance fraction of each frequency [-] (sum 1, or empty).
+    strength : float or CasADi symbol
+        Film strength s in [0, 1]: the Nahme number is s Na (1: the smooth-film theory,
+        0: no film effect; docs/thermal.md#evidence) [-].
+    wall_floating : float, CasADi symbol or None
+        Wall parameter w in [0, 1] between isothermal walls (0) and an insulated rotor
+        (1), :func:`~oilgap.model.film_heating.wall_z_factor`; None: ``walls`` decides
+        [-].
     """
 
     walls: str = "isothermal-walls"
@@ -89,10 +96,18 @@ class FilmHeating:
     diffusivity_m2_s: float = MINERAL_OIL_DIFFUSIVITY_M2_S
     frequencies_rad_s: tuple[float, ...] = ()
     spectral_weights: tuple[float, ...] = ()
+    strength: float = 1.0
+    wall_floating: float | None = None
 
     def __post_init__(self):
         if self.walls not in WALL_CONDITIONS:
             raise InputError("walls", self.walls, f"one of {', '.join(WALL_CONDITIONS)}")
+        for name in ("strength", "wall_floating"):
+            v = getattr(self, name)
+            if v is None or m.is_symbolic(v):
+                continue
+            if not (isinstance(v, (int, float)) and 0.0 <= v <= 1.0):
+                raise InputError(name, v, "a number in [0, 1]")
         for name in ("conductivity_W_mK", "diffusivity_m2_s"):
             v = getattr(self, name)
             if not (isinstance(v, (int, float)) and np.isfinite(v) and v > 0):
@@ -100,6 +115,12 @@ class FilmHeating:
         if len(self.frequencies_rad_s) != len(self.spectral_weights):
             raise InputError("spectral_weights", len(self.spectral_weights),
                              f"as many as the frequencies ({len(self.frequencies_rad_s)})")
+
+    @property
+    def wall_setting(self):
+        """What the film laws take as ``walls``: the wall parameter w if given, else the
+        name (the exact closed forms of the two limits) [-]."""
+        return self.walls if self.wall_floating is None else self.wall_floating
 
 
 def heating_spectrum(time_s, omega_rad_s, energy: float = SPECTRUM_ENERGY
@@ -215,7 +236,8 @@ def effective_nahme(omega_rad_s, weights, radius_m, gap_m, mu_Pa_s, b_1_K,
                     film: FilmHeating):
     """Effective Nahme number of a clearance at each node of a duty cycle [-].
 
-    Na_i = b mu (omega_i R)^2 / k, corrected for the film's curvature, then lagged:
+    Na_i = b mu (omega_i R)^2 / k, times the film strength s, corrected for the film's
+    curvature, then lagged:
     ``Na_eff,i = <Na> + g (Na_i - <Na>)`` (module docstring).
 
     Parameters
@@ -238,7 +260,7 @@ def effective_nahme(omega_rad_s, weights, radius_m, gap_m, mu_Pa_s, b_1_K,
     na_raw : array or CasADi expression
         Na at each node, plane film, rotor surface speed [-].
     na_eff : array or CasADi expression
-        Effective Na at each node [-].
+        Effective Na at each node (with the strength s) [-].
 
     References
     ----------
@@ -246,8 +268,8 @@ def effective_nahme(omega_rad_s, weights, radius_m, gap_m, mu_Pa_s, b_1_K,
     """
     speed = m.fabs(omega_rad_s) * radius_m
     na = nahme_number(b_1_K, mu_Pa_s, speed, film.conductivity_W_mK)
-    na_c = curvature_corrected_nahme(na, gap_m / radius_m, film.walls)
-    g = cycle_gain(film_time_constant_s(gap_m, film.diffusivity_m2_s, film.walls),
+    na_c = curvature_corrected_nahme(film.strength * na, gap_m / radius_m, film.wall_setting)
+    g = cycle_gain(film_time_constant_s(gap_m, film.diffusivity_m2_s, film.wall_setting),
                    film.frequencies_rad_s, film.spectral_weights)
     mean = _expand(weighted_mean(na_c, weights), na_c)
     return na, mean + g * (na_c - mean)
@@ -290,7 +312,7 @@ def film_factors(omega_rad_s, weights, radius_m, gap_m, nu_m2_s, rho_kg_m3, b_1_
     """
     _, na_eff = effective_nahme(omega_rad_s, weights, radius_m, gap_m,
                                 nu_m2_s * rho_kg_m3, b_1_K, film)
-    phi = film_factor(na_eff, film.walls)
+    phi = film_factor(na_eff, film.wall_setting)
     ta = taylor_number(couette_reynolds(omega_rad_s, radius_m, gap_m, nu_m2_s), gap_m,
                        radius_m)
     return 1.0 - laminar_weight(ta) * (1.0 - phi)
@@ -308,8 +330,8 @@ class FilmPeak:
         The effective Nahme number the film modes use there: curvature-corrected and
         lagged over the cycle (:func:`effective_nahme`) [-].
     film_factor_steady_peak : float
-        Steady factor Phi of a film held at the peak speed: at the raw Nahme number,
-        curvature-corrected, not lagged [-].
+        Steady factor Phi of a film held at the peak speed: at the raw Nahme number
+        (times the film strength s), curvature-corrected, not lagged [-].
     film_factor_effective_peak : float
         The factor the film modes apply at the peak node: Phi at the effective Nahme
         number, faded out above Taylor onset (:func:`film_factors`) [-].
@@ -374,9 +396,10 @@ def film_peak(omega_rad_s, weights, radius_m, gap_m, nu_m2_s, rho_kg_m3, b_1_K,
     factor = film_factors(nodes, weights, radius_m, gap_m, nu_m2_s, rho_kg_m3, b_1_K, film)
     ta = taylor_number(couette_reynolds(nodes[i], radius_m, gap_m, nu_m2_s), gap_m, radius_m)
     laminar = float(laminar_weight(ta)) >= 0.5
-    rise = float(film_temperature_rise(na_eff[i], b_1_K, film.walls)) if laminar else None
-    steady = film_factor(curvature_corrected_nahme(na[i], gap_m / radius_m, film.walls),
-                         film.walls)
+    rise = (float(film_temperature_rise(na_eff[i], b_1_K, film.wall_setting)) if laminar
+            else None)
+    steady = film_factor(curvature_corrected_nahme(film.strength * na[i], gap_m / radius_m,
+                                                   film.wall_setting), film.wall_setting)
     return FilmPeak(float(na[i]), float(na_eff[i]), float(steady), float(factor[i]), rise)
 
 
@@ -388,8 +411,9 @@ def film_heating_for(duty_cycle, thermal=None) -> FilmHeating:
     duty_cycle : DutyCycle
         The cycle (``time_s`` [s], ``omega_rad_s`` [rad/s]).
     thermal : ThermalSpec, optional
-        The case's ``[thermal]`` table (walls, conductivity [W/(m K)]); without it the
-        film has isothermal walls and the mineral-oil conductivity 0.13 W/(m K).
+        The case's ``[thermal]`` table (walls, conductivity [W/(m K)], film strength and
+        wall floating [-]); without it the film has isothermal walls, the mineral-oil
+        conductivity 0.13 W/(m K) and strength 1.
 
     Returns
     -------
@@ -403,6 +427,9 @@ def film_heating_for(duty_cycle, thermal=None) -> FilmHeating:
     freqs, weights = heating_spectrum(duty_cycle.time_s, duty_cycle.omega_rad_s)
     walls = "isothermal-walls" if thermal is None else thermal.walls
     k = None if thermal is None else thermal.conductivity_W_mK
+    s = None if thermal is None else getattr(thermal, "film_strength", None)
+    w = None if thermal is None else getattr(thermal, "wall_floating", None)
     return FilmHeating(walls, MINERAL_OIL_CONDUCTIVITY_W_MK if k is None else float(k),
                        MINERAL_OIL_DIFFUSIVITY_M2_S, tuple(float(f) for f in freqs),
-                       tuple(float(p) for p in weights))
+                       tuple(float(p) for p in weights), 1.0 if s is None else float(s),
+                       None if w is None else float(w))

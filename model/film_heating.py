@@ -19,6 +19,22 @@ number ``Na = b mu0 U^2 / k`` (independent of h) [1]_, [2]_, [4]_. Its exact sol
     Phi      = acosh(1 + z) / sqrt(z (2 + z))     (= 2a/sinh 2a, sinh^2 a = Na/8 or Na/2)
     dT_max   = ln(1 + z/2) / b                    (mid-gap, or at the insulated rotor)
 
+Two calibration parameters (docs/thermal.md#evidence) carry the theory to a real joint:
+
+* the **film strength** s in [0, 1] scales the Nahme number, Na_eff = s Na (s = 1 the
+  smooth-film theory, s = 0 no film effect): the seed's Table 4 does not support s = 1;
+* the **wall floating** w in [0, 1] sits between isothermal walls (w = 0) and an
+  insulated rotor (w = 1) through ``z = Na (1 + 3w)/4`` (:func:`wall_z_factor`). Read
+  physically, w = 1/(1 + Bi) with Bi = h_r delta/k the Biot number of a rotor wall that
+  loses heat by a film coefficient h_r to the bulk: the first-order term of the Robin
+  problem theta'(1) = -Bi theta(1) is 1 - Phi = Na (1 + 3w)/12 exactly, the same as the
+  closed form's z/3; at both limits the closed form is exact. In between it is an
+  interpolation of the full solution: against a finite-difference solution of the Robin
+  problem (scipy's solve_bvp) the factor is within 1 % up to Na = 3 and 3.5 % at
+  Na = 10 for w = 0.25-0.75, on the side of more heating (tests/test_film_strength.py).
+  The curvature slope (1 + 0.5w) and the time-constant factor (1 + w)^2 between the
+  limits are interpolations too.
+
 Phi multiplies the isothermal shear stress, torque and dissipated power alike (the
 speed is imposed, P = tau U); 1 - Phi = Na/12 - Na^2/120 + ... (isothermal walls),
 Na/3 - 2 Na^2/15 + ... (adiabatic rotor). Under imposed speed there is exactly one
@@ -74,6 +90,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from . import _math as m
 from .errors import InputError
 
@@ -93,13 +111,73 @@ _SHIFT = 2.0e-3
 """Step of the shifted evaluation in :func:`_phi_of_z` [-] (error <= 0.61 _SHIFT^4)."""
 
 
+def wall_floating_of(walls):
+    """The wall parameter w [-] of a wall condition: 0 for ``"isothermal-walls"``, 1 for
+    ``"adiabatic-rotor"``, a number (float, array or CasADi symbol) in [0, 1] as it is.
+
+    Parameters
+    ----------
+    walls : str, float, array or CasADi symbol
+        A name of :data:`WALL_CONDITIONS` or w [-].
+
+    Returns
+    -------
+    float, array or CasADi symbol
+        w in [0, 1] [-].
+
+    Raises
+    ------
+    InputError
+        An unknown wall name, or a number outside [0, 1].
+    """
+    if isinstance(walls, str):
+        if walls not in WALL_CONDITIONS:
+            raise InputError("walls", walls, f"one of {', '.join(WALL_CONDITIONS)} or a "
+                             "number in [0, 1] (wall_floating)")
+        return 0.0 if walls == "isothermal-walls" else 1.0
+    if not m.is_symbolic(walls):
+        w = np.asarray(walls, dtype=float)
+        if not (np.all(np.isfinite(w)) and np.all(w >= 0.0) and np.all(w <= 1.0)):
+            raise InputError("wall_floating", walls, "a number in [0, 1]")
+    return walls
+
+
+def wall_z_factor(walls):
+    """z/Na of the closed form [-]: 1/4 (isothermal walls), 1 (adiabatic rotor) and
+    ``(1 + 3w)/4`` for a wall parameter w in [0, 1] (module docstring).
+
+    The hottest plane of the first-order (constant viscosity) profile lies at
+    eta_max = (1 + w)/2 of the gap from the stator, and the film's first-order loss is
+    1 - Phi = Na (1 + 3w)/12 = z/3 for a rotor of Biot number Bi = (1 - w)/w; linear in
+    w, smooth for the NLP.
+
+    Parameters
+    ----------
+    walls : str, float, array or CasADi symbol
+        A name of :data:`WALL_CONDITIONS` or w in [0, 1] [-].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        z/Na [-].
+
+    References
+    ----------
+    R. Nahme, Ingenieur-Archiv 11:191-209, 1940 (the two limits); the Robin wall's
+    first-order solution in docs/thermal.md#film-strength-and-wall-floating.
+    """
+    if isinstance(walls, str):
+        return 0.25 if wall_floating_of(walls) == 0.0 else 1.0
+    return 0.25 * (1.0 + 3.0 * wall_floating_of(walls))
+
+
 def _z_of(nahme, walls):
-    """Map Na to the unified argument z of the closed form (z = Na/4 or Na)."""
+    """Map Na to the unified argument z of the closed form (z = Na/4, Na or Na (1+3w)/4)."""
     if walls == "isothermal-walls":
         return 0.25 * nahme
     if walls == "adiabatic-rotor":
         return 1.0 * nahme
-    raise InputError("walls", walls, f"one of {', '.join(WALL_CONDITIONS)}")
+    return wall_z_factor(walls) * nahme
 
 
 def _phi_closed(z):
@@ -154,7 +232,7 @@ def nahme_number(b_1_K, mu_Pa_s, speed_m_s, conductivity_W_mK=MINERAL_OIL_CONDUC
     return b_1_K * mu_Pa_s * speed_m_s * speed_m_s / conductivity_W_mK
 
 
-def film_factor(nahme, walls="isothermal-walls"):
+def film_factor(nahme, walls="isothermal-walls", strength=1.0):
     """Heated/isothermal torque (and power) ratio of a laminar film at imposed speed [1]_, [2]_.
 
     ``Phi = acosh(1 + z)/sqrt(z (2 + z))``, z = Na/4 (isothermal walls) or Na (adiabatic
@@ -167,9 +245,12 @@ def film_factor(nahme, walls="isothermal-walls"):
     ----------
     nahme : float, array or CasADi symbol
         Nahme-Griffith number Na >= 0 [-] (:func:`nahme_number`).
-    walls : str
-        ``"isothermal-walls"`` (both walls at the bulk temperature) or
-        ``"adiabatic-rotor"`` (insulated rotor) [-].
+    walls : str, float, array or CasADi symbol
+        ``"isothermal-walls"`` (both walls at the bulk temperature),
+        ``"adiabatic-rotor"`` (insulated rotor) or the wall parameter w in [0, 1]
+        between them (:func:`wall_z_factor`) [-].
+    strength : float, array or CasADi symbol
+        Film strength s in [0, 1]: Phi is taken at s Na (1 the theory, 0 no heating) [-].
 
     Returns
     -------
@@ -181,7 +262,7 @@ def film_factor(nahme, walls="isothermal-walls"):
     InputError
         An unknown ``walls``.
     """
-    return _phi_of_z(_z_of(nahme, walls))
+    return _phi_of_z(_z_of(strength * nahme, walls))
 
 
 def film_temperature_rise(nahme, b_1_K, walls="isothermal-walls"):
@@ -196,8 +277,8 @@ def film_temperature_rise(nahme, b_1_K, walls="isothermal-walls"):
         Nahme-Griffith number Na >= 0 [-].
     b_1_K : float, array or CasADi symbol
         Viscosity-temperature slope at the wall temperature [1/K] (the same b as in Na).
-    walls : str
-        ``"isothermal-walls"`` or ``"adiabatic-rotor"`` [-].
+    walls : str, float, array or CasADi symbol
+        ``"isothermal-walls"``, ``"adiabatic-rotor"`` or w in [0, 1] between them [-].
 
     Returns
     -------
@@ -231,8 +312,8 @@ def curvature_corrected_nahme(nahme, gap_ratio, walls="isothermal-walls"):
         Nahme-Griffith number at the rotor surface speed [-].
     gap_ratio : float, array or CasADi symbol
         delta/R, gap over rotor radius [-].
-    walls : str
-        ``"isothermal-walls"`` or ``"adiabatic-rotor"`` [-].
+    walls : str, float, array or CasADi symbol
+        ``"isothermal-walls"``, ``"adiabatic-rotor"`` or w in [0, 1] between them [-].
 
     Returns
     -------
@@ -244,9 +325,12 @@ def curvature_corrected_nahme(nahme, gap_ratio, walls="isothermal-walls"):
     InputError
         An unknown ``walls``.
     """
-    slope = {"isothermal-walls": 1.0, "adiabatic-rotor": 1.5}.get(walls)
-    if slope is None:
-        raise InputError("walls", walls, f"one of {', '.join(WALL_CONDITIONS)}")
+    if isinstance(walls, str):
+        slope = {"isothermal-walls": 1.0, "adiabatic-rotor": 1.5}.get(walls)
+        if slope is None:
+            raise InputError("walls", walls, f"one of {', '.join(WALL_CONDITIONS)}")
+    else:  # between the limits: linear in w, like z (an interpolation)
+        slope = 1.0 + 0.5 * wall_floating_of(walls)
     return nahme * (1.0 + slope * gap_ratio)
 
 
@@ -266,8 +350,8 @@ def film_time_constant_s(gap_m, diffusivity_m2_s=MINERAL_OIL_DIFFUSIVITY_M2_S,
     diffusivity_m2_s : float, array or CasADi symbol
         Thermal diffusivity alpha = k/(rho c_p) [m^2/s] (default
         :data:`MINERAL_OIL_DIFFUSIVITY_M2_S`).
-    walls : str
-        ``"isothermal-walls"`` or ``"adiabatic-rotor"`` [-].
+    walls : str, float, array or CasADi symbol
+        ``"isothermal-walls"``, ``"adiabatic-rotor"`` or w in [0, 1] between them [-].
 
     Returns
     -------
@@ -279,7 +363,69 @@ def film_time_constant_s(gap_m, diffusivity_m2_s=MINERAL_OIL_DIFFUSIVITY_M2_S,
     InputError
         An unknown ``walls``.
     """
-    factor = {"isothermal-walls": 1.0, "adiabatic-rotor": 4.0}.get(walls)
-    if factor is None:
-        raise InputError("walls", walls, f"one of {', '.join(WALL_CONDITIONS)}")
+    if isinstance(walls, str):
+        factor = {"isothermal-walls": 1.0, "adiabatic-rotor": 4.0}.get(walls)
+        if factor is None:
+            raise InputError("walls", walls, f"one of {', '.join(WALL_CONDITIONS)}")
+    else:  # the hottest plane's distance to the stator (1 + w)/2 of the gap, squared
+        w = wall_floating_of(walls)
+        factor = (1.0 + w) * (1.0 + w)
     return factor * gap_m * gap_m / (math.pi ** 2 * diffusivity_m2_s)
+
+
+def film_theory_coefficient(gap_m, radius_m, length_m, wall_floating=0.0,
+                            conductivity_W_mK=MINERAL_OIL_CONDUCTIVITY_W_MK):
+    """The loop's film coefficient c [K/W] that the smooth-film theory gives at strength 1.
+
+    The loop's ``film_heating`` effect lumps the film at ``T_film = T + c P(T_film)``.
+    Its first-order loss change ``c P dP/dT = -b c P^2`` (laminar Couette, P ~ mu)
+    equals the Nahme-Griffith film's first-order loss ``-(1 - Phi) P = -P Na (1 + 3w)/12``
+    (:func:`film_factor`, z/3) when ``c = delta (1 + 3w)/(12 k A)``, A =
+    2 pi R L the wetted area: Na = b mu U^2/k and P = mu U^2 A/delta. So a fitted c is the
+    film strength ``s = c / film_theory_coefficient(...)`` (:func:`film_strength_of`) of
+    the clearance, to first order in Na.
+
+    Parameters
+    ----------
+    gap_m, radius_m, length_m : float or array
+        Clearance delta, rotor radius R and length L [m].
+    wall_floating : float
+        Wall parameter w in [0, 1] (0 isothermal walls, 1 insulated rotor) [-].
+    conductivity_W_mK : float
+        Oil thermal conductivity k [W/(m K)] (default 0.13, mineral oil).
+
+    Returns
+    -------
+    float or array
+        c at s = 1 [K/W].
+
+    References
+    ----------
+    Nahme [1]_; the mean rise of uniform dissipation P delta/(12 k A), Bird, Stewart &
+    Lightfoot [4]_.
+    """
+    area = 2.0 * math.pi * radius_m * length_m
+    return gap_m * (1.0 + 3.0 * wall_floating) / (12.0 * conductivity_W_mK * area)
+
+
+def film_strength_of(coefficient_K_W, theory_K_W):
+    """Film strength s [-] of a fitted loop coefficient c: ``c / c_theory``.
+
+    Parameters
+    ----------
+    coefficient_K_W : float or array
+        Fitted ``film_heating`` coefficient c (or an end of its interval) [K/W].
+    theory_K_W : float
+        :func:`film_theory_coefficient` of the clearance [K/W].
+
+    Returns
+    -------
+    float or array
+        s [-] (1: the smooth-film theory; the seed's Table 4 does not support s = 1,
+        docs/thermal.md#evidence).
+
+    References
+    ----------
+    Nahme [1]_ (first-order equivalence, :func:`film_theory_coefficient`).
+    """
+    return coefficient_K_W / theory_K_W

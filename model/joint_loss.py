@@ -39,7 +39,7 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 import casadi as ca
@@ -162,7 +162,9 @@ def case_film(case: DesignCase) -> FilmHeating:
         Walls, k [W/(m K)], alpha [m^2/s], heating spectrum [rad/s], [-].
     """
     cache = case.duty_cycle.__dict__.setdefault("_film_cache", {})
-    key = (case.thermal.walls, case.thermal.conductivity_W_mK) if case.thermal else None
+    th = case.thermal
+    key = ((th.walls, th.conductivity_W_mK, th.film_strength, th.wall_floating) if th
+           else None)
     if key not in cache:
         cache[key] = film_heating_for(case.duty_cycle, case.thermal)
     return cache[key]
@@ -486,7 +488,8 @@ def film_band(case: DesignCase, mode: str | None = None, depth_m: float | None =
 
     The one computation of the band every report prints: the same design evaluated by
     :func:`operating_temperature` under :func:`film_counterpart` of the mode (``film``
-    without ``[thermal]``, ``full`` with it, beside ``none``/``bulk``).
+    without ``[thermal]``, ``full`` with it, beside ``none``/``bulk``; the film at full
+    strength, s = 1, whatever ``[thermal] film_strength`` says).
 
     Parameters
     ----------
@@ -512,6 +515,9 @@ def film_band(case: DesignCase, mode: str | None = None, depth_m: float | None =
     mode = resolve_thermal_mode(case, mode)
     if mean_power_W is None:
         mean_power_W = operating_temperature(case, mode, depth_m).mean_power_W
-    other = operating_temperature(case, film_counterpart(mode), depth_m)
+    at = case
+    if applies_film(film_counterpart(mode)) and case.thermal is not None:
+        at = replace(case, thermal=replace(case.thermal, film_strength=None))  # s = 1
+    other = operating_temperature(at, film_counterpart(mode), depth_m)
     return FilmBand(mode, float(mean_power_W), other.mode, other.mean_power_W,
                     other.oil_temp_C)

@@ -171,7 +171,7 @@ def smoothing(case: DesignCase | str | Path | None = None, *, method: str | None
               T_values: Sequence[float] | None = None,
               plateau_tol: float = smoothing_study.PLATEAU_TOL,
               out: str | Path | None = None, force: bool = False,
-              folder: ResultFolder | None = None) -> Smoothing:
+              folder: ResultFolder | None = None, film_evidence: bool = False) -> Smoothing:
     """What smoothing the grooves saves (``oilgap study smoothing``;
     :func:`oilgap.studies.smoothing.run`): the fit on the seed's Table 4 and the loss
     against the roughness T.
@@ -192,6 +192,9 @@ def smoothing(case: DesignCase | str | Path | None = None, *, method: str | None
         Where the loss counts as levelled off [-] (fraction of P(T = 1)).
     out, force
         As :func:`pareto`.
+    film_evidence : bool
+        Also fit the film strength s with the rig's heat balance (seed rig only):
+        ``result.film_evidence`` (docs/thermal.md#evidence).
 
     Returns
     -------
@@ -202,7 +205,8 @@ def smoothing(case: DesignCase | str | Path | None = None, *, method: str | None
     with result_folder("study smoothing", out, force, folder=folder) as f:
         _begin(f)
         r = smoothing_study.run(out, case=base, method=method, resistance_K_W=resistance_K_W,
-                                T_values=T, plateau_tol=plateau_tol, thermal=thermal)
+                                T_values=T, plateau_tol=plateau_tol, thermal=thermal,
+                                film_evidence=film_evidence)
         _note(f, r.thermal_mode, r.thermal_default)
     return Smoothing(r, base, plateau_tol, _out(out))
 

@@ -184,6 +184,31 @@ def _bearing_rows(ev: CaseEvaluation) -> list[str]:
         terms = ", ".join(f"{k} {v:.3g}" for k, v in b.terms.items())
         lines.append(f"{b.name:<16}{b.model:<10}{b.mean_power_W:>9.3f}"
                      f"{b.torque_peak_Nm:>11.4f}  {terms}")
+        lines += _bearing_band_lines(b)
+    return lines
+
+
+BAND_LABELS = {"skf_vm_term": "SKF V_M drag term", "skf_full": "SKF full drag",
+               "skf_no_drag_plus_spheres": "SKF no drag + balls as spheres in still oil"}
+"""The bearing-model band's members, for the text (Palmgren's are named by f0)."""
+
+
+def _bearing_band_lines(b) -> list[str]:
+    """The band of bearing models beside the chosen one (none without a band)."""
+    band = b.model_band
+    if band is None:
+        return []
+    members = ", ".join(
+        f"{BAND_LABELS.get(k, k.replace('palmgren_f0_', 'Palmgren f0 '))} {v:.3g}"
+        for k, v in band.members_W.items())
+    parts = band.parts_W
+    lines = [f"  bearing models {band.min_W:.3g}-{band.max_W:.3g} W at this oil beside the "
+             f"chosen {band.chosen_W:.3g} W ({band.chosen}); "
+             "see docs/bearing.md#the-bearing-model-band", f"    {members} W"]
+    if "drag_vm_term" in parts:
+        lines.append(f"    drag alone: SKF V_M term {parts['drag_vm_term']:.3g} W, balls as "
+                     f"spheres in still oil {parts['drag_spheres_still_oil']:.3g} W; SKF "
+                     f"without drag {parts['skf_no_drag']:.3g} W")
     return lines
 
 

@@ -25,6 +25,7 @@ from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
 from oilgap.studies.results import ResultView, new_axes
 from oilgap.studies.smoothing_case import NO_TABLE4, draw_case, saving_lines
+from oilgap.studies.smoothing_evidence import evidence_dict, evidence_lines
 from oilgap.studies.smoothing_report import draw_loss_vs_T, thermal_line
 
 
@@ -240,7 +241,16 @@ class Smoothing(StudyView):
                 "seed_rig": r.seed_rig, "plateau_tol": self.plateau_tol, "fit": fit,
                 "plateau": records(r.plateau), "table4": records(r.table),
                 "fits_compared": records(r.checks), "files": file_names(r),
-                "defaults": self.defaults}
+                "defaults": self.defaults,
+                **({} if r.film_evidence is None
+                   else {"film_evidence": evidence_dict(r.film_evidence)})}
+
+    @property
+    def film_evidence(self) -> Any:
+        """Table 4's evidence on the film strength
+        (:class:`oilgap.studies.smoothing_evidence.FilmEvidence`), or None when not asked
+        (``film_evidence=True``)."""
+        return self.raw.film_evidence
 
     def _comparison(self) -> list[str]:
         """The thermal models side by side: parameters, errors of powers and reductions."""
@@ -277,7 +287,8 @@ class Smoothing(StudyView):
         lines += ["", f"reductions within {d.max():.2f} W of measured (paper's model: "
                   f"{t['paper_model_minus_measured_change_W'].abs().max():.2f} W)", ""]
         pl = r.plateau
-        return lines + self._comparison() + [
+        evidence = [] if r.film_evidence is None else ["", *evidence_lines(r.film_evidence)]
+        return lines + self._comparison() + evidence + [
             "", f"loss vs T: within {100 * self.plateau_tol:g} % of P(T=1) only for T <= "
             f"{pl['T_stop'].min():.2f}..{pl['T_stop'].max():.2f}; 4 -> 2 takes "
             f"{100 * pl['share_of_possible_saving_4_to_2'].mean():.0f} % of the possible "

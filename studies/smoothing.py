@@ -65,6 +65,8 @@ from oilgap.model.defaults import case_defaults
 from oilgap.model.errors import InputError, SolverError
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.smoothing_case import NO_TABLE4, run_case
+from oilgap.studies.smoothing_evidence import FilmEvidence
+from oilgap.studies.smoothing_evidence import film_evidence as film_evidence_of
 from oilgap.studies.smoothing_fit import (
     PLATEAU_TOL,
     RIG_DEPTH_M,
@@ -118,6 +120,9 @@ class SmoothingResult:
     case_name: str = ""
     thermal_mode: str = ""
     """The thermal mode of the loss (the fit's on the seed rig, the case's otherwise)."""
+    film_evidence: FilmEvidence | None = None
+    """Table 4's evidence on the film strength (``film_evidence=True`` on the seed rig;
+    :mod:`oilgap.studies.smoothing_evidence`)."""
 
 
 def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
@@ -330,7 +335,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         method: str | None = None, resistance_K_W: float = 0.0,
         T_values: np.ndarray | None = None, plateau_tol: float = PLATEAU_TOL,
         sensitivity_K_W: tuple[float, ...] = (0.05, 0.1, 0.2),
-        thermal: str | None = None) -> SmoothingResult:
+        thermal: str | None = None, film_evidence: bool = False) -> SmoothingResult:
     """Run the smoothing study; with ``out_dir`` write its CSVs, figures and summary.
 
     Parameters
@@ -352,11 +357,18 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     sensitivity_K_W : tuple of float
         ``R_th`` values [K/W] of the per-oil sensitivity fits (gamma against how
         much colder the smoothed runs were).
+    film_evidence : bool
+        Also fit the film strength with the rig's heat balance
+        (:func:`oilgap.studies.smoothing_evidence.film_evidence`; seed rig only; writes
+        ``smoothing_film_evidence.csv``).
     """
     base = case if case is not None else seed_case()
     if not (0.0 < plateau_tol < 1.0):
         raise InputError("plateau_tol", plateau_tol, "must lie in (0, 1)", "smoothing study")
     if not is_seed_case(base):
+        if film_evidence:
+            raise InputError("film_evidence", True, "the seed rig only (Table 4 is its "
+                             "measurement)", "smoothing study")
         return _run_case(out_dir, base, method, resistance_K_W, T_values, plateau_tol, thermal)
     method, thermal, default = resolve_fit_mode(method, thermal)
     table4 = load_table4()
@@ -367,11 +379,16 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     curves = loss_vs_T(fit, base, T_values, True, table4)
     plateau = plateau_table(curves, plateau_tol)
     files: tuple[Path, ...] = ()
+    evidence = film_evidence_of(base, table4) if film_evidence else None
     if out is not None:
         files = write_outputs(out, table, fit, checks, curves, plateau, base, run_temps,
                               default)
+        if evidence is not None:
+            path = out / "smoothing_film_evidence.csv"
+            evidence.profile.to_csv(path, index=False)
+            files = (*files, path)
     return SmoothingResult(table, fit, checks, curves, plateau, files, run_temps, default,
-                           True, case_defaults(base), base.name, fit.thermal_mode)
+                           True, case_defaults(base), base.name, fit.thermal_mode, evidence)
 
 
 def _run_case(out_dir, base: DesignCase, method, resistance_K_W: float, T_values,

@@ -60,6 +60,7 @@ from oilgap.optim.calibration import LoopEstimator
 DEFAULT_STRENGTH = {
     "end_face_disc": 4.0,
     "bearing_ball_churning": 1.0,
+    "bearing_ball_drag": 1.0,
     "seal_coulomb_friction": 0.04,
     "oil_inertia": 5.0e-7,
     "thermal_lag": 4.0,
@@ -212,6 +213,9 @@ class SynthConfig:
             effects = tuple((get_effect(n).name, DEFAULT_STRENGTH[n] if st is None else
                              _checked_strength(n, f"strength of {n}", st))
                             for n, st in self.effects or ())
+        if case.bearing is None and any(n == "bearing_ball_drag" for n, _ in effects):
+            raise InputError("effect", "bearing_ball_drag", "a case with a [bearing] (the "
+                             "drag term needs the bearing's rings)", "synth")
         if self.extra_power not in (None, *OUTSIDE_LIBRARY):
             raise InputError("extra_power", self.extra_power,
                              f"allowed: {', '.join(OUTSIDE_LIBRARY)}", "synth")

@@ -139,7 +139,9 @@ def _screen(name: str, f: np.ndarray | None, jc: np.ndarray, spec: BaseSpec, yma
     info = {"name": name, "title": eff.title, "formula": eff.formula,
             "nonnegative": eff.nonnegative}
     if f is None:
-        info["status"] = "not applicable: the rig has no bearing region"
+        info["status"] = ("not applicable: the case has no [bearing] (the drag term needs "
+                          "the bearing's rings)" if name == "bearing_ball_drag" else
+                          "not applicable: the rig has no bearing region")
         return info
     if not np.any(np.abs(f) > 1e-12 * ymax):
         info["status"] = ("inactive on these data" + (

@@ -18,6 +18,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.effects import EFFECTS
+from oilgap.model.film_heating import film_theory_coefficient
 from oilgap.model.measured_data import Samples
 from oilgap.model.skin_friction import FrictionLaw
 
@@ -49,7 +50,9 @@ class EffectResult:
     rms_power_W : float
         RMS of its power over the samples [W].
     shape : dict or None
-        Chosen shape parameter (Taylor-vortex onset: ``{"exponent": m}`` [-]).
+        Chosen shape parameter (Taylor-vortex onset: ``{"exponent": m}`` [-]); for
+        ``film_heating`` the film strength ``s = c/c_theory`` and its interval [-]
+        (:func:`oilgap.model.film_heating.film_theory_coefficient`, docs/thermal.md#evidence).
     """
 
     name: str
@@ -114,6 +117,12 @@ def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray,
             m = final.taylor_exponent
             shape = {"exponent": m}
             formula = formula.replace(")^2 - 1)", f")^{m:g} - 1)")
+        if n == "film_heating":  # c as the film strength s of the Nahme film (and its CI)
+            g0 = model.geometry.regions[0]
+            theory = float(np.max(film_theory_coefficient(np.asarray(g0.gap_m), g0.radius_m,
+                                                          g0.length_m)))
+            shape = {"film_strength": c / theory, "film_strength_ci": [
+                float(ci[0][i]) / theory, float(ci[1][i]) / theory]}
         out.append(EffectResult(
             n, eff.title, formula, eff.reference, c, float(ci[0][i]), float(ci[1][i]),
             eff.unit, float(eff.strength_from_coefficient(c)), eff.strength_unit, gains[n],

@@ -15,7 +15,8 @@ import math
 from oilgap.model.thermal_modes import THERMAL_MODES
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
-EFFECT_NAMES = ("end_face_disc", "bearing_ball_churning", "seal_coulomb_friction",
+EFFECT_NAMES = ("end_face_disc", "bearing_ball_churning", "bearing_ball_drag",
+                "seal_coulomb_friction",
                 "oil_inertia", "thermal_lag", "taylor_vortex_onset", "shear_thinning",
                 "sensor_delay", "film_heating")
 """The keys of :data:`oilgap.model.effects.EFFECTS`, in order (``synth --effect``
@@ -228,6 +229,9 @@ def _add_smoothing(ss) -> None:
     s.add_argument("--plateau-tol", type=finite_float, default=0.05,
                    help="loss counts as levelled off within this fraction of P(T=1) "
                    "(default 0.05)")
+    s.add_argument("--film-evidence", action="store_true",
+                   help="seed rig: also fit the film strength s in [0, 1] with the rig's "
+                   "heat balance T = T0 + R P (docs/thermal.md#evidence)")
     s.set_defaults(command="study smoothing")
 
 

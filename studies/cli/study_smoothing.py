@@ -51,6 +51,7 @@ def run(args: argparse.Namespace) -> int:
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
         r = smoothing(case, method=args.method, thermal=args.thermal,
                       resistance_K_W=args.r_th_k_per_w, T_values=T,
-                      plateau_tol=args.plateau_tol, out=out, folder=folder)
+                      plateau_tol=args.plateau_tol, out=out, folder=folder,
+                      film_evidence=getattr(args, "film_evidence", False))
     show(r, args)
     return 0

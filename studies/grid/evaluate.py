@@ -59,7 +59,8 @@ def _heat_path(case: DesignCase) -> tuple | None:
     th = case.thermal
     if th is None:
         return None
-    return (th.resistance_K_W, th.other_heat_W, th.walls, th.conductivity_W_mK)
+    return (th.resistance_K_W, th.other_heat_W, th.walls, th.conductivity_W_mK,
+            th.film_strength, th.wall_floating)
 
 
 def _group_by_law(cases: list[DesignCase]) -> list[list[int]]:

@@ -5,7 +5,9 @@ defaults the tool filled in are shown; bad tables exit 2 with one line; a case w
 [bearing] prints what it printed before."""
 
 import json
+import math
 import re
+from dataclasses import replace
 
 import pytest
 
@@ -144,3 +146,65 @@ def test_bad_bearing_tables_exit_2_with_one_line(capsys, seed_toml, write_file, 
     code, out, err = run(capsys, ["evaluate", str(path)])
     assert code == 2 and out == ""
     assert needle in err and "Traceback" not in err and len(err.strip().splitlines()) == 1
+
+
+def _spheres_hand_W(omega, nu, rho, z=24, dw=3.96875e-3, dm=51.5e-3):
+    """24 balls as spheres in still oil at the cage's pitch speed, Schiller-Naumann [W]."""
+    u = omega / 2 * (1 - dw / dm) * dm / 2
+    re_ = u * dw / nu
+    return z * 0.5 * rho * 24 / re_ * (1 + 0.15 * re_**0.687) * math.pi / 4 * dw**2 * u**3
+
+
+@pytest.mark.parametrize("thermal", ["none", "film"])
+def test_json_band_of_bearing_models_beside_the_chosen(capsys, cases, thermal):
+    d = evaluate_json(capsys, cases["skf"], "--thermal", thermal)
+    palm = evaluate_json(capsys, cases["palmgren"], "--thermal", thermal)
+    (b,) = d["bearings"]
+    band = b["model_band_W"]
+    assert band["chosen"] == "skf, drag skf-vm-term"
+    assert band["chosen_W"] == pytest.approx(b["mean_power_W"], rel=JSON_REL)
+    members = band["members_W"]
+    # the chosen model is a member; Palmgren at f0 4 is the palmgren case's own row
+    assert members["skf_vm_term"] == pytest.approx(b["mean_power_W"], rel=JSON_REL)
+    assert members["palmgren_f0_4"] == pytest.approx(palm["bearings"][0]["mean_power_W"],
+                                                     rel=JSON_REL)
+    assert members["palmgren_f0_2"] == pytest.approx(  # M_0 linear in f0, M_1 ~ 0.02 W
+        0.5 * members["palmgren_f0_4"], abs=0.02)
+    case = read_case_toml(cases["skf"])
+    nu, _, rho = oil_state(case, d["oil_temp_C"], d["depth_m"])
+    nodes, weights = case.duty_cycle.speed_distribution()
+    full = bearing_mean_power(replace(case.bearing, drag="skf-full"), nodes, weights, nu)
+    assert members["skf_full"] == pytest.approx(float(full), rel=JSON_REL)
+    spheres = sum(w * _spheres_hand_W(x, nu, rho) for x, w in zip(nodes, weights, strict=True)
+                  if x > 0)
+    assert band["parts_W"]["drag_spheres_still_oil"] == pytest.approx(spheres, rel=JSON_REL)
+    assert band["parts_W"]["drag_vm_term"] == pytest.approx(b["terms_W"]["drag_vm"],
+                                                            rel=JSON_REL)
+    assert band["min_W"] == pytest.approx(min(members.values()), rel=JSON_REL)
+    assert band["max_W"] == pytest.approx(max(members.values()), rel=JSON_REL)
+
+
+def test_text_shows_the_band_line(capsys, cases):
+    d = evaluate_json(capsys, cases["skf"], "--thermal", "none")
+    band = d["bearings"][0]["model_band_W"]
+    code, out, err = run(capsys, ["evaluate", cases["skf"], "--thermal", "none"])
+    assert code == 0 and err == ""
+    line = next(x for x in out.splitlines() if x.startswith("  bearing models "))
+    lo, hi, chosen = re.match(r"  bearing models ([\d.]+)-([\d.]+) W at this oil beside the "
+                              r"chosen ([\d.]+) W \(skf, drag skf-vm-term\); see "
+                              r"docs/bearing.md#the-bearing-model-band$", line).groups()
+    assert (float(lo), float(hi), float(chosen)) == pytest.approx(
+        (band["min_W"], band["max_W"], band["chosen_W"]), rel=5e-3)  # 3 digits
+    assert "SKF full drag" in out and "Palmgren f0 2" in out and "still oil" in out
+    _, plain, _ = run(capsys, ["evaluate", cases["plain"], "--thermal", "none"])
+    assert "bearing models" not in plain
+
+
+def test_a_saved_case_with_a_former_drag_name_reads_with_a_warning(capsys, cases, seed_toml,
+                                                                   write_file):
+    old = str(write_file(seed_toml + '[bearing]\ndesignation = "6809"\ndrag = "vm"\n',
+                         "old.toml"))
+    code, out, err = run(capsys, ["evaluate", old, "--thermal", "none", "--json"])
+    assert code == 0 and "drag = 'vm' is deprecated" in err and "skf-vm-term" in err
+    new = evaluate_json(capsys, cases["skf"], "--thermal", "none")
+    assert json.loads(out)["total_mean_power_W"] == new["total_mean_power_W"]

@@ -31,10 +31,11 @@ from oilgap.model.errors import InputError
 BASE = dict(name="61809", series="618", bore_m=0.045, outside_m=0.058, balls=24,
             ball_diameter_m=3.969e-3, radial_load_N=50.0, static_load_rating_N=6100.0)
 SKF = BearingSpec(**BASE)
-SKF_RS = BearingSpec(**BASE, drag="vm+rs")
+SKF_RS = BearingSpec(**BASE, drag="skf-full")
 SKF_AXIAL = BearingSpec(**BASE, axial_load_N=20.0)
+SKF_NO_DRAG = BearingSpec(**BASE, drag="none")
 PALM = BearingSpec(**{**BASE, "model": "palmgren"})
-ALL = (SKF, SKF_RS, SKF_AXIAL, PALM)
+ALL = (SKF, SKF_RS, SKF_AXIAL, SKF_NO_DRAG, PALM)
 W = 2 * math.pi * 3000 / 60
 NODES, WEIGHTS = DutyCycle.sine().speed_distribution()
 

@@ -82,7 +82,7 @@ def test_designation_alone_fills_and_names_the_defaults():
     assert (s.name, s.designation, s.series) == ("61809", "61809", "618")
     assert (s.bore_m, s.outside_m, s.width_m) == pytest.approx((0.045, 0.058, 0.007))
     assert s.static_load_rating_N == 6100.0
-    assert (s.model, s.drag, s.submerged, s.f0, s.k_rs) == ("skf", "vm", True, 4.0, 0.0)
+    assert (s.model, s.drag, s.submerged, s.f0, s.k_rs) == ("skf", "skf-vm-term", True, 4.0, 0.0)
     assert (s.radial_load_N, s.axial_load_N, s.mu_ehl, s.mu_bl) == (50.0, 0.0, 0.05, 0.12)
     assert set(s.defaults_used) == {
         "model", "type", "outside_mm", "width_mm", "balls", "ball_diameter_mm",
@@ -110,7 +110,7 @@ def test_given_values_are_not_defaults():
 
 @pytest.mark.parametrize("table", [
     {"designation": "6809"},
-    {"designation": "6809", "drag": "vm+rs", "radial_load_N": 120.0, "name": "output"},
+    {"designation": "6809", "drag": "skf-full", "radial_load_N": 120.0, "name": "output"},
     {"bore_mm": 42.5, "outside_mm": 55.5, "series": "618", "balls": 22,
      "ball_diameter_mm": 3.969, "model": "palmgren", "submerged": False,
      "oil_level_mm": 12.0, "f0": 2.0, "k_rs": 6e-8, "axial_load_N": 10.0},

@@ -69,16 +69,16 @@ def test_round_trip_keeps_the_bearing_and_its_defaults(write_file, tmp_path):
 
 def test_round_trip_of_a_bearing_by_its_dimensions(write_file, tmp_path):
     table = ('series = "618"\nbore_mm = 42.5\noutside_mm = 55.5\nradial_load_N = 50.0\n'
-             'drag = "vm+rs"\nk_rs = 3e-8\n')
+             'drag = "skf-full"\nk_rs = 3e-8\n')
     case = read(write_file, table)
     b = case.bearing
     assert b.designation is None and b.pitch_diameter_m == pytest.approx(49e-3, rel=1e-14)
-    assert (b.drag, b.k_rs) == ("vm+rs", 3e-8)
+    assert (b.drag, b.k_rs) == ("skf-full", 3e-8)
     back = read_case_toml(write_case_toml(case, tmp_path / "out.toml"))
     assert back.bearing == b
     assert case_to_dict(back)["bearing"] == {"series": "618", "bore_mm": 42.5,
                                              "outside_mm": 55.5, "radial_load_N": 50.0,
-                                             "drag": "vm+rs", "k_rs": 3e-8}
+                                             "drag": "skf-full", "k_rs": 3e-8}
 
 
 def test_without_bearing_nothing_changes(write_file):

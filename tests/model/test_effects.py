@@ -122,7 +122,7 @@ def test_casadi_and_numpy_agree():
 
 
 def test_library_entries_are_complete():
-    assert set(fx.EFFECTS) == {"end_face_disc", "bearing_ball_churning",
+    assert set(fx.EFFECTS) == {"end_face_disc", "bearing_ball_churning", "bearing_ball_drag",
                                "seal_coulomb_friction", "oil_inertia", "thermal_lag",
                                "taylor_vortex_onset", "shear_thinning", "sensor_delay",
                                "film_heating"}

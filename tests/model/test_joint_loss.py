@@ -17,6 +17,7 @@ from oilgap.model.joint_loss import (
     THERMAL_MODES,
     case_film,
     default_thermal_mode,
+    film_band,
     joint_mean_power,
     operating_temperature,
     resolve_thermal_mode,
@@ -205,3 +206,26 @@ def test_film_loss_falls_with_temperature_for_every_grade():
             case = with_thermal(dataclasses.replace(SEED, oil=oil), walls=walls)
             p = joint_mean_power(case, t, "film")
             assert np.all(np.diff(p) < 0), (walls, name)
+
+
+def test_the_film_band_is_the_film_at_full_strength():
+    # the band beside none/bulk is the opposite film choice on the same design: film
+    # (no [thermal]) or full, at full strength s = 1 whatever [thermal] film_strength says
+    band = film_band(SEED)
+    assert (band.mode, band.other_mode) == ("none", "film")
+    assert band.mean_power_W == operating_temperature(SEED, "none").mean_power_W
+    assert band.other_mean_power_W == operating_temperature(SEED, "film").mean_power_W
+    hot = with_thermal()
+    weak = with_thermal(film_strength=0.3)
+    for case in (hot, weak):
+        b = film_band(case)
+        assert (b.mode, b.other_mode) == ("bulk", "full")
+        assert b.other_mean_power_W == pytest.approx(
+            operating_temperature(hot, "full").mean_power_W, rel=1e-12)
+        assert b.change_pct == pytest.approx(
+            100 * (b.other_mean_power_W / b.mean_power_W - 1), rel=1e-12)
+    assert operating_temperature(weak, "full").mean_power_W != pytest.approx(
+        operating_temperature(hot, "full").mean_power_W, rel=1e-3)
+    back = film_band(hot, "full")  # under full, the default's number beside it
+    assert back.other_mode == "bulk"
+    assert back.other_mean_power_W == operating_temperature(hot, "bulk").mean_power_W

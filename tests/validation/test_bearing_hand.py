@@ -105,17 +105,17 @@ def test_drag_rs_moment_by_hand():
     assert arg**-1.379 == pytest.approx(8.6794e-7, rel=1e-4)
     m_rs = 1.093e-7 * N**2 * DM**3 * arg**-1.379 * r_s
     assert m_rs == pytest.approx(859.20, rel=1e-4)
-    assert terms_Nmm(spec(drag="vm+rs"))["drag_rs"] == pytest.approx(m_rs, rel=1e-12)
-    assert terms_Nmm(spec())["drag_rs"] == 0.0  # the default drag = "vm" leaves it out
+    assert terms_Nmm(spec(drag="skf-full"))["drag_rs"] == pytest.approx(m_rs, rel=1e-12)
+    assert terms_Nmm(spec())["drag_rs"] == 0.0  # the default drag = "skf-vm-term" leaves it out
 
 
 def test_peak_powers_by_hand():
     assert OMEGA == pytest.approx(314.16, rel=1e-5)
-    t = terms_Nmm(spec(drag="vm+rs"))
+    t = terms_Nmm(spec(drag="skf-full"))
     for term, watts in (("rolling", 8.12), ("drag_vm", 12.58), ("drag_rs", 269.9)):
         assert t[term] * 1e-3 * OMEGA == pytest.approx(watts, rel=1e-3)
     total = sum(t.values()) * 1e-3 * OMEGA
-    assert float(bearing_power(spec(drag="vm+rs"), OMEGA, NU_SI)) == pytest.approx(total, 1e-12)
+    assert float(bearing_power(spec(drag="skf-full"), OMEGA, NU_SI)) == pytest.approx(total, 1e-12)
 
 
 def test_axial_load_branch_by_hand():
@@ -145,7 +145,7 @@ def test_partial_oil_level_by_hand():
     m_rs = 1.093e-7 * N**2 * DM**3 * (N * DM**2 * 1.0 / NU) ** -1.379 * r_s
     v_m = 5.6e-4 + (7.9e-4 - 5.6e-4) * (0.6 - 0.5) / (0.8 - 0.5)  # diagram, H/dm = 0.6
     k_ball = KZ * (D_IN + D_OUT) / (D_OUT - D_IN) * 1e-12
-    t = terms_Nmm(spec(submerged=False, oil_level_mm=h, drag="vm+rs", k_rs=0.0))
+    t = terms_Nmm(spec(submerged=False, oil_level_mm=h, drag="skf-full", k_rs=0.0))
     assert t["drag_rs"] == pytest.approx(m_rs, rel=1e-12)
     assert t["drag_vm"] == pytest.approx(0.4 * v_m * k_ball * DM**5 * N**2, rel=1e-12)
 
@@ -199,7 +199,7 @@ NOTES_SEED = {  # nu: (M_rr phi_rs=1, M_rr K_rs=3e-8, drag V_M, drag R_s, Palmgr
 @pytest.mark.parametrize("nu", sorted(NOTES_SEED))
 def test_seed_cycle_means_against_the_notes_prototype(nu):
     rr, rr_krs, vm, rs, *palm = NOTES_SEED[nu]
-    t = term_means(spec(drag="vm+rs"), nu)
+    t = term_means(spec(drag="skf-full"), nu)
     assert t["rolling"] == pytest.approx(rr, rel=6e-3)
     assert t["drag_vm"] == pytest.approx(vm, rel=6e-3)
     assert t["drag_rs"] == pytest.approx(rs, rel=6e-3)
@@ -215,11 +215,11 @@ COMPARISON_NU = (10, 22, 46, 100, 150, 220, 320, 460, 680, 1000)
 
 
 def comparison_rows():
-    """Seed cycle means [W] of 61809 at F_r = 50 N: SKF (vm), SKF (vm+rs), Palmgren."""
+    """Seed cycle means [W] of 61809 at F_r = 50 N: SKF (V_M term), SKF (full drag), Palmgren."""
     rows = []
     for nu in COMPARISON_NU:
         skf = cycle_mean(spec(), nu)
-        skf_rs = cycle_mean(spec(drag="vm+rs"), nu)
+        skf_rs = cycle_mean(spec(drag="skf-full"), nu)
         p2 = cycle_mean(spec(model="palmgren", f0=2.0), nu)
         p4 = cycle_mean(spec(model="palmgren"), nu)  # default f0 = 4 (submerged)
         rows.append((nu, skf, skf_rs, p2, p4, p4 / skf))
@@ -234,10 +234,10 @@ def mean_powers(nu=NU, peak=N, scale=1.0, fr=FR, f0=4.0):
     cycle = DutyCycle.sine(peak_speed_rpm=peak, duration_s=20.0, sample_interval_s=0.01)
     geo = {"bore_mm": D_IN * scale, "outside_mm": D_OUT * scale, "series": "618",
            "radial_load_N": fr, "static_load_rating_N": C0}
-    skf = term_means(bearing_spec_from({**geo, "drag": "vm+rs"}), nu, cycle)
+    skf = term_means(bearing_spec_from({**geo, "drag": "skf-full"}), nu, cycle)
     palm = cycle_mean(bearing_spec_from({**geo, "model": "palmgren", "f0": f0}), nu, cycle)
-    return {**skf, "skf (vm)": skf["rolling"] + skf["sliding"] + skf["drag_vm"],
-            "skf (vm+rs)": sum(skf.values()), "palmgren": palm}
+    return {**skf, "skf (V_M term)": skf["rolling"] + skf["sliding"] + skf["drag_vm"],
+            "skf (full drag)": sum(skf.values()), "palmgren": palm}
 
 
 def elasticities(h=0.01):
@@ -276,7 +276,7 @@ def test_cycle_means_of_pure_power_laws_match_the_closed_form():
         return math.gamma((p + 1) / 2) / (math.sqrt(math.pi) * math.gamma(p / 2 + 1))
 
     assert e_sin(3) == pytest.approx(4 / (3 * math.pi))  # the closed form itself, p = 3
-    s = spec(drag="vm+rs")
+    s = spec(drag="skf-full")
     peak = terms_Nmm(s)
     means = term_means(s, NU, cycle)
     for term, p in (("drag_vm", 3.0), ("drag_rs", 1.621)):
@@ -297,13 +297,13 @@ def test_comparison_table_ratio():
     assert skf == pytest.approx(4.66 + 0.02 + 5.34, rel=5e-3)  # notes section 5
     assert skf_rs == pytest.approx(156.1, rel=5e-3)
     assert ratio == pytest.approx(89.5 / 10.02, rel=5e-3)
-    # Palmgren grows as nu^(2/3), SKF (vm) more slowly: the ratio rises with nu
+    # Palmgren grows as nu^(2/3), SKF (V_M term) more slowly: the ratio rises with nu
     assert all(a[5] < b[5] for a, b in zip(rows, rows[1:], strict=False))
 
 
 if __name__ == "__main__":  # the tables of docs/bearing.md
-    print("| nu cSt | SKF vm W | SKF vm+rs W | Palmgren f0=2 W | Palmgren f0=4 W | "
-          "Palmgren(4)/SKF(vm) |")
+    print("| nu cSt | SKF V_M term W | SKF full drag W | Palmgren f0=2 W | Palmgren f0=4 W | "
+          "Palmgren(4)/SKF(V_M term) |")
     print("|---|---|---|---|---|---|")
     for nu, skf, skf_rs, p2, p4, ratio in comparison_rows():
         print(f"| {nu} | {skf:.2f} | {skf_rs:.1f} | {p2:.1f} | {p4:.1f} | {ratio:.2f} |")

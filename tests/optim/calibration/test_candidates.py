@@ -62,8 +62,9 @@ def test_rig_without_bearing_and_data_without_temperature_change(rig, samples_fa
     case = replace(rig.case, region2=None)
     m, base = _calibrated(rig, samples_factory, case=case, temp_rate_K_s=0.0)
     status = {d["name"]: d["status"] for d in screen_candidates(
-        m, SPEC, base, ["bearing_ball_churning", "thermal_lag"]).info}
+        m, SPEC, base, ["bearing_ball_churning", "bearing_ball_drag", "thermal_lag"]).info}
     assert status["bearing_ball_churning"] == "not applicable: the rig has no bearing region"
+    assert status["bearing_ball_drag"].startswith("not applicable: the case has no [bearing]")
     assert status["thermal_lag"] == "inactive on these data: no temperature law for dP/dT"
 
 

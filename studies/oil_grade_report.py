@@ -144,9 +144,10 @@ def _figure_thermal(result: OilGradeResult, path: Path) -> Path:
         ax.set_xlabel("ISO VG grade")
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7.5)
-    a1.set_title(f"recommended: {result.recommended or 'none'} (isothermal: "
+    a1.set_title(f"recommended under thermal {result.thermal_mode}: "
+                 f"{result.recommended or 'none'} (isothermal: "
                  f"{result.recommended_isothermal or 'none'})", fontsize=10)
-    a2.set_title("lubrication check", fontsize=10)
+    a2.set_title(f"lubrication check, thermal {result.thermal_mode}", fontsize=10)
     return save_figure(fig, path)
 
 

@@ -255,8 +255,8 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         (default: envelope min, the case's oil (or sea) temperature, 20 degC, envelope max)
     workers, progress, scheduler : passed to :func:`~oilgap.studies.grid.runner.run_grid`
     thermal : {"none", "bulk", "film", "full"} or None
-        Thermal mode (default ``"none"``, the isothermal study; None: the best physics
-        the case allows, the command line's default).
+        Thermal mode (default ``"none"``, the isothermal study; None: ``bulk`` with
+        ``[thermal]``, else ``none``, the command line's default).
     sea_temp_range_C : the envelope's sea temperatures [degC] (``bulk``/``full`` only; default
         :data:`DEFAULT_TEMP_RANGE_C`)
 

@@ -19,7 +19,7 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
 from oilgap.model.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
-from oilgap.model.thermal_modes import uses_balance
+from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_json
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
@@ -296,8 +296,8 @@ class Smoothing(StudyView):
 
     def _case_lines(self) -> list[str]:
         r = self.raw
-        return [f"thermal     {r.thermal_mode}" + (" (default: the best physics this case "
-                                                   "allows)" if r.thermal_default else ""),
+        return [f"thermal     {r.thermal_mode}" + (f" (default: {DEFAULT_MODE_WHY})"
+                                                   if r.thermal_default else ""),
                 gamma_line(self.case), *defaults_lines(r.defaults), "",
                 *saving_lines(self.case, r.plateau, r.thermal_mode), "", NO_TABLE4]
 

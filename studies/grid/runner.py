@@ -123,7 +123,7 @@ def resolve_grid_thermal(base: DesignCase, mode: str, thermal: str | None
                          ) -> tuple[str, bool]:
     """(thermal mode, whether it is the default) of a grid run.
 
-    ``None`` asks for the best physics: in evaluate mode the case's
+    ``None`` asks for the default: in evaluate mode the case's
     (:func:`~oilgap.model.joint_loss.default_thermal_mode`: ``bulk`` with ``[thermal]``,
     else ``none``); in optimize mode the same when the design NLP carries it
     (:func:`~oilgap.studies.grid.optimize.nlp_thermal_modes`).

@@ -5,10 +5,13 @@ condition (any fluid of the case: :mod:`oil_properties`, :mod:`fluids`), Re and 
 (:mod:`taylor_couette`), C_m (:mod:`skin_friction`) and the power of each region
 (:mod:`viscous_loss`), averaged over the duty cycle by its exact speed distribution,
 under a thermal mode of :mod:`.joint_loss` (``none``: the seed paper's isothermal
-model; ``film``: the film-heating factor at the given oil temperature; ``full``: the
-film factor at the bulk temperature of the heat balance to the sea). Under every mode
-the film at the peak speed (Nahme number, factor, temperature rise) is reported; under
-``none`` it is a diagnostic of the heating the model leaves out, not applied. A case's
+model; ``bulk``: the same at the bulk temperature of the heat balance to the sea;
+``film``: the film-heating factor at the given oil temperature; ``full``: the film
+factor at the balance's temperature). Under every mode the film at the peak speed
+(raw and effective Nahme numbers, steady and applied factors, temperature rise) is
+reported with ``film_applied``; under ``none``/``bulk`` it is a diagnostic of the
+heating the model leaves out, not applied, and the film band
+(:func:`~oilgap.model.joint_loss.film_band`) gives the loss with it. A case's
 rolling bearing (``[bearing]``, :mod:`.bearing`) is its own row beside the regions, at
 the bulk oil's viscosity under every mode, and in the totals.
 
@@ -36,14 +39,18 @@ from .bearing_band import BearingModelBand, bearing_model_band
 from .case import DesignCase
 from .case_bearing import bearing_default_notes, bearing_defaults
 from .errors import InputError, SolverError
-from .film_cycle import film_peak
+from .film_cycle import FilmPeak, film_peak
 from .fluids import warn_if_untrusted_state
 from .joint_loss import (
+    FilmBand,
+    applies_film,
+    film_band,
     joint_mean_power,
     mode_film,
     operating_temperature,
     region_mean_powers,
     resolve_thermal_mode,
+    uses_balance,
 )
 from .oil_properties import seawater_gauge_pressure
 from .regions import joint_regions, region_mean_power, region_power
@@ -71,19 +78,23 @@ class RegionResult:
     regimes : tuple of str
         Flow regimes the cycle visits (Bilgen-Boulos names), in Re order.
     Cm_peak : float
-        Isothermal moment coefficient at the peak speed [-] (the film factor
+        Isothermal moment coefficient at the peak speed [-] (the applied film factor
         multiplies it under ``film``/``full``).
     mean_power_W : float
         Mean viscous power over the cycle under the thermal mode [W].
     torque_peak_Nm : float
         Viscous torque at the peak speed under the thermal mode [N m].
     nahme_peak : float
-        Nahme-Griffith number b mu U^2/k at the peak speed and the operating
+        Raw Nahme-Griffith number b mu U^2/k at the peak speed and the operating
         temperature (plane film, rotor surface speed) [-].
-    film_factor_peak : float
-        Heated/isothermal torque ratio at the peak speed [-]: the factor the
-        ``film``/``full`` modes apply there. Under ``none`` it is not applied: a
-        diagnostic of the film heating the isothermal model leaves out.
+    nahme_effective_peak, film_factor_steady_peak, film_factor_effective_peak : float
+        The film at the peak speed as :class:`~oilgap.model.film_cycle.FilmPeak` gives
+        it: effective Na, steady Phi, the factor ``film``/``full`` apply [-].
+    film_factor_applied_peak : float
+        The factor this evaluation applied there: the effective one under
+        ``film``/``full``, 1.0 under ``none``/``bulk`` [-].
+    film_applied : bool
+        Whether the mode applies the film correction.
     film_temp_rise_peak_K : float or None
         Hottest point of the film above the bulk at the peak speed [K] (laminar
         solution; under ``none`` a diagnostic as above); None when the flow there has
@@ -102,7 +113,11 @@ class RegionResult:
     mean_power_W: float
     torque_peak_Nm: float
     nahme_peak: float
-    film_factor_peak: float
+    nahme_effective_peak: float
+    film_factor_steady_peak: float
+    film_factor_effective_peak: float
+    film_factor_applied_peak: float
+    film_applied: bool
     film_temp_rise_peak_K: float | None
 
 
@@ -170,17 +185,18 @@ class CaseEvaluation:
     case_name, oil : str
         Names of the case and the oil.
     thermal_mode : str
-        ``"none"``, ``"film"`` or ``"full"`` (:mod:`.joint_loss`).
+        ``"none"``, ``"bulk"``, ``"film"`` or ``"full"`` (:mod:`.joint_loss`).
     thermal_mode_default : bool
         True when the mode is the default (the user did not choose it).
     oil_temp_C : float
         Operating bulk oil temperature [degC]: the case's (or the given) one, or the
-        heat balance's under ``full``.
+        heat balance's under ``bulk``/``full``.
     sea_temp_C : float or None
-        Sea temperature of the heat balance [degC] under ``full``; None otherwise.
+        Sea temperature of the heat balance [degC] under ``bulk``/``full``; None
+        otherwise.
     resistance_K_per_W, other_heat_W : float or None
-        The balance's resistance oil to sea [K/W] and other heat [W] under ``full``;
-        None otherwise.
+        The balance's resistance oil to sea [K/W] and other heat [W] under
+        ``bulk``/``full``; None otherwise.
     depth_m : float
         Sea depth [m].
     nu_cSt : float
@@ -205,6 +221,11 @@ class CaseEvaluation:
         Energy dissipated over one cycle [J].
     bearings : tuple of BearingResult
         The case's rolling bearing, if any (empty without ``[bearing]``).
+    film_applied : bool
+        Whether the mode applies the film correction (``film``/``full``).
+    film_band : FilmBand or None
+        The same design under the opposite film choice
+        (:func:`~oilgap.model.joint_loss.film_band`); None when not computed.
     """
 
     case_name: str
@@ -227,6 +248,8 @@ class CaseEvaluation:
     viscous_torque_peak_Nm: float
     cycle_energy_J: float
     bearings: tuple[BearingResult, ...] = ()
+    film_applied: bool = False
+    film_band: FilmBand | None = None
 
     def to_dict(self) -> dict:
         """Plain-dict form (the ``--json`` output).
@@ -239,9 +262,11 @@ class CaseEvaluation:
             ``pitch_diameter_mm`` [mm]; the attributes stay in m), a bearing's
             ``terms`` as ``terms_W`` (term -> mean power [W]); ``bearings`` only
             when the case has a bearing (a case without one gives the document it
-            gave before bearings existed).
+            gave before bearings existed); ``film_band`` as
+            :meth:`~oilgap.model.joint_loss.FilmBand.to_dict`.
         """
         d = asdict(self)
+        d["film_band"] = None if self.film_band is None else self.film_band.to_dict()
         d["regions"] = [_lengths_in_mm(dict(asdict(r), regimes=list(r.regimes)))
                         for r in self.regions]
         d["bearings"] = [_lengths_in_mm(dict(asdict(b), default_notes=list(b.default_notes),
@@ -357,11 +382,9 @@ def _region_result(case: DesignCase, region, p_mean: float, nu, rho, b, film,
     w_peak = cycle.peak_omega_rad_s
     R, gap = region.radius_m, region.gap_m
     re_peak = float(couette_reynolds(w_peak, R, gap, nu))
-    peak = film_peak(nodes, weights, R, gap, nu, rho, b, film)
+    peak: FilmPeak = film_peak(nodes, weights, R, gap, nu, rho, b, film)
     tq = float(viscous_torque(float(region_power(region, w_peak, nu, rho, case.friction)),
-                              w_peak))
-    if apply_film:
-        tq *= peak["film_factor_peak"]
+                              w_peak)) * peak.applied(apply_film)
     re_nodes = couette_reynolds(nodes, R, gap, nu)
     visited = set(flow_regime(re_nodes[weights > 0]))
     regimes = tuple(r for r in ("laminar", "laminar with vortices",
@@ -370,8 +393,9 @@ def _region_result(case: DesignCase, region, p_mean: float, nu, rho, b, film,
         region.name, R, gap, region.length_m, float(region.roughness_T), re_peak,
         float(taylor_number(re_peak, gap, R)), regimes,
         float(moment_coefficient(re_peak, gap / R, case.friction, region.roughness_T)),
-        float(p_mean), tq, peak["nahme_peak"], peak["film_factor_peak"],
-        peak["film_temp_rise_peak_K"])
+        float(p_mean), tq, peak.nahme_peak, peak.nahme_effective_peak,
+        peak.film_factor_steady_peak, peak.film_factor_effective_peak,
+        peak.applied(apply_film), bool(apply_film), peak.film_temp_rise_peak_K)
 
 
 def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float,
@@ -421,7 +445,7 @@ def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regio
     """Operating temperature [degC], nu [m^2/s], rho [kg/m^3] and each region's mean loss
     [W] under the mode (today's isothermal path, unchanged, under ``none``)."""
     t = t_case
-    if mode == "full":
+    if uses_balance(mode):
         op = operating_temperature(case, mode, d)
         t, means = op.oil_temp_C, op.region_mean_powers_W
     with warnings.catch_warnings():
@@ -464,7 +488,8 @@ def _refuse_non_finite(case: DesignCase, t: float, d: float, nu, rho,
         if not (np.isfinite(b.mean_power_W) and np.isfinite(b.torque_peak_Nm)):
             raise InputError("bearing", b.name, "its loss is not finite at this speed and "
                              "viscosity: check the [bearing] table", "evaluation")
-    if not all(np.isfinite(x) for r in results for x in (r.film_factor_peak, r.nahme_peak)):
+    if not all(np.isfinite(x) for r in results
+               for x in (r.film_factor_effective_peak, r.nahme_peak)):
         raise SolverError("the film-heating factor at the peak speed is not finite; the "
                           "result is not reported")
 
@@ -477,7 +502,7 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float):
             regions = joint_regions(case)
             t, nu, rho, means = _operating_state(case, mode, t_case, d, regions)
             film, b = mode_film(case, "film", celsius_to_kelvin(t), seawater_gauge_pressure(d))
-            results = tuple(_region_result(case, r, p, nu, rho, b, film, mode != "none")
+            results = tuple(_region_result(case, r, p, nu, rho, b, film, applies_film(mode))
                             for r, p in zip(regions, means, strict=True))
             bearings = () if case.bearing is None else (bearing_result(case, case.bearing,
                                                                        nu, rho),)
@@ -498,43 +523,48 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
                   thermal: str | None = None) -> CaseEvaluation:
     """Evaluate a case region by region over its duty cycle under a thermal mode.
 
-    ``none``: the seed paper's isothermal model at the oil temperature. ``film``: the
-    film-heating factor (:mod:`.film_cycle`) at that temperature. ``full``: the film
-    factor at the bulk temperature of the heat balance to the sea
+    ``none``: the seed paper's isothermal model at the oil temperature. ``bulk``: the
+    same at the bulk temperature of the heat balance to the sea
     (:func:`~oilgap.model.joint_loss.operating_temperature`, the case's ``[thermal]``).
-    Under every mode the film's Nahme number, factor and temperature rise at the peak
-    speed are reported (under ``none`` as diagnostics, not applied). A rolling bearing
-    (``case.bearing``) is its own row at the bulk viscosity under every mode
-    (:func:`bearing_result`) and part of the totals (and of the balance under ``full``).
+    ``film``: the film-heating factor (:mod:`.film_cycle`) at the given temperature.
+    ``full``: the film factor at the balance's temperature. Under every mode the film's
+    Nahme numbers, factors and temperature rise at the peak speed are reported (under
+    ``none``/``bulk`` as diagnostics, not applied: ``film_applied`` says which), and the
+    film band (:func:`~oilgap.model.joint_loss.film_band`) gives the same design under
+    the opposite film choice. A rolling bearing (``case.bearing``) is its own row at the
+    bulk viscosity under every mode (:func:`bearing_result`) and part of the totals (and
+    of the balance under ``bulk``/``full``).
 
     Parameters
     ----------
     case : DesignCase
         The joint, oil, condition, duty cycle and friction law.
     oil_temp_C : float, optional
-        Oil temperature [degC] (default: the case's); refused under ``full``, where
-        the heat balance sets it.
+        Oil temperature [degC] (default: the case's); refused under ``bulk``/``full``,
+        where the heat balance sets it.
     depth_m : float, optional
         Sea depth [m] (default: the case's).
     laminar_law : {"couette", "bilgen-boulos"}, optional
         Override of the friction law's laminar law.
-    thermal : {"none", "film", "full"}, optional
-        Thermal mode (default: the best physics the case allows,
-        :func:`~oilgap.model.joint_loss.default_thermal_mode`).
+    thermal : {"none", "bulk", "film", "full"}, optional
+        Thermal mode (default: the model the evidence supports,
+        :func:`~oilgap.model.joint_loss.default_thermal_mode`: ``bulk`` with
+        ``[thermal]``, else ``none``).
 
     Returns
     -------
     CaseEvaluation
         Mode, operating oil state, and per region Re, Ta, C_m at the peak speed, the
         regimes visited, the mean power [W] and the film at the peak; the bearing's
-        row; totals [W], [N m], [J] and the isothermal total [W], bearing included.
+        row; totals [W], [N m], [J] and the isothermal total [W], bearing included; the
+        film band [W].
 
     Raises
     ------
     InputError
-        An unknown mode, ``full`` without ``[thermal]``, or ``oil_temp_C`` under
-        ``full``; a loss that is not a finite number, named by the inputs that drive it (the
-        fluid's state, the friction law, the speed, the bearing).
+        An unknown mode, ``bulk``/``full`` without ``[thermal]``, or ``oil_temp_C``
+        under ``bulk``/``full``; a loss that is not a finite number, named by the inputs
+        that drive it (the fluid's state, the friction law, the speed, the bearing).
     SolverError
         The heat balance did not converge, or a non-finite result that no input
         explains.
@@ -550,12 +580,15 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
         case = replace(case, friction=replace(case.friction, laminar_law=laminar_law))
     t_case = case.operating.oil_temp_C if oil_temp_C is None else float(oil_temp_C)
     d = case.operating.depth_m if depth_m is None else float(depth_m)
-    spec = case.thermal if mode == "full" else None
+    spec = case.thermal if uses_balance(mode) else None
     if spec is not None and oil_temp_C is not None:
-        raise InputError("oil_temp_C", oil_temp_C, "not given under thermal mode 'full': the "
-                         "heat balance sets the oil temperature (change [thermal] "
-                         "sea_temp_C, or choose thermal 'film' or 'none')")
+        raise InputError("oil_temp_C", oil_temp_C, f"not given under thermal mode '{mode}': "
+                         "the heat balance sets the oil temperature (change [thermal] "
+                         "sea_temp_C, or choose thermal 'none' or 'film')")
     t, nu, rho, results, bearings, total, iso = _computed(case, mode, t_case, d)
+    at = case if oil_temp_C is None else replace(
+        case, operating=replace(case.operating, oil_temp_C=t_case))
+    band = film_band(at, mode, d, total)
     cycle = case.duty_cycle
     return CaseEvaluation(
         case.name, case.oil.name, mode, thermal is None, t,
@@ -564,4 +597,4 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
         None if spec is None else float(spec.other_heat_W), d, m2_s_to_cst(nu), float(rho),
         case.friction.laminar_law, case.friction.form, rad_s_to_rpm(cycle.peak_omega_rad_s),
         results, total, iso, sum(r.torque_peak_Nm for r in results + bearings),
-        total * cycle.duration_s, bearings)
+        total * cycle.duration_s, bearings, applies_film(mode), band)

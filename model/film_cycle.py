@@ -318,8 +318,52 @@ def film_factors(omega_rad_s, weights, radius_m, gap_m, nu_m2_s, rho_kg_m3, b_1_
     return 1.0 - laminar_weight(ta) * (1.0 - phi)
 
 
+@dataclass(frozen=True)
+class FilmPeak:
+    """The film at a cycle's peak speed, for reports (floats only; :func:`film_peak`).
+
+    Attributes
+    ----------
+    nahme_peak : float
+        Raw Nahme number b mu (omega R)^2/k at the peak speed (plane film) [-].
+    nahme_effective_peak : float
+        The effective Nahme number the film modes use there: curvature-corrected and
+        lagged over the cycle (:func:`effective_nahme`) [-].
+    film_factor_steady_peak : float
+        Steady factor Phi of a film held at the peak speed: at the raw Nahme number
+        (times the film strength s), curvature-corrected, not lagged [-].
+    film_factor_effective_peak : float
+        The factor the film modes apply at the peak node: Phi at the effective Nahme
+        number, faded out above Taylor onset (:func:`film_factors`) [-].
+    film_temp_rise_peak_K : float or None
+        Hottest point of the film above the bulk there (laminar solution, effective Na)
+        [K]; None when the flow there has Taylor vortices.
+    """
+
+    nahme_peak: float
+    nahme_effective_peak: float
+    film_factor_steady_peak: float
+    film_factor_effective_peak: float
+    film_temp_rise_peak_K: float | None
+
+    def applied(self, film_applied: bool) -> float:
+        """The factor applied at the peak under a mode [-]: 1 when it applies no film.
+
+        Parameters
+        ----------
+        film_applied : bool
+            Whether the mode applies the film correction.
+
+        Returns
+        -------
+        float
+            :attr:`film_factor_effective_peak` or 1.0 [-].
+        """
+        return self.film_factor_effective_peak if film_applied else 1.0
+
+
 def film_peak(omega_rad_s, weights, radius_m, gap_m, nu_m2_s, rho_kg_m3, b_1_K,
-              film: FilmHeating) -> dict[str, float | None]:
+              film: FilmHeating) -> FilmPeak:
     """The film at the cycle's peak speed, for reports (floats only).
 
     Parameters
@@ -337,11 +381,9 @@ def film_peak(omega_rad_s, weights, radius_m, gap_m, nu_m2_s, rho_kg_m3, b_1_K,
 
     Returns
     -------
-    dict
-        ``nahme_peak`` (Na at the peak speed, plane film) [-], ``film_factor_peak``
-        (the factor applied at the peak node) [-], ``film_temp_rise_peak_K`` (the
-        film's hottest point above the bulk there, laminar solution) [K], None when the
-        flow there has Taylor vortices (the correction is laminar-only).
+    FilmPeak
+        Raw and effective Nahme numbers [-], the steady factor at the raw one and the
+        factor the film modes apply [-], the film's temperature rise [K] or None.
 
     References
     ----------
@@ -356,8 +398,9 @@ def film_peak(omega_rad_s, weights, radius_m, gap_m, nu_m2_s, rho_kg_m3, b_1_K,
     laminar = float(laminar_weight(ta)) >= 0.5
     rise = (float(film_temperature_rise(na_eff[i], b_1_K, film.wall_setting)) if laminar
             else None)
-    return {"nahme_peak": float(na[i]), "film_factor_peak": float(factor[i]),
-            "film_temp_rise_peak_K": rise}
+    steady = film_factor(curvature_corrected_nahme(film.strength * na[i], gap_m / radius_m,
+                                                   film.wall_setting), film.wall_setting)
+    return FilmPeak(float(na[i]), float(na_eff[i]), float(steady), float(factor[i]), rise)
 
 
 def film_heating_for(duty_cycle, thermal=None) -> FilmHeating:

@@ -26,7 +26,7 @@ from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError, check_finite
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.files import check_out_file
-from oilgap.model.joint_loss import resolve_thermal_mode
+from oilgap.model.joint_loss import resolve_thermal_mode, uses_balance
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
 from oilgap.studies.results import Evaluation
 
@@ -141,7 +141,7 @@ def with_operating(case: DesignCase, oil: str | None = None,
 
 
 API_NAMES = {"thermal": "thermal", "oil_temp_C": "oil_temp_C", "sea_temp_C": "sea_temp_C",
-             "full": "thermal 'full'", "film": "thermal='film'"}
+             "balance": "thermal '{mode}'", "given": "thermal='none' or 'film'"}
 """How :func:`thermal_case` names the arguments in its messages (the command line passes
 its own spellings: ``--thermal``, ``--temp-c``, ``--sea-temp-c``)."""
 
@@ -150,18 +150,19 @@ def thermal_case(case: DesignCase, thermal: str | None = None,
                  oil_temp_C: float | None = None, sea_temp_C: float | None = None,
                  names: dict[str, str] | None = None) -> tuple[DesignCase, str]:
     """The thermal mode checked against the case and a given oil temperature, and the case
-    with the sea temperature [degC] applied (``full`` only).
+    with the sea temperature [degC] applied (``bulk``/``full`` only).
 
     Parameters
     ----------
     case : DesignCase
         The case (its ``[thermal]`` table decides what is allowed).
-    thermal : {"none", "film", "full"} or None
-        The mode asked for (None: the best physics the case allows).
+    thermal : {"none", "bulk", "film", "full"} or None
+        The mode asked for (None: the default,
+        :func:`~oilgap.model.joint_loss.default_thermal_mode`).
     oil_temp_C : float, optional
-        A given oil temperature [degC] (refused under ``full``).
+        A given oil temperature [degC] (refused under ``bulk``/``full``).
     sea_temp_C : float, optional
-        A given sea temperature [degC] (``full`` only).
+        A given sea temperature [degC] (``bulk``/``full`` only).
     names : dict, optional
         The spellings of the arguments in the messages (:data:`API_NAMES`).
 
@@ -169,32 +170,33 @@ def thermal_case(case: DesignCase, thermal: str | None = None,
     -------
     case : DesignCase
     mode : str
-        ``"none"``, ``"film"`` or ``"full"``.
+        ``"none"``, ``"bulk"``, ``"film"`` or ``"full"``.
 
     Raises
     ------
     InputError
-        ``full`` without ``[thermal]``, ``oil_temp_C`` under ``full`` (the balance sets
-        it), ``sea_temp_C`` without ``[thermal]`` or outside ``full``.
+        ``bulk``/``full`` without ``[thermal]``, ``oil_temp_C`` under them (the balance
+        sets it), ``sea_temp_C`` without ``[thermal]`` or outside them.
     """
     n = {**API_NAMES, **(names or {})}
     try:
         mode = resolve_thermal_mode(case, thermal)
     except InputError as e:
         raise InputError(n["thermal"], e.value, e.allowed) from None
-    if mode == "full" and oil_temp_C is not None:
-        raise InputError(n["oil_temp_C"], oil_temp_C, f"not with {n['full']}: the heat "
+    balance = n["balance"].format(mode=mode)
+    if uses_balance(mode) and oil_temp_C is not None:
+        raise InputError(n["oil_temp_C"], oil_temp_C, f"not with {balance}: the heat "
                          f"balance sets the oil temperature; give {n['sea_temp_C']}, or "
-                         f"{n['film']}")
+                         f"{n['given']}")
     if sea_temp_C is None:
         return case, mode
     sea = check_finite(n["sea_temp_C"], sea_temp_C)
     if case.thermal is None:
         raise InputError(n["sea_temp_C"], sea, "needs the case's [thermal] table (the heat "
                          "balance to the sea)")
-    if mode != "full":
-        raise InputError(n["sea_temp_C"], sea, f"only under {n['full']} (the heat balance "
-                         f"to the sea); the mode is '{mode}'")
+    if not uses_balance(mode):
+        raise InputError(n["sea_temp_C"], sea, "only under thermal 'bulk' or 'full' (the "
+                         f"heat balance to the sea); the mode is '{mode}'")
     try:
         return replace(case, thermal=replace(case.thermal, sea_temp_C=sea)), mode
     except InputError as e:
@@ -217,13 +219,14 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     oils : path or dict, optional
         Oils table to look ``oil`` up in.
     oil_temp_C : float, optional
-        Oil temperature [degC] (refused under ``full``).
+        Oil temperature [degC] (refused under ``bulk``/``full``).
     depth_m : float, optional
         Sea depth [m].
-    thermal : {"none", "film", "full"}, optional
-        Thermal mode (default: the best physics the case allows).
+    thermal : {"none", "bulk", "film", "full"}, optional
+        Thermal mode (default: ``bulk`` with ``[thermal]``, else ``none``: the model
+        the evidence supports, :func:`~oilgap.model.joint_loss.default_thermal_mode`).
     sea_temp_C : float, optional
-        Sea temperature of the heat balance [degC] (``full`` only).
+        Sea temperature of the heat balance [degC] (``bulk``/``full`` only).
     laminar_law : {"couette", "bilgen-boulos"}, optional
         Law below the critical Taylor number (default: the case's).
 

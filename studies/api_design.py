@@ -8,6 +8,7 @@ from pathlib import Path
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning, check_positive
+from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
 from oilgap.optim.design import DesignProblem, compare_heating
 from oilgap.studies.api import as_case, thermal_case, with_operating
@@ -29,7 +30,9 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     """The region-1 geometry (R, delta, groove fill, L) of least mean power under the
     motor's torque, the rotor inertia and the case's bounds (``oilgap optimize``).
 
-    Under ``film``/``full`` the optimum without heating is solved too and shown beside it.
+    Under ``bulk``/``film``/``full`` the optimum without heating is solved too and shown
+    beside it. The initial and optimal designs' film bands
+    (:func:`~oilgap.model.joint_loss.film_band`) are reported under every mode.
 
     Parameters
     ----------
@@ -70,13 +73,15 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)
             exact = res.evaluate()
-        return Optimization(res, c, exact, header, limits)
+        return Optimization(res, c, exact, header, limits, tuple(e.film_band for e in exact))
     cmp = compare_heating(DesignProblem(c, verbose=verbose, thermal=mode), starts=starts,
                           **limits)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         exact = (*cmp.heated.operating(), cmp.isothermal.evaluate()[1])
-    return Optimization(cmp, c, exact, header, limits)
+        bands = tuple(film_band(d, mode, mean_power_W=e.mean_power_W)
+                      for d, e in zip(cmp.heated.design_cases(), exact[:2], strict=True))
+    return Optimization(cmp, c, exact, header, limits, bands)
 
 
 __all__ = ["optimize"]

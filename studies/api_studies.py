@@ -55,11 +55,17 @@ def _out(out: str | Path | None) -> Path | None:
     return None if out is None else Path(out)
 
 
+def _note(folder: ResultFolder | None, mode: str, default: bool) -> None:
+    """The study's thermal mode into its folder's ``provenance.json``."""
+    if folder is not None:
+        folder.note(thermal_mode=mode, thermal_mode_default=bool(default))
+
+
 def pareto(case: DesignCase | str | Path | None = None, *,
            points: int = pareto_study.DEFAULT_POINTS, torque_min_Nm: float | None = None,
            out: str | Path | None = None, force: bool = False, workers: int | None = None,
            scheduler: str | None = None, progress: bool | None = False,
-           folder: ResultFolder | None = None) -> Pareto:
+           folder: ResultFolder | None = None, thermal: str | None = None) -> Pareto:
     """The gap-loss and loss-inertia Pareto fronts by epsilon-constraint sweeps
     (``oilgap study pareto``; :func:`oilgap.studies.pareto.run`).
 
@@ -80,6 +86,9 @@ def pareto(case: DesignCase | str | Path | None = None, *,
         study takes them.
     progress : bool, optional
         Progress bar on stderr.
+    thermal : {"none", "bulk", "film", "full"}, optional
+        Thermal mode of the fronts and the marked designs (default: ``bulk`` with
+        ``[thermal]``, else ``none``, as ``og.evaluate`` and ``og.optimize``).
 
     Returns
     -------
@@ -89,7 +98,9 @@ def pareto(case: DesignCase | str | Path | None = None, *,
     extra = _passed(workers=workers, scheduler=scheduler)
     with result_folder("study pareto", out, force, folder=folder) as f:
         _begin(f)
-        r = pareto_study.run(out, base, points, torque_min_Nm, progress, **extra)
+        r = pareto_study.run(out, base, points, torque_min_Nm, progress, thermal=thermal,
+                             **extra)
+        _note(f, r.thermal_mode, r.thermal_default)
     return Pareto(r, base, _out(out))
 
 
@@ -123,12 +134,12 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     mission : list of dicts, DataFrame, CSV path or None
         Rows ``depth_m`` [m], ``oil_temp_C`` [degC], ``fraction`` [-] (default: the
         case's ``[[mission]]`` rows, else the study's default mission).
-    thermal : {"none", "film", "full"}, optional
-        Thermal mode (default: the best physics the case allows).
+    thermal : {"none", "bulk", "film", "full"}, optional
+        Thermal mode (default: ``bulk`` with ``[thermal]``, else ``none``).
     nu_min_cSt, nu_max_cSt : float
         Lubrication and cold-start limits [cSt].
     depth_range_m, temp_range_C, sea_temp_range_C : pairs of float
-        The envelope [m], [degC] (oil's under none/film, sea's under full).
+        The envelope [m], [degC] (oil's under none/film, sea's under bulk/full).
     mission_hours : float
         Mission duration [h].
     out, force, workers, scheduler, progress
@@ -151,6 +162,7 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
                                 mission_hours=mission_hours, workers=workers,
                                 progress=progress, thermal=thermal, scheduler=scheduler,
                                 **options)
+        _note(f, r.thermal_mode, r.settings["thermal_default"])
     return OilGrade(r, base, _out(out))
 
 
@@ -195,6 +207,7 @@ def smoothing(case: DesignCase | str | Path | None = None, *, method: str | None
         r = smoothing_study.run(out, case=base, method=method, resistance_K_W=resistance_K_W,
                                 T_values=T, plateau_tol=plateau_tol, thermal=thermal,
                                 film_evidence=film_evidence)
+        _note(f, r.thermal_mode, r.thermal_default)
     return Smoothing(r, base, plateau_tol, _out(out))
 
 
@@ -215,8 +228,8 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
     case : DesignCase, path or None
         Base case (None: the seed joint).
     mode : {"evaluate", "optimize"}
-    thermal : {"none", "film", "full"}, optional
-        Thermal mode (default: the best physics the case allows).
+    thermal : {"none", "bulk", "film", "full"}, optional
+        Thermal mode (default: ``bulk`` with ``[thermal]``, else ``none``).
     out : path, optional
         Folder of the resumable store, ``results.csv``/``.parquet``, ``sweep.png`` and
         ``summary.md``.
@@ -245,6 +258,7 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
                        retry_failed=retry_failed, thermal=thermal,
                        chunk_seconds=chunk_seconds, **extra)
         view = Sweep(res, base, g, mode, time.perf_counter() - t0, _out(out), name, scheduler)
+        _note(f, view.thermal_mode, res.attrs.get("thermal_default", False))
         if out is not None:
             view.files = write_sweep_outputs(view, Path(out))
     return view

@@ -2,7 +2,7 @@
 
 For each grade the study evaluates the joint's mean viscous power over its duty
 cycle on a grid over the envelope (sea depth x oil temperature, or sea temperature
-under the thermal mode ``full``; default 0-7000 m x 0-40 degC) through
+under the thermal mode ``bulk``/``full``; default 0-7000 m x 0-40 degC) through
 :func:`oilgap.studies.grid.runner.run_grid`, then:
 
 * **Lubrication limit** (harmonic reducer and bearings): the lowest viscosity in
@@ -33,7 +33,7 @@ Thermal modes (``thermal``, :mod:`oilgap.model.joint_loss`):
 * ``film``: the losses (envelope, mission, rated view) carry the film-heating
   correction at the given oil temperatures; the limits are as under ``none`` (the
   bulk oil is at the given temperature).
-* ``full`` (the case's ``[thermal]`` table): the temperature axis of the envelope,
+* ``bulk``/``full`` (the case's ``[thermal]`` table): the temperature axis of the envelope,
   the mission rows' and the rated view's temperatures are the **sea's**; at every
   point each grade's bulk oil temperature is the heat balance's
   ``T = T_sea + R (P(T) + Q)``, a result, and so is its operating viscosity.
@@ -48,7 +48,7 @@ A case's rolling bearing (``[bearing]``) is part of every loss (the grid's
 grades; the grade table then also lists its share of the rated and mission powers
 (``rated_bearing_power_W``, ``mission_bearing_power_W``).
 
-Under ``film`` and ``full`` the isothermal study over the same temperatures runs as
+Under ``bulk``, ``film`` and ``full`` the isothermal study over the same temperatures runs as
 well: the result names both recommendations, whether the grade changes and why
 (:mod:`oilgap.studies.oil_grade_thermal`).
 
@@ -74,17 +74,13 @@ import pandas as pd
 from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint
 from oilgap.model.case_io import seed_case
 from oilgap.model.defaults import Default, case_defaults, study_default
-from oilgap.model.errors import (
-    InputError,
-    SolverError,
-    check_finite,
-    check_positive,
-    check_range,
-)
+from oilgap.model.errors import InputError, SolverError, check_finite, check_positive, check_range
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.inputs import header_error, read_input_text
-from oilgap.model.joint_loss import bearing_mean_power_at, resolve_thermal_mode
+from oilgap.model.joint_loss import FilmBand, bearing_mean_power_at, film_band
+from oilgap.model.joint_loss import resolve_thermal_mode as resolve_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
+from oilgap.model.thermal_modes import uses_balance
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
 from oilgap.studies.oil_grade_thermal import compare_recommendations
@@ -102,7 +98,7 @@ DEFAULT_ISO_TOLERANCE = 0.10
 """ISO 3448 tolerance on nu at 40 degC, applied at its worst to both limits [-]."""
 DEFAULT_DEPTH_RANGE_M = (0.0, 7000.0)
 DEFAULT_TEMP_RANGE_C = (0.0, 40.0)
-"""Envelope temperatures [degC]: the oil's (none, film) or the sea's (full). The same
+"""Envelope temperatures [degC]: the oil's (none, film) or the sea's (bulk, full). The same
 0-40 degC for the sea, so that the thermal and isothermal answers differ by the physics
 only (the surface end stands for deck checks in warm air)."""
 DEFAULT_MISSION_HOURS = 8.0
@@ -110,7 +106,7 @@ DEFAULT_MISSION_HOURS = 8.0
 SEED_MISSION = (MissionSegment(0.0, 20.0, 0.05), MissionSegment(1500.0, 4.0, 0.10),
                 MissionSegment(3000.0, 2.0, 0.85))
 """Default mission of the seed joint (it has none): fractions of the joint's running
-time at (depth [m], oil temperature [degC]; the sea's under the thermal mode ``full``):
+time at (depth [m], oil temperature [degC]; the sea's under the thermal mode ``bulk``/``full``):
 deck checks at 0 m and 20 degC (5 %), work on the way at 1500 m and 4 degC (10 %), work
 at the rated 3000 m and 2 degC (85 %)."""
 
@@ -188,13 +184,13 @@ class OilGradeResult:
     ----------
     table : one row per grade (limits, mission energy, rank, verdict, reason) under the
         thermal mode
-    envelope : the grid over depth x temperature (the sea's under ``full``) for every grade
+    envelope : the grid over depth x temperature (the sea's under ``bulk``/``full``) for every grade
     rated : loss against grade at the rated depth for a few temperatures
     recommended, runner_up : grade names (None if no grade passes)
     mission : the mission profile used
     settings : the limits, ranges and thermal mode used
     files : files written
-    thermal_mode : "none", "film" or "full"
+    thermal_mode : "none", "bulk", "film" or "full"
     isothermal_table : the grade table of the isothermal study over the same
         temperatures (the same as ``table`` under ``none``)
     recommended_isothermal, runner_up_isothermal : its answer
@@ -221,6 +217,8 @@ class OilGradeResult:
     """What the tool filled in: the case's and the study's (mission, envelope, limits)."""
     is_seed: bool = True
     """Whether the case is the seed joint (labels name "the seed design" only then)."""
+    film_band: FilmBand | None = None
+    """The case's own oil at its rated point, beside the opposite film choice."""
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
@@ -244,8 +242,8 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     mission : optional
         Mission profile (see :func:`parse_mission`); default the case's rows; without
         them one segment at the case's ``[operating]`` point (its sea temperature under
-        ``full``), or :data:`SEED_MISSION` for the seed joint. Under ``full`` each row's
-        temperature is the sea's.
+        ``bulk``/``full``), or :data:`SEED_MISSION` for the seed joint. Under
+        ``bulk``/``full`` each row's temperature is the sea's.
     grades : oil names (default ISO VG10..VG1000 of the catalogue)
     nu_min_cSt, nu_max_cSt : lubrication and cold limits [cSt]
     iso_tolerance : grade tolerance applied at its worst [-] (0 to switch off)
@@ -256,25 +254,25 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     rated_temps_C : temperatures of the loss-vs-grade view at the rated depth
         (default: envelope min, the case's oil (or sea) temperature, 20 degC, envelope max)
     workers, progress, scheduler : passed to :func:`~oilgap.studies.grid.runner.run_grid`
-    thermal : {"none", "film", "full"} or None
-        Thermal mode (default ``"none"``, the isothermal study; None: the best physics
-        the case allows, the command line's default).
-    sea_temp_range_C : the envelope's sea temperatures [degC] (``full`` only; default
+    thermal : {"none", "bulk", "film", "full"} or None
+        Thermal mode (default ``"none"``, the isothermal study; None: ``bulk`` with
+        ``[thermal]``, else ``none``, the command line's default).
+    sea_temp_range_C : the envelope's sea temperatures [degC] (``bulk``/``full`` only; default
         :data:`DEFAULT_TEMP_RANGE_C`)
 
     Raises
     ------
     InputError
         Bad limits, ranges, grid sizes, mission or grade names; a thermal mode the case
-        does not allow; ``temp_range_C`` under ``full`` or ``sea_temp_range_C`` without it.
+        does not allow; ``temp_range_C`` under ``bulk``/``full`` or ``sea_temp_range_C`` without it.
     """
     base = case if case is not None else seed_case()
-    mode = resolve_thermal_mode(base, thermal)
+    mode = resolve_mode(base, thermal)
     settings = _settings(nu_min_cSt, nu_max_cSt, iso_tolerance, depth_range_m,
                          _temp_axis(mode, temp_range_C, sea_temp_range_C), n_depth, n_temp,
                          mission_hours)
     settings.update(thermal_mode=mode, thermal_default=thermal is None,
-                    temp_axis="sea" if mode == "full" else "oil")
+                    temp_axis="sea" if uses_balance(mode) else "oil")
     catalogue, grades = _grades(base, grades)
     segs, source = _mission(base, mission, mode)
     settings["rated_depth_m"] = base.operating.depth_m
@@ -301,7 +299,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
                             comparison, _defaults(base, settings, mission is None, source, segs,
                                                   temp_range_C, sea_temp_range_C,
                                                   rated_given),
-                            is_seed_case(base))
+                            is_seed_case(base), film_band(base, mode))
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
     return result
@@ -318,26 +316,26 @@ def _grades(base: DesignCase, grades: Sequence[str]) -> tuple[dict, list[str]]:
 
 
 def _temp_axis(mode: str, temp_range_C, sea_temp_range_C) -> Sequence[float]:
-    """The envelope's temperature range: the oil's (none, film) or the sea's (full)."""
-    if mode == "full":
+    """The envelope's temperature range: the oil's (none, film) or the sea's (bulk, full)."""
+    if uses_balance(mode):
         if temp_range_C is not None:
-            raise InputError("temp_range_C", tuple(temp_range_C), "under thermal mode 'full' "
+            raise InputError("temp_range_C", tuple(temp_range_C), f"under thermal mode '{mode}' "
                              "the oil temperature is a result; give sea_temp_range_C", WHERE)
         return DEFAULT_TEMP_RANGE_C if sea_temp_range_C is None else sea_temp_range_C
     if sea_temp_range_C is not None:
         raise InputError("sea_temp_range_C", tuple(sea_temp_range_C), "only under thermal "
-                         f"mode 'full' (the heat balance); the mode is '{mode}'", WHERE)
+                         f"mode 'bulk' or 'full' (the heat balance); the mode is '{mode}'", WHERE)
     return DEFAULT_TEMP_RANGE_C if temp_range_C is None else temp_range_C
 
 
 def _case_temp(base: DesignCase, mode: str) -> float:
-    """The case's own temperature on the envelope's axis: its sea's under ``full``."""
-    return float(base.thermal.sea_temp_C if mode == "full" else base.operating.oil_temp_C)
+    """The case's own temperature on the envelope's axis: its sea's under ``bulk``/``full``."""
+    return float(base.thermal.sea_temp_C if uses_balance(mode) else base.operating.oil_temp_C)
 
 
 def _axis(mode: str) -> str:
     """The grid column of the envelope's temperature axis."""
-    return "sea_temp_C" if mode == "full" else "oil_temp_C"
+    return "sea_temp_C" if uses_balance(mode) else "oil_temp_C"
 
 
 def _evaluate(grid: pd.DataFrame, base: DesignCase, catalogue: dict, mode: str,
@@ -402,7 +400,7 @@ def _mission(base: DesignCase, mission, mode: str = "none"
     if is_seed_case(base):
         return SEED_MISSION, "default seed mission (the case has none)"
     t = _case_temp(base, mode)
-    where = "sea " if mode == "full" else ""
+    where = "sea " if uses_balance(mode) else ""
     return ((MissionSegment(float(base.operating.depth_m), t, 1.0),),
             f"default: one segment at the case's [operating] point "
             f"({base.operating.depth_m:g} m, {where}{t:g} degC; the case has no [[mission]])")
@@ -442,7 +440,7 @@ def _defaults(base: DesignCase, settings: dict, mission_default: bool, source: s
 
 def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> pd.DataFrame:
     """One grid for every grade: the envelope, the mission rows and the rated-depth view
-    (temperatures in ``oil_temp_C``; renamed to ``sea_temp_C`` under ``full``)."""
+    (temperatures in ``oil_temp_C``; renamed to ``sea_temp_C`` under ``bulk``/``full``)."""
     depths = np.linspace(*settings["depth_range_m"], settings["n_depth"])
     temps = np.linspace(*settings["temp_range_C"], settings["n_temp"])
     rated_temps = settings["rated_temps_C"]
@@ -490,7 +488,7 @@ def _grade_row(base: DesignCase, oil, e: pd.DataFrame, c: pd.DataFrame, m: pd.Da
         "mission_mean_power_W": mean_p,
         "mission_energy_Wh": mean_p * settings["mission_hours"],
         "thermal_mode": mode,
-        "nu_min_at_sea_C": float(e.loc[i_lo, axis]) if mode == "full" else float("nan"),
+        "nu_min_at_sea_C": float(e.loc[i_lo, axis]) if uses_balance(mode) else float("nan"),
         "oil_temp_op_max_C": float(e["oil_temp_op_C"].max()),
         "rated_oil_temp_op_C": rated("oil_temp_op_C"),
         "mission_oil_temp_op_max_C": float(m["oil_temp_op_C"].max())} | _bearing_columns(
@@ -547,7 +545,7 @@ def _why_fails(r: pd.Series, settings: dict, mode: str) -> list[str]:
     why = []
     if not r["passes_lubrication"]:
         where = (f"its operating {r['nu_min_at_C']:.1f} degC (sea {r['nu_min_at_sea_C']:g} "
-                 f"degC)" if mode == "full" else f"{r['nu_min_at_C']:g} degC")
+                 f"degC)" if uses_balance(mode) else f"{r['nu_min_at_C']:g} degC")
         why.append(f"too thin: nu = {r['nu_min_envelope_cSt']:.1f} cSt at {where}, "
                    f"{r['nu_min_at_m']:g} m"
                    + (f" ({(1 - tol) * r['nu_min_envelope_cSt']:.1f} at -{100 * tol:g} %"
@@ -555,7 +553,7 @@ def _why_fails(r: pd.Series, settings: dict, mode: str) -> list[str]:
                    + f" < lubrication limit {nu_min:g} cSt")
     if not r["passes_cold"]:
         where = (f"a cold start in a {r['nu_max_at_C']:g} degC sea (oil not yet warmed)"
-                 if mode == "full" else f"{r['nu_max_at_C']:g} degC")
+                 if uses_balance(mode) else f"{r['nu_max_at_C']:g} degC")
         why.append(f"too thick when cold: nu = {r['nu_max_envelope_cSt']:.0f} cSt at "
                    f"{where}, {r['nu_max_at_m']:g} m"
                    + (f" ({(1 + tol) * r['nu_max_envelope_cSt']:.0f} at +{100 * tol:g} %)"

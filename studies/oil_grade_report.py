@@ -1,7 +1,7 @@
 """The oil-grade study's outputs: CSV tables, JSON, figures and ``summary.md``.
 
 Written by :func:`oilgap.studies.oil_grade.run` with an output folder; every file
-names the thermal mode (:mod:`oilgap.model.joint_loss`). Under ``film`` and ``full``
+names the thermal mode (:mod:`oilgap.model.joint_loss`). Under ``bulk``, ``film`` and ``full``
 the isothermal answer and the comparison (:mod:`oilgap.studies.oil_grade_thermal`)
 are written as well.
 """
@@ -17,6 +17,7 @@ import pandas as pd
 
 from oilgap.model.defaults import defaults_block, defaults_markdown
 from oilgap.model.serialize import dumps
+from oilgap.model.thermal_modes import uses_balance
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.reporting import (
     markdown_table,
@@ -33,7 +34,7 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
 
 def _axis_words(result: OilGradeResult) -> tuple[str, str]:
     """(grid column, words) of the envelope's temperature axis."""
-    if result.thermal_mode == "full":
+    if uses_balance(result.thermal_mode):
         return "sea_temp_C", "sea"
     return "oil_temp_C", "oil"
 
@@ -143,9 +144,10 @@ def _figure_thermal(result: OilGradeResult, path: Path) -> Path:
         ax.set_xlabel("ISO VG grade")
         ax.grid(alpha=0.3, which="both")
         ax.legend(fontsize=7.5)
-    a1.set_title(f"recommended: {result.recommended or 'none'} (isothermal: "
+    a1.set_title(f"recommended under thermal {result.thermal_mode}: "
+                 f"{result.recommended or 'none'} (isothermal: "
                  f"{result.recommended_isothermal or 'none'})", fontsize=10)
-    a2.set_title("lubrication check", fontsize=10)
+    a2.set_title(f"lubrication check, thermal {result.thermal_mode}", fontsize=10)
     return save_figure(fig, path)
 
 
@@ -196,22 +198,22 @@ def summary_markdown(result: OilGradeResult, base: DesignCase) -> str:
                                   f"{s['rated_temp_C']:g} degC [W]",
                  "mission_mean_power_W": "mission mean P [W]",
                  "mission_energy_Wh": f"mission energy ({s['mission_hours']:g} h) [Wh]"})
-    if result.thermal_mode == "full":
+    if uses_balance(result.thermal_mode):
         show.insert(2, "T oil max [degC]", t["oil_temp_op_max_C"])
     mis = pd.DataFrame([{"depth_m": m.depth_m, _axis_words(result)[0]: m.oil_temp_C,
                          "fraction": m.fraction} for m in result.mission])
     lines = [
         f"# Oil grade for {base.name}", "",
         f"Thermal mode: {thermal_description(base, result.thermal_mode, s['thermal_default'])}.",
-        "", _headline(result, base), "",
+        "", _headline(result, base), "", *band_markdown(result, base),
         f"Envelope: depth {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m, {words} "
         f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC ({s['n_depth']} x "
         f"{s['n_temp']} grid). Lubrication limit: nu >= {s['nu_min_cSt']:g} cSt at the "
         "thinnest point" + (" (the viscosity at each grade's operating temperature from "
-                            "the heat balance)" if result.thermal_mode == "full" else "")
+                            "the heat balance)" if uses_balance(result.thermal_mode) else "")
         + f"; cold-start limit: nu <= {s['nu_max_cSt']:g} cSt at the thickest"
         + (" (the oil at the sea temperature before it warms)"
-           if result.thermal_mode == "full" else "")
+           if uses_balance(result.thermal_mode) else "")
         + f"; both with the ISO 3448 +-{100 * s['iso_tolerance']:g} % grade tolerance at its "
         "worst. Loss: mean viscous power over the case's duty cycle "
         f"({base.duty_cycle.description}), friction form `{base.friction.form}`, laminar law "
@@ -226,9 +228,18 @@ def summary_markdown(result: OilGradeResult, base: DesignCase) -> str:
     return "\n".join(lines) + "\n"
 
 
+def band_markdown(result: OilGradeResult, base: DesignCase) -> list[str]:
+    """The film band of the case's own oil at its rated point (a paragraph, or nothing)."""
+    b = result.film_band
+    if b is None:
+        return []
+    return [f"The case's own oil ({base.oil.name}) at its rated point: {b.mean_power_W:.4g} W "
+            f"under {b.mode}; film band: {b.line()}.", ""]
+
+
 def result_json(result: OilGradeResult, base: DesignCase) -> dict:
     """The study's answer as one JSON document (top-level ``thermal_mode``; under
-    ``full`` ``sea_temp_C``; the comparison under ``film``/``full``)."""
+    ``bulk``/``full`` ``sea_temp_C``; the comparison under ``bulk``/``film``/``full``)."""
     s = result.settings
     doc = {"thermal_mode": result.thermal_mode, "thermal_default": s["thermal_default"],
            "case": base.name, "recommended": result.recommended,
@@ -240,6 +251,9 @@ def result_json(result: OilGradeResult, base: DesignCase) -> dict:
                        for m in result.mission],
            "grades": json.loads(result.table.to_json(orient="records")),
            "defaults": defaults_block(result.defaults)}
+    if result.film_band is not None:
+        doc["film_band"] = dict(result.film_band.to_dict(), oil=base.oil.name,
+                                rated_mean_power_W=result.film_band.mean_power_W)
     if result.comparison is not None:
         c = dict(result.comparison)
         c["grades"] = json.loads(c["grades"].to_json(orient="records"))
@@ -254,7 +268,7 @@ def result_json(result: OilGradeResult, base: DesignCase) -> dict:
 def write_outputs(out: Path, result: OilGradeResult, base: DesignCase) -> tuple[Path, ...]:
     """Write ``oil_grade_table.csv``, ``oil_grade_envelope.csv``, ``oil_grade_rated.csv``,
     ``oil_grade.json``, the PNG figures and ``summary.md`` into ``out``; under
-    ``film``/``full`` also ``oil_grade_isothermal_table.csv``,
+    ``bulk``/``film``/``full`` also ``oil_grade_isothermal_table.csv``,
     ``oil_grade_thermal_comparison.csv`` and ``oil_grade_thermal.png``."""
     tables = {"oil_grade_table.csv": result.table,
               "oil_grade_envelope.csv": result.envelope,

@@ -1,15 +1,15 @@
 """The oil grade with and without viscous heating: does the recommendation change, and why.
 
-The oil-grade study (:mod:`oilgap.studies.oil_grade`) under the thermal mode ``film``
-or ``full`` runs the isothermal study over the same temperatures as well; this module
-sets the two answers side by side, grade by grade, and says in words what moved:
+The oil-grade study (:mod:`oilgap.studies.oil_grade`) under the thermal mode ``bulk``,
+``film`` or ``full`` runs the isothermal study over the same temperatures as well; this
+module sets the two answers side by side, grade by grade, and says in words what moved:
 
 * ``film``: the bulk oil is at the given temperature, so the limits are the
   isothermal ones; only the losses change (the film's own shear heating lowers them,
   and more for thicker grades, whose Nahme number ``Na = b mu U^2 / k`` is larger).
   The recommendation can change only through the mission-energy order.
-* ``full``: every grade runs above the sea by ``R (P + Q)``. A thicker grade loses
-  more, runs hotter, and its operating viscosity falls (the lubrication check uses
+* ``bulk``/``full``: every grade runs above the sea by ``R (P + Q)``. A thicker grade
+  loses more, runs hotter, and its operating viscosity falls (the lubrication check uses
   it); a cold start is the oil at the sea temperature before it warms, unchanged.
   So a thin grade that passed the lubrication limit at the sea temperature can fail
   it at its operating temperature, and the energy order can change.
@@ -20,6 +20,8 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 import pandas as pd
+
+from oilgap.model.thermal_modes import uses_balance
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from oilgap.model.case import DesignCase
@@ -62,12 +64,12 @@ def _physics(per: pd.DataFrame, mode: str, base: DesignCase, settings: dict,
              if g is not None and g in set(per["oil"])]
     shown = per.set_index("oil").loc[list(dict.fromkeys(names))]
     temps = ", ".join(f"{g} {r.rated_oil_temp_op_C:.1f} degC" for g, r in shown.iterrows())
-    return (f"Under full every grade runs above the sea by R (P + Q) (R {th.resistance_K_W:g} "
-            f"K/W, Q {th.other_heat_W:g} W): at the rated point ({settings['rated_depth_m']:g}"
-            f" m, sea {settings['rated_temp_C']:g} degC) {temps}. A thicker grade loses more "
-            "and runs hotter, so its operating viscosity falls; the lubrication check uses "
-            "the operating viscosity, the cold-start check the oil at the sea temperature "
-            "before it warms (unchanged).")
+    return (f"Under {mode} every grade runs above the sea by R (P + Q) (R "
+            f"{th.resistance_K_W:g} K/W, Q {th.other_heat_W:g} W): at the rated point "
+            f"({settings['rated_depth_m']:g} m, sea {settings['rated_temp_C']:g} degC) {temps}. "
+            "A thicker grade loses more and runs hotter, so its operating viscosity falls; the "
+            "lubrication check uses the operating viscosity, the cold-start check the oil at the "
+            "sea temperature before it warms (unchanged).")
 
 
 def _row(per: pd.DataFrame, oil: str) -> pd.Series:
@@ -128,8 +130,8 @@ def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame, rec: str |
     dict
         ``thermal_mode``, ``recommended``, ``runner_up``, ``recommended_isothermal``,
         ``runner_up_isothermal``, ``changed`` (bool), ``why`` (sentences with the
-        numbers), ``grades`` (:func:`per_grade`, a DataFrame) and under ``full`` the
-        heat path (``sea_temp_range_C``, ``resistance_K_per_W``, ``other_heat_W``,
+        numbers), ``grades`` (:func:`per_grade`, a DataFrame) and under ``bulk``/``full``
+        the heat path (``sea_temp_range_C``, ``resistance_K_per_W``, ``other_heat_W``,
         ``heat_capacity_J_per_K``, the case's ``sea_temp_C``).
     """
     per = per_grade(table, t_iso)
@@ -141,7 +143,7 @@ def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame, rec: str |
     out = {"thermal_mode": mode, "recommended": rec, "runner_up": runner_up,
            "recommended_isothermal": rec_iso, "runner_up_isothermal": runner_up_iso,
            "changed": changed, "why": why, "grades": per}
-    if mode == "full":
+    if uses_balance(mode):
         th = base.thermal
         out.update(sea_temp_C=th.sea_temp_C, sea_temp_range_C=list(settings["temp_range_C"]),
                    resistance_K_per_W=th.resistance_K_W, other_heat_W=th.other_heat_W,

@@ -24,7 +24,13 @@ On the seed case the seed joint (T = 4) and the smoothed seed (T = 2) are evalua
 with the same objective (smooth C_m over the duty cycle) and marked; on any other case
 only the case's own design is, as "this design (<case name>)", and titles and labels
 name the case. ``mean_power_exact_W`` gives every design with the exact Eq. 6 C_m as
-``oilgap evaluate`` prints it.
+``oilgap evaluate`` prints it, and ``film_band_*`` the same design under the opposite
+film choice (:func:`~oilgap.model.joint_loss.film_band`).
+
+Every front is solved under a thermal mode of :mod:`oilgap.model.joint_loss` (``thermal``;
+default :func:`~oilgap.model.joint_loss.default_thermal_mode`: ``bulk`` with
+``[thermal]``, else ``none``), the same as ``oilgap evaluate`` and ``oilgap optimize``;
+titles, the summary and ``provenance.json`` name it.
 
 Front quality is measured by the 2-D hypervolume (:func:`hypervolume_2d`)
 with respect to a stated reference point (default: the case's ``gap_max`` and
@@ -58,10 +64,11 @@ from oilgap.model.errors import (
     SolverError,
     check_positive,
 )
+from oilgap.model.joint_loss import film_band, resolve_thermal_mode
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.multiobjective import arc_length_epsilons, hypervolume_2d
-from oilgap.studies.grid.evaluate import evaluate_cases
+from oilgap.studies.grid.evaluate import band_text, evaluate_cases, thermal_description
 from oilgap.studies.grid.optimize import solve_design_point
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.reporting import (
@@ -84,30 +91,45 @@ SEED_LABELS = ("seed (T = 4)", "smoothed seed (T = 2)")
 # --------------------------------------------------------------------------- fronts
 
 
-def seed_points(case: DesignCase | None = None) -> pd.DataFrame:
+def _marked(prob: DesignProblem, c: DesignCase, x: np.ndarray, label: str,
+            thermal: str) -> dict:
+    """One marked design's row: the NLP's point under the mode (smooth C_m), the exact
+    loss as ``oilgap evaluate`` prints it and the film band beside it."""
+    pt = prob.point(x) if prob.heated is None else prob.heated.point(x)[0]
+    ex = evaluate_cases([c], thermal)
+    exact = float(ex["mean_power_W"].iloc[0])
+    band = film_band(c, thermal, mean_power_W=exact)
+    return dict(pt.to_dict(), design=label, mean_power_exact_W=exact,
+                oil_temp_op_C=float(ex["oil_temp_op_C"].iloc[0]),
+                film_band_mode=band.other_mode, film_band_power_W=band.other_mean_power_W,
+                film_band_change_pct=band.change_pct)
+
+
+def _problem(case: DesignCase, thermal: str) -> DesignProblem:
+    return DesignProblem(case) if thermal == "none" else DesignProblem(case, thermal=thermal)
+
+
+def seed_points(case: DesignCase | None = None, thermal: str = "none") -> pd.DataFrame:
     """The designs marked on the fronts, in the fronts' objective space.
 
     On the seed case (``case`` None or the seed joint, grooved or smoothed): the seed
     joint (T = 4) and the smoothed seed (T = 2), both through the grooved seed's
     DesignProblem (smooth C_m, inertia with the epoxy fill of the smoothed one). On any
     other case: only the case's own design, ``design`` = "this design (<case name>)".
-    Each with the exact C_m too (``mean_power_exact_W``).
+    Each with the exact C_m too (``mean_power_exact_W`` [W], at ``oil_temp_op_C``
+    [degC]) and its film band (``film_band_mode``, ``film_band_power_W`` [W],
+    ``film_band_change_pct`` [%]), under the thermal mode ``thermal``.
     """
     if not is_seed_case(case):
-        p = DesignProblem(case)
-        pt = p.point(p.x_case_m)
-        return pd.DataFrame([dict(pt.to_dict(), design=design_label(case),
-                                  mean_power_exact_W=float(evaluate_cases([case])
-                                                           ["mean_power_W"].iloc[0]))])
+        p = _problem(case, thermal)
+        return pd.DataFrame([_marked(p, case, p.x_case_m, design_label(case), thermal)])
     grooved, smoothed = seed_case(False), seed_case(True)
-    prob = DesignProblem(grooved)
+    prob = _problem(grooved, thermal)
     rows = []
     for label, c in (("seed (T = 4)", grooved), ("smoothed seed (T = 2)", smoothed)):
         r1 = c.region1
         x = np.array([r1.T2, r1.gap, r1.T2 - r1.T1, r1.T4 - r1.T3, r1.length])
-        pt = prob.point(x)
-        rows.append(dict(pt.to_dict(), design=label,
-                         mean_power_exact_W=float(evaluate_cases([c])["mean_power_W"].iloc[0])))
+        rows.append(_marked(prob, c, x, label, thermal))
     return pd.DataFrame(rows)
 
 
@@ -119,7 +141,7 @@ def _check_points(n: int) -> int:
 
 def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
            progress: bool | None, label: str, scheduler: str | None = None,
-           workers: int | None = None) -> pd.DataFrame:
+           workers: int | None = None, thermal: str = "none") -> pd.DataFrame:
     """One front: one warm-started chain (one chunk) on this process, or on ``workers``
     processes of a Dask ``scheduler`` (:func:`~oilgap.studies.grid.runner.run_grid`)."""
     grid = pd.DataFrame({column: eps})
@@ -127,7 +149,8 @@ def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
         grid[k] = v
     res = run_grid(grid, case, mode="optimize", out_dir=out_dir,
                    workers=1 if scheduler is None else (workers or 1),
-                   chunk_size=len(grid), progress=progress, label=label, scheduler=scheduler)
+                   chunk_size=len(grid), progress=progress, label=label, scheduler=scheduler,
+                   thermal=thermal)
     res["epsilon"] = eps
     return res
 
@@ -135,8 +158,10 @@ def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
 def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
               torque_min_Nm: float | None = None, out_dir: str | Path | None = None,
               progress: bool | None = False, spacing: str = "arc",
-              scheduler: str | None = None, workers: int | None = None) -> pd.DataFrame:
-    """The gap-loss front: ``min P s.t. delta <= eps`` for ``points`` values of eps.
+              scheduler: str | None = None, workers: int | None = None,
+              thermal: str = "none") -> pd.DataFrame:
+    """The gap-loss front: ``min P s.t. delta <= eps`` for ``points`` values of eps, under
+    the thermal mode ``thermal``.
 
     eps runs from the gap of the unconstrained optimum down to the case's
     ``gap_min``, each solve warm-started from the previous one; ``spacing``
@@ -161,19 +186,20 @@ def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
     if torque_min_Nm is not None:
         extra["torque_min_Nm"] = check_positive("torque_min_Nm", torque_min_Nm,
                                                 "pareto study")
-    top, warm = solve_design_point(base, extra)
+    top, warm = solve_design_point(base, extra, thermal=thermal)
     lo = base.bounds.gap_min / MM_TO_M
     hi = max(top["delta_mm"], lo)
     eps = np.linspace(hi, lo, points)
     if spacing == "arc" and hi > lo:
         try:
-            bot, _ = solve_design_point(base, dict(extra, delta_max_mm=lo), x0=warm)
+            bot, _ = solve_design_point(base, dict(extra, delta_max_mm=lo), x0=warm,
+                                        thermal=thermal)
             eps = arc_length_epsilons(hi, top["mean_power_W"], lo, bot["mean_power_W"],
                                       points)
         except (InfeasibleError, SolverError):
             pass  # the sweep reports the failing end as a row; keep equal steps
     return _sweep(base, "delta_max_mm", eps, extra, out_dir, progress, "pareto gap",
-                  scheduler, workers)
+                  scheduler, workers, thermal)
 
 
 def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = None,
@@ -205,8 +231,9 @@ def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = N
 def inertia_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
                   torque_min_Nm: float | None = None, out_dir: str | Path | None = None,
                   progress: bool | None = False, scheduler: str | None = None,
-                  workers: int | None = None) -> pd.DataFrame:
-    """The loss-inertia front: ``min P s.t. J <= eps`` for ``points`` values of eps.
+                  workers: int | None = None, thermal: str = "none") -> pd.DataFrame:
+    """The loss-inertia front: ``min P s.t. J <= eps`` for ``points`` values of eps, under
+    the thermal mode ``thermal``.
 
     eps (as ``inertia_max_ratio`` of the case's unfilled rotor) runs from just
     above the lightest feasible rotor to the inertia of the optimum without an
@@ -219,13 +246,13 @@ def inertia_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
     if torque_min_Nm is not None:
         extra["torque_min_Nm"] = check_positive("torque_min_Nm", torque_min_Nm,
                                                 "pareto study")
-    free, _ = solve_design_point(base, dict(extra, inertia_max_ratio=1e3))
+    free, _ = solve_design_point(base, dict(extra, inertia_max_ratio=1e3), thermal=thermal)
     r_min = min_feasible_inertia_ratio(base, torque_min_Nm) * (1 + 1e-4)
     r_max = max(free["inertia_ratio"], r_min)
     s = np.linspace(1.0, 0.0, points)
     eps = r_min + (r_max - r_min) * s * s  # denser towards the steep end at the lightest rotor
     return _sweep(base, "inertia_max_ratio", eps, extra, out_dir, progress, "pareto inertia",
-                  scheduler, workers)
+                  scheduler, workers, thermal)
 
 
 # --------------------------------------------------------------------------- the study
@@ -249,6 +276,10 @@ class ParetoResult:
     """Whether the case is the seed joint (the seed's designs are marked only then)."""
     case_name: str = ""
     """The case's name (titles and labels of a case other than the seed)."""
+    thermal_mode: str = "none"
+    """The thermal mode of the fronts and the marked designs."""
+    thermal_default: bool = False
+    """Whether the mode is the default (not chosen)."""
 
 
 def default_reference_point(case: DesignCase, seeds: pd.DataFrame) -> tuple[float, float]:
@@ -277,7 +308,7 @@ def study_defaults(base: DesignCase, points: int, ref: tuple[float, float]
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         points: int = DEFAULT_POINTS, torque_min_Nm: float | None = None,
         progress: bool | None = False, scheduler: str | None = None,
-        workers: int | None = None) -> ParetoResult:
+        workers: int | None = None, thermal: str | None = None) -> ParetoResult:
     """Run both sweeps; with ``out_dir`` write CSVs, figures and ``summary.md``.
 
     Parameters
@@ -297,22 +328,28 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         one warm-started chain, so one task.
     workers : int, optional
         Processes of the LocalCluster (default 1).
+    thermal : {"none", "bulk", "film", "full"}, optional
+        Thermal mode of the fronts and the marked designs (default:
+        :func:`~oilgap.model.joint_loss.default_thermal_mode`, ``bulk`` with
+        ``[thermal]``, else ``none``).
     """
     base = case if case is not None else seed_case()
     points = _check_points(points)
+    mode = resolve_thermal_mode(base, thermal)
     out = Path(out_dir) if out_dir is not None else None
     t0 = time.perf_counter()
     gf = gap_front(base, points, torque_min_Nm, out / "grid_gap" if out else None, progress,
-                   scheduler=scheduler, workers=workers)
+                   scheduler=scheduler, workers=workers, thermal=mode)
     sweep_t = time.perf_counter() - t0
     inf = inertia_front(base, points, torque_min_Nm, out / "grid_inertia" if out else None,
-                        progress, scheduler=scheduler, workers=workers)
-    seeds = seed_points(base)
+                        progress, scheduler=scheduler, workers=workers, thermal=mode)
+    seeds = seed_points(base, mode)
     ref = default_reference_point(base, seeds)
     ok = gf[gf["status"] == "ok"]
     hv = hypervolume_2d(ok[["delta_mm", "mean_power_W"]].to_numpy(), ref)
     result = ParetoResult(gf, inf, seeds, ref, hv, sweep_t, (),
-                          study_defaults(base, points, ref), is_seed_case(base), base.name)
+                          study_defaults(base, points, ref), is_seed_case(base), base.name,
+                          mode, thermal is None)
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
     return result
@@ -362,7 +399,7 @@ def draw_gap_front(result: ParetoResult, ax) -> None:
     ax.set_xlabel("magnetic gap = clearance delta [mm]")
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
     ax.set_title(f"Magnetic gap against viscous loss (torque >= {_whose(result)}, inertia "
-                 "limited)")
+                 f"limited; thermal {result.thermal_mode})")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
 
@@ -377,7 +414,8 @@ def draw_inertia_front(result: ParetoResult, ax) -> None:
     ax.set_xlabel("rotor inertia incl. epoxy fill [kg m^2]")
     ax.ticklabel_format(axis="x", style="sci", scilimits=(-3, 3))
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
-    ax.set_title(f"Viscous loss against rotor inertia (torque >= {_whose(result)})")
+    ax.set_title(f"Viscous loss against rotor inertia (torque >= {_whose(result)}; "
+                 f"thermal {result.thermal_mode})")
     ax.grid(alpha=0.3)
     ax.legend(fontsize=8)
 
@@ -414,6 +452,8 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
     lines = [
         f"# Pareto sweeps for {base.name}",
         "",
+        f"Thermal mode: {thermal_description(base, result.thermal_mode, result.thermal_default)}.",
+        "",
         f"Groove exponent: gamma = {base.friction.gamma:g} ({base.gamma_source}).",
         "",
         f"Gap front: {len(gok)}/{len(g)} points solved (epsilon on delta from "
@@ -434,6 +474,8 @@ def summary_markdown(result: ParetoResult, base: DesignCase) -> str:
         markdown_table(s.assign(inertia_kgm2=s["inertia_kgm2"].map("{:.4e}".format))[
             ["design", "delta_mm", "T", "mean_power_W", "mean_power_exact_W",
              "torque_capability_Nm", "inertia_kgm2"]], 3),
+        "",
+        *[f"Film band of {row['design']}: {band_text(row)}." for _, row in s.iterrows()],
         "",
         f"At {whose} gap ({seed['delta_mm']:g} mm) the front reaches "
         f"{at_seed_gap['mean_power_W']:.2f} W (T = {at_seed_gap['T']:.2f}, R = "

@@ -28,6 +28,12 @@ from oilgap.model.defaults import defaults_block, gamma_fields, gamma_line
 from oilgap.model.evaluation import CaseEvaluation
 from oilgap.model.files import atomic_write_text, check_out_file
 from oilgap.model.serialize import dumps
+from oilgap.model.thermal_modes import (
+    DEFAULT_MODE_WHY,
+    THERMAL_MODE_TEXT,
+    film_counterpart,
+    uses_balance,
+)
 from oilgap.model.units import m_to_mm
 
 # ----------------------------------------------------------------------------- helpers
@@ -131,12 +137,8 @@ class ResultView:
 
 # ----------------------------------------------------------------------------- evaluate
 
-MODE_TEXT = {
-    "none": "isothermal oil: the seed paper's model",
-    "film": "film heating at the given oil temperature",
-    "full": "film heating at the oil temperature of the heat balance to the sea",
-}
-"""What each thermal mode computes, for the header line."""
+MODE_TEXT = THERMAL_MODE_TEXT
+"""What each thermal mode computes, for the header line (the model's words)."""
 
 BEARING_MODEL_TEXT = {
     "skf": "SKF frictional-moment model (rolling, sliding, drag)",
@@ -148,8 +150,8 @@ BEARING_MODEL_TEXT = {
 def _header(ev: CaseEvaluation) -> list[str]:
     """The case, thermal-mode, balance, oil and friction lines."""
     if ev.thermal_mode_default:
-        mode = (f"thermal     {ev.thermal_mode} (default: the best physics this case allows; "
-                "--thermal none for the seed's isothermal model")
+        mode = (f"thermal     {ev.thermal_mode} (default: {DEFAULT_MODE_WHY}; "
+                f"{MODE_TEXT[ev.thermal_mode]}")
     else:
         mode = f"thermal     {ev.thermal_mode} ({MODE_TEXT[ev.thermal_mode]}"
     lines = [f"case        {ev.case_name}", mode + ")"]
@@ -230,13 +232,18 @@ def _bearing_notes(ev: CaseEvaluation) -> list[str]:
 
 def _film_notes(ev: CaseEvaluation) -> list[str]:
     """What the film columns mean under the mode."""
-    notes = []
-    if ev.thermal_mode == "none":
-        notes.append("Na_peak, film, rise K: the film heating at the peak speed that "
-                     "--thermal none leaves out (not applied; --thermal film applies it)")
+    notes = ["at the peak speed: Na_peak raw Nahme number, Na_eff the effective "
+             "(curvature-corrected, lagged) one the film modes use, Phi_st the steady "
+             "heated/isothermal torque at Na_peak, Phi_app the factor applied, rise K the "
+             "film's hottest point above the bulk at Na_eff"]
+    if not ev.film_applied:
+        notes.append(f"film_applied: false under --thermal {ev.thermal_mode}: Na and Phi_st "
+                     "are diagnostics of the film heating the model leaves out, not applied "
+                     "(Phi_app 1; "
+                     f"--thermal {film_counterpart(ev.thermal_mode)} applies it)")
     else:
-        notes.append("Na_peak, film, rise K: Nahme number, heated/isothermal torque and the "
-                     "film's hottest point above the bulk, at the peak speed")
+        notes.append(f"film_applied: true under --thermal {ev.thermal_mode}: Phi_app is Phi at "
+                     "Na_eff, faded out above Taylor onset")
     if any(r.film_temp_rise_peak_K is None for r in ev.regions):
         notes.append("rise K '-': Taylor vortices at the peak speed (the film correction is "
                      "laminar-only and fades out there)")
@@ -249,8 +256,8 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
     lines = _header(ev) + ([gamma] if gamma else []) + [
         "",
         f"{'region':<14}{'R mm':>7}{'gap mm':>8}{'L mm':>7}{'T':>6}{'Re_peak':>10}"
-        f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}{'Na_peak':>9}{'film':>7}{'rise K':>8}"
-        "  regimes visited",
+        f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}{'Na_peak':>9}{'Na_eff':>8}"
+        f"{'Phi_st':>8}{'Phi_app':>8}{'rise K':>8}  regimes visited",
     ]
     for r in ev.regions:
         rise = "-" if r.film_temp_rise_peak_K is None else f"{r.film_temp_rise_peak_K:.2f}"
@@ -258,7 +265,8 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
             f"{r.name:<14}{m_to_mm(r.radius_m):>7.2f}{m_to_mm(r.gap_m):>8.3f}"
             f"{m_to_mm(r.length_m):>7.2f}"
             f"{r.roughness_T:>6.2f}{r.Re_peak:>10.4g}{r.Ta_peak:>10.4g}{r.Cm_peak:>11.4g}"
-            f"{r.mean_power_W:>9.3f}{r.nahme_peak:>9.3g}{r.film_factor_peak:>7.3f}{rise:>8}"
+            f"{r.mean_power_W:>9.3f}{r.nahme_peak:>9.3g}{r.nahme_effective_peak:>8.3g}"
+            f"{r.film_factor_steady_peak:>8.3f}{r.film_factor_applied_peak:>8.3f}{rise:>8}"
             f"  {', '.join(r.regimes)}")
     lines += _bearing_rows(ev)
     parts = [(r.name, r.mean_power_W) for r in ev.regions]
@@ -267,12 +275,14 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
                       for n, p in parts) if ev.total_mean_power_W > 0 else ""
     label = "total mean power          " if ev.bearings else "total mean viscous power  "
     lines += ["", f"{label} {ev.total_mean_power_W:.3f} W   ({share})"]
-    if ev.thermal_mode != "none":
+    if ev.film_band is not None:
+        lines.append(f"film band                  {ev.film_band.line('.4g')}")
+    if uses_balance(ev.thermal_mode):
         iso = ev.isothermal_total_mean_power_W
-        where = " at [operating] oil_temp_C" if ev.thermal_mode == "full" else ""
         change = (f"; the heating changes the loss by "
                   f"{100 * (ev.total_mean_power_W / iso - 1):+.1f} %") if iso > 0 else ""
-        lines.append(f"isothermal (seed model)    {iso:.3f} W   (--thermal none{where}{change})")
+        lines.append(f"no heat balance            {iso:.3f} W   (--thermal none at "
+                     f"[operating] oil_temp_C{change})")
     lines += [
         f"viscous torque at peak     {ev.viscous_torque_peak_Nm:.4f} N m",
         f"energy per cycle           {ev.cycle_energy_J:.1f} J",
@@ -289,7 +299,10 @@ def evaluation_rows(ev: CaseEvaluation) -> list[dict]:
              "roughness_T": r.roughness_T, "Re_peak": r.Re_peak, "Ta_peak": r.Ta_peak,
              "Cm_peak": r.Cm_peak, "mean_power_W": r.mean_power_W,
              "torque_peak_Nm": r.torque_peak_Nm, "nahme_peak": r.nahme_peak,
-             "film_factor_peak": r.film_factor_peak,
+             "nahme_effective_peak": r.nahme_effective_peak,
+             "film_factor_steady_peak": r.film_factor_steady_peak,
+             "film_factor_applied_peak": r.film_factor_applied_peak,
+             "film_applied": r.film_applied,
              "film_temp_rise_peak_K": (float("nan") if r.film_temp_rise_peak_K is None
                                        else r.film_temp_rise_peak_K),
              "regimes": ", ".join(r.regimes)} for r in ev.regions]

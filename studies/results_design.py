@@ -11,17 +11,15 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.defaults import gamma_fields, gamma_line
 from oilgap.model.evaluation import oil_state
+from oilgap.model.joint_loss import FilmBand
+from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, THERMAL_MODE_TEXT
 from oilgap.model.units import m2_s_to_cst
 from oilgap.optim.design import DesignResult, HeatingComparison
 from oilgap.optim.design.results import POINT_MEANINGS
 from oilgap.studies.results import ResultView, case_defaults, new_axes
 
-MODE_TEXT = {
-    "none": "isothermal oil, the seed paper's model",
-    "film": "the film's own shear heating at the given oil temperature",
-    "full": "film heating at the oil temperature of the heat balance to the sea",
-}
-"""What each thermal mode computes, for the header line."""
+MODE_TEXT = THERMAL_MODE_TEXT
+"""What each thermal mode computes, for the header line (the model's words)."""
 
 
 def _fmt(v: float) -> str:
@@ -35,10 +33,10 @@ def thermal_line(mode: str, default: bool) -> str:
     """The header line naming the thermal mode (as ``oilgap evaluate``'s)."""
     text = f"thermal     {mode} ("
     if default:
-        text += "default: the best physics this case allows; "
+        text += f"default: {DEFAULT_MODE_WHY}; "
     text += MODE_TEXT[mode]
     if mode != "none":
-        text += "; --thermal none for the seed's isothermal model"
+        text += "; --thermal none for the seed paper's isothermal model"
     return text + ")"
 
 
@@ -80,10 +78,18 @@ def _costs(res: DesignResult) -> list[str]:
     return lines
 
 
+def band_lines(bands: tuple | None) -> list[str]:
+    """The film band of the initial and optimal designs, one line each (none without)."""
+    if not bands:
+        return []
+    return [f"film band, {k} design: {b.line('.4g')}"
+            for k, b in zip(("initial", "optimal"), bands, strict=True) if b is not None]
+
+
 def format_result(res: DesignResult, exact: tuple | None = None,
-                  thermal: str | None = None) -> str:
+                  thermal: str | None = None, bands: tuple | None = None) -> str:
     """Side-by-side table of the initial and optimal designs, with the multipliers
-    (``thermal``: the header line naming the mode)."""
+    (``thermal``: the header line naming the mode; ``bands``: the designs' film bands)."""
     prm = res.parameters
     i, o = res.initial.to_dict(), res.optimal.to_dict()
     lines = [f"case        {res.case.name}"] + ([thermal] if thermal else []) + [
@@ -102,6 +108,7 @@ def format_result(res: DesignResult, exact: tuple | None = None,
         a, b = exact[0].total_mean_power_W, exact[1].total_mean_power_W
         lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>13}{_fmt(b):>13}"
                      f"{100 * (b - a) / a:>+9.1f} %  same, case's exact C_m (oilgap evaluate)")
+    lines += band_lines(bands)
     lines += ["", "active constraints and what they cost (d optimal power / d bound):"]
     return "\n".join(lines + _costs(res))
 
@@ -126,11 +133,13 @@ def _oil_lines(cmp: HeatingComparison) -> list[str]:
     return lines
 
 
-def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str) -> str:
+def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
+                      bands: tuple | None = None) -> str:
     """The optimum with heating beside the one without, what changed, and the costs.
 
     ``exact``: (initial, optimal) OperatingTemperature of the heated designs with the
-    case's exact C_m, and the isothermal optimum's CaseEvaluation."""
+    case's exact C_m, and the isothermal optimum's CaseEvaluation; ``bands``: the
+    heated designs' film bands."""
     h, iso = cmp.heated, cmp.isothermal
     prm = h.parameters
     i, o, n = h.initial.to_dict(), h.optimal.to_dict(), iso.optimal.to_dict()
@@ -155,6 +164,7 @@ def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str) -> str
     a, b, c = exact[0].mean_power_W, exact[1].mean_power_W, exact[2].total_mean_power_W
     lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>12}{_fmt(b):>12}{_change(a, b):>9}"
                  f"{_fmt(c):>12}{_change(c, b):>10}  same, case's exact C_m (oilgap evaluate)")
+    lines += band_lines(bands)
     lines += ["", f"active constraints with heating ({h.thermal_mode}) and what they cost "
               "(d optimal power / d bound):"] + _costs(h)
     act = cmp.active()
@@ -200,10 +210,15 @@ class Optimization(ResultView):
     limits : dict, optional
         The limits given to the solve (``torque_min_Nm`` [N m], ``inertia_max_ratio``
         [-]; None where not given).
+    bands : tuple of FilmBand, optional
+        The film bands of the initial and optimal designs (exact C_m;
+        :func:`~oilgap.model.joint_loss.film_band`).
     """
 
     def __init__(self, raw: DesignResult | HeatingComparison, case: DesignCase, exact: tuple,
-                 thermal_header: str, limits: dict | None = None):
+                 thermal_header: str, limits: dict | None = None,
+                 bands: tuple[FilmBand | None, ...] | None = None):
+        self.bands = tuple(bands or ())
         self.raw = raw
         self.case = case
         self.exact = exact
@@ -217,7 +232,7 @@ class Optimization(ResultView):
 
     @property
     def thermal_mode(self) -> str:
-        """``"none"``, ``"film"`` or ``"full"``."""
+        """``"none"``, ``"bulk"``, ``"film"`` or ``"full"``."""
         return self.raw.mode if isinstance(self.raw, HeatingComparison) else "none"
 
     def to_case(self, name: str | None = None) -> DesignCase:
@@ -252,6 +267,8 @@ class Optimization(ResultView):
             d.update(thermal_mode="none", oil_temp_C=res.parameters.oil_temp_C,
                      sea_temp_C=None, sea_temp_cost_W_per_K=None, without_heating=None,
                      **gamma_fields(res.case))
+        for k, b in zip(("initial", "optimal"), self.bands, strict=False):
+            d[k]["film_band"] = None if b is None else b.to_dict()
         d["defaults"] = self.defaults
         return d
 
@@ -269,9 +286,9 @@ class Optimization(ResultView):
     def summary(self) -> str:
         """What ``oilgap optimize`` prints (without the ``wrote`` line of ``--out``)."""
         if isinstance(self.raw, HeatingComparison):
-            return with_gamma(format_comparison(self.raw, self.exact, self.thermal_header),
-                              self.raw.heated.case)
-        return with_gamma(format_result(self.raw, self.exact, self.thermal_header),
+            return with_gamma(format_comparison(self.raw, self.exact, self.thermal_header,
+                                                self.bands), self.raw.heated.case)
+        return with_gamma(format_result(self.raw, self.exact, self.thermal_header, self.bands),
                           self.raw.case)
 
     def plot(self, ax: Any = None) -> Any:

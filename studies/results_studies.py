@@ -19,18 +19,14 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.case_io import seed_case
 from oilgap.model.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
-from oilgap.studies.grid.evaluate import thermal_description
+from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
+from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_json
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
 from oilgap.studies.results import ResultView, new_axes
 from oilgap.studies.smoothing_case import NO_TABLE4, draw_case, saving_lines
 from oilgap.studies.smoothing_evidence import evidence_dict, evidence_lines
 from oilgap.studies.smoothing_report import draw_loss_vs_T, thermal_line
-
-PARETO_THERMAL = ("thermal     none (isothermal oil at the case's temperature, the seed "
-                  "paper's model: the fronts do not take --thermal yet; `oilgap optimize "
-                  "--thermal` gives the heated optimum)")
-"""The Pareto study's thermal header line."""
 
 
 def records(df: pd.DataFrame | None) -> list[dict] | None:
@@ -92,7 +88,8 @@ class Pareto(StudyView):
         """Hypervolume [mm W], its reference point, both fronts, the marked designs, the
         files written and the defaults (``oilgap study pareto --json``)."""
         r = self.raw
-        return {"case": self.case.name, **gamma_fields(self.case), "thermal_mode": "none",
+        return {"case": self.case.name, **gamma_fields(self.case),
+                "thermal_mode": r.thermal_mode, "thermal_default": r.thermal_default,
                 "points": len(r.gap_front), "hypervolume_mm_W": r.hypervolume,
                 "reference_point": {"delta_mm": r.reference_point[0],
                                     "mean_power_W": r.reference_point[1]},
@@ -106,7 +103,8 @@ class Pareto(StudyView):
         r = self.raw
         g, i = r.gap_front, r.inertia_front
         gok, iok = g[g["status"] == "ok"], i[i["status"] == "ok"]
-        lines = [PARETO_THERMAL, gamma_line(self.case), *defaults_lines(r.defaults),
+        thermal = thermal_description(self.case, r.thermal_mode, r.thermal_default)
+        lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
                  f"gap front: {len(gok)}/{len(g)} points, delta {gok['delta_mm'].min():.3f}.."
                  f"{gok['delta_mm'].max():.3f} mm, loss {gok['mean_power_W'].max():.2f}.."
                  f"{gok['mean_power_W'].min():.2f} W; sweep {r.sweep_time_s:.2f} s "
@@ -121,6 +119,8 @@ class Pareto(StudyView):
         lines += [f"  {s['design']:<{width}} delta {s['delta_mm']:.3f} mm  T {s['T']:.2f}  "
                   f"P {s['mean_power_W']:.2f} W  inertia {s['inertia_ratio']:.3f} x"
                   for _, s in r.seeds.iterrows()]
+        lines += [f"  film band of {s['design']} (exact C_m {s['mean_power_exact_W']:.4g} W): "
+                  f"{band_text(s)}" for _, s in r.seeds.iterrows()]
         bad = pd.concat([g[g["status"] != "ok"], i[i["status"] != "ok"]])
         if len(bad):
             lines.append(f"{len(bad)} points failed (rows kept with their error); first: "
@@ -158,7 +158,7 @@ class OilGrade(StudyView):
 
     def _table(self) -> list[str]:
         r = self.raw
-        full = r.thermal_mode == "full"
+        full = uses_balance(r.thermal_mode)
         lines = [f"{'oil':<8}{'nu min':>9}" + (f"{'T oil max':>10}" if full else "")
                  + f"{'nu max':>10}{'mission W':>11}{'energy Wh':>11}  verdict"]
         for _, row in r.table.iterrows():
@@ -173,11 +173,14 @@ class OilGrade(StudyView):
         """What ``oilgap study oil-grade`` prints: header (thermal, gamma, defaults,
         envelope), the recommendation, the grade table, the mission, the files written."""
         r, s = self.raw, self.raw.settings
-        axis = "sea" if r.thermal_mode == "full" else "oil"
+        axis = "sea" if uses_balance(r.thermal_mode) else "oil"
         thermal = thermal_description(self.case, r.thermal_mode, s["thermal_default"])
         lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
                  f"envelope    {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m x {axis} "
                  f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC", ""]
+        if r.film_band is not None:
+            lines += [f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
+                      f"film band: {r.film_band.line()}", ""]
         if r.recommended is not None:
             lines += [f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}", ""]
         lines += self._table()
@@ -293,8 +296,8 @@ class Smoothing(StudyView):
 
     def _case_lines(self) -> list[str]:
         r = self.raw
-        return [f"thermal     {r.thermal_mode}" + (" (default: the best physics this case "
-                                                   "allows)" if r.thermal_default else ""),
+        return [f"thermal     {r.thermal_mode}" + (f" (default: {DEFAULT_MODE_WHY})"
+                                                   if r.thermal_default else ""),
                 gamma_line(self.case), *defaults_lines(r.defaults), "",
                 *saving_lines(self.case, r.plateau, r.thermal_mode), "", NO_TABLE4]
 

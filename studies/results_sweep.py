@@ -17,7 +17,7 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.defaults import gamma_fields, gamma_line
-from oilgap.model.joint_loss import operating_temperature
+from oilgap.model.joint_loss import FilmBand, film_band, operating_temperature, uses_balance
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.reporting import markdown_table, write_text
 from oilgap.studies.results import ResultView, new_axes
@@ -68,6 +68,7 @@ class Sweep(ResultView):
         self.scheduler = scheduler
         self.files: list[Path] = []
         self._base: tuple[float, str] | None = None
+        self._band: FilmBand | None = None
 
     # -------------------------------------------------------------- numbers
     @property
@@ -77,20 +78,24 @@ class Sweep(ResultView):
 
     def thermal_text(self) -> str:
         """The text after ``thermal`` in the header."""
-        why = ("the design NLP is isothermal so far" if self.mode == "optimize"
-               and self.thermal_mode == "none" and self.case.thermal is not None else None)
         return thermal_description(self.case, self.thermal_mode,
-                                   self.raw.attrs.get("thermal_default", False), why)
+                                   self.raw.attrs.get("thermal_default", False))
 
     def base(self) -> tuple[float, str]:
         """The base case's loss under the mode [W] and where it was taken."""
         if self._base is None:
             op = operating_temperature(self.case, self.thermal_mode)
             where = (f"oil {op.oil_temp_C:.2f} degC from the balance with the sea at "
-                     f"{op.sea_temp_C:g} degC" if self.thermal_mode == "full"
+                     f"{op.sea_temp_C:g} degC" if uses_balance(self.thermal_mode)
                      else "its operating point")
             self._base = (op.mean_power_W, where)
         return self._base
+
+    def band(self) -> FilmBand:
+        """The base case's film band (:func:`~oilgap.model.joint_loss.film_band`)."""
+        if self._band is None:
+            self._band = film_band(self.case, self.thermal_mode, mean_power_W=self.base()[0])
+        return self._band
 
     def _counts(self) -> tuple[pd.DataFrame, pd.DataFrame, int, int]:
         r, a = self.raw, self.raw.attrs
@@ -113,7 +118,8 @@ class Sweep(ResultView):
                 "thermal_default": a.get("thermal_default"), "points": len(self.raw),
                 "ok": len(ok), "failed": len(bad), "computed": computed, "reused": reused,
                 "elapsed_s": self.elapsed_s, "backend": a.get("backend"),
-                "base_mean_power_W": self.base()[0], "results": records(self.raw),
+                "base_mean_power_W": self.base()[0],
+                "base_film_band": self.band().to_dict(), "results": records(self.raw),
                 "files": [str(f) for f in self.files], "defaults": self.defaults}
 
     def summary(self) -> str:
@@ -131,6 +137,7 @@ class Sweep(ResultView):
         if len(ok):
             lines.append(f"mean power {ok['mean_power_W'].min():.3f} .. "
                          f"{ok['mean_power_W'].max():.3f} W (base case {self.base()[0]:.3f} W)")
+        lines.append(f"film band of the base case: {self.band().line()}")
         return "\n".join(lines + wrote_lines(self.out, self.files))
 
     def summary_markdown(self) -> str:
@@ -148,12 +155,13 @@ class Sweep(ResultView):
                  f"Base case: {self.case.name} ({base_p:.3f} W at {base_where}). "
                  f"{len(self.raw)} points: {len(ok)} ok, {len(bad)} failed; "
                  f"{computed} computed this run, {reused} taken from "
-                 f"{self.out}/points_{self.mode}.csv; {self.elapsed_s:.2f} s."]
+                 f"{self.out}/points_{self.mode}.csv; {self.elapsed_s:.2f} s.", "",
+                 f"Film band of the base case: {self.band().line()}."]
         if len(ok):
             best = ok.loc[ok["mean_power_W"].idxmin()]
             worst = ok.loc[ok["mean_power_W"].idxmax()]
             cols = list(grid.columns) + ["mean_power_W"] + (
-                ["oil_temp_op_C"] if self.thermal_mode == "full"
+                ["oil_temp_op_C"] if uses_balance(self.thermal_mode)
                 and "oil_temp_op_C" in ok.columns else [])
             lines += ["", "Lowest and highest mean power:", "",
                       markdown_table(pd.DataFrame([best[cols], worst[cols]]), 3)]

@@ -25,6 +25,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.joint_loss import resolve_thermal_mode
+from oilgap.model.thermal_modes import DEFAULT_MODE_WHY
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.reporting import (
     markdown_table,
@@ -102,8 +103,7 @@ def run_case(out: Path | None, case: DesignCase, T_values: np.ndarray | None,
         defaults.append(study_default("smoothing.T_values", f"1..{T.max():.4g} by {T_STEP:g}",
                                       "-", "1 to the case's own T"))
     if thermal is None:
-        defaults.append(study_default("smoothing.thermal", mode, "",
-                                      "the best physics this case allows"))
+        defaults.append(study_default("smoothing.thermal", mode, "", DEFAULT_MODE_WHY))
     files: tuple = ()
     if out is not None:
         files = _write(out, case, curve, saving, mode, tuple(defaults))

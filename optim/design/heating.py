@@ -1,11 +1,11 @@
 """The optimum with and without the oil's heating, side by side, and what changed.
 
 :func:`compare_heating` solves the thermal design NLP
-(:class:`~oilgap.optim.design.thermal.ThermalDesignProblem`, mode ``film`` or
-``full``) and the isothermal one (:class:`~oilgap.optim.design.DesignProblem`, the
+(:class:`~oilgap.optim.design.thermal.ThermalDesignProblem`, mode ``bulk``, ``film``
+or ``full``) and the isothermal one (:class:`~oilgap.optim.design.DesignProblem`, the
 seed paper's model at the case's oil temperature) with the same limits and bounds,
 and :class:`HeatingComparison` lists what heating changes: each design variable,
-the loss, the oil temperature and the active constraints. Under ``full`` the
+the loss, the oil temperature and the active constraints. Under ``bulk``/``full`` the
 multiplier of the heat balance gives what a kelvin of sea temperature costs
 (Nocedal & Wright [1]).
 
@@ -40,7 +40,7 @@ class HeatingComparison:
     Parameters
     ----------
     heated : ThermalDesignResult
-        Optimum of the thermal NLP (``film`` or ``full``).
+        Optimum of the thermal NLP (``bulk``, ``film`` or ``full``).
     isothermal : DesignResult
         Optimum of the isothermal NLP at the case's oil temperature.
     """
@@ -125,7 +125,7 @@ def compare_heating(problem: DesignProblem, starts: int = 1, seed: int = 0,
     Parameters
     ----------
     problem : DesignProblem
-        Built with a thermal mode ``film`` or ``full`` (``thermal=``): its
+        Built with a thermal mode ``bulk``, ``film`` or ``full`` (``thermal=``): its
         :meth:`~DesignProblem.solve` gives the heated optimum, its
         :meth:`~DesignProblem.solve_isothermal` the one without heating.
     starts : int
@@ -150,8 +150,8 @@ def compare_heating(problem: DesignProblem, starts: int = 1, seed: int = 0,
         As the solves.
     """
     if problem.heated is None:
-        raise InputError("thermal", problem.thermal_mode, "'film' or 'full' (a problem "
-                         "built with a thermal mode)", "optimize")
+        raise InputError("thermal", problem.thermal_mode, "'bulk', 'film' or 'full' (a "
+                         "problem built with a thermal mode)", "optimize")
     heated = problem.solve(starts=starts, seed=seed, **overrides)
     plain = {k: v for k, v in overrides.items()
              if k not in ("sea_temp_C", "resistance_K_W", "other_heat_W")}

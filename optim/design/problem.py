@@ -28,7 +28,7 @@ J_max and every bound are parameters of each :meth:`DesignProblem.solve` (:mod:`
 so studies re-solve it without rebuilding; infeasible limits are caught before IPOPT
 (:mod:`.feasibility`).
 
-Built with a thermal mode (``thermal="film"`` or ``"full"``, :mod:`oilgap.model.joint_loss`)
+Built with a thermal mode (``thermal="bulk"``, ``"film"``, ``"full"``; :mod:`.thermal`)
 the problem's :meth:`DesignProblem.solve` solves the NLP of :mod:`.thermal` instead,
 which carries the oil temperature as a variable and the heat balance as an equality;
 :meth:`DesignProblem.solve_isothermal` still solves the one above (the optimum without
@@ -110,9 +110,9 @@ class DesignProblem:
         Let IPOPT print its iterations.
     thermal : str or None
         Thermal mode (:mod:`oilgap.model.joint_loss`): ``"none"`` (default, the
-        isothermal NLP above), ``"film"`` or ``"full"`` (:meth:`solve` solves the NLP
-        of :mod:`.thermal`, which carries the oil temperature), None for the best the
-        case allows.
+        isothermal NLP above), ``"bulk"``, ``"film"`` or ``"full"`` (:meth:`solve`
+        solves the NLP of :mod:`.thermal`, which carries the oil temperature), None for
+        the default (``bulk`` with ``[thermal]``, else ``none``).
 
     Attributes
     ----------
@@ -583,8 +583,8 @@ def solve_design(case: DesignCase, verbose: bool = False, thermal: str | None = 
     verbose : bool
         Let IPOPT print its iterations.
     thermal : str or None
-        Thermal mode (``"none"`` default, ``"film"``, ``"full"``; None: the best the
-        case allows).
+        Thermal mode (``"none"`` default, ``"bulk"``, ``"film"``, ``"full"``; None: the
+        default of :func:`~oilgap.model.joint_loss.default_thermal_mode`).
     **overrides
         As :meth:`DesignProblem.solve` (``x0``, ``starts``, the parameters).
 

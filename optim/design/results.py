@@ -64,7 +64,7 @@ class DesignPoint:
     ``mean_power_W`` is the NLP's objective: region 1 plus region 2, both with the
     smooth C_m (``case.friction.smooth()``), plus the rolling bearing's friction and
     drag when the case has a ``[bearing]`` (:mod:`oilgap.model.bearing`; constant in
-    the design variables, it shifts the total and, under ``full``, the heat balance);
+    the design variables, it shifts the total and, under ``bulk``/``full``, the heat balance);
     :meth:`DesignResult.evaluate` gives the exact-Eq.-6 numbers of ``oilgap evaluate``
     (equation numbers of the seed paper, *Modeling and Optimization of Compensating Oil
     Viscous Power for a Deep-Sea Electric Manipulator*).
@@ -454,7 +454,7 @@ class DesignResult:
 
 @dataclass(frozen=True, eq=False)
 class ThermalDesignResult(DesignResult):
-    """An optimum of the design NLP under a thermal mode (``film`` or ``full``).
+    """An optimum of the design NLP under a thermal mode (``bulk``, ``film`` or ``full``).
 
     The powers of ``initial`` and ``optimal`` are the heated ones (film factor at
     their oil temperature, smooth C_m). Fields beyond :class:`DesignResult`:
@@ -462,22 +462,22 @@ class ThermalDesignResult(DesignResult):
     Parameters
     ----------
     thermal_mode : str
-        ``"film"`` or ``"full"``.
+        ``"bulk"``, ``"film"`` or ``"full"``.
     initial_oil_temp_C : float
-        Bulk oil temperature of the start design [degC] (its own balance under full).
+        Bulk oil temperature of the start design [degC] (its own balance under bulk/full).
     oil_temp_C : float
-        Bulk oil temperature at the optimum [degC] (the balance's under full).
+        Bulk oil temperature at the optimum [degC] (the balance's under bulk/full).
     sea_temp_C : float or None
-        Sea temperature [degC] (full), else None.
+        Sea temperature [degC] (bulk/full), else None.
     thermal : ThermalSpec or None
-        The balance solved (full), else None.
+        The balance solved (bulk/full), else None.
     sea_temp_cost_W_per_K : float or None
-        ``dP*/dT_sea`` from the balance's multiplier [W/K] (full), else None.
+        ``dP*/dT_sea`` from the balance's multiplier [W/K] (bulk/full), else None.
     oil_temp_cost_W_per_K : float or None
         ``dP*/dT_oil`` at a fixed oil temperature from its bound multiplier [W/K]
         (film), else None.
     balance_residual_K : float or None
-        ``T - T_sea - R (P + Q)`` at IPOPT's last iterate [K] (full), else None.
+        ``T - T_sea - R (P + Q)`` at IPOPT's last iterate [K] (bulk/full), else None.
     """
 
     thermal_mode: str = "film"
@@ -517,6 +517,18 @@ class ThermalDesignResult(DesignResult):
             :func:`~oilgap.model.joint_loss.operating_temperature` of each design
             (oil temperature [degC], mean loss [W]), as ``oilgap evaluate`` gives it.
         """
+        start, opt = self.design_cases()
+        return (operating_temperature(start, self.thermal_mode),
+                operating_temperature(opt, self.thermal_mode))
+
+    def design_cases(self) -> tuple[DesignCase, DesignCase]:
+        """The initial and optimal designs as cases, with the balance solved.
+
+        Returns
+        -------
+        initial, optimal : DesignCase
+            The case with each design's region 1 (and ``thermal``: the solve's balance).
+        """
         i = self.initial
         base = self.case if self.thermal is None else replace(self.case, thermal=self.thermal)
         start = base.with_region1(
@@ -526,8 +538,7 @@ class ThermalDesignResult(DesignResult):
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)
             opt = replace(self.to_case(), thermal=base.thermal)
-        return (operating_temperature(start, self.thermal_mode),
-                operating_temperature(opt, self.thermal_mode))
+        return start, opt
 
 
 __all__ = ["POINT_MEANINGS", "DesignPoint", "DesignResult", "Multiplier", "ThermalDesignResult",

@@ -6,21 +6,23 @@ Under the thermal modes of :mod:`oilgap.model.joint_loss` the NLP of
 
     min   P(x, T) = P1(x, T) + P2(T) [+ P_b(T)]       mean viscous power [W]
     s.t.  tau(R, delta, L) >= tau_min,  J(R, d_r, L) <= J_max,  bounds on x
-          full:  (T - T_sea - R_th (P(x, T) + Q)) / 1 K = 0,   T_sea + R_th Q <= T <= 250
-          film:  T = the solve's oil temperature (given; no balance)
+          bulk, full:  (T - T_sea - R_th (P(x, T) + Q)) / 1 K = 0,  T_sea + R_th Q <= T <= 250
+          film:        T = the solve's oil temperature (given; no balance)
 
 P1 and P2 are :func:`~oilgap.model.joint_loss.joint_mean_power` of region 1 built
 from the symbolic design (:func:`~oilgap.model.regions.rotor_stator_region`) and of
-the bearing region, with the smooth C_m of the isothermal NLP and the film factor at
-T (nu, rho and b = -d ln mu/dT from the oil's own law at the symbolic T). ``full``
-is the heat balance of :mod:`oilgap.model.thermal` as an equality: a design that
-loses less also runs colder, so its oil is more viscous [1, 2]. CasADi gives IPOPT
-exact first and second derivatives [3].
+the bearing region, with the smooth C_m of the isothermal NLP and, under ``film`` and
+``full``, the film factor at T (nu, rho and b = -d ln mu/dT from the oil's own law at
+the symbolic T); under ``bulk`` the loss is the isothermal film's at T (no film factor,
+the default with ``[thermal]``). ``bulk`` and ``full`` carry the heat balance of
+:mod:`oilgap.model.thermal` as an equality: a design that loses less also runs
+colder, so its oil is more viscous [1, 2]. CasADi gives IPOPT exact first and second
+derivatives [3].
 
 P_b is the case's rolling bearing (``[bearing]``; absent without one): its friction and
 drag at the bulk viscosity (:func:`~oilgap.model.bearing.bearing_mean_power`, no film
 factor) [5], what ``joint_mean_power`` adds with ``include_bearing``. It does not depend
-on the design, but under ``full`` its heat goes into the balance, so it warms the oil
+on the design, but under ``bulk``/``full`` its heat goes into the balance, so it warms the oil
 and thins it for the clearances too.
 
 Under ``film`` the oil temperature is given: the NLP has the five design variables and
@@ -28,7 +30,7 @@ the oil state (nu, rho, b) at that temperature as parameters, like the isotherma
 (nu, rho), so any fluid serves, and P1, P2 are :func:`~oilgap.model.regions.
 region_mean_power` with the film (what ``joint_mean_power`` composes). Since no
 constraint depends on T, ``dP*/dT_oil`` is dP/dT at the optimal design (envelope
-theorem [4]). Under ``full`` T_sea, R_th and Q are parameters: one NLP per (oil, depth),
+theorem [4]). Under ``bulk``/``full`` T_sea, R_th and Q are parameters: one NLP per (oil, depth),
 re-solved without rebuilding; the fluid's law must be CasADi's (not a table).
 
 Scaling: y as :mod:`.variables`, ``t = T / 10 K``; the objective is ln P and the
@@ -73,6 +75,7 @@ from oilgap.model.joint_loss import (
     case_film,
     joint_mean_power,
     resolve_thermal_mode,
+    uses_balance,
 )
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.oil_properties import seawater_gauge_pressure
@@ -118,7 +121,7 @@ class _ThermalNLP:
     """The NLP of one (oil, depth): its IPOPT solvers and functions of (y, q).
 
     ``q`` is what the loss depends on besides the design: ``t = T / TEMP_SCALE_K``
-    under full, the oil state (nu [m^2/s], rho [kg/m^3], b [1/K]) under film."""
+    under bulk/full, the oil state (nu [m^2/s], rho [kg/m^3], b [1/K]) under film."""
 
     nlp: dict
     opts: dict
@@ -130,9 +133,9 @@ class _ThermalNLP:
     pressure_Pa: float
     """Gauge pressure of the oil [Pa]."""
     loss2: Any = None
-    """full: (y, row of two t) -> P1 + P2 + P_b [W] at both."""
+    """bulk/full: (y, row of two t) -> P1 + P2 + P_b [W] at both."""
     balance: Any = None
-    """full: (y, t, p) -> (residual [BALANCE_SCALE_K], its derivative in T [1/K])."""
+    """bulk/full: (y, t, p) -> (residual [BALANCE_SCALE_K], its derivative in T [1/K])."""
     warm: Any = None
 
     def warm_solver(self) -> Any:
@@ -155,17 +158,18 @@ class _ThermalNLP:
 class ThermalDesignProblem:
     """The design NLP of a case under a thermal mode, built once and re-solved.
 
-    Built by :class:`~oilgap.optim.design.DesignProblem` with ``thermal="film"`` or
-    ``"full"`` (its ``heated`` attribute; its :meth:`~oilgap.optim.design.DesignProblem.
-    solve` solves this NLP). The bounds, limits, start points and feasibility check are
-    those of the isothermal problem, which also solves the case without heating.
+    Built by :class:`~oilgap.optim.design.DesignProblem` with ``thermal="bulk"``,
+    ``"film"`` or ``"full"`` (its ``heated`` attribute; its
+    :meth:`~oilgap.optim.design.DesignProblem.solve` solves this NLP). The bounds, limits,
+    start points and feasibility check are those of the isothermal problem, which also
+    solves the case without heating.
 
     Parameters
     ----------
     isothermal : DesignProblem
         The case's isothermal problem.
     mode : str
-        ``"film"`` or ``"full"`` (checked against the case).
+        ``"bulk"``, ``"film"`` or ``"full"`` (checked against the case).
     verbose : bool
         Let IPOPT print its iterations.
 
@@ -179,7 +183,7 @@ class ThermalDesignProblem:
     Raises
     ------
     InputError
-        An unknown mode, ``none``, ``full`` without ``[thermal]``, or an oil whose
+        An unknown mode, ``none``, ``bulk``/``full`` without ``[thermal]``, or an oil whose
         law CasADi cannot differentiate.
 
     Examples
@@ -194,7 +198,7 @@ class ThermalDesignProblem:
     def __init__(self, isothermal: DesignProblem, mode: str, verbose: bool = False):
         self.mode = resolve_thermal_mode(isothermal.case, mode)
         if self.mode == "none":
-            raise InputError("thermal", "none", "'film' or 'full' here (the isothermal "
+            raise InputError("thermal", "none", "'bulk', 'film' or 'full' here (the isothermal "
                              "problem is DesignProblem's own)", "optimize")
         self.isothermal = isothermal
         self.case = isothermal.case
@@ -220,7 +224,7 @@ class ThermalDesignProblem:
                                  for i in range(5))
         case = replace(self.case, oil=oil, friction=iso.law)
         regions = (rotor_stator_region(R, delta, d_r, d_s, L), *joint_regions(case)[1:])
-        full = self.mode == "full"
+        full = uses_balance(self.mode)
         has_bearing = case.bearing is not None
         if full:
             q = ca.SX.sym("t")  # T / TEMP_SCALE_K, T in degC
@@ -232,7 +236,7 @@ class ThermalDesignProblem:
                       if has_bearing else ca.SX(0))
             except (TypeError, NotImplementedError, RuntimeError) as e:
                 raise InputError("oil", oil.name, "a fluid whose viscosity law CasADi can "
-                                 "differentiate (thermal full carries the temperature; "
+                                 f"differentiate (thermal {self.mode} carries the temperature; "
                                  f"'film' takes any fluid): {e}", "optimize") from None
         else:  # film at a given temperature: the oil state (nu, rho, b) is a parameter
             q = ca.SX.sym("q", 3)
@@ -246,7 +250,7 @@ class ThermalDesignProblem:
         tau = motor_torque(m, R, delta, L)[0]
         J = rotor_inertia(m, R, d_r, L, iso.machined_rotor_groove_m)
         g = [ca.log(tau / iso.tau_ref_Nm), ca.log(J / iso.inertia_ref_kgm2)]
-        p = ca.SX.sym("p", 3)  # full: (T_sea [degC], R_th [K/W], Q [W])
+        p = ca.SX.sym("p", 3)  # bulk/full: (T_sea [degC], R_th [K/W], Q [W])
         balance = (q * TEMP_SCALE_K - p[0] - p[1] * (loss + p[2])) / BALANCE_SCALE_K
         nlp = ({"x": ca.vertcat(y, q), "p": p, "f": ca.log(loss),
                 "g": ca.vertcat(*g, balance)} if full else
@@ -294,10 +298,11 @@ class ThermalDesignProblem:
         given = {k: v for k, v in (("sea_temp_C", sea_temp_C),
                                    ("resistance_K_W", resistance_K_W),
                                    ("other_heat_W", other_heat_W)) if v is not None}
-        if self.mode != "full":
+        if not uses_balance(self.mode):
             if given:
                 k = next(iter(given))
-                raise InputError(k, given[k], "only with thermal mode 'full'", "optimize")
+                raise InputError(k, given[k], "only with thermal mode 'bulk' or 'full'",
+                                 "optimize")
             return None
         spec = replace(self.case.thermal, **{k: float(v) for k, v in given.items()})
         if spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W >= MAX_OIL_TEMP_C:
@@ -315,14 +320,15 @@ class ThermalDesignProblem:
             (R, delta, d_r, d_s, L) [m].
         oil_temp_C : float, optional
             Bulk oil temperature [degC] (default: the case's under ``film``, the
-            design's own balance under ``full``).
+            design's own balance under ``bulk``/``full``).
         **thermal
             ``sea_temp_C``, ``resistance_K_W``, ``other_heat_W`` (:meth:`thermal_spec`).
 
         Returns
         -------
         point : DesignPoint
-            Powers [W] with the film factor at the temperature, smooth C_m.
+            Powers [W] at the temperature (the film factor under ``film``/``full``),
+            smooth C_m.
         oil_temp_C : float
             The temperature used [degC].
         """
@@ -347,7 +353,7 @@ class ThermalDesignProblem:
     def _temperature(self, nlp: _ThermalNLP, x_m: np.ndarray, spec: ThermalSpec | None,
                      oil_temp_C: float, guess_C: float | None = None) -> float:
         """Oil temperature of a design [degC]: ``oil_temp_C`` (film) or the root of its
-        balance ``T = T_sea + R (P(T) + Q)`` (full).
+        balance ``T = T_sea + R (P(T) + Q)`` (bulk/full).
 
         From a close ``guess_C`` (IPOPT's T), Newton steps with the balance's exact slope
         to :data:`BALANCE_TOL_K`; otherwise (or should they stall) the model's safeguarded
@@ -396,17 +402,17 @@ class ThermalDesignProblem:
         seed : int
             Seed of the random start points.
         sea_temp_C, resistance_K_W, other_heat_W : float, optional
-            Overrides of the balance (full only): [degC], [K/W], [W].
+            Overrides of the balance (bulk/full only): [degC], [K/W], [W].
         **overrides
             As :meth:`DesignProblem.solve <oilgap.optim.design.DesignProblem.solve>`,
             except nu/rho given directly (the film needs the oil's law) and, under
-            ``full``, ``oil_temp_C`` (a result of the balance).
+            ``bulk``/``full``, ``oil_temp_C`` (a result of the balance).
 
         Returns
         -------
         ThermalDesignResult
             The (best) optimum: powers [W], lengths [m], oil temperature [degC],
-            multipliers, ``sea_temp_cost_W_per_K`` [W/K] (full).
+            multipliers, ``sea_temp_cost_W_per_K`` [W/K] (bulk/full).
 
         Raises
         ------
@@ -425,8 +431,8 @@ class ThermalDesignProblem:
                                  "optimize")
         if spec is not None and overrides.get("oil_temp_C") is not None:
             raise InputError("oil_temp_C", overrides["oil_temp_C"], "not with thermal mode "
-                             "'full': the oil temperature is the heat balance's result "
-                             "(give sea_temp_C)", "optimize")
+                             f"'{self.mode}': the oil temperature is the heat balance's "
+                             "result (give sea_temp_C)", "optimize")
         if isinstance(starts, bool) or not isinstance(starts, int) or starts < 1:
             raise InputError("starts", starts, "must be an integer >= 1", "optimize")
         iso = self.isothermal
@@ -542,12 +548,12 @@ class ThermalDesignProblem:
         last = {VARIABLE_LABELS[v][0]: float(xv) for v, xv in
                 zip(VARIABLES, from_nlp(w[:5]) / MM_TO_M, strict=True)}
         gv = np.asarray(sol["g"]).ravel()
-        last["oil_temp_C"] = (float(w[5] * TEMP_SCALE_K) if self.mode == "full"
+        last["oil_temp_C"] = (float(w[5] * TEMP_SCALE_K) if uses_balance(self.mode)
                               else float(params.oil_temp_C))
         last["torque_capability_Nm"] = float(np.exp(gv[0]) * self.isothermal.tau_ref_Nm)
         last["inertia_kgm2"] = float(np.exp(gv[1]) * self.isothermal.inertia_ref_kgm2)
         last["mean_power_W"] = float(np.exp(float(sol["f"])))
-        if self.mode == "full":
+        if uses_balance(self.mode):
             last["balance_residual_K"] = float(gv[2] * BALANCE_SCALE_K)
         it = ", ".join(f"{k} = {v:.6g}" for k, v in last.items())
         return SolverError(f"IPOPT did not converge on the thermal design NLP ({self.mode}; "

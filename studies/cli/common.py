@@ -43,7 +43,8 @@ def thermal_case(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase
         sea = None if raw is None else float(raw)
     except ValueError:
         raise InputError("--sea-temp-c", raw, "a finite number is required") from None
-    full = "--thermal full" if args.thermal else "--thermal full (the default with [thermal])"
+    balance = ("--thermal {mode}" if args.thermal
+               else "--thermal {mode} (the default with [thermal])")
     return api_thermal_case(case, args.thermal, args.temp_c, sea, names={
         "thermal": "--thermal", "oil_temp_C": "--temp-c", "sea_temp_C": "--sea-temp-c",
-        "full": full, "film": "choose --thermal film"})
+        "balance": balance, "given": "choose --thermal none or film"})

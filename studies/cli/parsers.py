@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from oilgap.model.thermal_modes import THERMAL_MODES
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 
 EFFECT_NAMES = ("end_face_disc", "bearing_ball_churning", "bearing_ball_drag",
@@ -47,9 +48,9 @@ def positive_int(text: str) -> int:
     return v
 
 
-THERMAL_MODES = ("none", "film", "full")
-"""The thermal modes (:data:`oilgap.model.joint_loss.THERMAL_MODES`, written out for the
-same reason as :data:`EFFECT_NAMES`)."""
+SMOOTHING_THERMAL_MODES = ("none", "film", "full")
+"""The modes of the smoothing study's Table 4 fit (its own methods: ``bulk`` there is the
+``shared`` method, :mod:`oilgap.studies.smoothing_fit`)."""
 
 
 def add_force(p, what: str = "--out") -> None:
@@ -62,10 +63,13 @@ def add_force(p, what: str = "--out") -> None:
 def add_thermal_argument(p) -> None:
     """The one ``--thermal`` option of every command that reports a loss."""
     p.add_argument("--thermal", choices=THERMAL_MODES, default=None,
-                   help="none: isothermal oil (the seed paper's model); film: the film's "
-                   "own shear heating at the given oil temperature; full: film heating and "
-                   "the bulk oil temperature from the heat balance to the sea (needs the "
-                   "case's [thermal] table). Default: full with [thermal], else film")
+                   help="none: isothermal oil at the given temperature (the seed paper's "
+                   "model); bulk: isothermal film at the bulk oil temperature of the heat "
+                   "balance to the sea (needs the case's [thermal] table); film: the film's "
+                   "own shear heating at the given oil temperature; full: film heating at "
+                   "the heat balance's temperature (needs [thermal]). Default: bulk with "
+                   "[thermal], else none (the model the seed's Table 4 supports; "
+                   "docs/thermal.md#evidence)")
 
 
 def add_verbosity(p, top: bool = False) -> None:
@@ -125,7 +129,7 @@ def add_evaluate(sub) -> None:
                    help="without CASE: the seed joint smoothed with epoxy (T = 2)")
     add_thermal_argument(p)
     p.add_argument("--sea-temp-c", type=finite_float, help="sea temperature [degC] of the "
-                   "heat balance (overrides [thermal] sea_temp_C; --thermal full only)")
+                   "heat balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.set_defaults(command="evaluate")
 
@@ -160,7 +164,7 @@ def add_optimize(sub) -> None:
                    help="without CASE: start from the seed joint smoothed with epoxy (T = 2)")
     add_thermal_argument(p)
     p.add_argument("--sea-temp-c", metavar="X", help="sea temperature [degC] of the heat "
-                   "balance (overrides [thermal] sea_temp_C; --thermal full only)")
+                   "balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
@@ -210,7 +214,7 @@ def _add_smoothing(ss) -> None:
                    help="run temperatures: one per oil (default), one shared steady balance "
                    "T = T_base + R_th P (isothermal loss), or heat-balance (the same with "
                    "the film-heated loss: --thermal full)")
-    s.add_argument("--thermal", choices=THERMAL_MODES, default=None,
+    s.add_argument("--thermal", choices=SMOOTHING_THERMAL_MODES, default=None,
                    help="the loss at the runs' temperatures: none (default), isothermal oil "
                    "(the seed paper's model); film, the film's own shear heating; full, "
                    "film heating with the rig's heat balance T_run = T_0 + R_th P fitted "
@@ -245,6 +249,7 @@ def _add_pareto(ss) -> None:
                    help="required torque capability [N m] (default: the case's own)")
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
     _scheduler(s)
+    add_thermal_argument(s)
     _progress(s)
     s.set_defaults(command="study pareto")
 
@@ -273,7 +278,7 @@ def _add_oil_grade(ss) -> None:
                    help="oil temperature range, thermal none/film [degC] (default 0)")
     s.add_argument("--temp-max-c", type=finite_float, help="(default 40)")
     s.add_argument("--sea-temp-range-c", type=finite_float, nargs=2, metavar=("MIN", "MAX"),
-                   help="thermal full: the envelope's sea temperatures [degC]; the oil's "
+                   help="thermal bulk/full: the envelope's sea temperatures [degC]; the oil's "
                    "operating temperature is a result (default 0 40, the same as the oil's "
                    "under none, so that the answers differ by the heating only)")
     s.add_argument("--mission-hours", type=finite_float, default=8.0,

@@ -20,6 +20,6 @@ def run(args: argparse.Namespace) -> int:
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
         r = pareto(case, points=args.points, torque_min_Nm=args.torque_min_nm,
                    out=out, workers=args.workers, scheduler=args.scheduler,
-                   progress=args.progress, folder=folder)
+                   progress=args.progress, folder=folder, thermal=args.thermal)
     show(r, args)
     return 0

@@ -6,7 +6,7 @@ is :func:`oilgap.model.joint_loss.joint_mean_power` over a (cases x speed nodes)
 array, the same composition as ``oilgap evaluate``. Physics is never re-written here.
 A case's rolling bearing (``[bearing]``) is part of the joint: ``mean_power_W`` and
 ``isothermal_power_W`` include it (``include_bearing=True`` where the regions are
-stacked), and so does the heat balance under ``full``; ``region1_power_W`` and
+stacked), and so does the heat balance under ``bulk``/``full``; ``region1_power_W`` and
 ``region2_power_W`` stay the clearances' own (the bearing is their difference from the
 total).
 
@@ -14,13 +14,15 @@ Thermal modes (:data:`oilgap.model.joint_loss.THERMAL_MODES`):
 
 ``none``
     the seed's isothermal loss at each row's oil temperature;
+``bulk``
+    the isothermal loss at the bulk temperature that balances each row's heat,
+    ``T = T_sea + R (P(T) + Q)``: one vectorised fixed point for the whole group
+    (:func:`oilgap.model.thermal.steady_temperature`, one base temperature
+    ``T_sea + R Q`` per row);
 ``film``
     the film-heating correction at each row's oil temperature;
 ``full``
-    the film correction at the bulk temperature that balances each row's heat,
-    ``T = T_sea + R (P(T) + Q)``: one vectorised fixed point for the whole group
-    (:func:`oilgap.model.thermal.steady_temperature`, one base temperature
-    ``T_sea + R Q`` per row).
+    the film correction at the bulk temperature of the same balance.
 """
 
 from __future__ import annotations
@@ -35,12 +37,18 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import oil_state
 from oilgap.model.fluids import warn_if_untrusted_state
-from oilgap.model.joint_loss import THERMAL_MODES, joint_mean_power
+from oilgap.model.joint_loss import FilmBand, joint_mean_power
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.oils import Oil
 from oilgap.model.regions import Region, joint_regions
 from oilgap.model.taylor_couette import couette_reynolds
 from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
+from oilgap.model.thermal_modes import (
+    DEFAULT_MODE_WHY,
+    THERMAL_MODE_TEXT,
+    THERMAL_MODES,
+    uses_balance,
+)
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
 from oilgap.studies.grid.columns import EVALUATE_NUMBERS
 from oilgap.studies.grid.schema import WHERE, apply_params
@@ -99,9 +107,9 @@ def _oil_states(c0: DesignCase, idx: list[int], temps: np.ndarray, depths: np.nd
 
 
 def _balance(c0: DesignCase, cases: list[DesignCase], idx: list[int], depths: np.ndarray,
-             warn_col: list[str | None]) -> tuple[np.ndarray, np.ndarray]:
-    """Bulk temperature [degC] of each row under ``full`` (``T = T_sea + R (P(T) + Q)``,
-    one vectorised fixed point) and its sea temperature [degC]."""
+             warn_col: list[str | None], mode: str) -> tuple[np.ndarray, np.ndarray]:
+    """Bulk temperature [degC] of each row under ``bulk``/``full`` (``T = T_sea + R (P(T)
+    + Q)``, one vectorised fixed point) and its sea temperature [degC]."""
     th = c0.thermal
     sea = np.array([cases[i].thermal.sea_temp_C for i in idx])
     n = len(idx)
@@ -109,7 +117,7 @@ def _balance(c0: DesignCase, cases: list[DesignCase], idx: list[int], depths: np
 
     def power_at(ts: np.ndarray) -> np.ndarray:
         k = len(ts) // n
-        return np.asarray(joint_mean_power(c0, ts, "full", np.tile(depths, k), regs[k],
+        return np.asarray(joint_mean_power(c0, ts, mode, np.tile(depths, k), regs[k],
                                            include_bearing=True), dtype=float)
 
     temps, _ = steady_temperature(power_at, sea + th.resistance_K_W * th.other_heat_W,
@@ -124,16 +132,16 @@ def _group_temperatures(cases: list[DesignCase], idx: list[int], mode: str,
                         depths: np.ndarray, warn_col: list[str | None]
                         ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(operating bulk temperatures, the rows' given temperatures, sea temperatures or
-    NaN) [degC]: the given temperature is the oil's under none/film, the sea's under full
-    (the isothermal reference is taken there: the loss without any heating)."""
+    NaN) [degC]: the given temperature is the oil's under none/film, the sea's under
+    bulk/full (the isothermal reference is taken there: the loss without any heating)."""
     c0 = cases[idx[0]]
-    if mode != "full":
+    if not uses_balance(mode):
         temps = np.array([cases[i].operating.oil_temp_C for i in idx], dtype=float)
         return temps, temps, np.full(len(idx), np.nan)
     if c0.thermal is None:
         raise InputError("thermal", mode, "'none' or 'film': the case has no [thermal] "
                          "table", WHERE)
-    temps, sea = _balance(c0, cases, idx, depths, warn_col)
+    temps, sea = _balance(c0, cases, idx, depths, warn_col, mode)
     return temps, sea, sea
 
 
@@ -207,9 +215,9 @@ def evaluate_cases(cases: list[DesignCase], thermal: str = "none") -> pd.DataFra
     Parameters
     ----------
     cases : list of DesignCase
-    thermal : {"none", "film", "full"}
-        Thermal mode (default ``"none"``, the seed's isothermal model; ``"full"``
-        needs every case's ``[thermal]`` table).
+    thermal : {"none", "bulk", "film", "full"}
+        Thermal mode (default ``"none"``, the seed's isothermal model; ``"bulk"`` and
+        ``"full"`` need every case's ``[thermal]`` table).
 
     Returns
     -------
@@ -269,30 +277,34 @@ def evaluate_chunk(base: DesignCase, rows: list[dict],
     return results
 
 
-MODE_TEXT = {
-    "none": "isothermal oil, the seed paper's model",
-    "film": "the film's own shear heating at the given oil temperature",
-    "full": "film heating at the oil temperature of the heat balance to the sea",
-}
+MODE_TEXT = THERMAL_MODE_TEXT
 """What each thermal mode computes (the words of ``oilgap evaluate``'s header line)."""
+
+
+def band_text(row) -> str:
+    """The film band of a study's row as the reports print it (``mean_power_exact_W``,
+    ``film_band_mode``, ``film_band_power_W`` [W]; :meth:`FilmBand.line
+    <oilgap.model.joint_loss.FilmBand.line>`)."""
+    return FilmBand("", float(row["mean_power_exact_W"]), str(row["film_band_mode"]),
+                    float(row["film_band_power_W"]), float("nan")).line(".4g")
 
 
 def thermal_description(case: DesignCase, thermal: str, by_default: bool,
                         why: str | None = None) -> str:
     """The text after ``thermal`` in the studies' header lines, as ``oilgap evaluate``'s:
-    the mode, whether it is the default, what it computes and, under ``full``, the heat
-    path, e.g. ``full (default: the best physics this case allows; film heating at the
-    oil temperature of the heat balance to the sea; R 0.5 K/W, Q 0 W, isothermal-walls;
-    --thermal none for the seed's isothermal model)``.
+    the mode, whether it is the default, what it computes and, under ``bulk``/``full``,
+    the heat path, e.g. ``bulk (default: the model the evidence supports: ...; isothermal
+    film at the oil temperature of the heat balance to the sea; R 0.5 K/W, Q 0 W,
+    isothermal-walls; --thermal none for the seed paper's isothermal model)``.
 
-    ``why`` replaces "the best physics this case allows" (e.g. the design NLP's modes)."""
+    ``why`` replaces :data:`~oilgap.model.thermal_modes.DEFAULT_MODE_WHY`."""
     text = f"{thermal} ("
     if by_default:
-        text += f"default: {why or 'the best physics this case allows'}; "
+        text += f"default: {why or DEFAULT_MODE_WHY}; "
     text += MODE_TEXT[thermal]
     th = case.thermal
-    if thermal == "full" and th is not None:
+    if uses_balance(thermal) and th is not None:
         text += f"; R {th.resistance_K_W:g} K/W, Q {th.other_heat_W:g} W, {th.walls}"
     if thermal != "none":
-        text += "; --thermal none for the seed's isothermal model"
+        text += "; --thermal none for the seed paper's isothermal model"
     return text + ")"

@@ -123,15 +123,15 @@ def resolve_grid_thermal(base: DesignCase, mode: str, thermal: str | None
                          ) -> tuple[str, bool]:
     """(thermal mode, whether it is the default) of a grid run.
 
-    ``None`` asks for the best physics: in evaluate mode the case's
-    (:func:`~oilgap.model.joint_loss.default_thermal_mode`: ``full`` with ``[thermal]``,
-    else ``film``); in optimize mode the best the design NLP carries
+    ``None`` asks for the default: in evaluate mode the case's
+    (:func:`~oilgap.model.joint_loss.default_thermal_mode`: ``bulk`` with ``[thermal]``,
+    else ``none``); in optimize mode the same when the design NLP carries it
     (:func:`~oilgap.studies.grid.optimize.nlp_thermal_modes`).
 
     Raises
     ------
     InputError
-        An unknown mode, ``full`` without ``[thermal]``, or a mode the design NLP does
+        An unknown mode, ``bulk``/``full`` without ``[thermal]``, or a mode the design NLP does
         not carry (optimize mode).
     """
     if mode == "optimize":
@@ -339,10 +339,10 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
         the built-in ISO VG catalogue).
     retry_failed : bool
         Recompute points stored as errors (default: they count as finished).
-    thermal : {"none", "film", "full"} or None
+    thermal : {"none", "bulk", "film", "full"} or None
         Thermal mode (:mod:`oilgap.model.joint_loss`; default ``"none"``, the
-        isothermal model; None: the best physics, :func:`resolve_grid_thermal`).
-        Under ``full`` the grid may hold ``sea_temp_C``, ``resistance_K_per_W``
+        isothermal model; None: the default, :func:`resolve_grid_thermal`).
+        Under ``bulk``/``full`` the grid may hold ``sea_temp_C``, ``resistance_K_per_W``
         and not ``oil_temp_C`` (a result: ``oil_temp_op_C``).
 
     Returns

@@ -118,7 +118,7 @@ def validate_grid(grid: pd.DataFrame, mode: str = "evaluate") -> pd.DataFrame:
 def check_thermal_columns(grid: pd.DataFrame, thermal: str, case: DesignCase) -> None:
     """Refuse columns that mean nothing under the thermal mode.
 
-    Under ``full`` the oil temperature is a result of the heat balance: a given
+    Under ``bulk``/``full`` the oil temperature is a result of the heat balance: a given
     ``oil_temp_C`` is refused (vary ``sea_temp_C``). Under ``none``/``film`` there is
     no balance: ``sea_temp_C`` and ``resistance_K_per_W`` are refused.
 
@@ -128,10 +128,10 @@ def check_thermal_columns(grid: pd.DataFrame, thermal: str, case: DesignCase) ->
         Naming the column, the mode and what to do instead.
     """
     given = [c for c in grid.columns if grid[c].map(lambda v: not is_missing(v)).any()]
-    if thermal == "full":
+    if thermal in ("bulk", "full"):
         if "oil_temp_C" in given:
-            raise InputError("oil_temp_C", "a grid column", "under thermal mode 'full' the "
-                             "oil temperature is a result of the heat balance; vary "
+            raise InputError("oil_temp_C", "a grid column", f"under thermal mode '{thermal}' "
+                             "the oil temperature is a result of the heat balance; vary "
                              "sea_temp_C instead (or choose --thermal none/film)", WHERE)
         if case.thermal is None:
             raise InputError("thermal", thermal, "'none' or 'film': the case has no "
@@ -139,8 +139,8 @@ def check_thermal_columns(grid: pd.DataFrame, thermal: str, case: DesignCase) ->
         return
     for c in THERMAL_COLUMNS:
         if c in given:
-            raise InputError(c, "a grid column", "only under thermal mode 'full' (the heat "
-                             f"balance); the mode is '{thermal}'", WHERE)
+            raise InputError(c, "a grid column", "only under thermal mode 'bulk' or 'full' "
+                             f"(the heat balance); the mode is '{thermal}'", WHERE)
 
 
 MISSING_WORDS = frozenset({"nan", "-nan", "na", "n/a", "#n/a", "<na>", "null", "none"})

@@ -88,7 +88,7 @@ def test_path_and_case_give_the_same_result():
     b = og.evaluate(og.read_case(THERMAL_CASE), thermal="film")
     assert a.to_dict() == b.to_dict()
     c = og.evaluate(THERMAL_CASE, sea_temp_C=6.0)
-    assert c.raw.sea_temp_C == 6.0 and c.raw.thermal_mode == "full"
+    assert c.raw.sea_temp_C == 6.0 and c.raw.thermal_mode == "bulk"  # the default
 
 
 @pytest.mark.parametrize(("call", "field"), [

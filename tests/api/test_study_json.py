@@ -43,7 +43,9 @@ def joint(tmp_path, monkeypatch):
 def test_pareto_json_is_the_facades_document(capsys, joint):
     doc = _json(capsys, ["study", "pareto", "my.toml", "--points", "50", "--out", "p",
                          "--json"])
-    assert doc["case"] == joint.name and doc["thermal_mode"] == "none"
+    # my_joint has [thermal]: the fronts under its default, bulk, as evaluate's
+    assert doc["case"] == joint.name and doc["thermal_mode"] == "bulk"
+    assert doc["thermal_default"] is True
     gap = [r for r in doc["gap_front"] if r["status"] == "ok"]
     assert doc["points"] == 50 and {"delta_mm", "mean_power_W", "inertia_ratio"} <= set(gap[0])
     # the hypervolume of the printed front against its reference point, by hand

@@ -87,9 +87,11 @@ def test_json_bearing_row_and_total(capsys, cases, model, thermal):
     assert "bearings" not in plain
 
 
-def test_full_balance_includes_the_bearing_heat(capsys, cases):
-    d = evaluate_json(capsys, cases["hot"])
-    assert d["thermal_mode"] == "full"
+@pytest.mark.parametrize("mode", ["bulk", "full"])  # bulk: the default with [thermal]
+def test_balance_includes_the_bearing_heat(capsys, cases, mode):
+    asked = [] if mode == "bulk" else ["--thermal", mode]
+    d = evaluate_json(capsys, cases["hot"], *asked)
+    assert d["thermal_mode"] == mode
     case = read_case_toml(cases["hot"])
     t = d["oil_temp_C"]
     nu, _, _ = oil_state(case, t, d["depth_m"])
@@ -99,7 +101,7 @@ def test_full_balance_includes_the_bearing_heat(capsys, cases):
     assert d["bearings"][0]["mean_power_W"] == pytest.approx(p_bearing, rel=JSON_REL)
     assert t - 2.0 - 0.5 * (p_regions + p_bearing + 3.0) == pytest.approx(0.0, abs=JSON_ABS)
     # the bearing's heat warms the oil above the balance without it
-    without = evaluate_json(capsys, cases["hot_plain"])
+    without = evaluate_json(capsys, cases["hot_plain"], *asked)
     assert "bearings" not in without and t - without["oil_temp_C"] > 0.1
 
 

@@ -56,10 +56,26 @@ def test_thermal_none_reproduces_the_golden_numbers(capsys):
     assert d["sea_temp_C"] is None and d["without_heating"] is None
 
 
-def test_default_on_the_seed_is_film_beside_the_isothermal_optimum(capsys):
+def test_default_on_the_seed_is_none_with_the_film_band(capsys):
     d = run_json(capsys)
     none = run_json(capsys, "--thermal", "none")
+    assert d["thermal_mode"] == "none" and d["without_heating"] is None
+    assert _same_numbers(d, none) == []
+    for k in ("initial", "optimal"):  # the same design with film heating beside it
+        band = d[k]["film_band"]
+        assert band["mode"] == "film" and band["film_applied"] is True
+        assert band["mean_power_W"] < d[k]["mean_power_exact_W"]
+        assert "docs/thermal.md#evidence" in band["evidence"]
+
+
+def test_film_beside_the_isothermal_optimum(capsys):
+    d = run_json(capsys, "--thermal", "film")
+    none = run_json(capsys, "--thermal", "none")
     assert d["thermal_mode"] == "film" and d["oil_temp_C"] == 2.0
+    # its band is the default's number: the initial design without film heating
+    assert d["initial"]["film_band"]["mode"] == "none"
+    assert d["initial"]["film_band"]["mean_power_W"] == pytest.approx(
+        none["initial"]["mean_power_exact_W"], rel=JSON_REL)
     assert d["sea_temp_cost_W_per_K"] is None and d["oil_temp_cost_W_per_K"] < 0
     w = d["without_heating"]
     assert w["optimal"]["mean_power_W"] == none["optimal"]["mean_power_W"]
@@ -71,9 +87,11 @@ def test_default_on_the_seed_is_film_beside_the_isothermal_optimum(capsys):
                                          - w["optimal"]["mean_power_W"], rel=JSON_REL)
 
 
-def test_full_json_has_the_balance_and_the_sea_temperature_cost(capsys, thermal_toml):
-    d = run_json(capsys, thermal_toml)
-    assert d["thermal_mode"] == "full" and d["sea_temp_C"] == 2.0
+@pytest.mark.parametrize("mode", ["full", "bulk"])
+def test_balance_json_has_the_balance_and_the_sea_temperature_cost(capsys, thermal_toml,
+                                                                   mode):
+    d = run_json(capsys, thermal_toml, *(["--thermal", "full"] if mode == "full" else []))
+    assert d["thermal_mode"] == mode and d["sea_temp_C"] == 2.0
     w = d["without_heating"]
     assert w["oil_temp_C"] == 2.0
     # the balance holds at the optimum (R = 0.5 K/W, Q = 0)
@@ -81,17 +99,23 @@ def test_full_json_has_the_balance_and_the_sea_temperature_cost(capsys, thermal_
                                                   abs=JSON_ABS)
     assert d["initial_oil_temp_C"] > d["oil_temp_C"]  # a design that loses less runs colder
     assert d["sea_temp_cost_W_per_K"] < 0
-    warm = run_json(capsys, thermal_toml, "--sea-temp-c", "3")
-    assert warm["sea_temp_C"] == 3.0
-    slope = warm["optimal"]["mean_power_W"] - d["optimal"]["mean_power_W"]
-    assert slope == pytest.approx(d["sea_temp_cost_W_per_K"], rel=0.02)  # 1 K difference
+    assert d["initial"]["film_band"]["mode"] == {"full": "bulk", "bulk": "full"}[mode]
+    warm = run_json(capsys, thermal_toml, "--sea-temp-c", "2.1", "--thermal", mode)
+    cold = run_json(capsys, thermal_toml, "--sea-temp-c", "1.9", "--thermal", mode)
+    assert warm["sea_temp_C"] == 2.1
+    slope = (warm["optimal"]["mean_power_W"] - cold["optimal"]["mean_power_W"]) / 0.2
+    # central difference over +-0.1 K; the powers carry 6 digits (1e-4 W over 0.2 K)
+    assert slope == pytest.approx(d["sea_temp_cost_W_per_K"], rel=0.01)
 
 
 def test_text_names_the_mode_and_shows_both_optima(capsys, thermal_toml):
     assert main(["optimize", thermal_toml, "--starts", "1"]) == 0
+    assert capsys.readouterr().out.splitlines()[1].startswith("thermal     bulk (default")
+    assert main(["optimize", thermal_toml, "--starts", "1", "--thermal", "full"]) == 0
     out = capsys.readouterr().out
     lines = out.splitlines()
-    assert lines[1].startswith("thermal     full (default")
+    assert lines[1].startswith("thermal     full (film heating")
+    assert "film band, initial design: without film heating (bulk" in out
     assert lines[2].startswith("balance     sea 2 degC")
     for needle in ("no heating", "vs none", "oil_temp_C", "dP*/dT_sea", "W/K",
                    "active constraints with heating (full)", "mean_power_exact_W"):

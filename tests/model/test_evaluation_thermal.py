@@ -63,10 +63,11 @@ def constant_speed_case(write_file):
 
 def test_film_mode_by_hand(write_file):
     case = constant_speed_case(write_file)
-    film = evaluate_case(case)  # no [thermal]: the default is film
-    none = evaluate_case(case, thermal="none")
-    assert (film.thermal_mode, film.thermal_mode_default) == ("film", True)
-    assert (none.thermal_mode, none.thermal_mode_default) == ("none", False)
+    film = evaluate_case(case, thermal="film")
+    none = evaluate_case(case)  # no [thermal]: the default is none (the seed's Table 4)
+    assert (film.thermal_mode, film.thermal_mode_default) == ("film", False)
+    assert (none.thermal_mode, none.thermal_mode_default) == ("none", True)
+    assert (film.film_applied, none.film_applied) == (True, False)
     assert film.sea_temp_C is None and film.oil_temp_C == 5.0
     R, gap, k = 0.025, 0.001, 0.13
     omega = 1500 * 2 * math.pi / 60
@@ -85,8 +86,21 @@ def test_film_mode_by_hand(write_file):
     for ev in (film, none):  # none reports the same film, not applied
         r = ev.regions[0]
         assert r.nahme_peak == pytest.approx(na, rel=1e-6)
-        assert r.film_factor_peak == pytest.approx(factor, rel=1e-6)
+        # one speed: no lag, so the effective Na is the curvature-corrected one and the
+        # steady Phi is the factor before the (here negligible) Taylor fade
+        assert r.nahme_effective_peak == pytest.approx(na_eff, rel=1e-6)
+        assert r.film_factor_steady_peak == pytest.approx(phi, rel=1e-6)
+        assert r.film_factor_effective_peak == pytest.approx(factor, rel=1e-6)
         assert r.film_temp_rise_peak_K == pytest.approx(math.log(1 + z / 2) / b, rel=1e-6)
+    assert film.regions[0].film_factor_applied_peak == pytest.approx(factor, rel=1e-6)
+    assert none.regions[0].film_factor_applied_peak == 1.0
+    assert (film.regions[0].film_applied, none.regions[0].film_applied) == (True, False)
+    # each reports the other as its film band
+    assert none.film_band.other_mode == "film" and film.film_band.other_mode == "none"
+    assert none.film_band.other_mean_power_W == pytest.approx(film.total_mean_power_W,
+                                                              rel=1e-12)
+    assert film.film_band.other_mean_power_W == pytest.approx(none.total_mean_power_W,
+                                                              rel=1e-12)
     assert film.regions[0].mean_power_W == pytest.approx(
         factor * none.regions[0].mean_power_W, rel=1e-6)
     assert film.regions[0].torque_peak_Nm == pytest.approx(
@@ -103,9 +117,9 @@ def hot_case(seed_toml, write_file):
 
 def test_full_mode_solves_the_heat_balance(seed_toml, write_file):
     case = hot_case(seed_toml, write_file)
-    ev = evaluate_case(case)
+    ev = evaluate_case(case, thermal="full")
     spec = case.thermal
-    assert (ev.thermal_mode, ev.thermal_mode_default, ev.sea_temp_C) == ("full", True, 4.0)
+    assert (ev.thermal_mode, ev.thermal_mode_default, ev.sea_temp_C) == ("full", False, 4.0)
     assert (ev.resistance_K_per_W, ev.other_heat_W) == (0.8, 5.0)
     t = ev.oil_temp_C
     p = float(joint_mean_power(case, t, "film"))  # the loss recomputed at that T
@@ -117,8 +131,8 @@ def test_full_mode_solves_the_heat_balance(seed_toml, write_file):
     assert ev.nu_cSt == at_t.nu_cSt
     for a, c in zip(ev.regions, at_t.regions, strict=True):
         assert a.mean_power_W == pytest.approx(c.mean_power_W, rel=1e-10)
-        assert (a.nahme_peak, a.film_factor_peak, a.Re_peak) == \
-            (c.nahme_peak, c.film_factor_peak, c.Re_peak)
+        assert (a.nahme_peak, a.film_factor_applied_peak, a.Re_peak) == \
+            (c.nahme_peak, c.film_factor_applied_peak, c.Re_peak)
     # the isothermal model at the case's own 40 degC
     assert ev.isothermal_total_mean_power_W == \
         evaluate_case(case, thermal="none").total_mean_power_W
@@ -132,6 +146,25 @@ def test_full_mode_solves_the_heat_balance(seed_toml, write_file):
     temps, _ = joint_steady_temperature(
         lambda ts: np.asarray(joint_mean_power(case, ts, "film"), dtype=float), spec, 1)
     assert temps[0] == pytest.approx(t, abs=1e-9)
+
+
+def test_bulk_is_the_default_with_thermal(seed_toml, write_file):
+    case = hot_case(seed_toml, write_file)
+    ev = evaluate_case(case)
+    spec = case.thermal
+    assert (ev.thermal_mode, ev.thermal_mode_default, ev.sea_temp_C) == ("bulk", True, 4.0)
+    assert not ev.film_applied and all(r.film_factor_applied_peak == 1.0 for r in ev.regions)
+    t = ev.oil_temp_C
+    p = float(joint_mean_power(case, t, "none"))  # the isothermal loss at that T
+    assert t - spec.sea_temp_C - spec.resistance_K_W * (p + spec.other_heat_W) == \
+        pytest.approx(0.0, abs=1e-8)
+    assert ev.total_mean_power_W == pytest.approx(p, rel=1e-10)
+    # its band is full, the same design with the film correction on the same balance
+    full = evaluate_case(case, thermal="full")
+    assert ev.film_band.other_mode == "full"
+    assert ev.film_band.other_mean_power_W == pytest.approx(full.total_mean_power_W, rel=1e-12)
+    assert ev.film_band.other_oil_temp_C == pytest.approx(full.oil_temp_C, abs=1e-12)
+    assert full.film_band.other_mean_power_W == pytest.approx(ev.total_mean_power_W, rel=1e-12)
 
 
 @pytest.mark.parametrize("oil,sea,resistance,other,walls", [
@@ -166,8 +199,9 @@ def test_none_reproduces_the_golden_numbers(name, kwargs):
     for key, value in old.items():
         if key not in ("regions", "gamma", "gamma_source", "defaults"):  # the CLI adds these
             assert new[key] == value, key
+    renamed = {"film_factor_peak": "film_factor_effective_peak"}  # issue 18: honest labels
     for r_old, r_new in zip(old["regions"], new["regions"], strict=True):
-        assert {k: r_new[k] for k in r_old} == r_old
+        assert {k: r_new[k if k in r_new else renamed[k]] for k in r_old} == r_old
 
 
 def test_refusals(seed_toml, write_file):

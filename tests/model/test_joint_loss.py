@@ -7,6 +7,7 @@ import dataclasses
 import casadi as ca
 import numpy as np
 import pytest
+from scipy.optimize import brentq
 
 from oilgap.model.case import ThermalSpec
 from oilgap.model.case_io import seed_case
@@ -16,6 +17,7 @@ from oilgap.model.joint_loss import (
     THERMAL_MODES,
     case_film,
     default_thermal_mode,
+    film_band,
     joint_mean_power,
     operating_temperature,
     resolve_thermal_mode,
@@ -45,20 +47,23 @@ def oil_state(case, temp_C, depth_m=None):
 
 
 def test_modes_and_their_resolution():
-    assert THERMAL_MODES == ("none", "film", "full")
+    assert THERMAL_MODES == ("none", "bulk", "film", "full")
     hot = with_thermal()
-    assert default_thermal_mode(SEED) == "film" and default_thermal_mode(hot) == "full"
-    assert resolve_thermal_mode(SEED, None) == "film"
-    assert resolve_thermal_mode(hot, None) == "full"
+    # the default is the model the seed's Table 4 supports: no film heating; the bulk
+    # balance when the case has one
+    assert default_thermal_mode(SEED) == "none" and default_thermal_mode(hot) == "bulk"
+    assert resolve_thermal_mode(SEED, None) == "none"
+    assert resolve_thermal_mode(hot, None) == "bulk"
     for mode in ("none", "film"):
         assert resolve_thermal_mode(SEED, mode) == mode == resolve_thermal_mode(hot, mode)
-    assert resolve_thermal_mode(hot, "full") == "full"
-    with pytest.raises(InputError) as e:
-        resolve_thermal_mode(SEED, "full")       # no [thermal] table
-    assert e.value.field == "thermal" and "[thermal]" in str(e.value)
+    for mode in ("bulk", "full"):
+        assert resolve_thermal_mode(hot, mode) == mode
+        with pytest.raises(InputError) as e:
+            resolve_thermal_mode(SEED, mode)       # no [thermal] table
+        assert e.value.field == "thermal" and "[thermal]" in str(e.value)
     with pytest.raises(InputError) as e:
         resolve_thermal_mode(hot, "hot")
-    assert e.value.field == "thermal" and "none, film, full" in str(e.value)
+    assert e.value.field == "thermal" and "none, bulk, film, full" in str(e.value)
 
 
 @pytest.mark.parametrize("temp_C, depth_m", [(2.0, None), (25.0, 500.0)])
@@ -123,14 +128,14 @@ def test_operating_temperature_without_balance_is_the_case_temperature():
         assert op.oil_temp_C == SEED.operating.oil_temp_C
         assert op.mean_power_W == pytest.approx(
             joint_mean_power(SEED, SEED.operating.oil_temp_C, mode), rel=1e-12)
-    assert operating_temperature(SEED).mode == "film"
+    assert operating_temperature(SEED).mode == "none"  # the default without [thermal]
 
 
 @pytest.mark.parametrize("walls", ["isothermal-walls", "adiabatic-rotor"])
 def test_full_is_the_steady_state_of_the_lumped_ode(walls):
     case = with_thermal(walls=walls)
     spec = case.thermal
-    op = operating_temperature(case)
+    op = operating_temperature(case, "full")
     assert op.mode == "full" and op.sea_temp_C == 2.0
     # C dT/dt = P(T) + Q - (T - T_sea)/R from the sea temperature: tau <= R C = 25000 s,
     # 6e5 s = 24 R C
@@ -144,6 +149,38 @@ def test_full_is_the_steady_state_of_the_lumped_ode(walls):
     residual = op.oil_temp_C - spec.sea_temp_C - spec.resistance_K_W * (p + spec.other_heat_W)
     assert abs(residual) < 1e-8
     assert op.oil_temp_C > spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W
+
+
+@pytest.mark.parametrize("oil, sea, resistance, other", [
+    ("VG22", 2.0, 0.5, 10.0), ("VG22", -1.0, 5.0, 0.0), ("VG1000", 4.0, 0.05, 0.0),
+    ("VG10", 20.0, 2.0, 30.0)])
+def test_bulk_is_the_root_of_the_isothermal_balance(oil, sea, resistance, other):
+    # bulk (the default with [thermal]): T = T_sea + R (P_none(T) + Q), P_none the seed
+    # paper's isothermal loss summed over the regions by hand at each T, the root by
+    # Brent's method on [T_sea + R Q, T_sea + R (P_none(T_sea + R Q) + Q)] (P falls with T)
+    case = with_thermal(dataclasses.replace(SEED, oil=builtin_oils()[oil]),
+                        sea_temp_C=sea, resistance_K_W=resistance, other_heat_W=other)
+    nodes, w = case.duty_cycle.speed_distribution()
+
+    def p_none(temp_C):
+        nu, rho, _ = oil_state(case, temp_C)
+        return sum(float(region_mean_power(r, nodes, w, nu, rho, case.friction))
+                   for r in joint_regions(case))
+
+    lo = sea + resistance * other
+    hi = lo + resistance * p_none(lo)
+    root = brentq(lambda t: t - sea - resistance * (p_none(t) + other), lo, hi, xtol=1e-13,
+                  rtol=1e-15)
+    op = operating_temperature(case)
+    assert op.mode == "bulk" and op.sea_temp_C == sea
+    assert op.oil_temp_C == pytest.approx(root, abs=1e-8)
+    assert op.mean_power_W == pytest.approx(p_none(root), rel=1e-9)
+    # no film factor: the same as none at the balance's temperature, below full's loss
+    assert op.mean_power_W == pytest.approx(
+        operating_temperature(dataclasses.replace(
+            case, operating=dataclasses.replace(case.operating, oil_temp_C=op.oil_temp_C)),
+            "none").mean_power_W, rel=1e-9)
+    assert operating_temperature(case, "full").mean_power_W < op.mean_power_W
 
 
 @pytest.mark.parametrize("walls", ["isothermal-walls", "adiabatic-rotor"])
@@ -169,3 +206,26 @@ def test_film_loss_falls_with_temperature_for_every_grade():
             case = with_thermal(dataclasses.replace(SEED, oil=oil), walls=walls)
             p = joint_mean_power(case, t, "film")
             assert np.all(np.diff(p) < 0), (walls, name)
+
+
+def test_the_film_band_is_the_film_at_full_strength():
+    # the band beside none/bulk is the opposite film choice on the same design: film
+    # (no [thermal]) or full, at full strength s = 1 whatever [thermal] film_strength says
+    band = film_band(SEED)
+    assert (band.mode, band.other_mode) == ("none", "film")
+    assert band.mean_power_W == operating_temperature(SEED, "none").mean_power_W
+    assert band.other_mean_power_W == operating_temperature(SEED, "film").mean_power_W
+    hot = with_thermal()
+    weak = with_thermal(film_strength=0.3)
+    for case in (hot, weak):
+        b = film_band(case)
+        assert (b.mode, b.other_mode) == ("bulk", "full")
+        assert b.other_mean_power_W == pytest.approx(
+            operating_temperature(hot, "full").mean_power_W, rel=1e-12)
+        assert b.change_pct == pytest.approx(
+            100 * (b.other_mean_power_W / b.mean_power_W - 1), rel=1e-12)
+    assert operating_temperature(weak, "full").mean_power_W != pytest.approx(
+        operating_temperature(hot, "full").mean_power_W, rel=1e-3)
+    back = film_band(hot, "full")  # under full, the default's number beside it
+    assert back.other_mode == "bulk"
+    assert back.other_mean_power_W == operating_temperature(hot, "bulk").mean_power_W

@@ -3,6 +3,7 @@ single-case path (model.joint_loss) and against the heat balance written out by 
 P recomputed region by region; none = the isothermal model exactly; the columns each mode
 refuses; the sweep command names the mode and keeps one store per mode."""
 
+import json
 from dataclasses import replace
 
 import numpy as np
@@ -101,13 +102,27 @@ def test_none_is_the_isothermal_model_exactly():
     assert res["mean_power_W"].iloc[0] == pytest.approx(49.453, abs=5e-4)  # seed, Sec. IV
 
 
-def test_default_is_the_best_physics_the_case_allows():
+def test_default_is_the_one_the_evidence_supports():
     g = pd.DataFrame({"oil": ["VG22"]})
-    assert run_grid(g, seed_case(), thermal=None, workers=1).attrs["thermal_mode"] == "film"
+    assert run_grid(g, seed_case(), thermal=None, workers=1).attrs["thermal_mode"] == "none"
     r = run_grid(g, thermal_case(0.0), thermal=None, workers=1)
-    assert r.attrs["thermal_mode"] == "full" and r.attrs["thermal_default"]
+    assert r.attrs["thermal_mode"] == "bulk" and r.attrs["thermal_default"]
     assert r["oil_temp_op_C"].iloc[0] == pytest.approx(
         operating_temperature(thermal_case(0.0)).oil_temp_C, abs=1e-8)
+
+
+def test_bulk_rows_balance_the_isothermal_loss():
+    # T = T_sea + R (P_none(T) + Q), P_none the row's isothermal loss at its own T
+    base = thermal_case()
+    res = run_grid(pd.DataFrame({"sea_temp_C": [0.0, 10.0], "oil": ["VG22", "VG68"]}), base,
+                   thermal="bulk", workers=1)
+    for got in res.to_dict("records"):
+        case = apply_params(base, {"sea_temp_C": got["sea_temp_C"], "oil": got["oil"]})
+        t = got["oil_temp_op_C"]
+        p = mean_viscous_power(case, oil_temp_C=t)
+        assert abs(t - got["sea_temp_C"] - R * (p + Q)) < 1e-8
+        assert got["mean_power_W"] == pytest.approx(p, rel=1e-10)
+        assert got["thermal_mode"] == "bulk"
 
 
 @pytest.mark.parametrize("grid, case, thermal, field", [
@@ -115,6 +130,8 @@ def test_default_is_the_best_physics_the_case_allows():
     ({"sea_temp_C": [10.0]}, "thermal", "film", "sea_temp_C"),
     ({"resistance_K_per_W": [1.0]}, "thermal", "none", "resistance_K_per_W"),
     ({"oil": ["VG22"]}, "seed", "full", "thermal"),
+    ({"oil": ["VG22"]}, "seed", "bulk", "thermal"),
+    ({"oil_temp_C": [10.0]}, "thermal", "bulk", "oil_temp_C"),
     ({"oil": ["VG22"]}, "seed", "warm", "thermal"),
 ])
 def test_columns_and_modes_refused(grid, case, thermal, field):
@@ -147,10 +164,14 @@ def test_cli_sweep_names_the_mode_and_keeps_a_store_per_mode(tmp_path, capsys):
     assert main(["study", "sweep", str(g), "--case", str(case), "--out", str(out),
                  "--workers", "1"]) == 0
     text = capsys.readouterr().out
-    assert text.startswith("thermal     full (default: ")
+    assert text.startswith("thermal     bulk (default: ")
+    assert "film band of the base case: film heating at full strength (full)" in text
     res = read_grid_csv(out / "results.csv")
-    assert (res["thermal_mode"] == "full").all() and (res["oil_temp_op_C"] > 2.0).all()
-    assert "Thermal mode: full (default" in (out / "summary.md").read_text()
+    assert (res["thermal_mode"] == "bulk").all() and (res["oil_temp_op_C"] > 2.0).all()
+    md = (out / "summary.md").read_text()
+    assert "Thermal mode: bulk (default" in md and "Film band of the base case" in md
+    prov = json.loads((out / "provenance.json").read_text())
+    assert (prov["thermal_mode"], prov["thermal_mode_default"]) == ("bulk", True)
     g.write_text("oil\nVG22\nVG32\n")
     for mode in ("film", "none"):
         assert main(["study", "sweep", str(g), "--case", str(case), "--out", str(out),

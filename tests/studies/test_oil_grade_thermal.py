@@ -127,14 +127,19 @@ def test_film_keeps_the_limits_and_lowers_every_loss():
 
 def test_outputs_name_the_mode(tmp_path):
     r = run(tmp_path, case=thermal_case(), thermal=None, **SMALL)
-    assert r.thermal_mode == "full"
+    assert r.thermal_mode == "bulk"  # the default with [thermal]
     doc = json.loads((tmp_path / "oil_grade.json").read_text())
-    assert doc["thermal_mode"] == "full" and doc["thermal_default"]
+    assert doc["thermal_mode"] == "bulk" and doc["thermal_default"]
+    band = doc["film_band"]  # the case's own oil at its rated point, under full beside
+    assert band["mode"] == "full" and band["rated_mean_power_W"] > band["mean_power_W"]
+    assert band["rated_mean_power_W"] == pytest.approx(
+        operating_temperature(thermal_case()).mean_power_W, rel=1e-5)
     assert doc["sea_temp_C"] == SEA and doc["recommended"] == r.recommended
     assert doc["recommended_isothermal"] == r.recommended_isothermal
     assert doc["settings"]["temp_range_C"] == [0.0, 40.0]  # the default sea range
     md = (tmp_path / "summary.md").read_text()
-    assert "Thermal mode: full (default" in md and "## With and without heating" in md
+    assert "Thermal mode: bulk (default" in md and "## With and without heating" in md
+    assert "film band: film heating at full strength (full)" in md
     for f in ("oil_grade_thermal_comparison.csv", "oil_grade_isothermal_table.csv",
               "oil_grade_thermal.png", "oil_grade_heatmap.png"):
         assert (tmp_path / f).stat().st_size > 0

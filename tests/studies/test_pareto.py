@@ -3,16 +3,21 @@ optimality properties (constraints hold, nested feasible sets give a monotone
 front, the seeds are feasible hence dominated), warm-started points against cold
 solves, the numpy problem against the NLP, bad input."""
 
+import json
+
 import numpy as np
 import pandas as pd
 import pytest
 
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError
+from oilgap.model.evaluation import evaluate_case
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
+from oilgap.studies.cli import main
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.pareto import (
+    draw_gap_front,
     gap_front,
     gap_problem_numpy,
     hypervolume_2d,
@@ -21,6 +26,7 @@ from oilgap.studies.pareto import (
     run,
     seed_points,
 )
+from oilgap.studies.reporting import new_figure
 
 
 @pytest.fixture(scope="module")
@@ -106,3 +112,37 @@ def test_outputs_written(tmp_path):
     ok = r.gap_front[r.gap_front["status"] == "ok"]
     assert r.hypervolume == pytest.approx(
         hypervolume_2d(ok[["delta_mm", "mean_power_W"]].to_numpy(), r.reference_point))
+
+
+def test_pareto_takes_the_thermal_modes(tmp_path, capsys):
+    """``study pareto --thermal``: the fronts and the marked designs under the mode asked
+    (here film on the seed), named in the header, the summary, both figure titles and
+    provenance.json; a balance mode without [thermal] exits 2."""
+    out = tmp_path / "film"
+    assert main(["study", "pareto", "--points", "50", "--thermal", "film", "--out", str(out),
+                 "--json"]) == 0
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["thermal_mode"] == "film" and doc["thermal_default"] is False
+    seed = next(d for d in doc["designs"] if d["design"] == "seed (T = 4)")
+    # the marked seed: film-heated at 2 degC as `oilgap evaluate --thermal film`, and its
+    # band the default's isothermal number
+    film = evaluate_case(seed_case(), thermal="film")
+    assert seed["mean_power_exact_W"] == pytest.approx(film.total_mean_power_W, rel=1e-5)
+    assert seed["film_band_mode"] == "none"
+    assert seed["film_band_power_W"] == pytest.approx(
+        evaluate_case(seed_case(), thermal="none").total_mean_power_W, rel=1e-5)
+    # the front is the film NLP's: its optimum is film's (below the isothermal 19.52 W)
+    ok = [r for r in doc["gap_front"] if r["status"] == "ok"]
+    assert all(r["thermal_mode"] == "film" for r in ok)
+    assert min(r["mean_power_W"] for r in ok) < 19.0
+    md = (out / "summary.md").read_text()
+    assert "Thermal mode: film (" in md and "Film band of seed (T = 4)" in md
+    prov = json.loads((out / "provenance.json").read_text())
+    assert (prov["thermal_mode"], prov["thermal_mode_default"]) == ("film", False)
+    r = run(None, points=50, thermal="film")
+    fig, ax = new_figure(7.8, 5.0)
+    draw_gap_front(r, ax)
+    assert ax.get_title().endswith("thermal film)")
+    assert main(["study", "pareto", "--points", "50", "--thermal", "bulk", "--out",
+                 str(tmp_path / "bulk")]) == 2
+    assert "[thermal]" in capsys.readouterr().err

@@ -81,6 +81,24 @@ def test_full_start_is_the_models_operating_temperature(opt, smooth):
     assert opt.initial.mean_power_W == pytest.approx(op.mean_power_W, rel=1e-9)
 
 
+def test_bulk_optimum_is_an_isothermal_loss_on_its_balance(case, smooth):
+    # bulk: the start is the model's bulk balance; at the optimum the reported loss is
+    # the isothermal (no film) loss of the optimal design at its own balance temperature
+    res = DesignProblem(case, thermal="bulk").solve()
+    op = operating_temperature(smooth, "bulk")
+    assert res.thermal_mode == "bulk"
+    assert res.initial_oil_temp_C == pytest.approx(op.oil_temp_C, abs=1e-8)
+    assert res.initial.mean_power_W == pytest.approx(op.mean_power_W, rel=1e-9)
+    o = res.optimal
+    x = np.array([o.R_m, o.delta_m, o.rotor_groove_depth_m, o.stator_groove_depth_m, o.L_m])
+    r1 = rotor_stator_region(*x)
+    p = float(joint_mean_power(smooth, res.oil_temp_C, "none",
+                               regions=(r1, *joint_regions(smooth)[1:])))
+    assert o.mean_power_W == pytest.approx(p, rel=1e-12)
+    assert abs(res.oil_temp_C - SPEC.sea_temp_C - SPEC.resistance_K_W * p) <= 1e-8
+    assert res.sea_temp_cost_W_per_K < 0  # a warmer sea thins the oil
+
+
 # ----------------------------------------------------------------- KKT
 
 
@@ -170,7 +188,7 @@ def test_film_oil_temperature_cost_is_the_derivative_of_the_optimum():
 # ----------------------------------------------------------------- brute force
 
 
-def _grid_losses(smooth, R, d, L):
+def _grid_losses(smooth, R, d, L, mode="full"):
     """Loss [W] and oil temperature [degC] of designs (R, delta, L) [m], grooves filled,
     each at its own steady balance (the model's fixed point)."""
     n = R.size
@@ -179,16 +197,16 @@ def _grid_losses(smooth, R, d, L):
         k = ts.size // n
         r1 = Region("rotor-stator", np.tile(R, k)[:, None], np.tile(d, k)[:, None],
                     np.tile(L, k)[:, None], 1.0)
-        return np.asarray(joint_mean_power(smooth, ts, "full",
+        return np.asarray(joint_mean_power(smooth, ts, mode,
                                            regions=(r1, *joint_regions(smooth)[1:])))
 
     temps, power = joint_steady_temperature(power_at, SPEC, n)
     return power, temps
 
 
-def _best(smooth, case, tmin, jmax, R, d, L):
+def _best(smooth, case, tmin, jmax, R, d, L, mode="full"):
     Rg, dg, Lg = (a.ravel() for a in np.meshgrid(R, d, L, indexing="ij"))
-    power, temps = _grid_losses(smooth, Rg, dg, Lg)
+    power, temps = _grid_losses(smooth, Rg, dg, Lg, mode)
     x = np.stack([Rg, dg, 0 * Rg, 0 * Rg, Lg])
     ok = ((motor_torque(case.motor, x[0], x[1], x[4])[0] >= tmin) &
           (rotor_inertia(case.motor, x[0], x[2], x[4], case.region1.T2
@@ -197,15 +215,22 @@ def _best(smooth, case, tmin, jmax, R, d, L):
     return power[k], temps[k], (Rg[k], dg[k], Lg[k])
 
 
-def test_brute_force_grid_finds_nothing_better(full, opt, smooth, case):
-    res = full.solve(fix={"d_r": 0.0, "d_s": 0.0})
-    assert res.optimal.mean_power_W == pytest.approx(opt.optimal.mean_power_W, rel=1e-9)
+@pytest.mark.parametrize("mode", ["full", "bulk"])
+def test_brute_force_grid_finds_nothing_better(full, opt, smooth, case, mode):
+    """Both balance modes: ``bulk`` (the default with [thermal]: the balance without the
+    film factor) against the same grid with the isothermal loss at each point's own
+    steady temperature."""
+    if mode == "full":
+        res = full.solve(fix={"d_r": 0.0, "d_s": 0.0})
+        assert res.optimal.mean_power_W == pytest.approx(opt.optimal.mean_power_W, rel=1e-9)
+    else:
+        res = DesignProblem(case, thermal="bulk").solve(fix={"d_r": 0.0, "d_s": 0.0})
     prm = res.parameters
     lo, hi = np.array(prm.lower_m), np.array(prm.upper_m)
     tmin, jmax = prm.torque_min_Nm, prm.inertia_max_kgm2
     axes = [np.linspace(lo[i], hi[i], 13) for i in (0, 1, 4)]
     for _ in range(4):  # coarse grid, then three local refinements around the best point
-        p_best, t_best, x_best = _best(smooth, case, tmin, jmax, *axes)
+        p_best, t_best, x_best = _best(smooth, case, tmin, jmax, *axes, mode=mode)
         widths = [2 * (a[1] - a[0]) for a in axes]
         axes = [np.linspace(max(lo[i], c - w), min(hi[i], c + w), 13)
                 for i, c, w in zip((0, 1, 4), x_best, widths, strict=True)]
@@ -243,9 +268,9 @@ def test_warm_start_from_a_thermal_optimum(full, opt):
     assert warm.iterations <= cold.iterations
 
 
-def test_default_mode_is_the_best_the_case_allows(case):
-    assert DesignProblem(case, thermal=None).thermal_mode == "full"
-    assert DesignProblem(seed_case(), thermal=None).thermal_mode == "film"
+def test_default_mode_is_the_one_the_evidence_supports(case):
+    assert DesignProblem(case, thermal=None).thermal_mode == "bulk"
+    assert DesignProblem(seed_case(), thermal=None).thermal_mode == "none"
     assert DesignProblem(seed_case()).heated is None  # the isothermal NLP stays the default
 
 

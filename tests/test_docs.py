@@ -107,8 +107,9 @@ def _skipped_line(line: str) -> str | None:
     return None
 
 
-def shell_commands(b: Block) -> list[tuple[str, int]]:
-    """(command, expected exit code) of a shell block, lines this test cannot run left out."""
+def shell_commands(b: Block) -> list[tuple[str, int, str]]:
+    """(command, expected exit code, start of the error line shown) of a shell block, lines
+    this test cannot run left out."""
     if b.lang == "console":
         cmds, lines = [], b.body.splitlines()
         for i, ln in enumerate(lines):
@@ -118,12 +119,12 @@ def shell_commands(b: Block) -> list[tuple[str, int]]:
                     if later.startswith("$ "):
                         break
                     shown.append(later)
-                err = any(s.startswith("oilgap: error:") for s in shown)
-                cmds.append((ln[2:], 2 if err else 0))
+                err = [s for s in shown if s.startswith("oilgap: error:")]
+                cmds.append((ln[2:], 2 if err else 0, err[0][:60] if err else ""))
     else:
-        cmds = [(ln, 0) for ln in b.body.splitlines() if ln.strip()
+        cmds = [(ln, 0, "") for ln in b.body.splitlines() if ln.strip()
                 and not ln.lstrip().startswith("#")]
-    return [(c, rc) for c, rc in cmds if _skipped_line(c) is None]
+    return [c for c in cmds if _skipped_line(c[0]) is None]
 
 
 def _env() -> dict[str, str]:
@@ -147,9 +148,16 @@ def _link_repo(tmp: Path) -> None:
         (tmp / name).symlink_to(ROOT / name, target_is_directory=True)
 
 
+README_CASE = re.search(r"`my_joint.toml`:\n\n```toml\n(.*?)```",
+                        (ROOT / "README.md").read_text(), re.S).group(1)
+"""The README tour's ``my_joint.toml``, which the docs' examples use."""
+
+
 def run_doc(path: Path, tmp: Path) -> dict[str, int]:
-    """Run a document's blocks in ``tmp``; the counts of what ran."""
+    """Run a document's blocks in ``tmp`` (with the README's ``my_joint.toml``); the counts of
+    what ran."""
     _link_repo(tmp)
+    (tmp / "my_joint.toml").write_text(README_CASE)
     ns: dict = {"__name__": "__doc__"}
     count = {"shell": 0, "python": 0, "files": 0}
     k_py = 0
@@ -166,9 +174,10 @@ def run_doc(path: Path, tmp: Path) -> dict[str, int]:
             (tmp / b.file).write_text(b.body + "\n")
             count["files"] += 1
         elif b.lang in SHELL:
-            for cmd, want in shell_commands(b):
+            for cmd, want, err in shell_commands(b):
                 r = _bash(cmd, tmp, where)
                 assert r.returncode == want, (where, cmd, r.returncode, r.stderr[-3000:])
+                assert err in r.stderr, (where, cmd, err, r.stderr[-3000:])
                 count["shell"] += 1
         elif b.lang == "python":
             out = io.StringIO()
@@ -239,5 +248,5 @@ def test_markers_parse():
         ("toml", "a.toml", None, None), ("bash", None, "needs a network", None),
         ("csv", "b.csv", None, None), ("console", None, None, "touch c"),
         ("bash", None, None, None)]
-    assert shell_commands(bs[3]) == [("oilgap loop c", 2)]
-    assert shell_commands(bs[4]) == [("oilgap evaluate", 0)]
+    assert shell_commands(bs[3]) == [("oilgap loop c", 2, "oilgap: error: no")]
+    assert shell_commands(bs[4]) == [("oilgap evaluate", 0, "")]

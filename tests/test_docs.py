@@ -250,3 +250,44 @@ def test_markers_parse():
         ("bash", None, None, None)]
     assert shell_commands(bs[3]) == [("oilgap loop c", 2, "oilgap: error: no")]
     assert shell_commands(bs[4]) == [("oilgap evaluate", 0, "")]
+
+
+def _slug(heading: str) -> str:
+    """GitHub's anchor of a Markdown heading: lower case, punctuation dropped, spaces -> '-'."""
+    return re.sub(r"[^\w\- ]", "", heading.strip().lower()).replace(" ", "-")
+
+
+def _anchors(path: Path) -> set[str]:
+    out: set[str] = set()
+    seen: dict[str, int] = {}
+    code = False
+    for ln in path.read_text().splitlines():
+        if ln.lstrip().startswith("```"):
+            code = not code
+        if code:
+            continue
+        if m := re.match(r"#+\s+(.*)", ln):
+            s = _slug(m.group(1))
+            n = seen.get(s, 0)
+            seen[s] = n + 1
+            out.add(s if n == 0 else f"{s}-{n}")
+        out.update(re.findall(r'<a (?:name|id)="([^"]+)"', ln))
+    return out
+
+
+def test_links_between_docs_reach_a_file_and_a_heading():
+    """Every relative link of docs/, README.md and examples/README.md names an existing file
+    and, with ``#anchor``, one of its headings (``thermal.md#next`` pointed at none)."""
+    bad = []
+    for p in [*DOCS, ROOT / "README.md", ROOT / "examples" / "README.md"]:
+        for m in re.finditer(r"\]\(([^)\s]+)\)", p.read_text()):
+            link = m.group(1)
+            if link.startswith(("http:", "https:", "mailto:")):
+                continue
+            file, _, anchor = link.partition("#")
+            target = (p.parent / file).resolve() if file else p
+            if not target.exists():
+                bad.append(f"{p.name}: {link} (no such file)")
+            elif anchor and target.suffix == ".md" and anchor not in _anchors(target):
+                bad.append(f"{p.name}: {link} (no such heading)")
+    assert not bad, "\n".join(bad)

@@ -1,9 +1,10 @@
 """The same data and options give a bit-identical ``loop.json`` on one install (issue 18).
 
-Whatever the thread count, the hash seed and the load: the loop is run twice in
-subprocesses, once on one BLAS/OpenMP thread and once on two with another process
-burning a core beside it, and the two ``loop.json`` are compared byte for byte (the
-file holds no date or timing; those are in ``provenance.json``).
+Whatever the core count, the thread count, the hash seed and the load: the loop is run
+twice in subprocesses, once pinned to one core on one BLAS/OpenMP thread and once on
+every core with two threads and another process burning a core beside it, and the two
+``loop.json`` are compared byte for byte (the file holds no date or timing; those are in
+``provenance.json``).
 
 Across processors the numbers may move: numpy picks its SIMD kernels (AVX2 or
 AVX-512) at run time, and ``exp``/``log``/``power`` then differ in the last bit for
@@ -32,10 +33,16 @@ LOOP = ["loop", "synth_seal.csv", "--out", "loop_seal", "--json", "--no-figures"
 THREAD_VARS = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
 
 
-def _oilgap(argv: list[str], cwd: Path, **env: str) -> None:
+def _one_core() -> None:  # pragma: no cover - runs in the child
+    if hasattr(os, "sched_setaffinity"):
+        os.sched_setaffinity(0, {min(os.sched_getaffinity(0))})
+
+
+def _oilgap(argv: list[str], cwd: Path, one_core: bool = False, **env: str) -> None:
     full = {**os.environ, **env}
     r = subprocess.run([sys.executable, "-m", "oilgap.studies.cli", *argv], cwd=cwd, env=full,
-                       capture_output=True, text=True, timeout=300)
+                       capture_output=True, text=True, timeout=300,
+                       preexec_fn=_one_core if one_core else None)
     assert r.returncode == 0, r.stderr
 
 
@@ -50,15 +57,15 @@ def synth_dir(tmp_path_factory) -> Path:
     return d
 
 
-def _loop_in(d: Path, synth: Path, **env: str) -> bytes:
+def _loop_in(d: Path, synth: Path, one_core: bool = False, **env: str) -> bytes:
     d.mkdir()
     (d / "synth_seal.csv").write_bytes((synth / "synth_seal.csv").read_bytes())
-    _oilgap(LOOP, d, **env)
+    _oilgap(LOOP, d, one_core, **env)
     return (d / "loop_seal" / "loop.json").read_bytes()
 
 
 def test_loop_json_is_bit_identical_across_threads_hash_seed_and_load(synth_dir, tmp_path):
-    one = _loop_in(tmp_path / "one", synth_dir, PYTHONHASHSEED="0", **_threads(1))
+    one = _loop_in(tmp_path / "one", synth_dir, one_core=True, PYTHONHASHSEED="0", **_threads(1))
     burner = subprocess.Popen([sys.executable, "-c", "import time\nt = time.time()\n"
                                "while time.time() - t < 120: pass"])
     try:

@@ -98,6 +98,7 @@ def tolerance(rel: str, field: str = "") -> tuple[float, float]:
             return t.rtol, t.atol
     return RTOL, ATOL
 
+
 GRID_EVAL = "oil,oil_temp_C,depth_m,gap_mm,T\nVG22,2,3000,1.0,4\nVG32,10,1000,0.8,2\nVG15,,,1.2,\n"
 GRID_OPT = "oil,oil_temp_C,torque_min_Nm\nVG22,2,0.5\nVG46,20,0.45\n"
 NEW_POINTS = ("speed_rpm,temp_C,oil,roughness_T\n1000,30,VG150,4\n3000,40,VG320,2\n"

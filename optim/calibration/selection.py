@@ -39,6 +39,12 @@ from oilgap.model.errors import SolverError
 
 from .candidates import Candidates
 
+CLARABEL_SETTINGS = {"tol_gap_abs": 1e-8, "tol_gap_rel": 1e-8, "tol_feas": 1e-8,
+                     "max_iter": 200, "direct_solve_method": "qdldl"}
+"""Clarabel's settings, named rather than left to the installed version's defaults (these
+are Clarabel 0.11's), with its single-threaded direct solver: the same data give the same
+lasso path whatever the version's defaults and the core count (issue 18)."""
+
 
 class SignConstrainedLasso:
     """Sign-constrained lasso ``min ||A x - b||^2 + pen . |x|, lo <= x <= hi`` (cvxpy) [1].
@@ -85,7 +91,7 @@ class SignConstrainedLasso:
         """
         self.pen.value = pen
         try:
-            self.prob.solve(solver=cp.CLARABEL)
+            self.prob.solve(solver=cp.CLARABEL, **CLARABEL_SETTINGS)
         except cp.error.SolverError:
             self.prob.solve(solver=cp.SCS, eps=1e-9, max_iters=100000)
         if self.x.value is None or self.prob.status not in ("optimal", "optimal_inaccurate"):

@@ -162,13 +162,17 @@ def lagged_oil_state(measured: OilState, lag_s: float, temp_lagged_K,
 
 def film_heated_oil_state(state: OilState, film_K_W: float,
                           power_at: Callable[[np.ndarray, np.ndarray], np.ndarray],
-                          properties: Callable[[np.ndarray], tuple]) -> OilState:
+                          properties: Callable[[np.ndarray], tuple],
+                          start_K: np.ndarray | None = None) -> OilState:
     """The oil state with the film at ``T_f = T_lag + c P(T_f)`` per sample [2].
 
     ``g(T_f) = T_f - T_lag - c P(T_f)`` rises where P falls with the temperature, so
     the root is unique, between ``T_lag`` and ``T_lag + c P(T_lag)``; solved by the
     library's film solver, :func:`~oilgap.model.effects.film_temperature` (the lumped
-    balance's safeguarded Newton, vectorised over the samples).
+    balance's safeguarded Newton, vectorised over the samples). From ``start_K`` (the
+    solution at nearby coefficients, as in a fit's iterations) a few plain Newton steps
+    are tried first (``g' = 1 - c dP/dT >= 1``: well conditioned); they are kept only if
+    they converge to 1e-11 K, otherwise the safeguarded solver runs.
 
     Parameters
     ----------
@@ -181,6 +185,8 @@ def film_heated_oil_state(state: OilState, film_K_W: float,
         viscous power [W] per sample.
     properties : callable
         Temperature [K] per sample -> (kinematic viscosity [m^2/s], density [kg/m^3]).
+    start_K : array, optional
+        A film temperature per sample near the root [K] (a warm start).
 
     Returns
     -------
@@ -198,8 +204,36 @@ def film_heated_oil_state(state: OilState, film_K_W: float,
     def power_at_C(temp_C):
         return power_at(*properties(np.asarray(temp_C) + ZERO_CELSIUS_K))
 
-    tf = film_temperature(state.temp_lagged_K - ZERO_CELSIUS_K, power_at_C,
-                          film_K_W) + ZERO_CELSIUS_K
+    base_C = state.temp_lagged_K - ZERO_CELSIUS_K
+    tf = None if start_K is None else _warm_newton(np.asarray(start_K) - ZERO_CELSIUS_K,
+                                                   base_C, film_K_W, power_at_C)
+    if tf is None:
+        tf = film_temperature(base_C, power_at_C, film_K_W)
+    tf = tf + ZERO_CELSIUS_K
     nu, rho = properties(tf)
     return replace(state, temp_film_K=tf, nu_film_m2_s=nu, density_film_kg_m3=rho,
                    film_K_W=float(film_K_W), key=None)
+
+
+WARM_STEPS = 6
+"""Newton steps tried from a warm start before the safeguarded solver takes over."""
+
+
+def _warm_newton(start_C, base_C, c, power_at_C, tol_K: float = 1e-11):
+    """``T_f = base + c P(T_f)`` by Newton from ``start_C`` [degC] (forward-difference
+    slope); None unless every sample's step falls below ``tol_K`` within
+    :data:`WARM_STEPS` steps and the root lies above the base (P >= 0)."""
+    T = np.array(start_C, dtype=float)
+    h = 1e-6
+    for _ in range(WARM_STEPS):
+        p = np.asarray(power_at_C(T), dtype=float)
+        slope = 1.0 - c * (np.asarray(power_at_C(T + h), dtype=float) - p) / h
+        if not np.all(np.isfinite(slope) & (slope > 0.0)):
+            return None
+        step = (T - base_C - c * p) / slope
+        T = T - step
+        if not np.all(np.isfinite(T)):
+            return None
+        if np.max(np.abs(step), initial=0.0) < tol_K:
+            return T if np.all(T >= base_C - tol_K) else None
+    return None

@@ -40,6 +40,7 @@ from oilgap.model.effects import (
 from oilgap.model.measured_data import TEMP_STEP_K, Samples
 from oilgap.model.oil_state import (
     OilState,
+    applied_state_name,
     film_heated_oil_state,
     lagged_oil_state,
     measured_oil_state,
@@ -64,6 +65,34 @@ SPEED_STEP = 1e-4
 
 SHAPE_CACHE = 4
 """Law shapes whose region powers a forward model keeps (each is regions x samples)."""
+
+
+OIL_STATE_READERS = ("bearing_ball_churning", "end_face_disc", "oil_inertia",
+                     "shear_thinning", "taylor_vortex_onset")
+"""Effects whose term reads the oil's viscosity or density (beside the clearance regions);
+the seal's Coulomb torque and the sensor delay do not depend on the oil state."""
+
+
+def oil_state_record(coefs: dict) -> dict:
+    """Which oil state the forward model's terms read under the effects ``coefs``.
+
+    Parameters
+    ----------
+    coefs : dict
+        Effect name -> coefficient (library units).
+
+    Returns
+    -------
+    dict
+        ``applied`` (measured, lagged, film-heated, lagged and film-heated), the lag
+        ``thermal_lag_s`` [s] and film coefficient ``film_heating_K_W`` [K/W] (0: none),
+        and ``terms``: the clearance regions and the effects that read that state.
+    """
+    tau = float(coefs.get("thermal_lag", 0.0))
+    c = max(0.0, float(coefs.get("film_heating", 0.0)))
+    return {"applied": applied_state_name(tau != 0.0, c > 0.0), "thermal_lag_s": tau,
+            "film_heating_K_W": c,
+            "terms": ["regions", *(n for n in coefs if n in OIL_STATE_READERS)]}
 
 
 def sample_geometry(case: DesignCase, samples: Samples) -> JointGeometry:
@@ -142,6 +171,7 @@ class ForwardModel:
                                            s.density_kg_m3)
         self._lags: dict[float, OilState] = {}  # thermal-lag tau -> the lagged oil state
         self._features: dict[tuple, np.ndarray] = {}  # (effect, lag state key) -> feature
+        self._film_start: dict[float, np.ndarray] = {}  # lag -> last film temperature [K]
 
     def subset(self, mask: np.ndarray) -> ForwardModel:
         """Forward model of the samples where ``mask`` holds.
@@ -165,7 +195,7 @@ class ForwardModel:
         sub._static = {k: v[mask] for k, v in self._static.items()}
         sub.measured = measured_oil_state(celsius_to_kelvin(s.temp_C), s.nu_m2_s,
                                           s.density_kg_m3)
-        sub._shapes, sub._lags, sub._features = {}, {}, {}
+        sub._shapes, sub._lags, sub._features, sub._film_start = {}, {}, {}, {}
         return sub
 
     def region_powers(self, law: FrictionLaw, omega=None, nu=None, rho=None
@@ -247,7 +277,11 @@ class ForwardModel:
             return sum(region_power(r, s.omega, nu * q, rho, law)
                        for r, q in zip(self.geometry.regions, ratios, strict=True))
 
-        return film_heated_oil_state(state, c, power_at, self.oil_properties)
+        start = self._film_start.get(tau)
+        film = film_heated_oil_state(state, c, power_at, self.oil_properties,
+                                     None if start is None else start)
+        self._film_start[tau] = film.temp_film_K  # warm start of the next iteration's film
+        return film
 
     def _bare_context(self, state: OilState, powers=None) -> EffectContext:
         """Effect context at an oil state, law-independent features only (no region power

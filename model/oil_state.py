@@ -97,14 +97,14 @@ def applied_state_name(lagged: bool, film_heated: bool) -> str:
     Parameters
     ----------
     lagged : bool
-        Thermal lag in the model.
+        Thermal lag in the model [-].
     film_heated : bool
-        Film heating in the model.
+        Film heating in the model [-].
 
     Returns
     -------
     str
-        "measured", "lagged", "film-heated" or "lagged and film-heated".
+        "measured", "lagged", "film-heated" or "lagged and film-heated" [-].
     """
     return OIL_STATES[int(bool(lagged)) + 2 * int(bool(film_heated))]
 

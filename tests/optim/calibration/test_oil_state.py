@@ -33,6 +33,7 @@ from oilgap.model.units import ZERO_CELSIUS_K
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.calibration.forward import ForwardModel
 from oilgap.studies import outside_rig, synth
+from oilgap.studies.loop_report import format_summary, report_markdown
 from oilgap.studies.outside_laws import fluid_state, palmgren_churning_power
 
 STATE = ("thermal_lag", "film_heating")
@@ -161,7 +162,7 @@ def _outside_cfg(effects: dict) -> outside_rig.OutsideConfig:
 
 @cache
 def _loop(rig: str, pair: tuple[str, ...]):
-    """(names, held-out RMSE [W], noise level [W], coefficients) of the loop on the pair."""
+    """(names, held-out RMSE [W], noise level [W], coefficients, estimator) on the pair."""
     if rig == "synth":
         cfg = _synth_cfg({e: synth.DEFAULT_STRENGTH[e] for e in pair})
         oils = synth.fluid_table(cfg) if cfg.fluids else None
@@ -175,14 +176,14 @@ def _loop(rig: str, pair: tuple[str, ...]):
         est = LoopEstimator(case=case, oils=oils).fit(outside_rig.synthesize(cfg, 0))
         noise = cfg.noise_power_W
     return (tuple(sorted(e.name for e in est.effects_)), est.heldout_rmse_["after"], noise,
-            est.effect_coef_)
+            est.effect_coef_, est)
 
 
 @pytest.mark.parametrize("rig", ["synth", "outside"])
 @pytest.mark.parametrize("reader", READERS)
 @pytest.mark.parametrize("state", STATE)
 def test_each_state_effect_pair_is_named_at_the_noise(rig, state, reader):
-    named, heldout, noise, coef = _loop(rig, (state, reader))
+    named, heldout, noise, coef, _ = _loop(rig, (state, reader))
     assert named == tuple(sorted((state, reader))), f"named {named}, held-out {heldout:.2f} W"
     floor = FLOOR * noise
     if rig == "outside" and reader == "shear_thinning":
@@ -196,3 +197,21 @@ def test_each_state_effect_pair_is_named_at_the_noise(rig, state, reader):
                  for e in (state, reader)}
         for e, v in truth.items():
             assert coef[e] == pytest.approx(v, rel=0.1), e
+
+
+def test_the_report_says_which_oil_state_the_terms_read():
+    *_, est = _loop("synth", ("thermal_lag", "bearing_ball_churning"))
+    st = est.oil_state_
+    assert st["applied"] == "lagged" and st["film_heating_K_W"] == 0.0
+    assert st["thermal_lag_s"] == pytest.approx(4.0, rel=0.05)
+    assert st["terms"] == ["regions", "bearing_ball_churning"]
+    assert est.to_dict()["oil_state"] == st
+    assert "read at the lagged oil temperature" in format_summary(est)
+    assert "Oil state: every term (regions, bearing_ball_churning)" in report_markdown(est, False)
+    *_, both = _loop("outside", ("film_heating", "seal_coulomb_friction"))
+    assert both.oil_state_["applied"] == "film-heated"
+    assert both.oil_state_["terms"] == ["regions"]  # the Coulomb seal reads no oil property
+    # no state effect: the measured state, and loop.json as before (no key)
+    *_, seal = _loop("outside", ("seal_coulomb_friction",))
+    assert seal.oil_state_["applied"] == "measured" and "oil_state" not in seal.to_dict()
+    assert "oil state" not in format_summary(seal)

@@ -127,7 +127,7 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
 
     Unknowns: the free base parameters (C, scale as logarithms, within their
     box) and one coefficient per effect, bounded below by 0 where the library
-    says so; effect coefficients
+    says so and above by its ``upper`` (the film strength by 1); effect coefficients
     are scaled by ``scale`` for conditioning. The Jacobian is by central
     differences of the model; the solver is SciPy's trust-region reflective [2].
 
@@ -175,7 +175,7 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
     x0 = np.clip(np.asarray(x0, float), blo, bhi)
     z0 = np.concatenate([x0, t0 * sc])
     lo = np.concatenate([blo, lo_t * sc])
-    hi = np.concatenate([bhi, np.full(k, np.inf)])
+    hi = np.concatenate([bhi, np.array([EFFECTS[n].upper for n in names]) * sc])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         res = least_squares(prob.residual, z0, jac=prob.jacobian, bounds=(lo, hi),
@@ -234,6 +234,7 @@ def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.
             or np.any(x < blo) or np.any(x > bhi)):
         return None
     z = np.maximum(fit.z + dz, np.concatenate([np.full(q, -np.inf), fit.lower * fit.scale]))
+    z[q:] = np.minimum(z[q:], np.array([EFFECTS[n].upper for n in fit.names]) * fit.scale)
     theta = z[q:] / fit.scale
     coefs = dict(zip(fit.names, theta, strict=True))
     law = spec.law(x)

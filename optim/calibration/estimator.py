@@ -237,6 +237,9 @@ class LoopEstimator:
         ci = effect_ci(search.spec, final.fit, final.after.folds, s, self.baselines_)
         # 8. results
         self.effects_ = effect_results(model, final, ci, heldout_gains(search.refitter, final))
+        self.findings_ += [{"kind": "at bound", "parameter": e.name, "value": e.coefficient,
+                            "message": e.shape["at_bound"], "held_at": None}
+                           for e in self.effects_ if (e.shape or {}).get("at_bound")]
         self.candidates_ = candidate_statuses(search.cands, search.selection, final, sigma,
                                               self.margin, self.min_explained,
                                               search.implausible)

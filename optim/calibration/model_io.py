@@ -310,8 +310,7 @@ class FittedModel:
         return cls(est.case_, laws, {k: float(v) for k, v in est.effect_coef_.items()},
                    dict(est.baselines_), fluids, float(est.geometry_.regions[0].gap_m), 0.0,
                    est.data_.kind, bool(s.has_time), str(s.cv_by), sample_ranges(s),
-                   float(getattr(est, "taylor_exponent_", 2.0)),
-                   float(est.forward_model_.film_wall))
+                   float(getattr(est, "taylor_exponent_", 2.0)), est.forward_model_.film_wall)
 
     def to_dict(self) -> dict:
         """The ``model`` block of ``loop.json`` (JSON-safe; units in key names).

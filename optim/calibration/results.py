@@ -126,8 +126,9 @@ def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray,
     return out
 
 
-FILM_BOUND_TOL = 1e-6
-"""A film strength within this of 1 is at the smooth-film theory's bound [-]."""
+FILM_BOUND_TOL = 1e-3
+"""A film strength within this of 1, or whose interval reaches 1, is at the smooth-film
+theory's bound [-] (the bounded solver stops just short of a bound)."""
 
 
 def film_shape(model: ForwardModel, s: float, ci: tuple[float, float]) -> dict:
@@ -149,7 +150,8 @@ def film_shape(model: ForwardModel, s: float, ci: tuple[float, float]) -> dict:
     dict
         ``film_strength``, ``film_strength_ci`` [-], ``wall_floating`` w [-],
         ``film_theory_K_W`` (c at s = 1) [K/W], ``film_heating_K_W`` and its interval
-        ``film_heating_K_W_ci`` [K/W], ``at_bound`` (the reason when s is at 1, else None).
+        ``film_heating_K_W_ci`` [K/W], ``at_bound`` (the statement when s or its interval
+        reaches 1, else None).
 
     References
     ----------
@@ -158,10 +160,12 @@ def film_shape(model: ForwardModel, s: float, ci: tuple[float, float]) -> dict:
     """
     theory = model.film_theory_K_W
     bound = None
-    if s >= 1.0 - FILM_BOUND_TOL:
-        bound = ("s = 1, at the smooth-film theory's bound: the data ask for a film at least "
-                 "as hot as the theory gives at this wall condition; a hotter film (walls "
-                 "above the sensor, or a heating the film law does not hold) is absorbed there")
+    if s >= 1.0 - FILM_BOUND_TOL or ci[1] >= 1.0:
+        bound = (f"film strength s = {s:.3g} (interval to {ci[1]:.3g}), at the smooth-film "
+                 "theory's bound s = 1: the data ask for a film at least as hot as the theory "
+                 f"gives at the wall condition w = {model.film_wall:g}; a hotter film (walls "
+                 "above the sensor, or a heating the film law does not hold) is not explained "
+                 "by it and may be taken up by other effects")
     return {"film_strength": s, "film_strength_ci": [ci[0], min(ci[1], 1.0)],
             "wall_floating": model.film_wall, "film_theory_K_W": theory,
             "film_heating_K_W": s * theory,

@@ -178,7 +178,7 @@ def test_the_saved_model_records_its_thermal_mode_and_predict_uses_it(rig, tmp_p
     # an older loop.json's film_heating was a c in K/W, not the strength s: refused
     older = dict(film)
     del older["shapes"]
-    with pytest.raises(Exception, match="film_strength"):
+    with pytest.raises(Exception, match="film strength s"):
         FittedModel.from_dict(older)
     bad = dict(doc["model"], thermal_mode="film")
     with pytest.raises(Exception, match="model.thermal_mode"):

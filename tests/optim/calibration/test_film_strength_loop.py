@@ -59,7 +59,7 @@ def test_wall_condition_held_with_its_reason_where_the_data_cannot_identify_it()
     assert why.startswith("held at w = 0") and "not identified" in why
     assert "w = 0.5:" in why and "w = 1:" in why
     # and the model records it: the film at s and w written into loop.json's model block
-    doc = est.to_model().to_dict()
+    doc = est.fitted_model().to_dict()
     assert doc["shapes"]["film_heating"] == {"coefficient": "film_strength",
                                              "wall_floating": 0.0}
 

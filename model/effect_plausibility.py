@@ -83,7 +83,8 @@ class RigFacts:
         The ``film_heating`` coefficient of the smooth-film theory (strength 1,
         isothermal walls, k = 0.13 W/(m K)) on the rotor-stator clearance [K/W]
         (:func:`~oilgap.model.film_heating.film_theory_coefficient`; nan: unknown): a
-        fitted c is the film strength ``s = c / film_theory_K_W``.
+        film coefficient c is the film strength ``s = c / film_theory_K_W`` (the loop's
+        ``film_heating`` fits s itself since issue 18).
     """
 
     fluids: tuple[FluidFacts, ...]

@@ -161,11 +161,12 @@ def film_shape(model: ForwardModel, s: float, ci: tuple[float, float]) -> dict:
     theory = model.film_theory_K_W
     bound = None
     if s >= 1.0 - FILM_BOUND_TOL or ci[1] >= 1.0:
-        bound = (f"film strength s = {s:.3g} (interval to {ci[1]:.3g}), at the smooth-film "
-                 "theory's bound s = 1: the data ask for a film at least as hot as the theory "
-                 f"gives at the wall condition w = {model.film_wall:g}; a hotter film (walls "
-                 "above the sensor, or a heating the film law does not hold) is not explained "
-                 "by it and may be taken up by other effects")
+        bound = (f"film strength s = {s:.3g}, its interval reaching {ci[1]:.3g}: at the "
+                 "smooth-film theory's bound s = 1 (or not told from it): the data may ask for "
+                 "a film as hot as the theory gives at the wall condition w = "
+                 f"{model.film_wall:g} or hotter; a hotter film (walls above the sensor, or a "
+                 "heating the film law does not hold) is not explained by it and may be taken "
+                 "up by other effects")
     return {"film_strength": s, "film_strength_ci": [ci[0], min(ci[1], 1.0)],
             "wall_floating": model.film_wall, "film_theory_K_W": theory,
             "film_heating_K_W": s * theory,

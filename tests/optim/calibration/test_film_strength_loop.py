@@ -11,14 +11,15 @@ runs does not see (seed 0 at s = 0.3: 0.3011, interval [0.3003, 0.3020]).
 """
 
 import math
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from functools import cache
+from types import SimpleNamespace
 
 import pytest
 
 from oilgap.model.case import ThermalSpec
 from oilgap.model.case_io import seed_case
-from oilgap.optim.calibration import LoopEstimator
+from oilgap.optim.calibration import LoopEstimator, film_wall
 from oilgap.studies.synth import SynthConfig, synthesize
 
 # hand: the seed's clearance, delta 1 mm, R 25.4 mm, L 14.76 mm, k 0.13 W/(m K)
@@ -84,3 +85,33 @@ def test_a_film_stronger_than_the_theory_is_pinned_at_one_and_flagged():
     assert "at the smooth-film theory's bound" in e.shape["at_bound"]
     flags = [f for f in est.findings_ if f["kind"] == "at bound"]
     assert [f["parameter"] for f in flags] == ["film_heating"]
+
+
+@dataclass(frozen=True)
+class _Final:  # the fields of a FinalModel the wall rule reads and replaces
+    accepted: tuple
+    fit: object = None
+    after: object = None
+
+
+@pytest.mark.parametrize("heldout, freed", [
+    ((1.5, 1.0, 1.4), 0.5),   # interior minimum 1.0 < 0.9 x 1.4: w identified, at 1/2
+    ((1.0, 1.0, 1.0), None),  # flat (s absorbs w): held
+    ((2.0, 1.2, 1.2), None),  # falls to w = 1 and stays (s (1 + 3w) > 1 needed): held
+    ((1.5, 1.3, 1.4), None),  # interior minimum, but not below the ends by the 10 % margin
+])
+def test_the_wall_rule_frees_w_only_for_an_interior_minimum_below_both_ends(
+        monkeypatch, heldout, freed):
+    rows = [(w, h, 0.2, f"fit{w}", f"ho{w}") for w, h in zip(film_wall.WALL_GRID, heldout,
+                                                              strict=True)]
+    monkeypatch.setattr(film_wall, "_profile", lambda *a: rows)
+    refitter = SimpleNamespace(model=SimpleNamespace(film_wall=0.0))
+    final, w, why = film_wall.wall_identifiability(refitter, _Final(("film_heating",)), 0.0,
+                                                   0.1)
+    if freed is None:
+        assert w == 0.0 and final.fit is None and "not identified" in why
+    else:
+        assert w == freed == refitter.model.film_wall and final.fit == f"fit{freed}"
+        assert why.startswith("fitted on the grid")
+    assert film_wall.wall_identifiability(refitter, _Final(("seal_coulomb_friction",)), 0.0,
+                                          0.1)[2].endswith("film_heating is not in the model")

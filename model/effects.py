@@ -89,6 +89,7 @@ from .thermal import steady_temperature
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from .bearing import BearingSpec
+    from .oil_state import OilState
 
 __all__ = [
     "RegionState", "EffectContext", "region_states", "effect_context", "cross_region_ratios",
@@ -168,6 +169,9 @@ class EffectContext:
     bearing : BearingSpec or None
         The case's rolling bearing (``[bearing]``), if any: the ``bearing_ball_churning``
         feature is its power under its model.
+    oil : OilState or None
+        The oil state ``nu_m2_s`` and ``density_kg_m3`` were read from (measured,
+        lagged or film-heated temperatures: :mod:`oilgap.model.oil_state`), if known.
     """
 
     omega_rad_s: np.ndarray
@@ -181,6 +185,7 @@ class EffectContext:
     disc_radii_m: tuple[float, float]
     bearing_pitch_diameter_m: float | None
     bearing: BearingSpec | None = None
+    oil: OilState | None = None
 
     @property
     def power_W(self) -> np.ndarray:
@@ -224,8 +229,9 @@ def region_states(geometry: JointGeometry, omega_rad_s, nu_m2_s, powers_W
 
 
 def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2_s,
-                   density_kg_m3, law: FrictionLaw, *, powers_W=None, dtemp_dt_K_s=None,
-                   dpower_dt_W_s=None, dpower_dtemp_W_K=None) -> EffectContext:
+                   density_kg_m3, law: FrictionLaw | None, *, powers_W=None,
+                   dtemp_dt_K_s=None, dpower_dt_W_s=None, dpower_dtemp_W_K=None,
+                   oil: OilState | None = None) -> EffectContext:
     """The one builder of an :class:`EffectContext` (rig simulator and calibration alike).
 
     Parameters
@@ -241,7 +247,7 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
         Kinematic viscosity per sample [m^2/s].
     density_kg_m3 : float or array
         Oil density per sample [kg/m^3].
-    law : FrictionLaw
+    law : FrictionLaw or None
         Friction law of the clearance model (used unless ``powers_W`` is given).
     powers_W : sequence of arrays, optional
         Region powers already computed [W].
@@ -251,6 +257,8 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
         Time derivative of the viscous power [W/s] (zero if not given).
     dpower_dtemp_W_K : array, optional
         Temperature derivative of the viscous power [W/K] (zero if not given).
+    oil : OilState, optional
+        The oil state ``nu_m2_s`` and ``density_kg_m3`` come from (kept for the record).
 
     Returns
     -------
@@ -269,7 +277,7 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
         zeros if dpower_dt_W_s is None else dpower_dt_W_s,
         zeros if dpower_dtemp_W_K is None else dpower_dtemp_W_K,
         region_states(geometry, omega, nu_m2_s, powers_W), geometry.disc_radii_m,
-        geometry.bearing_pitch_diameter_m, getattr(geometry, "bearing", None))
+        geometry.bearing_pitch_diameter_m, getattr(geometry, "bearing", None), oil)
 
 
 def cross_region_ratios(ctx: EffectContext, lam_s: float) -> list[np.ndarray]:

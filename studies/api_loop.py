@@ -84,7 +84,9 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
     DataFrame
         The input rows with ``predicted_viscous_power_W`` [W] (and ``predicted_power_W``
         [W] where a baseline was fitted) and ``prediction_note``; ``attrs``: ``stage``,
-        ``gamma`` [-], ``predicted`` (rows with a prediction), ``columns``.
+        ``gamma`` [-], ``predicted`` (rows with a prediction), ``columns``,
+        ``thermal_mode`` (the mode recorded in the model: the loop's, not the design
+        tool's default).
 
     Raises
     ------
@@ -116,7 +118,7 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
     for c in cols + [REASON]:
         res[c] = table[c].to_numpy()
     res.attrs.update(stage=stage, gamma=float(m.laws[stage].gamma), predicted=ok,
-                     columns=cols)
+                     columns=cols, thermal_mode=m.thermal_mode)
     return res
 
 

@@ -219,6 +219,20 @@ def loop_defaults(est: LoopEstimator) -> tuple[Default, ...]:
     return tuple(out)
 
 
+def oil_state_text(est: LoopEstimator) -> str | None:
+    """Which oil temperature the final model's terms read, or None if the measured one."""
+    st = getattr(est, "oil_state_", None)
+    if not st or st["applied"] == "measured":
+        return None
+    how = []
+    if st["thermal_lag_s"]:
+        how.append(f"lagged by thermal_lag {_num(st['thermal_lag_s'])} s")
+    if st["film_heating_K_W"]:
+        how.append(f"heated by film_heating {_num(st['film_heating_K_W'])} K/W")
+    return (f"every term ({', '.join(st['terms'])}) read at the {st['applied']} oil "
+            f"temperature ({'; '.join(how)}): one oil state per sample")
+
+
 def format_summary(est: LoopEstimator) -> str:
     """What ``oilgap loop`` prints: data, calibration, error table, effects, before/after."""
     d = est.data_
@@ -266,6 +280,8 @@ def format_summary(est: LoopEstimator) -> str:
         # the reason is the candidate's own status: the rule that actually rejected it
         why = f" (best candidate {best['name']}: {best['status']})" if best else ""
         lines.append("no missing effect found" + why)
+    if oil_state_text(est):
+        lines.append(f"oil state   {oil_state_text(est)}")
     for x in est.candidates_:
         if x["status"].startswith(("implausible", "not a candidate")):
             lines.append(f"  {x['name']}: {x['status']}")
@@ -415,6 +431,8 @@ def _md_effects(est: LoopEstimator) -> list[str]:
                                   f"{_num(e.ci_low, 5)} .. {_num(e.ci_high, 5)}", e.unit,
                                   f"{e.heldout_gain_pct:.1f} %", f"{e.rms_power_W:.3g}",
                                   e.reference] for e in est.effects_]), ""]
+        if oil_state_text(est):
+            parts += [f"Oil state: {oil_state_text(est)}.", ""]
         ca, cia = est.calibration_after_, est.calibration_after_ci_
         parts += ["Calibration refitted with the effects: " + ", ".join(
             f"{k} = {_num(ca[k], 5)}" + (f" [{_num(cia[k][0], 5)}, {_num(cia[k][1], 5)}]"

@@ -367,9 +367,15 @@ class _RigModel:
     def film_state(self, w, a, toil, has_oil, rough):
         """(nu, rho) of the clearance's oil, ``toil`` [degC] raised by the film's heating
         ``c P`` (solved per sample) when film heating is injected."""
-        def power_at(temp_C):
+        lam = self.cfg.injected().get("shear_thinning", 0.0)
+
+        def power_at(temp_C):  # the film's own loss: the clearance's, thinned if injected
             nu, rho = _oil_state(self.oils, has_oil, temp_C)
-            return _context(self.cfg, w, a, nu, rho, rough).power_W
+            ctx = _context(self.cfg, w, a, nu, rho, rough)
+            if not lam:
+                return ctx.power_W
+            return sum(r.power_W * q for r, q in zip(ctx.regions, cross_region_ratios(ctx, lam),
+                                                     strict=True))
 
         if self.film:
             toil = film_temperature(toil, power_at, self.film)

@@ -75,7 +75,7 @@ from oilgap.model.oils import Oil, read_oils_csv
 from oilgap.model.regions import joint_geometry
 
 from .baseline import BaselineFit, fit_baselines
-from .forward import ForwardModel
+from .forward import ForwardModel, oil_state_record
 from .least_squares import ModelFit, check_alpha, fit_model, identifiability, initial_guess
 from .model_io import FittedModel
 from .ranges import (
@@ -164,6 +164,10 @@ class LoopEstimator:
     unexplained_ : dict or None
     noise_W_ : float
         Noise level [W].
+    oil_state_ : dict
+        The oil state the final model's terms read (:func:`.forward.oil_state_record`):
+        measured, lagged and/or film-heated; in ``loop.json`` as ``oil_state`` when not
+        the measured one.
     lasso_path_ : list of dict
     pred_ : dict
         Model power per sample of each stage [W].
@@ -282,6 +286,7 @@ class LoopEstimator:
                                 "after": sel.selector.cv(final.chosen)}
         self.final_fit_, self.law_ = final.fit, final.fit.law
         self.effect_coef_ = dict(zip(final.accepted, map(float, final.fit.theta), strict=True))
+        self.oil_state_ = oil_state_record(self.effect_coef_)
         self.taylor_exponent_ = final.taylor_exponent
         self.heldout_pred_ = {"before": final.before.pred, "after": final.after.pred}
 
@@ -444,4 +449,6 @@ class LoopEstimator:
             "models": {s: law_dict(law) for s, law in zip(
                 STAGES, (self.law_without_T_, self.law_with_T_, self.law_), strict=True)},
             "model": self.fitted_model().to_dict(),
+            **({"oil_state": self.oil_state_} if self.oil_state_["applied"] != "measured"
+               else {}),
         }

@@ -34,11 +34,17 @@ from oilgap.model.effects import (
     EffectContext,
     cross_region_ratios,
     effect_context,
-    film_temperature,
     first_order_lag,
     taylor_feature,
 )
 from oilgap.model.measured_data import TEMP_STEP_K, Samples
+from oilgap.model.oil_state import (
+    OilState,
+    applied_state_name,
+    film_heated_oil_state,
+    lagged_oil_state,
+    measured_oil_state,
+)
 from oilgap.model.oils import Oil, normalize_oil_name
 from oilgap.model.regions import JointGeometry, joint_geometry, region_power
 from oilgap.model.skin_friction import FrictionLaw, groove_roughness_factor
@@ -59,6 +65,34 @@ SPEED_STEP = 1e-4
 
 SHAPE_CACHE = 4
 """Law shapes whose region powers a forward model keeps (each is regions x samples)."""
+
+
+OIL_STATE_READERS = ("bearing_ball_churning", "end_face_disc", "oil_inertia",
+                     "shear_thinning", "taylor_vortex_onset")
+"""Effects whose term reads the oil's viscosity or density (beside the clearance regions);
+the seal's Coulomb torque and the sensor delay do not depend on the oil state."""
+
+
+def oil_state_record(coefs: dict) -> dict:
+    """Which oil state the forward model's terms read under the effects ``coefs``.
+
+    Parameters
+    ----------
+    coefs : dict
+        Effect name -> coefficient (library units).
+
+    Returns
+    -------
+    dict
+        ``applied`` (measured, lagged, film-heated, lagged and film-heated), the lag
+        ``thermal_lag_s`` [s] and film coefficient ``film_heating_K_W`` [K/W] (0: none),
+        and ``terms``: the clearance regions and the effects that read that state.
+    """
+    tau = float(coefs.get("thermal_lag", 0.0))
+    c = max(0.0, float(coefs.get("film_heating", 0.0)))
+    return {"applied": applied_state_name(tau != 0.0, c > 0.0), "thermal_lag_s": tau,
+            "film_heating_K_W": c,
+            "terms": ["regions", *(n for n in coefs if n in OIL_STATE_READERS)]}
 
 
 def sample_geometry(case: DesignCase, samples: Samples) -> JointGeometry:
@@ -133,7 +167,11 @@ class ForwardModel:
                            for k in np.unique(keys[law_rows]) if k in oils]
         self._static: dict[str, np.ndarray] = {}
         self._shapes: dict[tuple, list[np.ndarray]] = {}  # law shape -> region powers
-        self._lags: dict[float, tuple] = {}  # thermal-lag tau -> (nu, rho) at the lagged T
+        self.measured = measured_oil_state(celsius_to_kelvin(s.temp_C), s.nu_m2_s,
+                                           s.density_kg_m3)
+        self._lags: dict[float, OilState] = {}  # thermal-lag tau -> the lagged oil state
+        self._features: dict[tuple, np.ndarray] = {}  # (effect, lag state key) -> feature
+        self._film_start: dict[float, np.ndarray] = {}  # lag -> last film temperature [K]
 
     def subset(self, mask: np.ndarray) -> ForwardModel:
         """Forward model of the samples where ``mask`` holds.
@@ -155,7 +193,9 @@ class ForwardModel:
         pos = np.cumsum(mask) - 1
         sub.oil_groups = [(pos[idx[mask[idx]]], oil) for idx, oil in self.oil_groups]
         sub._static = {k: v[mask] for k, v in self._static.items()}
-        sub._shapes, sub._lags = {}, {}
+        sub.measured = measured_oil_state(celsius_to_kelvin(s.temp_C), s.nu_m2_s,
+                                          s.density_kg_m3)
+        sub._shapes, sub._lags, sub._features, sub._film_start = {}, {}, {}, {}
         return sub
 
     def region_powers(self, law: FrictionLaw, omega=None, nu=None, rho=None
@@ -189,15 +229,95 @@ class ForwardModel:
         s = self.samples
         if (nu is None or nu is s.nu_m2_s) and (rho is None or rho is s.density_kg_m3):
             return None
-        return next((t for t, (n, r) in self._lags.items() if n is nu and r is rho), False)
+        return next((t for t, st in self._lags.items()
+                     if st.nu_m2_s is nu and st.density_kg_m3 is rho), False)
 
-    def _lagged_state(self, tau_s: float) -> tuple:
-        """(nu, rho) at the oil temperature lagging by ``tau_s`` [3] (the last few kept)."""
+    def _lagged_state(self, tau_s: float) -> OilState:
+        """The oil state at the temperature lagging by ``tau_s`` [3] (the last few kept)."""
         if tau_s not in self._lags:
             if len(self._lags) >= SHAPE_CACHE:
                 self._lags.pop(next(iter(self._lags)))
-            self._lags[tau_s] = self.oil_state_at(self.lagged_temperature(tau_s))
+            self._lags[tau_s] = lagged_oil_state(
+                self.measured, tau_s, celsius_to_kelvin(self.lagged_temperature(tau_s)),
+                self.oil_properties)
         return self._lags[tau_s]
+
+    def oil_state(self, law: FrictionLaw, coefs: dict | None = None) -> OilState:
+        """The one oil state of the samples under ``law`` and the effects ``coefs``.
+
+        Measured without thermal effect; lagged by ``coefs["thermal_lag"]`` [s] [3];
+        film-heated by ``coefs["film_heating"]`` [K/W] (from the lagged temperature
+        when both are in, the film's loss the clearance's under ``law``, shear
+        thinning included). Every viscosity-dependent term of :meth:`power` reads it.
+
+        Parameters
+        ----------
+        law : FrictionLaw
+            Friction law of the clearance model (the film's loss).
+        coefs : dict, optional
+            Effect name -> coefficient in the library's unit.
+
+        Returns
+        -------
+        OilState
+            Temperatures [K], viscosities [m^2/s] and densities [kg/m^3] per sample.
+        """
+        coefs = coefs or {}
+        tau = float(coefs.get("thermal_lag", 0.0))
+        state = self._lagged_state(tau) if tau else self.measured
+        c = float(coefs.get("film_heating", 0.0))
+        if not c > 0.0:
+            return state
+        lam2 = max(0.0, float(coefs.get("shear_thinning", 0.0)))
+        ratios = (cross_region_ratios(self._bare_context(state), math.sqrt(lam2))
+                  if lam2 else [1.0] * len(self.geometry.regions))
+
+        def power_at(nu, rho):  # the film's own loss: the clearance's, thinned if thinning
+            s = self.samples
+            return sum(region_power(r, s.omega, nu * q, rho, law)
+                       for r, q in zip(self.geometry.regions, ratios, strict=True))
+
+        start = self._film_start.get(tau)
+        film = film_heated_oil_state(state, c, power_at, self.oil_properties,
+                                     None if start is None else start)
+        self._film_start[tau] = film.temp_film_K  # warm start of the next iteration's film
+        return film
+
+    def _bare_context(self, state: OilState, powers=None) -> EffectContext:
+        """Effect context at an oil state, law-independent features only (no region power
+        unless ``powers`` are given)."""
+        s = self.samples
+        pw = powers if powers is not None else [np.zeros(s.n)] * len(self.geometry.regions)
+        return effect_context(self.geometry, s.omega, s.domega_dt, state.nu_m2_s,
+                              state.density_kg_m3, None, powers_W=pw, dtemp_dt_K_s=s.dtemp_dt,
+                              oil=state)
+
+    def state_feature(self, name: str, state: OilState) -> np.ndarray:
+        """Feature of a law-independent effect (disc, bearing, seal, inertia) at ``state``.
+
+        Parameters
+        ----------
+        name : str
+            Library effect.
+        state : OilState
+            The oil state its viscosity and density are read at.
+
+        Returns
+        -------
+        array
+            Power per unit coefficient [W/unit] (measured and lagged states cached).
+        """
+        if state is self.measured:
+            return self.static_feature(name)
+        key = None if state.key is None else (name, state.key)
+        if key is not None and key in self._features:
+            return self._features[key]
+        f = EFFECTS[name].feature_values(self._bare_context(state))
+        if key is not None:
+            if len(self._features) >= 4 * SHAPE_CACHE:
+                self._features.pop(next(iter(self._features)))
+            self._features[key] = f
+        return f
 
     def _law_powers(self, law: FrictionLaw, state=None) -> list[np.ndarray]:
         """Region powers at the samples' speed and a kept oil state [W]. The law's scale
@@ -209,7 +329,8 @@ class ForwardModel:
                unit.branch_alpha, unit.branch_beta, state)
         if key not in self._shapes:
             s = self.samples
-            nu, rho = (s.nu_m2_s, s.density_kg_m3) if state is None else self._lags[state]
+            st = self.measured if state is None else self._lags[state]
+            nu, rho = st.nu_m2_s, st.density_kg_m3
             if len(self._shapes) >= SHAPE_CACHE:
                 self._shapes.pop(next(iter(self._shapes)))
             self._shapes[key] = [region_power(r, s.omega, nu, rho, unit)
@@ -251,8 +372,8 @@ class ForwardModel:
         dP_dt = dP_dw * s.domega_dt + np.nan_to_num(dP_dT) * s.dtemp_dt
         return dP_dt, dP_dT
 
-    def context(self, law: FrictionLaw, derivatives: bool = True, nu=None, rho=None
-                ) -> EffectContext:
+    def context(self, law: FrictionLaw, derivatives: bool = True, nu=None, rho=None,
+                state: OilState | None = None) -> EffectContext:
         """Effect context of the samples under ``law``.
 
         Parameters
@@ -262,40 +383,44 @@ class ForwardModel:
             Compute dP/dt [W/s] (central difference in speed) and dP/dT [W/K]
             (through nu(T), rho(T)); zero if False.
         nu, rho : arrays, optional
-            Oil state per sample [m^2/s], [kg/m^3] (default: the samples').
+            Oil properties per sample [m^2/s], [kg/m^3] (default: ``state``'s).
+        state : OilState, optional
+            The oil state every term reads (default: the measured one).
 
         Returns
         -------
         EffectContext
         """
         s = self.samples
-        nu = s.nu_m2_s if nu is None else nu
-        rho = s.density_kg_m3 if rho is None else rho
+        state = self.measured if state is None else state
+        nu = state.nu_m2_s if nu is None else nu
+        rho = state.density_kg_m3 if rho is None else rho
         pw = self.region_powers(law, nu=nu, rho=rho)
         slopes = {}
         if derivatives:
             dP_dt, dP_dT = self._power_derivatives(law)
             slopes = {"dpower_dt_W_s": dP_dt, "dpower_dtemp_W_K": dP_dT}
         return effect_context(self.geometry, s.omega, s.domega_dt, nu, rho, law, powers_W=pw,
-                              dtemp_dt_K_s=s.dtemp_dt, **slopes)
+                              dtemp_dt_K_s=s.dtemp_dt, oil=state, **slopes)
 
-    def oil_state_at(self, temp_C: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Viscosity [m^2/s] and density [kg/m^3] at the oil temperature ``temp_C`` [degC].
+    def oil_properties(self, temp_K: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Viscosity [m^2/s] and density [kg/m^3] at the oil temperature ``temp_K`` [K].
 
         Parameters
         ----------
-        temp_C : array
-            Oil temperature per sample [degC].
+        temp_K : array
+            Oil temperature per sample [K].
 
         Returns
         -------
         (nu, rho)
-            Per sample; unchanged where the row has no temperature law.
+            Per sample, from each oil's Walther line and density law; unchanged where
+            the row has no temperature law (a per-row override).
         """
         nu = self.samples.nu_m2_s.copy()
         rho = self.samples.density_kg_m3.copy()
         for idx, oil in self.oil_groups:
-            nu[idx], _, rho[idx] = oil.properties(celsius_to_kelvin(temp_C[idx]), 0.0)
+            nu[idx], _, rho[idx] = oil.properties(temp_K[idx], 0.0)
         return nu, rho
 
     def lagged_temperature(self, tau_s: float) -> np.ndarray:
@@ -318,17 +443,6 @@ class ForwardModel:
         for idx in self.runs:
             out[idx] = first_order_lag(s.time_s[idx], s.temp_C[idx], tau_s)
         return out
-
-    def _film_state(self, law: FrictionLaw, c_K_W: float, tau_s: float) -> tuple:
-        """(nu, rho) at the heated film's temperature ``T + c P(T_film)`` under ``law``
-        (T: measured, or lagged by ``tau_s``), solved per sample."""
-        T = self.lagged_temperature(tau_s) if tau_s else self.samples.temp_C
-
-        def power_at(temp_C):
-            nu, rho = self.oil_state_at(temp_C)
-            return sum(self.region_powers(law, nu=nu, rho=rho))
-
-        return self.oil_state_at(film_temperature(T, power_at, c_K_W))
 
     def static_feature(self, name: str) -> np.ndarray:
         """Feature of an effect that does not depend on the friction law (cached).
@@ -374,18 +488,14 @@ class ForwardModel:
         """
         coefs = coefs or {}
         s = self.samples
-        nu = rho = None
-        if coefs.get("thermal_lag", 0.0):
-            nu, rho = self._lagged_state(coefs["thermal_lag"])
-        if coefs.get("film_heating", 0.0) > 0.0:
-            nu, rho = self._film_state(law, coefs["film_heating"], coefs.get("thermal_lag", 0.0))
+        state = self.oil_state(law, coefs)  # the one oil state every term below reads
         total = 0.0
         lam2 = max(0.0, coefs.get("shear_thinning", 0.0))
         if lam2 or coefs.get("taylor_vortex_onset", 0.0):  # effects that need the context
-            ctx = self.context(law, derivatives=False, nu=nu, rho=rho)
+            ctx = self.context(law, derivatives=False, state=state)
             pw = [r.power_W for r in ctx.regions]
         else:
-            pw = self.region_powers(law, nu=nu, rho=rho)
+            pw = self.region_powers(law, nu=state.nu_m2_s, rho=state.density_kg_m3)
         if lam2:  # the thinned viscosity enters each region's Reynolds number too
             pw = self._thinned_powers(law, ctx, math.sqrt(lam2))
         for p in pw:
@@ -394,7 +504,7 @@ class ForwardModel:
             if name in EXACT_FORMS or c == 0.0:
                 continue
             f = taylor_feature(ctx, self.taylor_exponent) if name == "taylor_vortex_onset" \
-                else self.static_feature(name)
+                else self.state_feature(name, state)
             total = total + c * f
         d = coefs.get("sensor_delay", 0.0)
         if d:

@@ -270,6 +270,22 @@ class FittedModel:
     ranges: dict = field(default_factory=dict)
     taylor_exponent: float = 2.0
 
+    @property
+    def thermal_mode(self) -> str:
+        """The thermal mode the calibrated model predicts with (recorded in ``loop.json``).
+
+        ``"none"``: every term at the measured oil temperature (the isothermal film of
+        the design tool's default); ``"film"``: the calibrated ``film_heating`` effect
+        heats the film above it. ``thermal_lag`` (an effect of its own) moves the oil
+        state under either.
+
+        Returns
+        -------
+        str
+            ``"none"`` or ``"film"`` [-].
+        """
+        return "film" if "film_heating" in self.effects else "none"
+
     @classmethod
     def from_estimator(cls, est) -> FittedModel:
         """The model of a fitted :class:`~oilgap.optim.calibration.estimator.LoopEstimator`.
@@ -300,7 +316,8 @@ class FittedModel:
         dict
             format, version, case (TOML keys: mm, degC), laws, effects, baselines
             [W per basis function], fluids, region1_gap_m [m], pressure_gauge_Pa
-            [Pa], kind, has_time, cv_by, fitted_range; ``shapes`` (the Taylor-vortex
+            [Pa], kind, has_time, cv_by, thermal_mode (:attr:`thermal_mode`),
+            fitted_range; ``shapes`` (the Taylor-vortex
             shape exponent m [-]) when that effect is in the model.
         """
         shapes = ({"shapes": {"taylor_vortex_onset": {"exponent": self.taylor_exponent}}}
@@ -314,6 +331,7 @@ class FittedModel:
                 "region1_gap_m": _enc(self.region1_gap_m),
                 "pressure_gauge_Pa": self.pressure_gauge_Pa, "kind": self.kind,
                 "has_time": self.has_time, "cv_by": self.cv_by,
+                "thermal_mode": self.thermal_mode,
                 "fitted_range": _enc(self.ranges)}
 
     @classmethod
@@ -356,13 +374,18 @@ class FittedModel:
             m = float(doc.get("shapes", {}).get("taylor_vortex_onset", {}).get("exponent", 2.0))
             if not m > 0:
                 raise InputError("model.shapes.taylor_vortex_onset.exponent", m, "> 0")
-            return cls(case, laws, effects, {b.roughness_T: b for b in base}, fluids, gap,
-                       float(doc.get("pressure_gauge_Pa", 0.0)), str(doc.get("kind", "")),
-                       bool(doc.get("has_time", True)), str(doc.get("cv_by", "run")), ranges,
-                       m)
+            model = cls(case, laws, effects, {b.roughness_T: b for b in base}, fluids, gap,
+                        float(doc.get("pressure_gauge_Pa", 0.0)), str(doc.get("kind", "")),
+                        bool(doc.get("has_time", True)), str(doc.get("cv_by", "run")), ranges,
+                        m)
         except (KeyError, TypeError, ValueError, AttributeError) as e:
             raise InputError("model", f"{type(e).__name__}: {e}", "a complete model block "
                              "written by oilgap loop is required") from None
+        recorded = doc.get("thermal_mode", model.thermal_mode)
+        if recorded != model.thermal_mode:
+            raise InputError("model.thermal_mode", recorded, f"{model.thermal_mode!r}, the "
+                             "mode its effects calibrate (film only with film_heating)")
+        return model
 
     # ------------------------------------------------------------------ predict
     def _data(self, data, oils, source: str | None) -> tuple[MeasuredData, pd.Index, dict]:

@@ -357,3 +357,70 @@ def heldout_gains(refitter: Refitter, final: FinalModel) -> dict[str, float]:
             e_rest = rmse(y - final.before.pred)
         gains[n] = 100.0 * (1.0 - rmse(y - final.after.pred) / e_rest)
     return gains
+
+
+STATE_EFFECTS = ("thermal_lag", "film_heating")
+"""Effects that move the oil state (the temperature the oil's viscosity is read at)."""
+
+STATE_READERS = ("bearing_ball_churning", "end_face_disc", "shear_thinning",
+                 "taylor_vortex_onset", "oil_inertia")
+"""Effects whose term reads the oil state (viscosity or density) beside the regions'."""
+
+
+def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, margin: float,
+                      max_effects: int, excluded=frozenset()) -> FinalModel:
+    """Nonlinear forward steps for effects read at a moved oil state.
+
+    The linearised screening evaluates every column at the measured oil state of the
+    calibration without effect. Once a thermal lag or film heating is in the model, an
+    effect that reads the oil's viscosity or density (bearing, discs, thinning, Taylor
+    excess, oil inertia) acts at the lagged or heated state: its cross term with the
+    state effect is in no linear column, and a large exact-form column of the state
+    effect can absorb it in the screening. Each such candidate is therefore refitted
+    nonlinearly with the accepted effects (one oil state, :meth:`ForwardModel.oil_state`);
+    the best is added if it lowers the held-out RMSE by ``margin`` [1], and so on up to
+    ``max_effects``.
+
+    Parameters
+    ----------
+    refitter : Refitter
+    final : FinalModel
+        After :func:`refit_selected`.
+    cands : Candidates
+    margin : float
+        Required relative fall of the held-out RMSE [-].
+    max_effects : int
+        Most effects in the model.
+    excluded : set of str
+        Effects not to add (implausible fits).
+
+    Returns
+    -------
+    FinalModel
+        ``final``, or with the added effects (logged as "nonlinear add").
+    """
+    y = refitter.model.samples.viscous_W
+    added = False
+    while (set(final.accepted) & set(STATE_EFFECTS)) and len(final.accepted) < max_effects:
+        e_now = rmse(y - final.after.pred)
+        best = None
+        for n in cands.usable:
+            if n in final.accepted or n in excluded or n not in STATE_READERS + STATE_EFFECTS:
+                continue
+            names = [*final.accepted, n]
+            fit = refitter.fit(names, final.fit.x, np.append(final.fit.theta, 0.0))
+            ho = refitter.leave_one_run_out(names, fit.x, fit.theta, fit)
+            e = rmse(y - ho.pred)
+            if best is None or e < best[0]:
+                best = (e, n, fit, ho)
+        if best is None or best[0] > e_now * (1.0 - margin):
+            break
+        e, n, fit, ho = best
+        hb = rmse(y - final.before.pred)
+        check = {"heldout_before_W": hb, "heldout_after_W": e, "gain_pct": 100 * (1 - e / hb)}
+        log = [*final.log, {"step": "nonlinear add", "added": n,
+                            "gain_pct": 100.0 * (1.0 - e / e_now)}]
+        final = FinalModel(fit, [*final.accepted, n], (*final.chosen, cands.columns_of(n)[0]),
+                           final.before, ho, check, log, final.taylor_exponent)
+        added = True
+    return _prune_nonlinear(refitter, final, margin) if added else final

@@ -28,7 +28,7 @@ from oilgap.model.oils import normalize_oil_name
 from .candidates import Candidates, screen_candidates
 from .forward import ForwardModel
 from .least_squares import ModelFit, fit_model, rescale_level
-from .refit import FinalModel, Refitter, refit_selected
+from .refit import FinalModel, Refitter, add_state_readers, refit_selected
 from .selection import Selection, select_effects
 from .spec import BaseSpec, cv_groups
 
@@ -162,6 +162,8 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
                              hold, selector)
         selector = sel.selector
         final = refit_selected(refitter, base, cands, sel, opts.margin)
+        final = add_state_readers(refitter, final, cands, opts.margin, opts.max_effects,
+                                  frozenset(implausible))
         log += sel.log + final.log
         bad = {}
         for n, c in zip(final.accepted, final.fit.theta, strict=True):

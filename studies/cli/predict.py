@@ -23,6 +23,12 @@ from oilgap.studies.api_loop import predict
 
 OUT_SUFFIXES = (".csv", ".parquet", ".pq")
 
+THERMAL_WHY = {
+    "none": "every term at the measured oil temperature, as the loop calibrated it",
+    "film": "the film heated above the measured oil by the loop's calibrated film_heating",
+}
+"""What each thermal mode of a fitted model means (the header line of ``oilgap predict``)."""
+
 
 def write_table(df: pd.DataFrame, out: Path) -> Path:
     """Write ``df`` (CSV or Parquet by suffix) atomically (a temporary file next to
@@ -52,4 +58,6 @@ def run(args: argparse.Namespace) -> int:
         print(line)
     print(f"gamma       {res.attrs['gamma']:g} (groove exponent of Eq. 8; from: the "
           f"{args.stage} model of {args.model}, as oilgap loop calibrated it)")
+    print(f"thermal     {res.attrs['thermal_mode']} (the mode recorded in {args.model}: "
+          f"{THERMAL_WHY[res.attrs['thermal_mode']]})")
     return 0

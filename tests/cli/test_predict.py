@@ -147,3 +147,30 @@ def test_predict_refuses_to_overwrite_and_bad_input(rig, tmp_path, capsys):
 def test_fluids_survive_the_json_model_document(fluid):
     doc = json.loads(json.dumps(fluid_to_dict(fluid)))
     assert fluid_from_dict(doc) == fluid
+
+
+def test_the_saved_model_records_its_thermal_mode_and_predict_uses_it(rig, tmp_path, capsys):
+    """Issue 18: a calibrated model predicts under the thermal mode recorded in loop.json
+    (the loop's, not the design tool's default), says so, and refuses a record its
+    effects contradict."""
+    csv, est = rig
+    out = tmp_path / "o"
+    assert main(["loop", str(csv), "--out", str(out), "--no-figures"]) == 0
+    doc = json.loads((out / "loop.json").read_text())
+    # no film_heating among the accepted effects: every term at the measured oil
+    assert "film_heating" not in doc["model"]["effects"]
+    assert doc["model"]["thermal_mode"] == "none"
+    capsys.readouterr()
+    assert main(["predict", str(csv), "--model", str(out / "loop.json"), "--out",
+                 str(tmp_path / "p.csv")]) == 0
+    assert "thermal     none (the mode recorded in" in capsys.readouterr().out
+    # a model with a calibrated film records film; a hand edit that disagrees is refused
+    film = dict(doc["model"], effects={**doc["model"]["effects"], "film_heating": 0.004},
+                thermal_mode="film")
+    assert FittedModel.from_dict(film).thermal_mode == "film"
+    bad = dict(doc["model"], thermal_mode="film")
+    with pytest.raises(Exception, match="model.thermal_mode"):
+        FittedModel.from_dict(bad)
+    # a file written before the record existed still reads (derived from its effects)
+    old = {k: v for k, v in doc["model"].items() if k != "thermal_mode"}
+    assert FittedModel.from_dict(old).thermal_mode == "none"

@@ -56,8 +56,8 @@ def run(args: argparse.Namespace) -> int:
           f"{', '.join(res.attrs['columns'])}); wrote {out}")
     for line in _summary(res):
         print(line)
-    print(f"gamma       {res.attrs['gamma']:g} (groove exponent of Eq. 8; from: the "
-          f"{args.stage} model of {args.model}, as oilgap loop calibrated it)")
     print(f"thermal     {res.attrs['thermal_mode']} (the mode recorded in {args.model}: "
           f"{THERMAL_WHY[res.attrs['thermal_mode']]})")
+    print(f"gamma       {res.attrs['gamma']:g} (groove exponent of Eq. 8; from: the "
+          f"{args.stage} model of {args.model}, as oilgap loop calibrated it)")
     return 0

@@ -64,9 +64,10 @@ stated default, and the tool lists it.
 What you will see:
 
 1. the mean viscous loss over the duty cycle, region by region, in W;
-2. the same joint under the three thermal models side by side (`none`: the seed paper's
-   isothermal oil; `film`: the film heats itself as it is sheared; `full`: the oil's
-   temperature comes out of the heat balance with the sea);
+2. the same joint under the four thermal models side by side (`none`: the seed paper's
+   isothermal oil at the given temperature; `bulk`, the default with a `[thermal]` table:
+   the oil's temperature comes out of the heat balance with the sea, the film stays
+   isothermal at it; `film`: the film heats itself as it is sheared; `full`: both);
 3. the optimized clearance (R, δ, L, the epoxy fill of the grooves) and what it saves;
 4. the optimized design written as a case file, read back and evaluated again.
 """),
@@ -84,8 +85,12 @@ print(case.name, "| oil", case.oil.name, "| thermal table:", case.thermal is not
     md("""
 ## Evaluate
 
-With a `[thermal]` table the default thermal model is `full`: the oil settles where the
-loss heats it as fast as the sea cools it. The table gives the mean power of each region
+With a `[thermal]` table the default thermal model is `bulk`: the oil settles where the
+loss heats it as fast as the sea cools it, and the clearance's film is isothermal at that
+temperature, the model the only measurements in oil (the seed paper's Table 4) support.
+What film heating at full strength would give is printed beside the loss as the *film
+band*, with its evidence (`docs/thermal.md#evidence`). The table gives the mean power of
+each region
 over the duty cycle [W], its peak Reynolds number (laminar below ~2000 in these narrow
 gaps) and the flow regimes visited.
 """),
@@ -95,23 +100,25 @@ ev'''),
     code('''
 ev.to_frame()'''),
     md("""
-## The three thermal models side by side
+## The four thermal models side by side
 
 The same joint, the same duty cycle: only what the oil's temperature is taken to be
-changes. `none` is the seed paper's model (oil at 4 °C throughout), `film` lets the sheared
-film heat itself (the Nahme number says how much), `full` adds the joint's heat balance
-(the bulk oil runs above the sea by R × P). Cold VG 32 is viscous: the isothermal model
-overstates the loss several-fold.
+changes. `none` is the seed paper's model (oil at 4 °C throughout); `bulk` (the default
+here) adds the joint's heat balance (the bulk oil runs above the sea by R × P); `film` lets
+the sheared film heat itself at 4 °C (the Nahme number says how much); `full` does both.
+Cold VG 32 is viscous: at the sea's temperature the loss is several times what the heat
+balance gives. The film's own heating would lower it further; the seed paper's
+measurements do not support it at full strength, so it is an option, not the default.
 """),
     code('''
-modes = {m: og.evaluate(case, thermal=m) for m in ("none", "film", "full")}
+modes = {m: og.evaluate(case, thermal=m) for m in ("none", "bulk", "film", "full")}
 side = pd.DataFrame({m: {"oil temperature [degC]": e.to_dict()["oil_temp_C"],
                          "viscosity at that temperature [cSt]": e.to_dict()["nu_cSt"],
                          "mean viscous loss [W]": e.to_dict()["total_mean_power_W"]}
                      for m, e in modes.items()})
 side.round(2)'''),
     code('''
-fig, axes = plt.subplots(1, 3, figsize=(12, 3.5), sharey=True)
+fig, axes = plt.subplots(1, 4, figsize=(15, 3.5), sharey=True)
 for ax, (m, e) in zip(axes, modes.items(), strict=True):
     e.plot(ax=ax)
     ax.set_title(f"thermal = {m}")
@@ -141,9 +148,9 @@ opt.to_frame()'''),
 
 The optimized design is an ordinary case: write it, read it back, evaluate it like the
 original (`oilgap optimize my_joint.toml --out my_joint_opt.toml` does the same from the
-command line). `opt.raw` is the module-level result: under `full` a comparison whose
-`heated` optimum is the design. The two evaluations below use the same model (`full`), so
-the difference is the design alone.
+command line). `opt.raw` is the module-level result: under `bulk` a comparison whose
+`heated` optimum (on the heat balance) is the design. The two evaluations below use the
+same model (`bulk`, the default), so the difference is the design alone.
 """),
     code('''
 from oilgap.model.case_write import write_case_toml  # the façade has no case writer (yet)
@@ -183,8 +190,10 @@ needs? The **inertia front** answers the same for the allowed rotor inertia: how
 does each extra per cent of inertia buy back?
 
 Each point is one IPOPT solve, warm-started from its neighbour (ε-constraint method). The
-study uses the seed paper's isothermal model (oil at the case's 4 °C), so the numbers are
-upper bounds on what `full` would give. 50 points per front (the minimum the study
+study takes the same thermal model as `og.evaluate` and `og.optimize`: with the case's
+`[thermal]` table the default `bulk`, the oil temperature a variable of each solve and the
+heat balance an equality (`thermal="none"` for the isothermal fronts at 4 °C). Its mode is
+named in the header and the figure titles. 50 points per front (the minimum the study
 accepts) take about a second.
 """),
     code(setup("02_pareto", "import matplotlib.pyplot as plt")),
@@ -216,9 +225,10 @@ fig.tight_layout()'''),
     md("""
 ## Reading the front
 
-The marker is your design as drawn (isothermal, hence far above the front: its grooves and
-gap are not the loss-optimal ones). Going from the loss-optimal gap down to the smallest
-allowed gap (half the case's) almost doubles the loss; on the inertia front, a rotor
+The marker is your design as drawn, under the same model (far above the front: its
+grooves and gap are not the loss-optimal ones; its film band is printed under the fronts).
+Going from the loss-optimal gap down to the smallest
+allowed gap (half the case's) raises the loss by about half; on the inertia front, a rotor
 lighter than the case's costs loss steeply, a heavier one buys little. The hypervolume
 (mm W) summarises the gap front in one number (larger is better, measured from the
 reference point in the header above). The files written (CSV, PNG, `summary.md`,
@@ -248,9 +258,10 @@ mission (Wh over 8 h).
 
 The mission is in `mission.csv` (depth, temperature and the fraction of the running time
 of each segment): a few minutes of deck checks at 15 °C, the descent, most of the time at
-the rated 4000 m. With the case's `[thermal]` table the study runs under `full`: each
-segment's temperature is the **sea's**, and every grade's operating temperature comes out of
-its own heat balance (a thicker grade loses more and runs hotter). The envelope below is
+the rated 4000 m. With the case's `[thermal]` table the study runs under its default,
+`bulk`: each segment's temperature is the **sea's**, and every grade's operating
+temperature comes out of its own heat balance (a thicker grade loses more and runs
+hotter). The envelope below is
 this joint's: 0–4500 m, sea 0–30 °C, on a coarse grid (500 m × 5 K: `n_depth=10`,
 `n_temp=7`; the default grid is finer and takes a few seconds more). Add
 `out="some/folder"` to write the CSVs, figures and `summary.md` that
@@ -282,7 +293,7 @@ fig, ax = plt.subplots(figsize=(10, 4))
 grade.plot(ax=ax)
 fig.tight_layout()'''),
     md("""
-With film heating and the heat balance each grade runs warmer than the sea; the isothermal
+With the heat balance each grade runs warmer than the sea; the isothermal
 study (the seed paper's model, the oil at the sea's temperature) is run beside it, and the
 header says whether the recommendation changes and why. The last lines are the answer.
 """),

@@ -19,8 +19,8 @@ CASE = re.search(r"`my_joint.toml`:\n\n```toml\n(.*?)```", TEXT, re.S).group(1)
 BLOCKS = re.findall(r"```python\n(.*?)```", TEXT, re.S)
 
 PROMISED = [  # what each block prints, as its comments say
-    ["88.7 W film", "45.5 W", "49.453 W"],
-    ["0.800000  4.75     88.746954", "1.185106  1.00     34.155525"],
+    ["141.3 W none", "9.155", "53.5 W", "49.453 W"],
+    ["0.800000  4.75    141.40", "1.185106  1.00     50.04"],
     ["60 98.90 mm W", "1.185106     50.041298", "0.400000     93.824761"],
     ["VG15 VG22"],
     ["('seal_coulomb_friction', 0.04027)", "'before': 5.238", "'after': 1.125"],

@@ -100,7 +100,7 @@ def test_python3_kernelspec_comes_with_ipykernel():
 def test_01_evaluate_and_optimize(tmp_path, monkeypatch):
     found = execute("01_my_joint_evaluate_optimize.ipynb", tmp_path, monkeypatch)
     c = case()
-    before = evaluate_case(c, thermal=None).total_mean_power_W  # full: the case's default
+    before = evaluate_case(c, thermal=None).total_mean_power_W  # bulk: the case's default
     heated = compare_heating(DesignProblem(c, thermal=None)).heated
     after = evaluate_case(heated.to_case(), thermal=None).total_mean_power_W
     printed(found, "mean loss as designed", before)

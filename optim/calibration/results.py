@@ -117,10 +117,11 @@ def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray,
             m = final.taylor_exponent
             shape = {"exponent": m}
             formula = formula.replace(")^2 - 1)", f")^{m:g} - 1)")
+        lo, hi = float(ci[0][i]), min(float(ci[1][i]), eff.upper)  # within the fit's bound
         if n == "film_heating":
-            shape = film_shape(model, c, (float(ci[0][i]), float(ci[1][i])))
+            shape = film_shape(model, c, (lo, hi))
         out.append(EffectResult(
-            n, eff.title, formula, eff.reference, c, float(ci[0][i]), float(ci[1][i]),
+            n, eff.title, formula, eff.reference, c, lo, hi,
             eff.unit, float(eff.strength_from_coefficient(c)), eff.strength_unit, gains[n],
             rmse(only), shape))
     return out
@@ -143,7 +144,7 @@ def film_shape(model: ForwardModel, s: float, ci: tuple[float, float]) -> dict:
     s : float
         Fitted film strength [-] (bounded to [0, 1] in the fit).
     ci : (float, float)
-        Its 95 % interval [-].
+        Its 95 % interval, the upper end at most 1 [-].
 
     Returns
     -------
@@ -167,10 +168,10 @@ def film_shape(model: ForwardModel, s: float, ci: tuple[float, float]) -> dict:
                  f"{model.film_wall:g} or hotter; a hotter film (walls above the sensor, or a "
                  "heating the film law does not hold) is not explained by it and may be taken "
                  "up by other effects")
-    return {"film_strength": s, "film_strength_ci": [ci[0], min(ci[1], 1.0)],
+    return {"film_strength": s, "film_strength_ci": list(ci),
             "wall_floating": model.film_wall, "film_theory_K_W": theory,
             "film_heating_K_W": s * theory,
-            "film_heating_K_W_ci": [ci[0] * theory, min(ci[1], 1.0) * theory],
+            "film_heating_K_W_ci": [ci[0] * theory, ci[1] * theory],
             "at_bound": bound}
 
 

@@ -83,7 +83,8 @@ class RigFacts:
         The ``film_heating`` coefficient of the smooth-film theory (strength 1,
         isothermal walls, k = 0.13 W/(m K)) on the rotor-stator clearance [K/W]
         (:func:`~oilgap.model.film_heating.film_theory_coefficient`; nan: unknown): a
-        fitted c is the film strength ``s = c / film_theory_K_W``.
+        film coefficient c is the film strength ``s = c / film_theory_K_W`` (the loop's
+        ``film_heating`` fits s itself since issue 18).
     """
 
     fluids: tuple[FluidFacts, ...]
@@ -266,13 +267,6 @@ def _churning_bounds(f: RigFacts) -> tuple[float, float]:
     return 0.0, SKF_CORRECTION_MAX
 
 
-def _film_bounds(f: RigFacts) -> tuple[float, float]:
-    # uniform dissipation in a film of thickness delta and area A: mean rise P delta/(12 k A)
-    # with both walls at the measured temperature, P delta/(3 k A) with an insulated rotor;
-    # the bound delta/(k A) leaves three times that for the walls above the sensor
-    return 0.0, f.film_resistance_K_W
-
-
 PLAUSIBLE = {
     "end_face_disc": Plausibility(
         0.0, 50.0, "k = 1 is the free disc on both faces; an enclosed face in laminar "
@@ -319,14 +313,12 @@ PLAUSIBLE = {
         "0.2 s for the IEC 61000-4-30 10/12-cycle interval, about 1 s for slow power "
         "analysers; 2 s is the bound", "IEC 61000-4-30:2015 sec. 5.2"),
     "film_heating": Plausibility(
-        0.0, np.inf, "uniform dissipation in a film of thickness delta and wetted area "
-        "A = 2 pi R L raises its mean temperature by P delta/(12 k A) with both walls at the "
-        "measured temperature and by P delta/(3 k A) with an insulated rotor (c/(delta/(12 "
-        "k A)) is the film strength s of the Nahme-Griffith film, RigFacts.film_strength); "
-        "c <= delta/(k A) "
-        f"(the largest of the clearances, k = {FILM_CONDUCTIVITY_MIN_W_MK} W/(m K)) leaves "
-        "three times the insulated film's rise for walls above the sensor",
-        "Bird, Stewart & Lightfoot 2002 sec. 10.4; Nahme 1940", bounds=_film_bounds),
+        0.0, 1.0, "the film strength s scales the Nahme number of the smooth laminar film, "
+        "c = s delta (1 + 3w)/(12 k A) with A = 2 pi R L (s = 1: the smooth-film theory, "
+        "the mean rise of uniform dissipation with the walls held by w); the fit bounds s "
+        "to [0, 1], and s at 1 is at the smooth-film theory's bound: a film hotter than "
+        "the theory allows (walls above the sensor, w > 0, or another heating) is "
+        "absorbed there", "Bird, Stewart & Lightfoot 2002 sec. 10.4; Nahme 1940"),
 }
 """Plausible range of each library effect's coefficient, with its basis and reference."""
 

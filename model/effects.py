@@ -82,10 +82,10 @@ from .effect_plausibility import (
     RigFacts,
 )
 from .errors import InputError
+from .film_heating import film_temperature, film_theory_coefficient
 from .regions import JointGeometry, region_power
 from .skin_friction import FrictionLaw
 from .taylor_couette import couette_reynolds, taylor_number
-from .thermal import steady_temperature
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from .bearing import BearingSpec
@@ -339,52 +339,11 @@ def _f_thermal(c: EffectContext):
     return thermal_lag_power(d, c.dtemp_dt_K_s, 1.0)
 
 
-def _f_film(c: EffectContext):
+def _f_film(c: EffectContext):  # per unit strength s: c_theory P dP/dT, isothermal walls
     d = np.nan_to_num(np.asarray(c.dpower_dtemp_W_K, dtype=float), nan=0.0)
-    return d * c.power_W
-
-
-def film_temperature(temp_C, power_at: Callable[[np.ndarray], np.ndarray],
-                     coefficient_K_W: float) -> np.ndarray:
-    """Film temperature of the lumped heated film, ``T_f = T + c P(T_f)`` per sample [4].
-
-    The same fixed point as the bulk balance ``T = T_base + R P(T)`` with ``T_base = T``
-    and ``R = c``, solved by its one solver,
-    :func:`~oilgap.model.thermal.steady_temperature` (safeguarded Newton, vectorised
-    over the samples): ``g(T_f) = T_f - T - c P(T_f)`` rises (P falls with the
-    temperature), so the root is unique, between ``T`` and ``T + c P(T)``.
-
-    Parameters
-    ----------
-    temp_C : array
-        Measured (or lagged) oil temperature per sample [degC] (any shape).
-    power_at : callable
-        Temperature [degC] per sample (shape of ``temp_C``) -> the clearance's viscous
-        power [W] per sample.
-    coefficient_K_W : float
-        Film rise per watt of the clearance's loss, c [K/W] (>= 0).
-
-    Returns
-    -------
-    ndarray
-        Film temperature per sample [degC], to 1e-9 K on the residual.
-
-    Raises
-    ------
-    SolverError
-        The fixed point did not converge.
-    """
-    T = np.asarray(temp_C, dtype=float)
-    n = T.size
-    if n == 0 or coefficient_K_W == 0:
-        return T.copy()
-
-    def stacked(temps):  # k temperatures of every sample, sample index fastest
-        return np.concatenate([np.broadcast_to(power_at(part.reshape(T.shape)), T.shape)
-                               .ravel() for part in temps.reshape(-1, n)])
-
-    tf, _ = steady_temperature(stacked, T.ravel(), coefficient_K_W, n)
-    return tf.reshape(T.shape)
+    g = c.regions[0]
+    return d * c.power_W * film_theory_coefficient(float(np.max(g.gap_m)), g.radius_m,
+                                                   g.length_m)
 
 
 def taylor_feature(c: EffectContext, exponent: float = 2.0):
@@ -461,6 +420,9 @@ class Effect:
     time_dependent : bool
         True if the effect needs a time record (rates or lags): not a candidate
         on steady-point data.
+    upper : float
+        Upper bound of the coefficient in the fit [unit] (inf: none; 1 for the film
+        strength, the smooth-film theory's bound).
     """
 
     name: str
@@ -476,6 +438,7 @@ class Effect:
     strength_from_coefficient: Callable[[float], float] = float
     plausible: Plausibility | None = None
     time_dependent: bool = False
+    upper: float = np.inf
 
     def implausibility(self, coefficient: float, facts: RigFacts) -> str | None:
         """Why a fitted coefficient is implausible on this rig, or None if it is plausible.
@@ -564,10 +527,10 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
            "d (delay of the power reading behind the speed reading)", "s", True, _f_delay,
            "s"),
     Effect("film_heating", "viscous heating of the film",
-           "c P dP/dT  (T_film = T_meas + c P(T_film), first order)",
-           "Nahme 1940 (Ing.-Arch. 11:191), the lumped film of oilgap.model.film_heating",
-           "c (film temperature rise per watt of the clearance's loss)", "K/W", True,
-           _f_film, "K/W"),
+           "c P dP/dT, c = s delta (1 + 3w)/(12 k 2 pi R L)  (T_film = T_meas + c P(T_film), "
+           "first order)", "Nahme 1940 (Ing.-Arch. 11:191), the lumped film of "
+           "oilgap.model.film_heating", "s (film strength: 1 = the smooth-film theory; wall "
+           "condition w held unless identified)", "-", True, _f_film, "-", upper=1.0),
 )}
 """The candidate-effect library, by stable name."""
 

@@ -84,16 +84,20 @@ References
    Plenum 1969, ch. 7 (the slab problem theta'' = -lambda exp(theta)).
 .. [6] H. S. Carslaw, J. C. Jaeger, *Conduction of Heat in Solids*, 2nd ed., Oxford
    1959, sec. 3.3 (slab eigenmodes; the slowest decays as exp(-pi^2 alpha t/h^2)).
+.. [7] The lumped film of the loop's ``film_heating`` effect, ``T_f = T + c P(T_f)``:
+   :func:`film_temperature` and :func:`film_theory_coefficient`.
 """
 
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
 from . import _math as m
 from .errors import InputError
+from .thermal import steady_temperature
 
 WALL_CONDITIONS = ("isothermal-walls", "adiabatic-rotor")
 """Thermal conditions of the film's walls: both at the bulk oil temperature (default),
@@ -429,3 +433,46 @@ def film_strength_of(coefficient_K_W, theory_K_W):
     Nahme [1]_ (first-order equivalence, :func:`film_theory_coefficient`).
     """
     return coefficient_K_W / theory_K_W
+
+
+def film_temperature(temp_C, power_at: Callable[[np.ndarray], np.ndarray],
+                     coefficient_K_W: float) -> np.ndarray:
+    """Film temperature of the lumped heated film, ``T_f = T + c P(T_f)`` per sample [7]_.
+
+    The same fixed point as the bulk balance ``T = T_base + R P(T)`` with ``T_base = T``
+    and ``R = c``, solved by its one solver,
+    :func:`~oilgap.model.thermal.steady_temperature` (safeguarded Newton, vectorised
+    over the samples): ``g(T_f) = T_f - T - c P(T_f)`` rises (P falls with the
+    temperature), so the root is unique, between ``T`` and ``T + c P(T)``.
+
+    Parameters
+    ----------
+    temp_C : array
+        Measured (or lagged) oil temperature per sample [degC] (any shape).
+    power_at : callable
+        Temperature [degC] per sample (shape of ``temp_C``) -> the clearance's viscous
+        power [W] per sample.
+    coefficient_K_W : float
+        Film rise per watt of the clearance's loss, c [K/W] (>= 0).
+
+    Returns
+    -------
+    ndarray
+        Film temperature per sample [degC], to 1e-9 K on the residual.
+
+    Raises
+    ------
+    SolverError
+        The fixed point did not converge.
+    """
+    T = np.asarray(temp_C, dtype=float)
+    n = T.size
+    if n == 0 or coefficient_K_W == 0:
+        return T.copy()
+
+    def stacked(temps):  # k temperatures of every sample, sample index fastest
+        return np.concatenate([np.broadcast_to(power_at(part.reshape(T.shape)), T.shape)
+                               .ravel() for part in temps.reshape(-1, n)])
+
+    tf, _ = steady_temperature(stacked, T.ravel(), coefficient_K_W, n)
+    return tf.reshape(T.shape)

@@ -86,7 +86,8 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
         [W] where a baseline was fitted) and ``prediction_note``; ``attrs``: ``stage``,
         ``gamma`` [-], ``predicted`` (rows with a prediction), ``columns``,
         ``thermal_mode`` (the mode recorded in the model: the loop's, not the design
-        tool's default).
+        tool's default), and with ``film_heating`` in the model ``film_strength`` s [-]
+        and ``wall_floating`` w [-].
 
     Raises
     ------
@@ -119,6 +120,9 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
         res[c] = table[c].to_numpy()
     res.attrs.update(stage=stage, gamma=float(m.laws[stage].gamma), predicted=ok,
                      columns=cols, thermal_mode=m.thermal_mode)
+    if "film_heating" in m.effects:
+        res.attrs.update(film_strength=float(m.effects["film_heating"]),
+                         wall_floating=float(m.film_wall))
     return res
 
 

@@ -228,7 +228,8 @@ def oil_state_text(est: LoopEstimator) -> str | None:
     if st["thermal_lag_s"]:
         how.append(f"lagged by thermal_lag {_num(st['thermal_lag_s'])} s")
     if st["film_heating_K_W"]:
-        how.append(f"heated by film_heating {_num(st['film_heating_K_W'])} K/W")
+        how.append(f"heated by film_heating, film strength s = {_num(st['film_strength'])} "
+                   f"(c = {_num(st['film_heating_K_W'])} K/W)")
     return (f"every term ({', '.join(st['terms'])}) read at the {st['applied']} oil "
             f"temperature ({'; '.join(how)}): one oil state per sample")
 

@@ -56,6 +56,7 @@ from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.thermal import lumped_temperature_rate
 from oilgap.model.units import ZERO_CELSIUS_K, rad_s_to_rpm, rpm_to_rad_s
 from oilgap.optim.calibration import LoopEstimator
+from oilgap.optim.calibration.forward import case_film_theory_K_W
 
 DEFAULT_STRENGTH = {
     "end_face_disc": 4.0,
@@ -67,7 +68,7 @@ DEFAULT_STRENGTH = {
     "taylor_vortex_onset": 1.0,
     "shear_thinning": 7.5e-5,
     "sensor_delay": 0.2,
-    "film_heating": 0.004,
+    "film_heating": 0.015,
 }
 """Strength of each effect when ``--strength`` is not given (unit: Effect.strength_unit)."""
 
@@ -361,12 +362,13 @@ class _RigModel:
         self.w0 = rpm_to_rad_s(cfg.peak_speed_rpm)
         self.two_pi_f = 2.0 * np.pi * cfg.frequency_hz
         self.lag = cfg.injected().get("thermal_lag", 0.0)
-        self.film = cfg.injected().get("film_heating", 0.0)
+        self.film = cfg.injected().get("film_heating", 0.0) * case_film_theory_K_W(cfg.case)
         self.sol = None
 
     def film_state(self, w, a, toil, has_oil, rough):
         """(nu, rho) of the clearance's oil, ``toil`` [degC] raised by the film's heating
-        ``c P`` (solved per sample) when film heating is injected."""
+        ``c P`` (solved per sample) when film heating is injected: c = s c_theory(w), the
+        injected film strength s times the case's ``case_film_theory_K_W``."""
         lam = self.cfg.injected().get("shear_thinning", 0.0)
 
         def power_at(temp_C):  # the film's own loss: the clearance's, thinned if injected

@@ -24,6 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from oilgap.model.effects import EFFECTS, taylor_feature
+from oilgap.model.film_heating import film_theory_coefficient
 from oilgap.model.measured_data import Samples
 from oilgap.model.regions import JointGeometry
 
@@ -54,8 +55,8 @@ def exact_form_variants(name: str, s: Samples, geometry: JointGeometry) -> tuple
     Returns
     -------
     tuple of float
-        Thermal lag tau [s], sensor delay d [s], film heating c [K/W] (film rises of
-        1-30 K at the largest loss), shear thinning lambda^2
+        Thermal lag tau [s], sensor delay d [s], film strength s [-] (film rises of
+        1-30 K at the largest loss, s <= 1), shear thinning lambda^2
         [s^2] (at lambda gamma_dot_max = 0.5, 1, 2) or the Taylor-vortex shape
         exponent m [-] (other than the linear feature's 2); empty for other effects.
     """
@@ -65,9 +66,12 @@ def exact_form_variants(name: str, s: Samples, geometry: JointGeometry) -> tuple
         return (-30.0, -10.0, -3.0, -1.0, 1.0, 3.0, 10.0, 30.0)
     if name == "sensor_delay":
         return (0.5, 1.0, 2.0, 5.0)
-    if name == "film_heating":  # film rises of 1, 3, 10 and 30 K at the largest loss
+    if name == "film_heating":  # strengths of film rises of 1-30 K at the largest loss, <= 1
         pmax = float(np.max(np.abs(np.nan_to_num(s.viscous_W))))
-        return tuple(dT / pmax for dT in (1.0, 3.0, 10.0, 30.0)) if pmax > 0 else ()
+        g = geometry.regions[0]
+        c0 = float(film_theory_coefficient(float(np.max(g.gap_m)), g.radius_m, g.length_m))
+        return tuple(dT / (pmax * c0) for dT in (1.0, 3.0, 10.0, 30.0)
+                     if dT / (pmax * c0) <= 1.0) if pmax > 0 else ()
     if name == "shear_thinning":
         gmax = float(np.max(np.abs(s.omega) * geometry.regions[0].radius_m / s.gap1_m))
         return tuple((c / gmax) ** 2 for c in (0.5, 1.0, 2.0)) if gmax > 0 else ()

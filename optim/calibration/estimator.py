@@ -75,6 +75,7 @@ from oilgap.model.oils import Oil, read_oils_csv
 from oilgap.model.regions import joint_geometry
 
 from .baseline import BaselineFit, fit_baselines
+from .film_wall import case_film_wall, wall_identifiability
 from .forward import ForwardModel, oil_state_record
 from .least_squares import ModelFit, check_alpha, fit_model, identifiability, initial_guess
 from .model_io import FittedModel
@@ -209,7 +210,8 @@ class LoopEstimator:
         self.baselines_, s = self._load_samples(data)
         self.samples_ = s
         # 2. forward model; 3. Table 3: without T (published law, gamma = 0), with T (base)
-        model = self.forward_model_ = ForwardModel(s, case, data.oils)
+        model = self.forward_model_ = ForwardModel(s, case, data.oils,
+                                                   film_wall=case_film_wall(case))
         self.law_without_T_ = replace(case.friction, gamma=0.0)
         spec, base, stmt = self._calibrate(model, case)
         # 4. residual structure of the calibration; its parameters against their ranges
@@ -226,12 +228,18 @@ class LoopEstimator:
         self.identifiability_ = self._identifiability(stmt, free)
         final = replace(search.final, before=free.final.before)
         model.taylor_exponent = search.refitter.model.taylor_exponent = final.taylor_exponent
+        final, w, self.identifiability_["wall_floating"] = wall_identifiability(
+            search.refitter, final, case_film_wall(case), self.margin)
+        model.film_wall = search.refitter.model.film_wall = w
         self._store_final(search, final)
         # 7. confidence intervals (jackknife over groups, log space for C and the scale)
         self._intervals(free, search, no_signal is not None)
         ci = effect_ci(search.spec, final.fit, final.after.folds, s, self.baselines_)
         # 8. results
         self.effects_ = effect_results(model, final, ci, heldout_gains(search.refitter, final))
+        self.findings_ += [{"kind": "at bound", "parameter": e.name, "value": e.coefficient,
+                            "message": e.shape["at_bound"], "held_at": None}
+                           for e in self.effects_ if (e.shape or {}).get("at_bound")]
         self.candidates_ = candidate_statuses(search.cands, search.selection, final, sigma,
                                               self.margin, self.min_explained,
                                               search.implausible)
@@ -286,7 +294,8 @@ class LoopEstimator:
                                 "after": sel.selector.cv(final.chosen)}
         self.final_fit_, self.law_ = final.fit, final.fit.law
         self.effect_coef_ = dict(zip(final.accepted, map(float, final.fit.theta), strict=True))
-        self.oil_state_ = oil_state_record(self.effect_coef_)
+        self.oil_state_ = oil_state_record(self.effect_coef_,
+                                           search.refitter.model.film_theory_K_W)
         self.taylor_exponent_ = final.taylor_exponent
         self.heldout_pred_ = {"before": final.before.pred, "after": final.after.pred}
 

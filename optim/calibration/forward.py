@@ -50,6 +50,8 @@ from oilgap.model.regions import JointGeometry, joint_geometry, region_power
 from oilgap.model.skin_friction import FrictionLaw, groove_roughness_factor
 from oilgap.model.units import celsius_to_kelvin
 
+from .film_wall import case_film_theory_K_W
+
 EXACT_FORMS = ("thermal_lag", "sensor_delay", "shear_thinning", "film_heating")
 """Effects refitted with their full nonlinear form (the regression feature is its first
 order): the first-order lag of the oil temperature, the time shift of the power
@@ -73,25 +75,29 @@ OIL_STATE_READERS = ("bearing_ball_churning", "end_face_disc", "oil_inertia",
 the seal's Coulomb torque and the sensor delay do not depend on the oil state."""
 
 
-def oil_state_record(coefs: dict) -> dict:
+def oil_state_record(coefs: dict, film_theory_K_W: float = 0.0) -> dict:
     """Which oil state the forward model's terms read under the effects ``coefs``.
 
     Parameters
     ----------
     coefs : dict
-        Effect name -> coefficient (library units).
+        Effect name -> coefficient (library units; ``film_heating``: the strength s).
+    film_theory_K_W : float
+        The film coefficient at s = 1 under the model's wall condition
+        (:attr:`ForwardModel.film_theory_K_W`) [K/W].
 
     Returns
     -------
     dict
         ``applied`` (measured, lagged, film-heated, lagged and film-heated), the lag
-        ``thermal_lag_s`` [s] and film coefficient ``film_heating_K_W`` [K/W] (0: none),
-        and ``terms``: the clearance regions and the effects that read that state.
+        ``thermal_lag_s`` [s], the film strength ``film_strength`` [-] and its film
+        coefficient ``film_heating_K_W`` = s c_theory [K/W] (0: none), and ``terms``:
+        the clearance regions and the effects that read that state.
     """
     tau = float(coefs.get("thermal_lag", 0.0))
-    c = max(0.0, float(coefs.get("film_heating", 0.0)))
-    return {"applied": applied_state_name(tau != 0.0, c > 0.0), "thermal_lag_s": tau,
-            "film_heating_K_W": c,
+    s = max(0.0, float(coefs.get("film_heating", 0.0)))
+    return {"applied": applied_state_name(tau != 0.0, s > 0.0), "thermal_lag_s": tau,
+            "film_strength": s, "film_heating_K_W": s * float(film_theory_K_W),
             "terms": ["regions", *(n for n in coefs if n in OIL_STATE_READERS)]}
 
 
@@ -150,12 +156,18 @@ class ForwardModel:
         Samples whose viscosity follows each oil's temperature law.
     taylor_exponent : float
         Shape exponent m of the Taylor-vortex excess (:data:`TAYLOR_SHAPES`) [-].
+    film_wall : float
+        Wall condition w in [0, 1] of the ``film_heating`` effect (0 isothermal walls,
+        1 insulated rotor) [-]: the film coefficient is ``s`` times
+        :attr:`film_theory_K_W`.
     """
 
     def __init__(self, samples: Samples, case: DesignCase, oils: dict[str, Oil],
-                 taylor_exponent: float = 2.0):
+                 taylor_exponent: float = 2.0, film_wall: float = 0.0):
         s = samples
         self.taylor_exponent = float(taylor_exponent)
+        self.film_wall = float(film_wall)
+        self._film_c0: float | None = None  # c_theory at w = 0 [K/W]
         self.samples = s
         self.case = case
         self.geometry = sample_geometry(case, s)
@@ -172,6 +184,16 @@ class ForwardModel:
         self._lags: dict[float, OilState] = {}  # thermal-lag tau -> the lagged oil state
         self._features: dict[tuple, np.ndarray] = {}  # (effect, lag state key) -> feature
         self._film_start: dict[float, np.ndarray] = {}  # lag -> last film temperature [K]
+
+    @property
+    def film_theory_K_W(self) -> float:
+        """The film coefficient c of strength s = 1 at the wall condition :attr:`film_wall`
+        on the case's rotor-stator clearance [K/W]: ``delta (1 + 3w)/(12 k 2 pi R L)``
+        (:func:`~oilgap.model.film_heating.film_theory_coefficient`; the case's gap, so
+        that a fitted model predicts any rows with the coefficient it was fitted with)."""
+        if self._film_c0 is None:
+            self._film_c0 = case_film_theory_K_W(self.case, 0.0)
+        return self._film_c0 * (1.0 + 3.0 * self.film_wall)
 
     def subset(self, mask: np.ndarray) -> ForwardModel:
         """Forward model of the samples where ``mask`` holds.
@@ -246,7 +268,8 @@ class ForwardModel:
         """The one oil state of the samples under ``law`` and the effects ``coefs``.
 
         Measured without thermal effect; lagged by ``coefs["thermal_lag"]`` [s] [3];
-        film-heated by ``coefs["film_heating"]`` [K/W] (from the lagged temperature
+        film-heated by ``coefs["film_heating"]``, the film strength s [-], at ``c = s``
+        :attr:`film_theory_K_W` [K/W] (from the lagged temperature
         when both are in, the film's loss the clearance's under ``law``, shear
         thinning included). Every viscosity-dependent term of :meth:`power` reads it.
 
@@ -265,7 +288,7 @@ class ForwardModel:
         coefs = coefs or {}
         tau = float(coefs.get("thermal_lag", 0.0))
         state = self._lagged_state(tau) if tau else self.measured
-        c = float(coefs.get("film_heating", 0.0))
+        c = float(coefs.get("film_heating", 0.0)) * self.film_theory_K_W
         if not c > 0.0:
             return state
         lam2 = max(0.0, float(coefs.get("shear_thinning", 0.0)))

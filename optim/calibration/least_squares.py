@@ -127,7 +127,7 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
 
     Unknowns: the free base parameters (C, scale as logarithms, within their
     box) and one coefficient per effect, bounded below by 0 where the library
-    says so; effect coefficients
+    says so and above by its ``upper`` (the film strength by 1); effect coefficients
     are scaled by ``scale`` for conditioning. The Jacobian is by central
     differences of the model; the solver is SciPy's trust-region reflective [2].
 
@@ -168,14 +168,15 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
                         np.ones(0), (), np.zeros(0))
     sc = np.ones(k) if scale is None else np.where(np.asarray(scale) > 0, scale, 1.0)
     lo_t = np.array([0.0 if EFFECTS[n].nonnegative else -np.inf for n in names])
-    t0 = np.zeros(k) if theta0 is None else np.maximum(np.asarray(theta0, float), lo_t)
+    hi_t = np.array([EFFECTS[n].upper for n in names])
+    t0 = np.zeros(k) if theta0 is None else np.clip(np.asarray(theta0, float), lo_t, hi_t)
     prob = _ScaledProblem(model, spec, tuple(names), q, sc, lo_t)
     z0 = np.concatenate([x0, t0 * sc])
     blo, bhi = spec.bounds()
     x0 = np.clip(np.asarray(x0, float), blo, bhi)
     z0 = np.concatenate([x0, t0 * sc])
     lo = np.concatenate([blo, lo_t * sc])
-    hi = np.concatenate([bhi, np.full(k, np.inf)])
+    hi = np.concatenate([bhi, hi_t * sc])
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", RuntimeWarning)
         res = least_squares(prob.residual, z0, jac=prob.jacobian, bounds=(lo, hi),
@@ -234,6 +235,7 @@ def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.
             or np.any(x < blo) or np.any(x > bhi)):
         return None
     z = np.maximum(fit.z + dz, np.concatenate([np.full(q, -np.inf), fit.lower * fit.scale]))
+    z[q:] = np.minimum(z[q:], np.array([EFFECTS[n].upper for n in fit.names]) * fit.scale)
     theta = z[q:] / fit.scale
     coefs = dict(zip(fit.names, theta, strict=True))
     law = spec.law(x)

@@ -58,6 +58,7 @@ from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
 from oilgap.model.units import m2_s_to_cst, m_to_mm
 
 from .baseline import BASELINE_TERMS, BaselineFit
+from .film_wall import film_wall_of_doc, model_shapes
 from .forward import ForwardModel
 
 MODEL_FORMAT = "oilgap-loop-model"
@@ -255,6 +256,8 @@ class FittedModel:
     taylor_exponent : float
         Shape exponent m of the Taylor-vortex excess ``(Ta/Ta_c)^m - 1`` [-]
         (written as ``shapes`` when the effect is in the model).
+    film_wall : float
+        Wall condition w [-] of ``film_heating`` (its coefficient: the film strength s).
     """
 
     case: DesignCase
@@ -269,6 +272,7 @@ class FittedModel:
     cv_by: str = "run"
     ranges: dict = field(default_factory=dict)
     taylor_exponent: float = 2.0
+    film_wall: float = 0.0
 
     @property
     def thermal_mode(self) -> str:
@@ -306,7 +310,7 @@ class FittedModel:
         return cls(est.case_, laws, {k: float(v) for k, v in est.effect_coef_.items()},
                    dict(est.baselines_), fluids, float(est.geometry_.regions[0].gap_m), 0.0,
                    est.data_.kind, bool(s.has_time), str(s.cv_by), sample_ranges(s),
-                   float(getattr(est, "taylor_exponent_", 2.0)))
+                   float(getattr(est, "taylor_exponent_", 2.0)), est.forward_model_.film_wall)
 
     def to_dict(self) -> dict:
         """The ``model`` block of ``loop.json`` (JSON-safe; units in key names).
@@ -317,15 +321,14 @@ class FittedModel:
             format, version, case (TOML keys: mm, degC), laws, effects, baselines
             [W per basis function], fluids, region1_gap_m [m], pressure_gauge_Pa
             [Pa], kind, has_time, cv_by, thermal_mode (:attr:`thermal_mode`),
-            fitted_range; ``shapes`` (the Taylor-vortex
-            shape exponent m [-]) when that effect is in the model.
+            fitted_range; ``shapes`` (the Taylor-vortex exponent m [-], the film's wall
+            condition w [-]) when those effects are in the model.
         """
-        shapes = ({"shapes": {"taylor_vortex_onset": {"exponent": self.taylor_exponent}}}
-                  if "taylor_vortex_onset" in self.effects else {})
         return {"format": MODEL_FORMAT, "version": MODEL_VERSION,
                 "case": _enc(_case_doc(self.case)),
                 "laws": {k: _law_to_dict(v) for k, v in self.laws.items()},
-                "effects": _enc(self.effects), **shapes,
+                "effects": _enc(self.effects),
+                **model_shapes(self.effects, self.taylor_exponent, self.film_wall),
                 "baselines": [_baseline_to_dict(b) for b in self.baselines.values()],
                 "fluids": {k: fluid_to_dict(f) for k, f in self.fluids.items()},
                 "region1_gap_m": _enc(self.region1_gap_m),
@@ -377,7 +380,7 @@ class FittedModel:
             model = cls(case, laws, effects, {b.roughness_T: b for b in base}, fluids, gap,
                         float(doc.get("pressure_gauge_Pa", 0.0)), str(doc.get("kind", "")),
                         bool(doc.get("has_time", True)), str(doc.get("cv_by", "run")), ranges,
-                        m)
+                        m, film_wall_of_doc(doc, effects))
         except (KeyError, TypeError, ValueError, AttributeError) as e:
             raise InputError("model", f"{type(e).__name__}: {e}", "a complete model block "
                              "written by oilgap loop is required") from None
@@ -509,7 +512,7 @@ class FittedModel:
         coefs = dict(self.effects) if stage == "with_effect" else {}
         if not s.has_time:  # steady rows: no rates, no lag, no delay
             coefs = {k: v for k, v in coefs.items() if not EFFECTS[k].time_dependent}
-        model = ForwardModel(s, self.case, oils, self.taylor_exponent)
+        model = ForwardModel(s, self.case, oils, self.taylor_exponent, self.film_wall)
         return np.asarray(model.power(self.laws[stage], coefs), dtype=float)
 
     def outside_range(self, s) -> np.ndarray:

@@ -18,7 +18,6 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.effects import EFFECTS
-from oilgap.model.film_heating import film_theory_coefficient
 from oilgap.model.measured_data import Samples
 from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
 
@@ -51,8 +50,9 @@ class EffectResult:
         RMS of its power over the samples [W].
     shape : dict or None
         Chosen shape parameter (Taylor-vortex onset: ``{"exponent": m}`` [-]); for
-        ``film_heating`` the film strength ``s = c/c_theory`` and its interval [-]
-        (:func:`oilgap.model.film_heating.film_theory_coefficient`, docs/thermal.md#evidence).
+        ``film_heating`` (whose coefficient is the film strength s [-]) the
+        :func:`film_shape` record: s, its interval, the wall condition w and the film
+        coefficient c = s c_theory(w) [K/W] as a diagnostic (docs/thermal.md#evidence).
     """
 
     name: str
@@ -117,17 +117,62 @@ def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray,
             m = final.taylor_exponent
             shape = {"exponent": m}
             formula = formula.replace(")^2 - 1)", f")^{m:g} - 1)")
-        if n == "film_heating":  # c as the film strength s of the Nahme film (and its CI)
-            g0 = model.geometry.regions[0]
-            theory = float(np.max(film_theory_coefficient(np.asarray(g0.gap_m), g0.radius_m,
-                                                          g0.length_m)))
-            shape = {"film_strength": c / theory, "film_strength_ci": [
-                float(ci[0][i]) / theory, float(ci[1][i]) / theory]}
+        lo, hi = float(ci[0][i]), min(float(ci[1][i]), eff.upper)  # within the fit's bound
+        if n == "film_heating":
+            shape = film_shape(model, c, (lo, hi))
         out.append(EffectResult(
-            n, eff.title, formula, eff.reference, c, float(ci[0][i]), float(ci[1][i]),
+            n, eff.title, formula, eff.reference, c, lo, hi,
             eff.unit, float(eff.strength_from_coefficient(c)), eff.strength_unit, gains[n],
             rmse(only), shape))
     return out
+
+
+FILM_BOUND_TOL = 1e-3
+"""A film strength within this of 1, or whose interval reaches 1, is at the smooth-film
+theory's bound [-] (the bounded solver stops just short of a bound)."""
+
+
+def film_shape(model: ForwardModel, s: float, ci: tuple[float, float]) -> dict:
+    """The ``film_heating`` effect's record: the film strength s, its interval, the wall
+    condition w it was fitted at, and the film coefficient ``c = s c_theory(w)`` [K/W].
+
+    Parameters
+    ----------
+    model : ForwardModel
+        The final forward model (its :attr:`~.forward.ForwardModel.film_wall` and
+        :attr:`~.forward.ForwardModel.film_theory_K_W`).
+    s : float
+        Fitted film strength [-] (bounded to [0, 1] in the fit).
+    ci : (float, float)
+        Its 95 % interval, the upper end at most 1 [-].
+
+    Returns
+    -------
+    dict
+        ``film_strength``, ``film_strength_ci`` [-], ``wall_floating`` w [-],
+        ``film_theory_K_W`` (c at s = 1) [K/W], ``film_heating_K_W`` and its interval
+        ``film_heating_K_W_ci`` [K/W], ``at_bound`` (the statement when s or its interval
+        reaches 1, else None).
+
+    References
+    ----------
+    R. Nahme, Ingenieur-Archiv 11:191-209, 1940 (the smooth film at s = 1, through
+    :func:`oilgap.model.film_heating.film_theory_coefficient`).
+    """
+    theory = model.film_theory_K_W
+    bound = None
+    if s >= 1.0 - FILM_BOUND_TOL or ci[1] >= 1.0:
+        bound = (f"film strength s = {s:.3g}, its interval reaching {ci[1]:.3g}: at the "
+                 "smooth-film theory's bound s = 1 (or not told from it): the data may ask for "
+                 "a film as hot as the theory gives at the wall condition w = "
+                 f"{model.film_wall:g} or hotter; a hotter film (walls above the sensor, or a "
+                 "heating the film law does not hold) is not explained by it and may be taken "
+                 "up by other effects")
+    return {"film_strength": s, "film_strength_ci": list(ci),
+            "wall_floating": model.film_wall, "film_theory_K_W": theory,
+            "film_heating_K_W": s * theory,
+            "film_heating_K_W_ci": [ci[0] * theory, ci[1] * theory],
+            "at_bound": bound}
 
 
 def _set_rejection(selection: Selection, final: FinalModel, margin: float,

@@ -400,7 +400,8 @@ def add_synth(sub) -> None:
                    help="inject this library effect (see --list-effects)")
     p.add_argument("--strength", type=finite_float,
                    help="strength of the effect in its unit (default: its test strength); >= 0 "
-                   "where the effect's coefficient must be, at most 1000 x the test strength")
+                   "where the effect's coefficient must be, at most 1000 x the test strength "
+                   "(film_heating: the film strength s, 1 = the smooth-film theory)")
     p.add_argument("--seed", type=int, default=0, help="noise seed, an integer >= 0 (default 0)")
     p.add_argument("--out", metavar="data.csv", default="synth.csv",
                    help="output CSV (default: synth.csv)")

@@ -56,8 +56,12 @@ def run(args: argparse.Namespace) -> int:
           f"{', '.join(res.attrs['columns'])}); wrote {out}")
     for line in _summary(res):
         print(line)
+    film = ""
+    if "film_strength" in res.attrs:
+        film = (f", film strength s = {res.attrs['film_strength']:.4g} of the smooth-film "
+                f"theory, wall condition w = {res.attrs['wall_floating']:g}")
     print(f"thermal     {res.attrs['thermal_mode']} (the mode recorded in {args.model}: "
-          f"{THERMAL_WHY[res.attrs['thermal_mode']]})")
+          f"{THERMAL_WHY[res.attrs['thermal_mode']]}{film})")
     print(f"gamma       {res.attrs['gamma']:g} (groove exponent of Eq. 8; from: the "
           f"{args.stage} model of {args.model}, as oilgap loop calibrated it)")
     return 0

@@ -165,9 +165,21 @@ def test_the_saved_model_records_its_thermal_mode_and_predict_uses_it(rig, tmp_p
                  str(tmp_path / "p.csv")]) == 0
     assert "thermal     none (the mode recorded in" in capsys.readouterr().out
     # a model with a calibrated film records film; a hand edit that disagrees is refused
-    film = dict(doc["model"], effects={**doc["model"]["effects"], "film_heating": 0.004},
+    film = dict(doc["model"], effects={**doc["model"]["effects"], "film_heating": 0.3},
+                shapes={"film_heating": {"coefficient": "film_strength", "wall_floating": 0.0}},
                 thermal_mode="film")
     assert FittedModel.from_dict(film).thermal_mode == "film"
+    (tmp_path / "film.json").write_text(json.dumps({**doc, "model": film}))
+    capsys.readouterr()
+    assert main(["predict", str(csv), "--model", str(tmp_path / "film.json"), "--out",
+                 str(tmp_path / "f.csv")]) == 0
+    assert "film strength s = 0.3 of the smooth-film theory, wall condition w = 0" in \
+        capsys.readouterr().out
+    # an older loop.json's film_heating was a c in K/W, not the strength s: refused
+    older = dict(film)
+    del older["shapes"]
+    with pytest.raises(Exception, match="film strength s"):
+        FittedModel.from_dict(older)
     bad = dict(doc["model"], thermal_mode="film")
     with pytest.raises(Exception, match="model.thermal_mode"):
         FittedModel.from_dict(bad)

@@ -1,5 +1,6 @@
 """The loop's ``film_heating`` effect: the film hotter than the measured temperature by
-c P (issue 10), its exact refit, its plausible range, both rigs and the CLI."""
+c P, c = s c_theory (issue 10, issue 18), its exact refit, its plausible range, both rigs
+and the CLI."""
 
 import math
 
@@ -60,15 +61,14 @@ def test_feature_is_the_slope_of_the_exact_form_at_zero():
     assert np.all(f <= 0.0)  # a hotter film thins the oil: less loss
 
 
-def test_plausible_bound_is_the_film_conduction_resistance():
-    # seed regions: (R, delta, L) = (25.4 mm, 1 mm, 14.76 mm) and (22 mm, 5 mm, 14.24 mm);
-    # delta/(k 2 pi R L) with k = 0.1 W/(m K): 4.245 and 25.40 K/W, the larger is the bound
+def test_plausible_range_is_the_film_strength_zero_to_one():
+    # the coefficient is the film strength s: 1 is the smooth-film theory (the fit's bound)
     facts = RigFacts.of(joint_geometry(seed_case()), [FluidFacts("VG320", "mineral", False)])
-    assert facts.film_resistance_K_W == pytest.approx(
-        5e-3 / (0.1 * 2 * math.pi * 0.022 * 14.24e-3), rel=1e-3)
     eff = EFFECTS["film_heating"]
+    assert eff.upper == 1.0 and eff.unit == "-"
     assert eff.implausibility(DEFAULT_STRENGTH["film_heating"], facts) is None
-    assert eff.implausibility(30.0, facts) is not None
+    assert eff.implausibility(1.0, facts) is None
+    assert eff.implausibility(1.01, facts) is not None
     assert eff.implausibility(-1e-3, facts) is not None
     assert eff.nonnegative and not eff.time_dependent  # a steady-point candidate too
 

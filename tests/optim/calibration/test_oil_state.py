@@ -75,12 +75,15 @@ def test_bearing_reads_the_lagged_oil(rig):
 
 def test_disc_reads_the_film_heated_oil(samples_factory):
     # T_f = T + c P(T_f), solved per sample by a bracketing root finder (second method);
-    # the end-face disc's Re_r = |w| r_o^2 / nu and rho at T_f
+    # the end-face disc's Re_r = |w| r_o^2 / nu and rho at T_f. The effect's coefficient is
+    # the film strength s: c = s delta/(12 k 2 pi R L), the seed's 1 mm x 25.4 mm x 14.76 mm
+    # clearance, k = 0.13 W/(m K), isothermal walls
     s = samples_factory(runs=(("a", "VG320", 4.0), ("b", "VG680", 2.0)), n=12)
     case = seed_case()
     law = FrictionLaw(form="smooth", gamma=0.5)
     m = ForwardModel(s, case, builtin_oils())
     c, k = 0.02, 3.0
+    s_film = c * (12 * 0.13 * 2 * math.pi * 0.0254 * 0.01476) / 1e-3
     geo = joint_geometry(case, roughness_T=s.roughness_T, gap1_m=s.gap1_m)
     tf, nu, rho = np.empty(s.n), np.empty(s.n), np.empty(s.n)
     for i in range(s.n):
@@ -94,7 +97,7 @@ def test_disc_reads_the_film_heated_oil(samples_factory):
 
         tf[i] = brentq(g, s.temp_C[i], s.temp_C[i] + 200.0, xtol=1e-12)
         nu[i], _, rho[i] = oil.properties(tf[i] + ZERO_CELSIUS_K, 0.0)
-    st = m.oil_state(law, {"film_heating": c})
+    st = m.oil_state(law, {"film_heating": s_film})
     assert st.applied == "film-heated"
     assert np.allclose(st.temp_film_K - ZERO_CELSIUS_K, tf, atol=1e-7)
     r_o, r_i = geo.disc_radii_m
@@ -103,7 +106,7 @@ def test_disc_reads_the_film_heated_oil(samples_factory):
     cm = np.where(re < 3e5, 3.87 * re ** -0.5, 0.146 * re ** -0.2)
     disc = cm * rho * w ** 3 * ((2 * r_o) ** 5 - (2 * r_i) ** 5) / 64.0
     regions = sum(region_power(r, s.omega, nu, rho, law) for r in geo.regions)
-    got = m.power(law, {"film_heating": c, "end_face_disc": k})
+    got = m.power(law, {"film_heating": s_film, "end_face_disc": k})
     assert np.allclose(got, regions + k * disc, rtol=1e-6)
 
 

@@ -71,8 +71,21 @@ from oilgap.model.units import MM_TO_M
 from .feasibility import check_feasible
 from .objective import DesignObjective, region1_mean_power
 from .parameters import DesignParameters, resolve_parameters
-from .results import DesignPoint, DesignResult, convert_multipliers, design_point
-from .session import SolverSession, check_starts, run_starts, snap_to_bounds, solver_failure
+from .results import (
+    DesignPoint,
+    DesignResult,
+    convert_multipliers,
+    design_point,
+    start_point,
+)
+from .session import (
+    DEFAULT_STARTS,
+    SolverSession,
+    check_starts,
+    run_starts,
+    snap_to_bounds,
+    solver_failure,
+)
 from .thermal import ThermalDesignProblem
 from .variables import LOG_VARIABLES, VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
@@ -381,8 +394,8 @@ class DesignProblem:
         return self.solve_isothermal(x0, **kwargs)
 
     def solve_isothermal(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None,
-                         *, warm_start_duals: bool = True, starts: int = 1, seed: int = 0,
-                         **overrides: Any) -> DesignResult:
+                         *, warm_start_duals: bool = True, starts: int = DEFAULT_STARTS,
+                         seed: int = 0, **overrides: Any) -> DesignResult:
         """Solve the isothermal NLP (the seed's model); return the optimum or raise.
 
         Parameters
@@ -426,7 +439,7 @@ class DesignProblem:
             IPOPT failed; ``status`` and ``last_iterate`` say how.
         """
         params = self.parameters(**overrides)
-        x_start, lam = self.start(x0, warm_start_duals)
+        x_start, lam = start_point(x0, self.x_case_m, warm_start_duals)
         x_start = np.clip(x_start, params.lower_m, params.upper_m)
         check_starts(starts)
         self.check_feasible(params, x_start)
@@ -437,46 +450,6 @@ class DesignProblem:
             return best
         return replace(best, starts=starts,
                        initial=self._point(x_start, params.nu_m2_s, params.rho_kg_m3, p2))
-
-    def start(self, x0: DesignResult | DesignPoint | Sequence[float] | None,
-              warm_start_duals: bool = True
-              ) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray] | None]:
-        """Start point and multipliers of a solve.
-
-        Parameters
-        ----------
-        x0 : DesignResult, DesignPoint, sequence of (R, delta, d_r, d_s, L) [m], or None
-            As :meth:`solve_isothermal` (None: the case's design).
-        warm_start_duals : bool
-            Take the multipliers of a DesignResult ``x0``.
-
-        Returns
-        -------
-        x_start : ndarray of 5 floats
-            The start [m] (not yet clamped to the bounds).
-        lam : (lam_x, lam_g) or None
-            The multipliers to warm-start with.
-
-        Raises
-        ------
-        InputError
-            ``x0`` not 5 finite values.
-        """
-        lam = None
-        if x0 is None:
-            x_start = self.x_case_m.copy()
-        elif isinstance(x0, DesignResult):
-            x_start = x0.optimal.x_mm * MM_TO_M
-            if warm_start_duals and x0._raw:
-                lam = (x0._raw["lam_x"], x0._raw["lam_g"])
-        elif isinstance(x0, DesignPoint):
-            x_start = x0.x_mm * MM_TO_M
-        else:
-            x_start = np.asarray(x0, dtype=float).ravel()
-            if x_start.shape != (5,) or not np.all(np.isfinite(x_start)):
-                raise InputError("x0", list(x_start), "needs 5 finite values (R, delta, d_r, "
-                                 "d_s, L) [m]", "optimize")
-        return x_start, lam
 
     def constraint_bounds(self, params: DesignParameters) -> tuple[list, list]:
         """(lbg, ubg) of the scaled torque and inertia constraints (module docstring).

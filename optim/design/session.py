@@ -158,9 +158,16 @@ class SolverSession:
     def __init__(self, name: str, nlp: dict, verbose: bool = False, **extra: Any):
         self.name = name
         self._nlp = nlp
+        self._verbose = bool(verbose)
+        self._extra = extra
         self._opts = solver_options(verbose, **extra)
-        self._cold = ca.nlpsol(name, "ipopt", nlp, self._opts)
+        self._cold = self._ipopt(name, self._opts)
         self._warm: ca.Function | None = None
+
+    def _ipopt(self, name: str, opts: dict) -> ca.Function:
+        """The IPOPT solver of the NLP with ``opts``: the one ``nlpsol`` call of the
+        design NLP (a test greps the package for it)."""
+        return ca.nlpsol(name, "ipopt", self._nlp, opts)
 
     def solver(self, warm: bool = False) -> ca.Function:
         """The IPOPT solver (``warm``: with :data:`.variables.WARM_OPTIONS`, built on
@@ -178,8 +185,7 @@ class SolverSession:
         if not warm:
             return self._cold
         if self._warm is None:
-            self._warm = ca.nlpsol(f"{self.name}_warm", "ipopt", self._nlp,
-                                   dict(self._opts, **WARM_OPTIONS))
+            self._warm = self._ipopt(f"{self.name}_warm", dict(self._opts, **WARM_OPTIONS))
         return self._warm
 
     def with_options(self, **extra: Any) -> SolverSession:
@@ -194,11 +200,7 @@ class SolverSession:
         -------
         SolverSession
         """
-        out = SolverSession.__new__(SolverSession)
-        out.name, out._nlp, out._opts, out._warm = self.name, self._nlp, \
-            dict(self._opts, **extra), None
-        out._cold = ca.nlpsol(self.name, "ipopt", self._nlp, out._opts)
-        return out
+        return SolverSession(self.name, self._nlp, self._verbose, **{**self._extra, **extra})
 
     def solve(self, x0: Any, p: Any, lbx: Any, ubx: Any, lbg: Any, ubg: Any,
               lam: tuple[np.ndarray, np.ndarray] | None = None) -> SolveOutput:

@@ -84,8 +84,10 @@ from .results import (
     ThermalDesignResult,
     convert_multipliers,
     design_point,
+    start_point,
 )
 from .session import (
+    DEFAULT_STARTS,
     SolveOutput,
     SolverSession,
     check_starts,
@@ -361,7 +363,7 @@ class ThermalDesignProblem:
     # ----------------------------------------------------------------- solve
 
     def solve(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None, *,
-              warm_start_duals: bool = True, starts: int = 1, seed: int = 0,
+              warm_start_duals: bool = True, starts: int = DEFAULT_STARTS, seed: int = 0,
               sea_temp_C: float | None = None, resistance_K_W: float | None = None,
               other_heat_W: float | None = None, **overrides: Any) -> ThermalDesignResult:
         """Solve the thermal NLP; return the optimum or raise.
@@ -415,7 +417,7 @@ class ThermalDesignProblem:
         iso = self.isothermal
         params = iso.parameters(**overrides)
         nlp = self._nlp_for(params.oil_obj or self.case.oil, params.depth_m)
-        x_start, lam = iso.start(x0, warm_start_duals)
+        x_start, lam = start_point(x0, iso.x_case_m, warm_start_duals)
         if lam is not None and (not isinstance(x0, ThermalDesignResult) or
                                 x0.thermal_mode != self.mode):
             lam = None  # multipliers of another NLP

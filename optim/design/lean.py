@@ -39,7 +39,7 @@ from oilgap.model.skin_friction import groove_roughness
 from oilgap.model.units import MM_TO_M
 
 from .parameters import DesignParameters
-from .session import Buffered, snap_to_bounds
+from .session import Buffered, clamp, snap_to_bounds
 from .variables import ACTIVE_RTOL, SUCCESS_STATUSES, VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
@@ -184,10 +184,7 @@ class LeanSolver:
         a["x0"][:] = to_nlp(x_start)
         a["p"][0], a["p"][1] = params.nu_m2_s, params.rho_kg_m3
         a["lbx"][:], a["ubx"][:] = ylo, yhi
-        # np.log, as DesignProblem._solve_from (math.log may differ in the last bit)
-        a["lbg"][0], a["lbg"][1] = np.log(params.torque_min_Nm / prob.tau_ref_Nm), -np.inf
-        a["ubg"][0] = np.inf
-        a["ubg"][1] = np.log(params.inertia_max_kgm2 / prob.inertia_ref_kgm2)
+        a["lbg"][:], a["ubg"][:] = prob.constraint_bounds(params)
         if lam is not None:
             a["lam_x0"][:], a["lam_g0"][:] = lam
         t0 = time.perf_counter()
@@ -291,7 +288,7 @@ def solve_lean(problem: DesignProblem, x0: LeanStart | None = None, *, constant:
     lo, hi = ls.nlp_bounds(params)[:2]
     x_start = problem.x_case_m if x0 is None else x0.start_m()
     lam = None if x0 is None or x0.lam_x is None else (x0.lam_x, x0.lam_g)
-    x_start = np.minimum(np.maximum(x_start, lo), hi)  # np.clip (a new array)
+    x_start = clamp(x_start, lo, hi)
     ls.check_feasible(params, x_start)
     nu, rho = params.nu_m2_s, params.rho_kg_m3
     try:

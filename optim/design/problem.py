@@ -82,6 +82,7 @@ from .session import (
     DEFAULT_STARTS,
     SolverSession,
     check_starts,
+    clamp,
     run_starts,
     snap_to_bounds,
     solver_failure,
@@ -440,7 +441,7 @@ class DesignProblem:
         """
         params = self.parameters(**overrides)
         x_start, lam = start_point(x0, self.x_case_m, warm_start_duals)
-        x_start = np.clip(x_start, params.lower_m, params.upper_m)
+        x_start = clamp(x_start, params.lower_m, params.upper_m)
         check_starts(starts)
         self.check_feasible(params, x_start)
         p2 = self.region2_power(params.nu_m2_s, params.rho_kg_m3)

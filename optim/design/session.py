@@ -7,8 +7,8 @@ builds its symbols, objective, constraints and report functions; the solving is 
   the design NLP), its warm-start twin built on first use, the ordinary call
   (:meth:`SolverSession.solve`) and the buffered one (:meth:`SolverSession.buffered`,
   the sweep's: no per-call conversion of inputs and outputs, the same numbers);
-* :func:`snap_to_bounds`: IPOPT's optimum clamped to the bounds, a variable left on its
-  bound reported at the bound exactly;
+* :func:`clamp`: a start clamped to the bounds; :func:`snap_to_bounds`: IPOPT's optimum
+  clamped to the bounds, a variable left on its bound reported at the bound exactly;
 * :func:`run_starts`: one start with the dual warm start retried from the primal point
   alone should it fail, or several starts (multi-start) and the best optimum;
 * :func:`solver_failure`: the one SolverError message of a failed solve.
@@ -257,6 +257,21 @@ class SolverSession:
         return Buffered(self.solver(warm))
 
 
+def clamp(x: Any, lower: Any, upper: Any) -> np.ndarray:
+    """``x`` clamped to [lower, upper] (np.clip without its dispatch; a new array).
+
+    Parameters
+    ----------
+    x, lower, upper : array_like
+        Values and their bounds (same units).
+
+    Returns
+    -------
+    ndarray
+    """
+    return np.minimum(np.maximum(x, lower), upper)
+
+
 def snap_to_bounds(y: np.ndarray, ylo: np.ndarray, yhi: np.ndarray, lo: np.ndarray,
                    hi: np.ndarray, from_nlp: Callable[[np.ndarray], np.ndarray]
                    ) -> tuple[np.ndarray, np.ndarray]:
@@ -281,8 +296,8 @@ def snap_to_bounds(y: np.ndarray, ylo: np.ndarray, yhi: np.ndarray, lo: np.ndarr
         The design [m], clamped to [lo, hi]; a variable on its bound is reported at the
         bound exactly (no exp/log round-off).
     """
-    y_in = np.minimum(np.maximum(y, ylo), yhi)  # np.clip, without its dispatch
-    x = np.minimum(np.maximum(from_nlp(y_in), lo), hi)
+    y_in = clamp(y, ylo, yhi)
+    x = clamp(from_nlp(y_in), lo, hi)
     return y_in, np.where(y_in == ylo, lo, np.where(y_in == yhi, hi, x))
 
 
@@ -395,5 +410,5 @@ def solver_failure(status: str, iterations: Any, last_iterate: Mapping[str, floa
                        last_iterate=last)
 
 
-__all__ = ["Buffered", "DEFAULT_STARTS", "SolveOutput", "SolverSession", "check_starts",
+__all__ = ["Buffered", "DEFAULT_STARTS", "SolveOutput", "SolverSession", "check_starts", "clamp",
            "run_starts", "snap_to_bounds", "solver_failure", "solver_options"]

@@ -91,6 +91,7 @@ from .session import (
     SolveOutput,
     SolverSession,
     check_starts,
+    clamp,
     run_starts,
     snap_to_bounds,
     solver_failure,
@@ -421,7 +422,7 @@ class ThermalDesignProblem:
         if lam is not None and (not isinstance(x0, ThermalDesignResult) or
                                 x0.thermal_mode != self.mode):
             lam = None  # multipliers of another NLP
-        x_start = np.clip(x_start, params.lower_m, params.upper_m)
+        x_start = clamp(x_start, params.lower_m, params.upper_m)
         iso.check_feasible(params, x_start)
         best = run_starts(lambda x, lm: self._solve_from(params, spec, nlp, x, lm), x_start,
                           lam, params.lower_m, params.upper_m, starts, seed)

@@ -27,6 +27,9 @@ The NLP is built once per case (:class:`DesignProblem`); the oil state (nu, rho)
 J_max and every bound are parameters of each :meth:`DesignProblem.solve` (:mod:`.parameters`),
 so studies re-solve it without rebuilding; infeasible limits are caught before IPOPT
 (:mod:`.feasibility`).
+IPOPT is called through the problem's :class:`~.session.SolverSession` (``session``), as
+every design solve is: its start clamp, bound snapping, warm-start retry, multi-start and
+failure message are those of :mod:`.session`.
 
 Built with a thermal mode (``thermal="bulk"``, ``"film"``, ``"full"``; :mod:`.thermal`)
 the problem's :meth:`DesignProblem.solve` solves the NLP of :mod:`.thermal` instead,

@@ -56,7 +56,8 @@ def solver_options(verbose: bool = False, **extra: Any) -> dict:
     Returns
     -------
     dict
-        :data:`.variables.SOLVER_OPTIONS` with the quiet (or verbose) options.
+        :data:`.variables.SOLVER_OPTIONS` with the quiet (or verbose) options (tolerances
+        of the scaled NLP [-]).
     """
     opts = dict(SOLVER_OPTIONS, **QUIET_OPTIONS)
     if verbose:
@@ -307,11 +308,12 @@ def check_starts(starts: Any) -> int:
     Parameters
     ----------
     starts : int
-        Start points (>= 1).
+        Start points (>= 1) [-].
 
     Returns
     -------
     int
+        ``starts`` [-].
 
     Raises
     ------
@@ -341,8 +343,8 @@ def run_starts(solve_from: Callable[[np.ndarray, Any], Any], x_start: np.ndarray
     lower, upper : sequence of floats
         The bounds the random starts are drawn in (uniformly).
     starts : int
-        ``x_start`` and ``starts - 1`` random points (numpy generator ``seed``). IPOPT is
-        a local method, so several starts guard against a local optimum.
+        ``x_start`` and ``starts - 1`` random points (numpy generator ``seed``) [-].
+        IPOPT is a local method, so several starts guard against a local optimum.
     seed : int
         Seed of the random starts.
     power : callable, optional
@@ -391,7 +393,7 @@ def solver_failure(status: str, iterations: Any, last_iterate: Mapping[str, floa
     status : str
         IPOPT's return status (or why the result was refused, e.g. non-finite).
     iterations : int or str
-        IPOPT iterations.
+        IPOPT iterations [-].
     last_iterate : mapping of str -> float
         The last iterate in physical units (key names carry the units).
     nlp : str

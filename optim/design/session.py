@@ -397,7 +397,7 @@ def solver_failure(status: str, iterations: Any, last_iterate: Mapping[str, floa
     last_iterate : mapping of str -> float
         The last iterate in physical units (key names carry the units).
     nlp : str
-        Which NLP failed (e.g. ``"the design NLP (thermal full)"``).
+        Which NLP failed (e.g. ``"the design NLP under thermal full"``).
 
     Returns
     -------

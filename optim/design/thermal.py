@@ -498,7 +498,7 @@ class ThermalDesignProblem:
         if uses_balance(self.mode):
             last["balance_residual_K"] = float(gv[2] * BALANCE_SCALE_K)
         return solver_failure(out.status, out.iterations, last,
-                              f"the design NLP (thermal {self.mode})")
+                              f"the design NLP under thermal {self.mode}")
 
 
 __all__ = ["BALANCE_SCALE_K", "TEMP_SCALE_K", "ThermalDesignProblem"]

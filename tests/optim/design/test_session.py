@@ -3,6 +3,7 @@ calls agree, a warm start keeps the optimum, multi-start finds the better of two
 every failure is the same one-line SolverError, and only the session calls nlpsol."""
 
 import re
+from dataclasses import replace
 from pathlib import Path
 
 import casadi as ca
@@ -10,6 +11,7 @@ import numpy as np
 import pytest
 
 import oilgap.optim.design.variables as dv
+from oilgap.model.case import ThermalSpec
 from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError, SolverError
 from oilgap.optim.design import DesignProblem
@@ -146,6 +148,18 @@ def test_every_solve_fails_with_the_same_one_line_message(monkeypatch):
     assert "\n" not in msg
     assert msg.startswith("IPOPT did not converge on the design NLP (status "
                           "Maximum_Iterations_Exceeded after 2 iterations); last iterate: ")
+
+
+@pytest.mark.parametrize("mode", ["bulk", "film", "full"])
+def test_a_thermal_solve_fails_with_the_same_message(monkeypatch, mode):
+    monkeypatch.setitem(dv.SOLVER_OPTIONS, "ipopt.max_iter", 2)
+    spec = ThermalSpec(sea_temp_C=2.0, resistance_K_W=0.5, heat_capacity_J_K=5e4)
+    err = _failure_of(DesignProblem(replace(seed_case(), thermal=spec), thermal=mode).solve)
+    assert "\n" not in str(err) and err.status == "Maximum_Iterations_Exceeded"
+    assert str(err).startswith(f"IPOPT did not converge on the design NLP under thermal {mode} "
+                               "(status Maximum_Iterations_Exceeded after 2 iterations); "
+                               "last iterate: R_mm = ")
+    assert {"delta_mm", "R_mm", "L_mm", "oil_temp_C", "mean_power_W"} <= set(err.last_iterate)
 
 
 def test_only_the_session_calls_nlpsol():

@@ -39,7 +39,7 @@ from oilgap.model.skin_friction import groove_roughness
 from oilgap.model.units import MM_TO_M
 
 from .parameters import DesignParameters
-from .session import Buffered, clamp, snap_to_bounds
+from .session import Buffered, clamp, run_starts, snap_to_bounds
 from .variables import ACTIVE_RTOL, SUCCESS_STATUSES, VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
@@ -174,7 +174,7 @@ class LeanSolver:
 
     def ipopt(self, params: DesignParameters, x_start: np.ndarray, lam: tuple | None
               ) -> tuple[dict, dict, np.ndarray, tuple | None]:
-        """One IPOPT call as :meth:`DesignProblem._solve_from` makes it: (outputs, stats,
+        """One IPOPT call as :meth:`DesignProblem.solve` makes it: (outputs, stats,
         the optimum [m], (P1, tau, J) at it or None). The outputs are the buffer's
         arrays (valid until the next call)."""
         prob = self.problem
@@ -291,12 +291,8 @@ def solve_lean(problem: DesignProblem, x0: LeanStart | None = None, *, constant:
     x_start = clamp(x_start, lo, hi)
     ls.check_feasible(params, x_start)
     nu, rho = params.nu_m2_s, params.rho_kg_m3
-    try:
-        out, stats, x_m, values = ls.ipopt(params, x_start, lam)
-    except SolverError:
-        if lam is None:
-            raise
-        out, stats, x_m, values = ls.ipopt(params, x_start, None)
+    out, stats, x_m, values = run_starts(lambda x, lm: ls.ipopt(params, x, lm), x_start, lam,
+                                         lo, hi)  # one start, a failed warm start retried
     p1, tau, J = ls.report(x_m, nu, rho) if values is None else values
     if not (math.isfinite(p1) and math.isfinite(tau) and math.isfinite(J)):
         raise ls.failure(stats, out, params, "non-finite result")
@@ -402,7 +398,7 @@ def optimal_case(problem: DesignProblem, params: DesignParameters, x_m: np.ndarr
                               T4_unfilled=T3 + problem.machined_stator_groove_m)
     c = problem.case
     changes: dict[str, Any] = {"region1": r1}
-    if not params.raw_oil_state and (  # the solve's oil state, as DesignProblem._case_for
+    if not params.raw_oil_state and (  # the solve's oil state, as DesignProblem.case_for
             params.oil != c.oil.name or params.oil_temp_C != c.operating.oil_temp_C
             or params.depth_m != c.operating.depth_m):
         changes["oil"] = c.oil if params.oil_obj is None else params.oil_obj

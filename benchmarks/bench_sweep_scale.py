@@ -87,11 +87,11 @@ def calibration(k: int = 200) -> float:
     (CasADi's ``t_wall_total`` of the ordinary call), the two interleaved."""
     prob = grid_optimize.design_problem(seed_case())[1]
     q = prob.parameters()
-    timed = ca.nlpsol("timed", "ipopt", prob._nlp, dict(prob._opts, record_time=True))
+    timed = prob.session.with_options(record_time=True).solver()
+    lbg, ubg = prob.constraint_bounds(q)
     args = {"x0": to_nlp(prob.x_case_m), "p": [q.nu_m2_s, q.rho_kg_m3],
             "lbx": to_nlp(np.asarray(q.lower_m)), "ubx": to_nlp(np.asarray(q.upper_m)),
-            "lbg": [np.log(q.torque_min_Nm / prob.tau_ref_Nm), -np.inf],
-            "ubg": [np.inf, np.log(q.inertia_max_kgm2 / prob.inertia_ref_kgm2)]}
+            "lbg": lbg, "ubg": ubg}
     solver = lean.lean_solver(prob)
     solver.timings = []
     ratios = []

@@ -7,9 +7,12 @@ One module per responsibility:
 * :mod:`.objective`: the one objective (mean power, torque, inertia; CasADi and numpy);
 * :mod:`.feasibility`: the feasibility check before IPOPT and its message;
 * :mod:`.results`: design points, multipliers (converted to physical units), the optimum;
-* :mod:`.problem`: the NLP built once per case and its solves (IPOPT, multi-start, warm start);
+* :mod:`.session`: the one IPOPT session every solve goes through (the solver, warm start,
+  buffered calls), multi-start, bound snapping and the failure message;
+* :mod:`.problem`: the isothermal NLP built once per case, and its solves;
 * :mod:`.thermal`: the NLP under a thermal mode (film factor; oil temperature and heat
   balance as a variable and an equality);
+* :mod:`.lean`: a sweep's solve of the isothermal NLP (buffered, only the sweep's columns);
 * :mod:`.heating`: the optimum with and without heating, side by side.
 """
 
@@ -26,6 +29,7 @@ from .results import (
     convert_multipliers,
     design_point,
 )
+from .session import DEFAULT_STARTS, SolverSession
 from .thermal import ThermalDesignProblem
 from .variables import VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
@@ -34,5 +38,5 @@ __all__ = [
     "DesignResult", "Multiplier", "region1_mean_power", "solve_design", "DesignObjective",
     "resolve_parameters", "check_feasible", "infeasibility_message", "convert_multipliers",
     "design_point", "to_nlp", "from_nlp", "ThermalDesignProblem", "ThermalDesignResult",
-    "HeatingComparison", "compare_heating",
+    "HeatingComparison", "compare_heating", "DEFAULT_STARTS", "SolverSession",
 ]

@@ -24,6 +24,7 @@ from oilgap.model.errors import InputError
 
 from .problem import DesignProblem
 from .results import POINT_MEANINGS, DesignResult, ThermalDesignResult
+from .session import DEFAULT_STARTS
 
 COMPARED = tuple((k, POINT_MEANINGS[k]) for k in (
     "delta_mm", "R_mm", "L_mm", "rotor_groove_depth_mm", "stator_groove_depth_mm", "T",
@@ -118,7 +119,7 @@ class HeatingComparison:
         return d
 
 
-def compare_heating(problem: DesignProblem, starts: int = 1, seed: int = 0,
+def compare_heating(problem: DesignProblem, starts: int = DEFAULT_STARTS, seed: int = 0,
                     **overrides: Any) -> HeatingComparison:
     """Solve the design with and without heating under the same limits and bounds.
 

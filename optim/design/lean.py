@@ -29,7 +29,6 @@ import weakref
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
-import casadi as ca
 import numpy as np
 
 from oilgap.model.case import DesignCase, OperatingPoint, RotorStatorClearance
@@ -40,15 +39,8 @@ from oilgap.model.skin_friction import groove_roughness
 from oilgap.model.units import MM_TO_M
 
 from .parameters import DesignParameters
-from .variables import (
-    ACTIVE_RTOL,
-    SUCCESS_STATUSES,
-    VARIABLE_LABELS,
-    VARIABLES,
-    WARM_OPTIONS,
-    from_nlp,
-    to_nlp,
-)
+from .session import Buffered, clamp, run_starts, snap_to_bounds
+from .variables import ACTIVE_RTOL, SUCCESS_STATUSES, VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from .problem import DesignProblem
@@ -119,40 +111,12 @@ def active_constraints(params: DesignParameters, x_m: np.ndarray, tau_Nm: float,
     return tuple(head + bounds)
 
 
-class _Buffered:
-    """A CasADi Function called through its buffers (``Function.buffer``, CasADi >= 3.6):
-    the numpy arrays of its inputs and outputs are bound once, so a call converts and
-    allocates nothing (a dict call spends 0.2-0.4 ms per IPOPT solve doing so).
-
-    Parameters
-    ----------
-    fn : casadi.Function
-        Dense inputs and outputs.
-
-    Attributes
-    ----------
-    arg, res : dict of str -> ndarray
-        The inputs (written before a call) and outputs (read after it, overwritten by
-        the next call: copy what is kept).
-    """
-
-    def __init__(self, fn: ca.Function):
-        self.fn = fn
-        self.buf, self.run = fn.buffer()
-        self.arg = {fn.name_in(i): np.zeros(fn.nnz_in(i)) for i in range(fn.n_in())}
-        self.res = {fn.name_out(i): np.zeros(fn.nnz_out(i)) for i in range(fn.n_out())}
-        for i in range(fn.n_in()):
-            self.buf.set_arg(i, memoryview(self.arg[fn.name_in(i)]))
-        for i in range(fn.n_out()):
-            self.buf.set_res(i, memoryview(self.res[fn.name_out(i)]))
-
-
 class LeanSolver:
     """The IPOPT calls and the report (P1, tau, J) of one DesignProblem, buffered.
 
     One per problem and thread (:func:`lean_solver`): the buffers are reused by every
-    solve. The solvers are the problem's own (``problem._solver``, and its warm-start
-    solver), bound again should the problem's be replaced.
+    solve. The solvers are those of the problem's session
+    (:meth:`.session.SolverSession.buffered`, the cold and the warm-start one).
 
     Attributes
     ----------
@@ -162,25 +126,21 @@ class LeanSolver:
 
     def __init__(self, problem: DesignProblem):
         self.problem = problem
-        self._cold: _Buffered | None = None
-        self._warm: _Buffered | None = None
-        self._report = _Buffered(problem._report)
+        self._cold: Buffered | None = None
+        self._warm: Buffered | None = None
+        self._report = Buffered(problem.report_fn)
         self._bounds: tuple = ((), ())
         self._feasible: set[tuple] = set()
         self.timings: list[float] | None = None
 
-    def _solver(self, warm: bool) -> _Buffered:
-        """The buffered cold or warm-start solver of the problem."""
-        prob = self.problem
+    def _solver(self, warm: bool) -> Buffered:
+        """The buffered cold or warm-start solver of the problem's session."""
         if not warm:
-            if self._cold is None or self._cold.fn is not prob._solver:
-                self._cold = _Buffered(prob._solver)
+            if self._cold is None:
+                self._cold = self.problem.session.buffered(False)
             return self._cold
-        if prob._warm_solver is None:
-            prob._warm_solver = ca.nlpsol("oilgap_design_warm", "ipopt", prob._nlp,
-                                          dict(prob._opts, **WARM_OPTIONS))
-        if self._warm is None or self._warm.fn is not prob._warm_solver:
-            self._warm = _Buffered(prob._warm_solver)
+        if self._warm is None:
+            self._warm = self.problem.session.buffered(True)
         return self._warm
 
     def nlp_bounds(self, params: DesignParameters) -> tuple[np.ndarray, ...]:
@@ -214,7 +174,7 @@ class LeanSolver:
 
     def ipopt(self, params: DesignParameters, x_start: np.ndarray, lam: tuple | None
               ) -> tuple[dict, dict, np.ndarray, tuple | None]:
-        """One IPOPT call as :meth:`DesignProblem._solve_from` makes it: (outputs, stats,
+        """One IPOPT call as :meth:`DesignProblem.solve` makes it: (outputs, stats,
         the optimum [m], (P1, tau, J) at it or None). The outputs are the buffer's
         arrays (valid until the next call)."""
         prob = self.problem
@@ -224,10 +184,7 @@ class LeanSolver:
         a["x0"][:] = to_nlp(x_start)
         a["p"][0], a["p"][1] = params.nu_m2_s, params.rho_kg_m3
         a["lbx"][:], a["ubx"][:] = ylo, yhi
-        # np.log, as DesignProblem._solve_from (math.log may differ in the last bit)
-        a["lbg"][0], a["lbg"][1] = np.log(params.torque_min_Nm / prob.tau_ref_Nm), -np.inf
-        a["ubg"][0] = np.inf
-        a["ubg"][1] = np.log(params.inertia_max_kgm2 / prob.inertia_ref_kgm2)
+        a["lbg"][:], a["ubg"][:] = prob.constraint_bounds(params)
         if lam is not None:
             a["lam_x0"][:], a["lam_g0"][:] = lam
         t0 = time.perf_counter()
@@ -235,15 +192,13 @@ class LeanSolver:
         if self.timings is not None:
             self.timings.append(time.perf_counter() - t0)
         raise_if_interrupted()  # CasADi turns Ctrl-C into a failed solve: re-raise it
-        stats = s.buf.stats()
+        stats = s.stats()
         out = s.res
         y = out["x"]
         if str(stats.get("return_status", "unknown")) not in SUCCESS_STATUSES or \
                 not np.isfinite(y).all():
             raise self.failure(stats, out, params)
-        y_in = np.minimum(np.maximum(y, ylo), yhi)  # np.clip, without its dispatch
-        x_m = np.minimum(np.maximum(from_nlp(y_in), lo), hi)
-        x_m = np.where(y_in == ylo, lo, np.where(y_in == yhi, hi, x_m))
+        y_in, x_m = snap_to_bounds(y, ylo, yhi, lo, hi, from_nlp)
         values = None
         if (y_in == y).all():  # IPOPT's f and g are at this very point
             g = out["g"]
@@ -255,10 +210,9 @@ class LeanSolver:
                 status: str | None = None) -> Exception:
         """The problem's SolverError of a failed call (its last iterate)."""
         status = str(stats.get("return_status", "unknown")) if status is None else status
-        sol = {"f": float(out["f"][0]), "g": out["g"].copy()}
-        nu = params.nu_m2_s
-        p2 = self.problem.region2_power(nu, params.rho_kg_m3)
-        return self.problem._failure(status, stats, sol, out["x"].copy(), p2, nu)
+        return self.problem.failure(status, stats.get("iter_count", "?"), out["x"].copy(),
+                                    float(out["f"][0]), out["g"].copy(), params.nu_m2_s,
+                                    params.rho_kg_m3)
 
 
 def lean_solver(problem: DesignProblem) -> LeanSolver:
@@ -334,15 +288,11 @@ def solve_lean(problem: DesignProblem, x0: LeanStart | None = None, *, constant:
     lo, hi = ls.nlp_bounds(params)[:2]
     x_start = problem.x_case_m if x0 is None else x0.start_m()
     lam = None if x0 is None or x0.lam_x is None else (x0.lam_x, x0.lam_g)
-    x_start = np.minimum(np.maximum(x_start, lo), hi)  # np.clip (a new array)
+    x_start = clamp(x_start, lo, hi)
     ls.check_feasible(params, x_start)
     nu, rho = params.nu_m2_s, params.rho_kg_m3
-    try:
-        out, stats, x_m, values = ls.ipopt(params, x_start, lam)
-    except SolverError:
-        if lam is None:
-            raise
-        out, stats, x_m, values = ls.ipopt(params, x_start, None)
+    out, stats, x_m, values = run_starts(lambda x, lm: ls.ipopt(params, x, lm), x_start, lam,
+                                         lo, hi)  # one start, a failed warm start retried
     p1, tau, J = ls.report(x_m, nu, rho) if values is None else values
     if not (math.isfinite(p1) and math.isfinite(tau) and math.isfinite(J)):
         raise ls.failure(stats, out, params, "non-finite result")
@@ -448,7 +398,7 @@ def optimal_case(problem: DesignProblem, params: DesignParameters, x_m: np.ndarr
                               T4_unfilled=T3 + problem.machined_stator_groove_m)
     c = problem.case
     changes: dict[str, Any] = {"region1": r1}
-    if not params.raw_oil_state and (  # the solve's oil state, as DesignProblem._case_for
+    if not params.raw_oil_state and (  # the solve's oil state, as DesignProblem.case_for
             params.oil != c.oil.name or params.oil_temp_C != c.operating.oil_temp_C
             or params.depth_m != c.operating.depth_m):
         changes["oil"] = c.oil if params.oil_obj is None else params.oil_obj

@@ -27,6 +27,9 @@ The NLP is built once per case (:class:`DesignProblem`); the oil state (nu, rho)
 J_max and every bound are parameters of each :meth:`DesignProblem.solve` (:mod:`.parameters`),
 so studies re-solve it without rebuilding; infeasible limits are caught before IPOPT
 (:mod:`.feasibility`).
+IPOPT is called through the problem's :class:`~.session.SolverSession` (``session``), as
+every design solve is: its start clamp, bound snapping, warm-start retry, multi-start and
+failure message are those of :mod:`.session`.
 
 Built with a thermal mode (``thermal="bulk"``, ``"film"``, ``"full"``; :mod:`.thermal`)
 the problem's :meth:`DesignProblem.solve` solves the NLP of :mod:`.thermal` instead,
@@ -63,7 +66,6 @@ from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.case_limits import check_slot_pitch
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import oil_state
-from oilgap.model.interrupts import raise_if_interrupted
 from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import joint_regions, region_mean_power
@@ -72,19 +74,24 @@ from oilgap.model.units import MM_TO_M
 from .feasibility import check_feasible
 from .objective import DesignObjective, region1_mean_power
 from .parameters import DesignParameters, resolve_parameters
-from .results import DesignPoint, DesignResult, convert_multipliers, design_point
-from .thermal import ThermalDesignProblem
-from .variables import (
-    LOG_VARIABLES,
-    QUIET_OPTIONS,
-    SOLVER_OPTIONS,
-    SUCCESS_STATUSES,
-    VARIABLE_LABELS,
-    VARIABLES,
-    WARM_OPTIONS,
-    from_nlp,
-    to_nlp,
+from .results import (
+    DesignPoint,
+    DesignResult,
+    convert_multipliers,
+    design_point,
+    start_point,
 )
+from .session import (
+    DEFAULT_STARTS,
+    SolverSession,
+    check_starts,
+    clamp,
+    run_starts,
+    snap_to_bounds,
+    solver_failure,
+)
+from .thermal import ThermalDesignProblem
+from .variables import LOG_VARIABLES, VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 
 def _memo(cache: dict, key: Any, compute: Any) -> float:
@@ -179,8 +186,8 @@ class DesignProblem:
         self.build_time_s = time.perf_counter() - t0
 
     def _build(self) -> None:
-        """The CasADi NLP (scaled, :mod:`.variables`), its IPOPT solver and a report
-        function (P1, tau, J) of (y, p)."""
+        """The CasADi NLP (scaled, :mod:`.variables`), its solver session
+        (:class:`.session.SolverSession`) and a report function (P1, tau, J) of (y, p)."""
         m = self.case.motor
         y = ca.SX.sym("y", 5)  # (ln R/mm, ln delta/mm, d_r/mm, d_s/mm, ln L/mm)
         p = ca.SX.sym("p", 2)  # (nu [m^2/s], rho [kg/m^3])
@@ -191,15 +198,10 @@ class DesignProblem:
         tau = motor_torque(m, R, delta, L)[0]
         J = rotor_inertia(m, R, d_r, L, self.machined_rotor_groove_m)
         g = ca.vertcat(ca.log(tau / self.tau_ref_Nm), ca.log(J / self.inertia_ref_kgm2))
-        self._nlp = {"x": y, "p": p, "f": ca.log(p1), "g": g}
-        opts = dict(SOLVER_OPTIONS, **QUIET_OPTIONS)
-        if self.verbose:
-            opts.update({"ipopt.print_level": 5, "print_time": True})
-            opts.pop("ipopt.sb")
-        self._opts = opts
-        self._solver = ca.nlpsol("oilgap_design", "ipopt", self._nlp, opts)
-        self._warm_solver = None
-        self._report = ca.Function("report", [y, p], [ca.vertcat(p1, tau, J)])
+        self.session = SolverSession("oilgap_design", {"x": y, "p": p, "f": ca.log(p1),
+                                                       "g": g}, self.verbose)
+        self.report_fn = ca.Function("report", [y, p], [ca.vertcat(p1, tau, J)])
+        """(y, (nu, rho)) -> (P1 [W], tau [N m], J [kg m^2])."""
 
     # ----------------------------------------------------------------- helpers
 
@@ -308,7 +310,7 @@ class DesignProblem:
             if hit is not None:
                 return hit
             values = tuple(float(v) for v in
-                           np.asarray(self._report(ca.DM(to_nlp(x_m)),
+                           np.asarray(self.report_fn(ca.DM(to_nlp(x_m)),
                                                    ca.DM([nu, rho]))).ravel())
         p1, tau, J = values
         pt = design_point(x_m, p1, tau, J, p2, self.case.motor, self.inertia_ref_kgm2,
@@ -396,8 +398,8 @@ class DesignProblem:
         return self.solve_isothermal(x0, **kwargs)
 
     def solve_isothermal(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None,
-                         *, warm_start_duals: bool = True, starts: int = 1, seed: int = 0,
-                         **overrides: Any) -> DesignResult:
+                         *, warm_start_duals: bool = True, starts: int = DEFAULT_STARTS,
+                         seed: int = 0, **overrides: Any) -> DesignResult:
         """Solve the isothermal NLP (the seed's model); return the optimum or raise.
 
         Parameters
@@ -441,61 +443,33 @@ class DesignProblem:
             IPOPT failed; ``status`` and ``last_iterate`` say how.
         """
         params = self.parameters(**overrides)
-        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
-        x_start, lam = self._start(x0, warm_start_duals)
-        x_start = np.clip(x_start, lo, hi)
-        if isinstance(starts, bool) or not isinstance(starts, int) or starts < 1:
-            raise InputError("starts", starts, "must be an integer >= 1", "optimize")
+        x_start, lam = start_point(x0, self.x_case_m, warm_start_duals)
+        x_start = clamp(x_start, params.lower_m, params.upper_m)
+        check_starts(starts)
         self.check_feasible(params, x_start)
         p2 = self.region2_power(params.nu_m2_s, params.rho_kg_m3)
+        best = run_starts(lambda x, lm: self._solve_from(params, x, lm, p2), x_start, lam,
+                          params.lower_m, params.upper_m, starts, seed)
         if starts == 1:
-            if lam is None:
-                return self._solve_from(params, x_start, None, p2)
-            try:
-                return self._solve_from(params, x_start, lam, p2)
-            except SolverError:  # a stale dual warm start: retry from x0 alone
-                return self._solve_from(params, x_start, None, p2)
-        return self._multistart(params, x_start, lam, p2, starts, seed)
-
-    def _start(self, x0: DesignResult | DesignPoint | Sequence[float] | None,
-               warm_start_duals: bool
-               ) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray] | None]:
-        """Start point [m] and (lam_x, lam_g) to warm-start with (or None) from ``x0``."""
-        lam = None
-        if x0 is None:
-            x_start = self.x_case_m.copy()
-        elif isinstance(x0, DesignResult):
-            x_start = x0.optimal.x_mm * MM_TO_M
-            if warm_start_duals and x0._raw:
-                lam = (x0._raw["lam_x"], x0._raw["lam_g"])
-        elif isinstance(x0, DesignPoint):
-            x_start = x0.x_mm * MM_TO_M
-        else:
-            x_start = np.asarray(x0, dtype=float).ravel()
-            if x_start.shape != (5,) or not np.all(np.isfinite(x_start)):
-                raise InputError("x0", list(x_start), "needs 5 finite values (R, delta, d_r, "
-                                 "d_s, L) [m]", "optimize")
-        return x_start, lam
-
-    def _multistart(self, params: DesignParameters, x_start: np.ndarray,
-                    lam: tuple[np.ndarray, np.ndarray] | None, p2: float, starts: int,
-                    seed: int) -> DesignResult:
-        """Best optimum from ``x_start`` and ``starts - 1`` uniform random points."""
-        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
-        pts = np.random.default_rng(seed).uniform(size=(starts - 1, 5))
-        best, first_error = None, None
-        for x in [x_start, *(lo + pts * (hi - lo))]:
-            try:
-                r = self._solve_from(params, x, lam if x is x_start else None, p2)
-            except SolverError as e:
-                first_error = first_error or e
-                continue
-            if best is None or r.optimal.mean_power_W < best.optimal.mean_power_W:
-                best = r
-        if best is None:
-            raise first_error
+            return best
         return replace(best, starts=starts,
                        initial=self._point(x_start, params.nu_m2_s, params.rho_kg_m3, p2))
+
+    def constraint_bounds(self, params: DesignParameters) -> tuple[list, list]:
+        """(lbg, ubg) of the scaled torque and inertia constraints (module docstring).
+
+        Parameters
+        ----------
+        params : DesignParameters
+            The limits ``torque_min_Nm`` [N m] and ``inertia_max_kgm2`` [kg m^2].
+
+        Returns
+        -------
+        lbg, ubg : list of 2 floats
+            ln(tau_min/tau_ref) and -inf; inf and ln(J_max/J_ref).
+        """
+        return ([np.log(params.torque_min_Nm / self.tau_ref_Nm), -np.inf],
+                [np.inf, np.log(params.inertia_max_kgm2 / self.inertia_ref_kgm2)])
 
     def _solve_from(self, params: DesignParameters, x_start: np.ndarray,
                     lam: tuple[np.ndarray, np.ndarray] | None, p2: float) -> DesignResult:
@@ -504,64 +478,70 @@ class DesignProblem:
         nu, rho = params.nu_m2_s, params.rho_kg_m3
         initial = self._point(x_start, nu, rho, p2)
         ylo, yhi = to_nlp(lo), to_nlp(hi)
-        args = {"x0": to_nlp(x_start), "p": [nu, rho], "lbx": ylo, "ubx": yhi,
-                "lbg": [np.log(params.torque_min_Nm / self.tau_ref_Nm), -np.inf],
-                "ubg": [np.inf, np.log(params.inertia_max_kgm2 / self.inertia_ref_kgm2)]}
-        solver = self._solver
-        if lam is not None:
-            if self._warm_solver is None:
-                self._warm_solver = ca.nlpsol("oilgap_design_warm", "ipopt", self._nlp,
-                                              dict(self._opts, **WARM_OPTIONS))
-            solver = self._warm_solver
-            args.update(lam_x0=lam[0], lam_g0=lam[1])
-        t0 = time.perf_counter()
-        sol = solver(**args)
-        raise_if_interrupted()  # CasADi turns Ctrl-C into a failed solve: re-raise it
-        dt = time.perf_counter() - t0
-        stats = solver.stats()
-        status = str(stats.get("return_status", "unknown"))
-        y = np.asarray(sol["x"]).ravel()
-        if status not in SUCCESS_STATUSES or not np.all(np.isfinite(y)):
-            raise self._failure(status, stats, sol, y, p2, nu)
-        y_in = np.clip(y, ylo, yhi)
-        x_m = np.clip(from_nlp(y_in), lo, hi)
-        # a variable IPOPT left on its bound is reported at the bound exactly (no exp/log
-        # round-off)
-        x_m = np.where(y_in == ylo, lo, np.where(y_in == yhi, hi, x_m))
+        out = self.session.solve(to_nlp(x_start), [nu, rho], ylo, yhi,
+                                 *self.constraint_bounds(params), lam)
+        if not out.ok:
+            raise self.failure(out.status, out.iterations, out.x, out.f, out.g, nu, rho)
+        y = out.x
+        y_in, x_m = snap_to_bounds(y, ylo, yhi, lo, hi, from_nlp)
         values = None
         if np.array_equal(y_in, y):  # IPOPT's f and g are at this very point
-            gv = np.asarray(sol["g"]).ravel()
-            values = (float(np.exp(float(sol["f"]))), float(np.exp(gv[0]) * self.tau_ref_Nm),
+            gv = out.g
+            values = (float(np.exp(out.f)), float(np.exp(gv[0]) * self.tau_ref_Nm),
                       float(np.exp(gv[1]) * self.inertia_ref_kgm2))
         optimal = self._point(x_m, nu, rho, p2, values)
         if not np.all(np.isfinite([optimal.mean_power_W, optimal.torque_capability_Nm,
                                    optimal.inertia_kgm2])):  # never a non-finite result
-            raise self._failure("non-finite result", stats, sol, y, p2, nu)
-        lam_x = np.asarray(sol["lam_x"]).ravel()
-        lam_g = np.asarray(sol["lam_g"]).ravel()
+            raise self.failure("non-finite result", out.iterations, y, out.f, out.g, nu, rho)
+        lam_x, lam_g = out.lam_x, out.lam_g
         mults, active = convert_multipliers(params, optimal, lam_x, lam_g)
-        return DesignResult(status, True, int(stats.get("iter_count", -1)), dt, initial,
-                            optimal, active, mults, params, self._case_for(params),
+        return DesignResult(out.status, True, out.iterations, out.time_s, initial,
+                            optimal, active, mults, params, self.case_for(params),
                             self.machined_rotor_groove_m, self.machined_stator_groove_m, 1,
                             {"lam_x": lam_x, "lam_g": lam_g})
 
-    def _failure(self, status: str, stats: dict, sol: dict, y: np.ndarray,
-                 p2: float, nu: float) -> SolverError:
-        """The SolverError of a failed solve, with its last iterate in physical units."""
+    def failure(self, status: str, iterations: int, y: np.ndarray, f: float, g: np.ndarray,
+                nu_m2_s: float, rho_kg_m3: float) -> SolverError:
+        """The SolverError of a failed solve, with its last iterate in physical units.
+
+        Parameters
+        ----------
+        status : str
+            IPOPT's return status (or why the result was refused).
+        iterations : int
+            IPOPT iterations.
+        y, f, g : ndarray, float, ndarray
+            The last iterate, objective (ln P1) and constraints of the scaled NLP.
+        nu_m2_s, rho_kg_m3 : float
+            The solve's oil state [m^2/s], [kg/m^3].
+
+        Returns
+        -------
+        SolverError
+            :func:`.session.solver_failure`: R, delta, groove depths, L [mm], torque
+            [N m], inertia [kg m^2] and the mean power [W] at the last iterate.
+        """
         last = {VARIABLE_LABELS[v][0]: float(xv) for v, xv in
                 zip(VARIABLES, from_nlp(y) / MM_TO_M, strict=True)}
-        gv = np.asarray(sol["g"]).ravel()
-        last["torque_capability_Nm"] = float(np.exp(gv[0]) * self.tau_ref_Nm)
-        last["inertia_kgm2"] = float(np.exp(gv[1]) * self.inertia_ref_kgm2)
-        pb = self.bearing_power(nu)
-        last["mean_power_W"] = float(np.exp(float(sol["f"]))) + p2 + (pb or 0.0)
-        it = ", ".join(f"{k} = {v:.6g}" for k, v in last.items())
-        return SolverError(f"IPOPT did not converge (status {status} after "
-                           f"{stats.get('iter_count', '?')} iterations); last iterate: {it}",
-                           status=status, last_iterate=last)
+        last["torque_capability_Nm"] = float(np.exp(g[0]) * self.tau_ref_Nm)
+        last["inertia_kgm2"] = float(np.exp(g[1]) * self.inertia_ref_kgm2)
+        pb = self.bearing_power(nu_m2_s)
+        last["mean_power_W"] = (float(np.exp(float(f))) + self.region2_power(nu_m2_s, rho_kg_m3)
+                                + (pb or 0.0))
+        return solver_failure(status, iterations, last)
 
-    def _case_for(self, params: DesignParameters) -> DesignCase:
-        """The case with the solve's oil and operating point (unchanged for raw nu/rho)."""
+    def case_for(self, params: DesignParameters) -> DesignCase:
+        """The case with the solve's oil and operating point (unchanged for raw nu/rho).
+
+        Parameters
+        ----------
+        params : DesignParameters
+            A solve's parameters.
+
+        Returns
+        -------
+        DesignCase
+        """
         c = self.case
         if params.raw_oil_state:
             return c

@@ -15,14 +15,14 @@ References
 from __future__ import annotations
 
 import warnings
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import asdict, dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from oilgap.model.case import DesignBounds, DesignCase, Motor, RotorStatorClearance, ThermalSpec
-from oilgap.model.errors import OilgapWarning
+from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import CaseEvaluation, evaluate_case
 from oilgap.model.joint_loss import OperatingTemperature, operating_temperature
 from oilgap.model.motor import motor_torque, rotor_inertia
@@ -541,5 +541,48 @@ class ThermalDesignResult(DesignResult):
         return start, opt
 
 
+def start_point(x0: DesignResult | DesignPoint | Sequence[float] | None, default_m: np.ndarray,
+                warm_start_duals: bool = True
+                ) -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray] | None]:
+    """Start point and multipliers of a solve.
+
+    Parameters
+    ----------
+    x0 : DesignResult, DesignPoint, sequence of (R, delta, d_r, d_s, L) [m], or None
+        A previous optimum (its design and multipliers), a design point or a vector.
+    default_m : ndarray of 5 floats
+        The start when ``x0`` is None (the case's design) [m].
+    warm_start_duals : bool
+        Take the multipliers of a DesignResult ``x0``.
+
+    Returns
+    -------
+    x_start : ndarray of 5 floats
+        The start [m] (not yet clamped to the bounds).
+    lam : (lam_x, lam_g) or None
+        The multipliers to warm-start with.
+
+    Raises
+    ------
+    InputError
+        ``x0`` not 5 finite values.
+    """
+    lam = None
+    if x0 is None:
+        x_start = np.array(default_m, dtype=float)
+    elif isinstance(x0, DesignResult):
+        x_start = x0.optimal.x_mm * MM_TO_M
+        if warm_start_duals and x0._raw:
+            lam = (x0._raw["lam_x"], x0._raw["lam_g"])
+    elif isinstance(x0, DesignPoint):
+        x_start = x0.x_mm * MM_TO_M
+    else:
+        x_start = np.asarray(x0, dtype=float).ravel()
+        if x_start.shape != (5,) or not np.all(np.isfinite(x_start)):
+            raise InputError("x0", list(x_start), "needs 5 finite values (R, delta, d_r, "
+                             "d_s, L) [m]", "optimize")
+    return x_start, lam
+
+
 __all__ = ["POINT_MEANINGS", "DesignPoint", "DesignResult", "Multiplier", "ThermalDesignResult",
-           "convert_multipliers", "design_point"]
+           "convert_multipliers", "design_point", "start_point"]

@@ -70,13 +70,7 @@ import numpy as np
 from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import ThermalSpec
 from oilgap.model.errors import InputError, SolverError
-from oilgap.model.interrupts import raise_if_interrupted
-from oilgap.model.joint_loss import (
-    case_film,
-    joint_mean_power,
-    resolve_thermal_mode,
-    uses_balance,
-)
+from oilgap.model.joint_loss import THERMAL_MODES, case_film, joint_mean_power, uses_balance
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.regions import joint_regions, region_mean_power, rotor_stator_region
@@ -90,18 +84,19 @@ from .results import (
     ThermalDesignResult,
     convert_multipliers,
     design_point,
+    start_point,
 )
-from .variables import (
-    LOG_VARIABLES,
-    QUIET_OPTIONS,
-    SOLVER_OPTIONS,
-    SUCCESS_STATUSES,
-    VARIABLE_LABELS,
-    VARIABLES,
-    WARM_OPTIONS,
-    from_nlp,
-    to_nlp,
+from .session import (
+    DEFAULT_STARTS,
+    SolveOutput,
+    SolverSession,
+    check_starts,
+    clamp,
+    run_starts,
+    snap_to_bounds,
+    solver_failure,
 )
+from .variables import LOG_VARIABLES, VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from .problem import DesignProblem
@@ -118,14 +113,12 @@ BALANCE_TOL_K = 1e-11
 
 @dataclass
 class _ThermalNLP:
-    """The NLP of one (oil, depth): its IPOPT solvers and functions of (y, q).
+    """The NLP of one (oil, depth): its solver session and functions of (y, q).
 
     ``q`` is what the loss depends on besides the design: ``t = T / TEMP_SCALE_K``
     under bulk/full, the oil state (nu [m^2/s], rho [kg/m^3], b [1/K]) under film."""
 
-    nlp: dict
-    opts: dict
-    solver: Any
+    session: SolverSession
     parts: Any
     """(y, q) -> (P1 [W], P2 [W], P_b [W], tau [N m], J [kg m^2]) (P_b = 0 without a
     bearing)."""
@@ -136,14 +129,6 @@ class _ThermalNLP:
     """bulk/full: (y, row of two t) -> P1 + P2 + P_b [W] at both."""
     balance: Any = None
     """bulk/full: (y, t, p) -> (residual [BALANCE_SCALE_K], its derivative in T [1/K])."""
-    warm: Any = None
-
-    def warm_solver(self) -> Any:
-        """The solver with the warm-start options (:data:`.variables.WARM_OPTIONS`)."""
-        if self.warm is None:
-            self.warm = ca.nlpsol("oilgap_design_thermal_warm", "ipopt", self.nlp,
-                                  dict(self.opts, **WARM_OPTIONS))
-        return self.warm
 
     def q(self, temp_C: float) -> np.ndarray:
         """``q`` at a bulk temperature [degC] (film: the oil's own law there, numpy)."""
@@ -196,9 +181,10 @@ class ThermalDesignProblem:
     """
 
     def __init__(self, isothermal: DesignProblem, mode: str, verbose: bool = False):
-        self.mode = resolve_thermal_mode(isothermal.case, mode)
-        if self.mode == "none":
-            raise InputError("thermal", "none", "'bulk', 'film' or 'full' here (the isothermal "
+        # the mode as DesignProblem resolved it (resolve_thermal_mode): resolved once
+        self.mode = mode
+        if mode == "none" or mode not in THERMAL_MODES:
+            raise InputError("thermal", mode, "'bulk', 'film' or 'full' here (the isothermal "
                              "problem is DesignProblem's own)", "optimize")
         self.isothermal = isothermal
         self.case = isothermal.case
@@ -255,14 +241,9 @@ class ThermalDesignProblem:
         nlp = ({"x": ca.vertcat(y, q), "p": p, "f": ca.log(loss),
                 "g": ca.vertcat(*g, balance)} if full else
                {"x": y, "p": q, "f": ca.log(loss), "g": ca.vertcat(*g)})
-        opts = dict(SOLVER_OPTIONS, **QUIET_OPTIONS)
-        if self.verbose:
-            opts.update({"ipopt.print_level": 5, "print_time": True})
-            opts.pop("ipopt.sb")
-        solver = ca.nlpsol(f"oilgap_design_{self.mode}", "ipopt", nlp, opts)
+        session = SolverSession(f"oilgap_design_{self.mode}", nlp, self.verbose)
         parts = ca.Function("parts", [y, q], [ca.vertcat(p1, p2, pb, tau, J)])
-        out = _ThermalNLP(nlp, opts, solver, parts, oil,
-                          float(seawater_gauge_pressure(depth_m)))
+        out = _ThermalNLP(session, parts, oil, float(seawater_gauge_pressure(depth_m)))
         if full:
             out.loss2 = ca.Function("loss", [y, q], [loss]).map(2)
             out.balance = ca.Function("balance", [y, q, p],
@@ -383,7 +364,7 @@ class ThermalDesignProblem:
     # ----------------------------------------------------------------- solve
 
     def solve(self, x0: DesignResult | DesignPoint | Sequence[float] | None = None, *,
-              warm_start_duals: bool = True, starts: int = 1, seed: int = 0,
+              warm_start_duals: bool = True, starts: int = DEFAULT_STARTS, seed: int = 0,
               sea_temp_C: float | None = None, resistance_K_W: float | None = None,
               other_heat_W: float | None = None, **overrides: Any) -> ThermalDesignResult:
         """Solve the thermal NLP; return the optimum or raise.
@@ -433,43 +414,20 @@ class ThermalDesignProblem:
             raise InputError("oil_temp_C", overrides["oil_temp_C"], "not with thermal mode "
                              f"'{self.mode}': the oil temperature is the heat balance's "
                              "result (give sea_temp_C)", "optimize")
-        if isinstance(starts, bool) or not isinstance(starts, int) or starts < 1:
-            raise InputError("starts", starts, "must be an integer >= 1", "optimize")
+        check_starts(starts)
         iso = self.isothermal
         params = iso.parameters(**overrides)
         nlp = self._nlp_for(params.oil_obj or self.case.oil, params.depth_m)
-        x_start, lam = iso._start(x0, warm_start_duals)
+        x_start, lam = start_point(x0, iso.x_case_m, warm_start_duals)
         if lam is not None and (not isinstance(x0, ThermalDesignResult) or
                                 x0.thermal_mode != self.mode):
             lam = None  # multipliers of another NLP
-        x_start = np.clip(x_start, params.lower_m, params.upper_m)
+        x_start = clamp(x_start, params.lower_m, params.upper_m)
         iso.check_feasible(params, x_start)
+        best = run_starts(lambda x, lm: self._solve_from(params, spec, nlp, x, lm), x_start,
+                          lam, params.lower_m, params.upper_m, starts, seed)
         if starts == 1:
-            if lam is not None:
-                try:
-                    return self._solve_from(params, spec, nlp, x_start, lam)
-                except SolverError:  # a stale dual warm start: retry from x0 alone
-                    pass
-            return self._solve_from(params, spec, nlp, x_start, None)
-        return self._multistart(params, spec, nlp, x_start, lam, starts, seed)
-
-    def _multistart(self, params: DesignParameters, spec: ThermalSpec | None,
-                    nlp: _ThermalNLP, x_start: np.ndarray, lam, starts: int, seed: int
-                    ) -> ThermalDesignResult:
-        """Best optimum from ``x_start`` and ``starts - 1`` uniform random points."""
-        lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
-        pts = np.random.default_rng(seed).uniform(size=(starts - 1, 5))
-        best, first_error = None, None
-        for k, x in enumerate([x_start, *(lo + pts * (hi - lo))]):
-            try:
-                r = self._solve_from(params, spec, nlp, x, lam if k == 0 else None)
-            except SolverError as e:
-                first_error = first_error or e
-                continue
-            if best is None or r.optimal.mean_power_W < best.optimal.mean_power_W:
-                best = r
-        if best is None:
-            raise first_error
+            return best
         t0 = self._temperature(nlp, x_start, spec, params.oil_temp_C)
         return replace(best, starts=starts, initial=self._point(nlp, x_start, t0),
                        initial_oil_temp_C=t0)
@@ -477,11 +435,9 @@ class ThermalDesignProblem:
     def _args(self, params: DesignParameters, spec: ThermalSpec | None, nlp: _ThermalNLP,
               x_start: np.ndarray, t_start: float) -> dict:
         """nlpsol's arguments: start, parameters, bounds (module docstring)."""
-        iso = self.isothermal
         y0, ylo, yhi = (to_nlp(np.asarray(v)) for v in (x_start, params.lower_m,
                                                          params.upper_m))
-        lbg = [np.log(params.torque_min_Nm / iso.tau_ref_Nm), -np.inf]
-        ubg = [np.inf, np.log(params.inertia_max_kgm2 / iso.inertia_ref_kgm2)]
+        lbg, ubg = self.isothermal.constraint_bounds(params)
         if spec is None:  # film: the oil state at the solve's temperature, no balance
             return {"x0": y0, "p": nlp.q(params.oil_temp_C), "lbx": ylo, "ubx": yhi,
                     "lbg": lbg, "ubg": ubg}
@@ -498,68 +454,51 @@ class ThermalDesignProblem:
         t_start = self._temperature(nlp, x_start, spec, params.oil_temp_C)
         initial = self._point(nlp, x_start, t_start)
         args = self._args(params, spec, nlp, x_start, t_start)
-        solver = nlp.solver
-        if lam is not None:
-            solver = nlp.warm_solver()
-            args.update(lam_x0=lam[0], lam_g0=lam[1])
-        t0 = time.perf_counter()
-        sol = solver(**args)
-        raise_if_interrupted()  # CasADi turns Ctrl-C into a failed solve: re-raise it
-        dt = time.perf_counter() - t0
-        stats = solver.stats()
-        status = str(stats.get("return_status", "unknown"))
-        w = np.asarray(sol["x"]).ravel()
-        if status not in SUCCESS_STATUSES or not np.all(np.isfinite(w)):
-            raise self._failure(status, stats, sol, w, params)
+        out = nlp.session.solve(lam=lam, **args)
+        if not out.ok:
+            raise self._failure(out, params)
+        w = out.x
         ylo, yhi = args["lbx"][:5], args["ubx"][:5]
-        y_in = np.clip(w[:5], ylo, yhi)
-        x_m = np.clip(from_nlp(y_in), lo, hi)
-        x_m = np.where(y_in == ylo, lo, np.where(y_in == yhi, hi, x_m))
+        _, x_m = snap_to_bounds(w[:5], ylo, yhi, lo, hi, from_nlp)
         full = spec is not None
         temp = self._temperature(nlp, x_m, spec, params.oil_temp_C,  # polished on x*
                                  guess_C=float(w[5] * TEMP_SCALE_K) if full else None)
         optimal = self._point(nlp, x_m, temp)
-        lam_x = np.asarray(sol["lam_x"]).ravel()
-        lam_g = np.asarray(sol["lam_g"]).ravel()
+        lam_x, lam_g = out.lam_x, out.lam_g
         total = optimal.mean_power_W
         mults, active = convert_multipliers(params, optimal, lam_x[:5], lam_g[:2],
                                             objective_W=total)
         if full:
             costs = {"sea_temp_cost_W_per_K": float(-lam_g[2] * total / BALANCE_SCALE_K),
-                     "balance_residual_K": float(np.asarray(sol["g"]).ravel()[2]
-                                                 * BALANCE_SCALE_K)}
+                     "balance_residual_K": float(out.g[2] * BALANCE_SCALE_K)}
         else:  # envelope theorem: no constraint depends on T, so dP*/dT = dP/dT at x*
             h = 1e-2
             costs = {"oil_temp_cost_W_per_K": float(
                 (self._parts(nlp, x_m, temp + h)[:3].sum()
                  - self._parts(nlp, x_m, temp - h)[:3].sum()) / (2 * h))}
-        case = self.isothermal._case_for(params)
+        case = self.isothermal.case_for(params)
         return ThermalDesignResult(
-            status, True, int(stats.get("iter_count", -1)), dt, initial, optimal, active,
+            out.status, True, out.iterations, out.time_s, initial, optimal, active,
             mults, params, replace(case, thermal=spec) if full else case,
             self.isothermal.machined_rotor_groove_m, self.isothermal.machined_stator_groove_m,
             1, {"lam_x": lam_x, "lam_g": lam_g}, thermal_mode=self.mode,
             initial_oil_temp_C=t_start, oil_temp_C=temp,
             sea_temp_C=spec.sea_temp_C if full else None, thermal=spec, **costs)
 
-    def _failure(self, status: str, stats: dict, sol: dict, w: np.ndarray,
-                 params: DesignParameters) -> SolverError:
+    def _failure(self, out: SolveOutput, params: DesignParameters) -> SolverError:
         """The SolverError of a failed solve, with its last iterate in physical units."""
+        w, gv = out.x, out.g
         last = {VARIABLE_LABELS[v][0]: float(xv) for v, xv in
                 zip(VARIABLES, from_nlp(w[:5]) / MM_TO_M, strict=True)}
-        gv = np.asarray(sol["g"]).ravel()
         last["oil_temp_C"] = (float(w[5] * TEMP_SCALE_K) if uses_balance(self.mode)
                               else float(params.oil_temp_C))
         last["torque_capability_Nm"] = float(np.exp(gv[0]) * self.isothermal.tau_ref_Nm)
         last["inertia_kgm2"] = float(np.exp(gv[1]) * self.isothermal.inertia_ref_kgm2)
-        last["mean_power_W"] = float(np.exp(float(sol["f"])))
+        last["mean_power_W"] = float(np.exp(out.f))
         if uses_balance(self.mode):
             last["balance_residual_K"] = float(gv[2] * BALANCE_SCALE_K)
-        it = ", ".join(f"{k} = {v:.6g}" for k, v in last.items())
-        return SolverError(f"IPOPT did not converge on the thermal design NLP ({self.mode}; "
-                           f"status {status} after {stats.get('iter_count', '?')} "
-                           f"iterations); last iterate: {it}", status=status,
-                           last_iterate=last)
+        return solver_failure(out.status, out.iterations, last,
+                              f"the design NLP under thermal {self.mode}")
 
 
 __all__ = ["BALANCE_SCALE_K", "TEMP_SCALE_K", "ThermalDesignProblem"]

@@ -27,7 +27,7 @@ from dataclasses import dataclass, replace
 
 import numpy as np
 
-from .effects import film_temperature
+from .effects.library import film_temperature
 from .units import ZERO_CELSIUS_K
 
 OIL_STATES = ("measured", "lagged", "film-heated", "lagged and film-heated")

@@ -40,7 +40,7 @@ import numpy as np
 from . import oil_properties as op
 from .errors import InputError, OilgapWarning, check_positive, check_range
 from .fluids import Fluid, builtin_gases, gas_key, warn_if_untrusted_state
-from .inputs import cell_for_message, check_physical, header_error, read_input_text
+from .io.inputs import cell_for_message, check_physical, header_error, read_input_text
 from .units import ZERO_CELSIUS_K, celsius_to_kelvin, m2_s_to_cst, per_gpa_to_per_pa
 
 OIL_COLUMNS = ("oil", "nu40_cSt", "nu100_cSt", "density_kg_m3")

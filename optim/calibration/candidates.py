@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from oilgap.model.effects import EFFECTS, taylor_feature
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 from oilgap.model.regions import JointGeometry
 
 from .forward import TAYLOR_SHAPES, ForwardModel

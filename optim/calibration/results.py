@@ -19,7 +19,7 @@ import pandas as pd
 
 from oilgap.model.effects import EFFECTS
 from oilgap.model.film_heating import film_theory_coefficient
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
 
 from .candidates import Candidates

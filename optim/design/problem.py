@@ -63,11 +63,11 @@ from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.case_limits import check_slot_pitch
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import oil_state
-from oilgap.model.interrupts import raise_if_interrupted
 from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import joint_regions, region_mean_power
 from oilgap.model.units import MM_TO_M
+from oilgap.optim.interrupts import raise_if_interrupted
 
 from .feasibility import check_feasible
 from .objective import DesignObjective, region1_mean_power
@@ -135,7 +135,7 @@ class DesignProblem:
 
     Examples
     --------
-    >>> from oilgap.model.case_io import seed_case
+    >>> from oilgap.model.io.case_io import seed_case
     >>> prob = DesignProblem(seed_case())
     >>> res = prob.solve()                        # doctest: +SKIP
     >>> res.optimal.mean_power_W, res.multipliers["torque_min"].value  # doctest: +SKIP

@@ -70,7 +70,6 @@ import numpy as np
 from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import ThermalSpec
 from oilgap.model.errors import InputError, SolverError
-from oilgap.model.interrupts import raise_if_interrupted
 from oilgap.model.joint_loss import (
     case_film,
     joint_mean_power,
@@ -82,6 +81,7 @@ from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.regions import joint_regions, region_mean_power, rotor_stator_region
 from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
 from oilgap.model.units import MM_TO_M, celsius_to_kelvin
+from oilgap.optim.interrupts import raise_if_interrupted
 
 from .parameters import DesignParameters
 from .results import (
@@ -188,7 +188,7 @@ class ThermalDesignProblem:
 
     Examples
     --------
-    >>> from oilgap.model.case_io import seed_case
+    >>> from oilgap.model.io.case_io import seed_case
     >>> from oilgap.optim.design import DesignProblem
     >>> prob = DesignProblem(seed_case(), thermal="film")      # doctest: +SKIP
     >>> res = prob.solve()                                     # doctest: +SKIP

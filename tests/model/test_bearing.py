@@ -17,7 +17,7 @@ from oilgap.model.bearing import (
     bearing_torque,
     bearing_validity,
 )
-from oilgap.model.bearing_laws import (
+from oilgap.model.bearing.laws import (
     V_M_SUBMERGED,
     drag_loss_factor,
     iso_static_load_rating,
@@ -25,7 +25,7 @@ from oilgap.model.bearing_laws import (
     rated_viscosity,
 )
 from oilgap.model.duty_cycle import DutyCycle
-from oilgap.model.effect_laws import ball_churning_power
+from oilgap.model.effects.laws import ball_churning_power
 from oilgap.model.errors import InputError
 
 BASE = dict(name="61809", series="618", bore_m=0.045, outside_m=0.058, balls=24,

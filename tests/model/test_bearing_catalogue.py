@@ -1,11 +1,11 @@
-"""oilgap.model.bearing_catalogue: designations (ISO 15 bore codes, aliases, /d,
+"""oilgap.model.bearing.catalogue: designations (ISO 15 bore codes, aliases, /d,
 miniatures, refused seals), the product rows against the research notes, the ball-set
 estimate checked with ISO 76, the [bearing] table with its defaults named and its round
 trip."""
 
 import pytest
 
-from oilgap.model.bearing_catalogue import (
+from oilgap.model.bearing.catalogue import (
     PRODUCTS,
     SERIES_CONSTANTS,
     ball_set_estimate,
@@ -14,7 +14,7 @@ from oilgap.model.bearing_catalogue import (
     describe_defaults,
     parse_designation,
 )
-from oilgap.model.bearing_laws import iso_static_load_rating
+from oilgap.model.bearing.laws import iso_static_load_rating
 from oilgap.model.errors import InputError
 
 

@@ -7,8 +7,9 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from oilgap.model import effect_laws, effect_plausibility
 from oilgap.model import effects as fx
+from oilgap.model.effects import laws as effect_laws
+from oilgap.model.effects import plausibility as effect_plausibility
 from oilgap.model.errors import InputError
 from oilgap.model.oils import get_oil
 

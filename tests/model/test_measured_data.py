@@ -5,9 +5,9 @@ import pandas as pd
 import pytest
 from scipy.signal import savgol_filter
 
-from oilgap.model import table_io
 from oilgap.model.errors import InputError
-from oilgap.model.measured_data import (
+from oilgap.model.io import tables as table_io
+from oilgap.model.measured.data import (
     load_measured,
     oil_samples,
     read_table,

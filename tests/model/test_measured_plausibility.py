@@ -9,8 +9,8 @@ import pandas as pd
 import pytest
 
 from oilgap.model.errors import InputError, OilgapWarning
-from oilgap.model.measured_data import load_measured, oil_samples, validate
-from oilgap.model.table_io import read_table, text_cells
+from oilgap.model.io.tables import read_table, text_cells
+from oilgap.model.measured.data import load_measured, oil_samples, validate
 from oilgap.optim.calibration.uncertainty import jackknife_ci
 
 N = 20

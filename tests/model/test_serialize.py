@@ -9,9 +9,10 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import read_case_toml, seed_case
-from oilgap.model.case_write import case_to_dict, write_case_toml
-from oilgap.model.serialize import Exact, dumps, round_sig, toml_dumps
+from oilgap.model.io.case_io import read_case_toml, seed_case
+from oilgap.model.io.case_write import case_to_dict
+from oilgap.model.io.serialize import Exact, dumps, round_sig, toml_dumps
+from oilgap.studies.io.case_write import write_case_toml
 
 
 def test_round_sig_by_hand():

@@ -4,7 +4,7 @@
   ``O_EXCL``, holding the pid and host); a second run into the same folder is refused
   with one line, and a lock whose process is dead is taken over.
 * **Complete or marked.** :class:`ResultFolder` checks the folder before any
-  computation (:func:`oilgap.model.files.check_out_dir`), writes the marker file
+  computation (:func:`oilgap.studies.io.files.check_out_dir`), writes the marker file
   :data:`MARKER` when the command starts writing and removes it when every output is
   in place: a folder holding the marker is the unfinished output of a run that failed
   or was killed. With ``force`` the earlier outputs of the same command are moved
@@ -13,7 +13,7 @@
   writing an output of its own (a refused input loses nothing).
 * **Where it came from.** :meth:`ResultFolder.begin` writes :data:`PROVENANCE_NAME`
   (oilgap's version, the UTC date-time, the command, each input's SHA-256, the
-  library versions: :func:`oilgap.model.provenance.provenance`); facts learnt during
+  library versions: :func:`oilgap.studies.io.provenance.provenance`); facts learnt during
   the run (:meth:`ResultFolder.note`) are added when the folder is complete.
 """
 
@@ -27,7 +27,9 @@ import time
 from collections.abc import Iterable, Sequence
 from pathlib import Path
 
-from .errors import InputError
+from oilgap.model.errors import InputError
+from oilgap.model.io.serialize import dumps
+
 from .files import (
     MARKER,
     OutputError,
@@ -36,8 +38,7 @@ from .files import (
     existing_outputs,
     first_existing,
 )
-from .provenance import PROVENANCE_NAME, provenance
-from .serialize import dumps
+from .provenance import PROVENANCE_NAME, RunRecord, provenance
 
 LOCK_NAME = ".oilgap.lock"
 """Name of the lock file of a folder an oilgap run is writing into."""
@@ -236,6 +237,8 @@ class ResultFolder:
         The option naming the folder [-].
     hint : str
         What the refusal of earlier outputs tells the user to do [-].
+    run : RunRecord, optional
+        The run, for :data:`PROVENANCE_NAME` (None: a run from Python) [-].
 
     Attributes
     ----------
@@ -247,8 +250,9 @@ class ResultFolder:
 
     def __init__(self, path: str | Path, outputs: Sequence[str] = (), force: bool = False,
                  resume: bool = False, command: str = "oilgap", field: str = "--out",
-                 hint: str = "pass --force to replace them"):
+                 hint: str = "pass --force to replace them", run: RunRecord | None = None):
         self.path = Path(path)
+        self.run = run
         self.hint = hint
         self.outputs = tuple(dict.fromkeys((*outputs, PROVENANCE_NAME)))
         self.force = bool(force)
@@ -272,7 +276,7 @@ class ResultFolder:
         self._details.update(details)
 
     def write_provenance(self) -> Path:
-        """Write :data:`PROVENANCE_NAME` (atomically, :func:`~oilgap.model.serialize.dumps`).
+        """Write :data:`PROVENANCE_NAME` (atomically, :func:`~oilgap.model.io.serialize.dumps`).
 
         Returns
         -------
@@ -280,11 +284,11 @@ class ResultFolder:
             The file written.
         """
         return atomic_write_text(self.path / PROVENANCE_NAME,
-                                 dumps(provenance(**self._details)) + "\n")
+                                 dumps(provenance(self.run, **self._details)) + "\n")
 
     def open(self) -> ResultFolder:
         """Check the path, create the folder, take its lock, then check its earlier
-        outputs (:func:`~oilgap.model.files.check_out_dir`): a folder another run is
+        outputs (:func:`~oilgap.studies.io.files.check_out_dir`): a folder another run is
         writing is refused as in use before anything else is said about it."""
         check_out_dir(self.path, (), resume=True, field=self.field)  # the path alone
         _, missing = first_existing(self.path)

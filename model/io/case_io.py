@@ -2,8 +2,8 @@
 
 The TOML file carries units in its key names (``T1_mm``, ``depth_m``,
 ``peak_speed_rpm``); :func:`case_from_dict` converts them to the SI dataclasses
-of :mod:`oilgap.model.case` and :func:`oilgap.model.case_write.case_to_dict` back
-(:mod:`oilgap.model.case_write` writes case files). Every key is listed
+of :mod:`oilgap.model.case` and :func:`oilgap.model.io.case_write.case_to_dict` back
+(:mod:`oilgap.model.io.case_write` writes case files). Every key is listed
 with its unit and default in ``docs/case-file.md``; the ``[oil]`` keys of each kind of
 fluid (``kind = "mineral" | "table" | "gas"``) in ``docs/fluids.md``.
 
@@ -22,7 +22,7 @@ from importlib import resources
 from pathlib import Path
 from typing import Any
 
-from .case import (
+from ..case import (
     DEFAULT_GAMMA,
     GAMMA_DEFAULT_SOURCE,
     MOTOR_TOML_KEYS,
@@ -36,15 +36,15 @@ from .case import (
     RotorStatorClearance,
     ThermalSpec,
 )
+from ..duty_cycle import DutyCycle
+from ..errors import InputError, OilgapWarning, check_finite, check_range
+from ..fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
+from ..oils import Oil, get_oil, read_oils_csv
+from ..skin_friction import BRANCH_KEYS, FrictionLaw, check_friction_ranges
+from ..units import MM_TO_M, celsius_to_kelvin
 from .case_bearing import BEARING_TABLE, bearing_from_doc
 from .defaults import reader_defaults
-from .duty_cycle import DutyCycle
-from .errors import InputError, OilgapWarning, check_finite, check_range
-from .fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
 from .inputs import cell_for_message, read_input_text
-from .oils import Oil, get_oil, read_oils_csv
-from .skin_friction import BRANCH_KEYS, FrictionLaw, check_friction_ranges
-from .units import MM_TO_M, celsius_to_kelvin
 
 MAX_CASE_BYTES = 16 * 2**20
 """Largest case TOML file read [bytes] (16 MiB; the seed's is under 2 kB)."""
@@ -435,7 +435,7 @@ def seed_case(smoothed: bool = False) -> DesignCase:
     Deep-Sea Electric Manipulator, Table 1 and Eq. 9) [1].
     """
     name = "seed_joint.toml"
-    with resources.as_file(resources.files(__package__) / "data" / name) as p:
+    with resources.as_file(resources.files("oilgap.model") / "data" / name) as p:
         case = read_case_toml(p)
     if smoothed:
         r1 = case.region1

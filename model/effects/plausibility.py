@@ -32,8 +32,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .film_heating import film_strength_of, film_theory_coefficient
-from .regions import JointGeometry
+from ..film_heating import film_strength_of, film_theory_coefficient
+from ..regions import JointGeometry
 
 FILM_CONDUCTIVITY_MIN_W_MK = 0.1
 """Lowest thermal conductivity of a liquid lubricant [W/(m K)] (mineral oils 0.12-0.15,

@@ -26,9 +26,9 @@ import warnings
 
 import numpy as np
 
-from .errors import InputError, OilgapWarning
-from .oil_properties import WALTHER_TRUSTED_RANGE_C
-from .units import ZERO_CELSIUS_K
+from ..errors import InputError, OilgapWarning
+from ..oil_properties import WALTHER_TRUSTED_RANGE_C
+from ..units import ZERO_CELSIUS_K
 
 TEMP_MEDIAN_MAX_C = WALTHER_TRUSTED_RANGE_C[1]
 """A median oil temperature above this [degC] is refused: no compensating oil runs a

@@ -11,7 +11,7 @@ asked.
   output path before any computation: the folder exists (or can be made) and can be
   written, the name is not a directory, and an existing output is refused unless
   ``force``. Result folders, their lock and their incomplete marker are
-  :mod:`oilgap.model.result_folder`.
+  :mod:`oilgap.studies.io.result_folder`.
 """
 
 from __future__ import annotations
@@ -24,11 +24,11 @@ from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import IO, Any
 
-from .errors import InputError
+from oilgap.model.errors import InputError
 
 MARKER = "INCOMPLETE"
 """Name of the marker file of a result folder whose outputs are not all written yet
-(written and removed by :class:`oilgap.model.result_folder.ResultFolder`)."""
+(written and removed by :class:`oilgap.studies.io.result_folder.ResultFolder`)."""
 
 
 class OutputError(InputError):

@@ -24,9 +24,9 @@ from dataclasses import asdict, dataclass, replace
 
 import numpy as np
 
-from .bearing import BearingSpec, bearing_mean_power
-from .bearing_laws import F0_OIL_RANGE, SERIES_CONSTANTS, balls_in_still_oil_power
-from .viscous_loss import weighted_mean
+from ..viscous_loss import weighted_mean
+from .friction import BearingSpec, bearing_mean_power
+from .laws import F0_OIL_RANGE, SERIES_CONSTANTS, balls_in_still_oil_power
 
 BAND_DOC = "docs/bearing.md#the-bearing-model-band"
 """Where the band's members and their basis are explained [-]."""
@@ -104,9 +104,9 @@ def bearing_model_band(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s: float,
     """The bearing's mean power under each available model at one oil state [W].
 
     The members are SKF's model with the V_M drag term and with its full drag [1]_,
-    Palmgren's at both ends of :data:`~oilgap.model.bearing_laws.F0_OIL_RANGE` [2]_,
+    Palmgren's at both ends of :data:`~oilgap.model.bearing.laws.F0_OIL_RANGE` [2]_,
     and SKF's rolling and sliding with the balls' drag as spheres in still oil
-    (:func:`~oilgap.model.bearing_laws.balls_in_still_oil_power`, Schiller-Naumann
+    (:func:`~oilgap.model.bearing.laws.balls_in_still_oil_power`, Schiller-Naumann
     [3]_). Numpy only (an output, not a term of the NLP).
 
     Parameters

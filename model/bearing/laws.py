@@ -42,7 +42,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import _math as m
+from .. import _math as m
 
 
 @dataclass(frozen=True)
@@ -116,7 +116,7 @@ F0_OIL_RANGE = (F0_OIL_BATH, F0_SUBMERGED)
 a level (oil bath or submerged) [-] [4]_ (recalled): 2 for an oil bath with a horizontal
 shaft, 4 for an oil bath with a vertical shaft or an oil jet, the value the guidance
 "up to about 2x the oil-bath value" gives a submerged bearing. The band of models
-(:func:`oilgap.model.bearing_band.bearing_model_band`) spans it; grease (0.7-2) and oil
+(:func:`oilgap.model.bearing.band.bearing_model_band`) spans it; grease (0.7-2) and oil
 mist (1) do not apply to an oil-filled joint."""
 SPHERE_DRAG_RE_NEWTON = 1000.0
 """Reynolds number above which a sphere's drag coefficient is taken constant, 0.44 [-]

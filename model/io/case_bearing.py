@@ -3,10 +3,10 @@
 A case's rolling bearing is one optional table, ``[bearing]`` (keys with their units:
 ``designation``, ``bore_mm``, ``outside_mm``, ``radial_load_N``, ...; every key, unit and
 default in ``docs/case-file.md``). The table is read by
-:func:`oilgap.model.bearing_catalogue.bearing_spec_from`, which fills in what the user
+:func:`oilgap.model.bearing.catalogue.bearing_spec_from`, which fills in what the user
 left out (the designation's catalogue geometry, the models' constants) and names it in
 ``BearingSpec.defaults_used``; it is written back by
-:func:`~oilgap.model.bearing_catalogue.bearing_table`, the keys the user gave and only
+:func:`~oilgap.model.bearing.catalogue.bearing_table`, the keys the user gave and only
 those, so a case read, written and read again has the same bearing and the same
 defaults. Without the table the case has no bearing and its document is what it was
 before bearings existed.
@@ -22,8 +22,8 @@ from __future__ import annotations
 from dataclasses import replace
 from typing import Any
 
-from .bearing import BearingSpec
-from .bearing_catalogue import bearing_spec_from, bearing_table, describe_defaults
+from ..bearing.catalogue import bearing_spec_from, bearing_table, describe_defaults
+from ..bearing.friction import BearingSpec
 
 BEARING_TABLE = "bearing"
 """Name of the case file's bearing table [-]."""
@@ -105,6 +105,6 @@ def bearing_default_notes(spec: BearingSpec) -> tuple[str, ...]:
     -------
     tuple of str
         ``"key = value (basis)"`` [units of the key]
-        (:func:`~oilgap.model.bearing_catalogue.describe_defaults`).
+        (:func:`~oilgap.model.bearing.catalogue.describe_defaults`).
     """
     return describe_defaults(spec)

@@ -24,7 +24,7 @@ import stat
 from pathlib import Path
 from typing import Any
 
-from .errors import InputError, check_finite
+from ..errors import InputError, check_finite
 
 MAX_INPUT_BYTES = 1 << 30
 """Largest input text file [bytes] (1 GiB): ten times a duty cycle of

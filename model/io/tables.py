@@ -6,7 +6,7 @@ CSV parser; numbers parsed once into float64/int64 arrays; the text columns
 a few megabytes), and with pandas' C parser otherwise or when pyarrow refuses a
 file pandas can read (ragged rows, quoted line breaks). Either way the columns
 come back with their names stripped; values that do not parse as numbers stay
-text, and the validation (:mod:`oilgap.model.measured_data`) counts them.
+text, and the validation (:mod:`oilgap.model.measured.data`) counts them.
 
 :func:`text_codes` turns a text column into integer codes into its sorted,
 stripped distinct values; :func:`numeric_column` turns any column into float64
@@ -30,7 +30,7 @@ import pyarrow as pa
 import pyarrow.csv as pcsv
 import pyarrow.parquet as pq
 
-from .errors import InputError
+from ..errors import InputError
 
 TEXT_COLUMNS = ("run", "oil")
 """Columns read as text (dictionary-encoded), never as numbers."""

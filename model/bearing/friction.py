@@ -17,7 +17,7 @@ moment [N m] is given by one of two published models (``BearingSpec.model``):
     ``M = M_0 + M_1``: ``M_0 = 1e-7 f_0 (nu n)^(2/3) dm^3``, ``M_1 = f_1 P_1 dm``.
 
 Both are written in catalogue units (N mm, r/min, mm^2/s, mm, N) in
-:mod:`oilgap.model.bearing_laws`;
+:mod:`oilgap.model.bearing.laws`;
 :func:`bearing_moment_terms` converts SI to catalogue units and back, once, through
 :mod:`oilgap.model.units`. Every law takes floats, numpy arrays (duty-cycle nodes along
 the last axis) and CasADi symbols in speed and viscosity. The SKF terms are smooth
@@ -50,8 +50,11 @@ from dataclasses import dataclass
 import casadi as ca
 import numpy as np
 
-from . import _math as m
-from .bearing_laws import (
+from .. import _math as m
+from ..errors import InputError, OilgapWarning
+from ..units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
+from ..viscous_loss import weighted_mean
+from .laws import (
     F0_OIL_BATH,
     F0_SUBMERGED,
     K_RS_OIL_BATH,
@@ -73,9 +76,6 @@ from .bearing_laws import (
     sliding_friction_coefficient,
     sliding_load_factor,
 )
-from .errors import InputError, OilgapWarning
-from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
-from .viscous_loss import weighted_mean
 
 MODELS = ("skf", "palmgren")
 """Friction models [-]."""
@@ -95,7 +95,7 @@ OMEGA_FLOOR_RAD_S = 1.0e-300
 class BearingSpec:
     """A rolling bearing of the joint and how its friction is modelled [SI].
 
-    Built by :func:`oilgap.model.bearing_catalogue.bearing_spec_from` from a
+    Built by :func:`oilgap.model.bearing.catalogue.bearing_spec_from` from a
     ``[bearing]`` table; validation names the TOML key (``bore_mm``, ...).
 
     Attributes
@@ -517,3 +517,9 @@ def bearing_vm_drag_power(spec: BearingSpec, omega_rad_s):
     moment = drag_vm_moment(rad_s_to_rpm(w), 0.5 * (d + D), ball_drag_constant(d, D, k_z, rows),
                             drag_loss_factor(spec.oil_level_ratio))
     return mm_to_m(moment) * w
+
+
+__all__ = ["DRAG_ALIASES", "DRAG_CHOICES", "KINDS", "MODELS", "OMEGA_FLOOR_RAD_S",
+           "BearingSpec", "BearingValidity", "bearing_mean_power", "bearing_moment_terms",
+           "bearing_power", "bearing_torque", "bearing_validity", "bearing_vm_drag_power",
+           "skf_moments"]

@@ -11,7 +11,7 @@
   :func:`bearing_table` writes back what the user gave.
 
 The SKF series constants (R1, R2, S1, S2, K_Z) are
-:data:`oilgap.model.bearing_laws.SERIES_CONSTANTS`, re-exported here.
+:data:`oilgap.model.bearing.laws.SERIES_CONSTANTS`, re-exported here.
 
 References
 ----------
@@ -29,15 +29,15 @@ import math
 import re
 from dataclasses import dataclass
 
-from .bearing import DRAG_CHOICES, KINDS, BearingSpec
-from .bearing_laws import (
+from ..errors import InputError, check_finite
+from ..units import MM_TO_M, m_to_mm
+from .friction import DRAG_CHOICES, KINDS, BearingSpec
+from .laws import (
     MU_BL_DEFAULT,
     MU_EHL_MINERAL,
     SERIES_CONSTANTS,
     iso_static_load_rating,
 )
-from .errors import InputError, check_finite
-from .units import MM_TO_M, m_to_mm
 
 __all__ = ["SERIES_CONSTANTS", "ProductRow", "PRODUCTS", "ParsedDesignation",
            "parse_designation", "ball_set_estimate", "bearing_spec_from", "bearing_table",

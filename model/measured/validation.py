@@ -1,7 +1,7 @@
 """Validation of measured rig data: column checks, counted drop reasons, run checks.
 
-The rules of the data format (:mod:`oilgap.model.measured_data`, whose
-:func:`~oilgap.model.measured_data.validate` this is): every row that is dropped
+The rules of the data format (:mod:`oilgap.model.measured.data`, whose
+:func:`~oilgap.model.measured.data.validate` this is): every row that is dropped
 is counted under the first reason that applies, in the order the checks run
 (text columns, numbers, fluids, run consistency, time order, baselines). The
 checks work on whole columns (numpy, pandas' grouped cumulative maxima) and on
@@ -22,10 +22,10 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from .errors import InputError
-from .measured_plausibility import check_units
-from .oils import Oil, builtin_fluids, normalize_oil_name
-from .table_io import numeric_column, text_cells, text_codes
+from ..errors import InputError
+from ..io.tables import numeric_column, text_cells, text_codes
+from ..oils import Oil, builtin_fluids, normalize_oil_name
+from .plausibility import check_units
 
 REQUIRED_COLUMNS = ("run", "time_s", "speed_rpm", "temp_C", "oil", "roughness_T")
 """Columns of a time-series file (the synthetic rig's format)."""

@@ -1,15 +1,18 @@
 """Where an output came from: the version, the date, the command and its inputs.
 
 Every result folder gets ``provenance.json`` (written atomically by
-:class:`oilgap.model.result_folder.ResultFolder` when writing starts, through
-:func:`oilgap.model.serialize.dumps`); a one-file output that can carry a comment (a
+:class:`oilgap.studies.io.result_folder.ResultFolder` when writing starts, through
+:func:`oilgap.model.io.serialize.dumps`); a one-file output that can carry a comment (a
 case TOML written by ``oilgap optimize --out``) gets :func:`stamp_line` as its first
 line. CSV outputs get no comment line: a reader (pandas, a spreadsheet) would take it
 for data.
 
-The command line notes the run once (:func:`note_run`: ``argv``, the input files,
-the thermal mode asked for); a folder written from Python (a notebook) without it
-records ``sys.argv`` and no inputs.
+The run is a record, :class:`RunRecord`, that the caller builds and passes in: the
+command line builds one from its arguments (``argv``, the input files, the thermal mode
+asked for) and hands it to the result folder or the case writer; a folder written from
+Python (a notebook) without one records ``sys.argv`` and no inputs. Facts learnt while
+the run reads its inputs (the case's gamma) are noted by the code that read them
+(:meth:`~oilgap.studies.io.result_folder.ResultFolder.note`): nothing here reads a case.
 """
 
 from __future__ import annotations
@@ -18,14 +21,11 @@ import datetime as _dt
 import hashlib
 import platform
 import sys
-import warnings
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
 from importlib.metadata import PackageNotFoundError, version
 from pathlib import Path
 from typing import Any
-
-from .case_io import read_case_toml, seed_case
-from .errors import InputError
 
 PROVENANCE_NAME = "provenance.json"
 """Name of the provenance file of a result folder."""
@@ -33,8 +33,50 @@ PROVENANCE_NAME = "provenance.json"
 PACKAGES = ("numpy", "scipy", "casadi", "pandas")
 """The libraries whose versions a provenance records (besides Python and oilgap)."""
 
-_RUN: dict[str, Any] = {"argv": None, "inputs": {}, "details": {}}
-"""The run noted by the command line (:func:`note_run`)."""
+
+@dataclass(frozen=True, kw_only=True)
+class RunRecord:
+    """The run an output comes from, as its caller knows it.
+
+    Parameters
+    ----------
+    argv : tuple of str, optional
+        The command, ``("oilgap", "study", "sweep", ...)``; None for a run from Python
+        (the record then names ``sys.argv``) [-].
+    inputs : mapping, optional
+        Role (``"case"``, ``"grid"``, ``"mission"``, ``"data"``, ``"oils"``,
+        ``"model"``) -> input file path [-].
+    details : mapping, optional
+        Other facts known before the run (``thermal_mode_asked``) [-].
+    """
+
+    argv: tuple[str, ...] | None = None
+    inputs: Mapping[str, str] = field(default_factory=dict)
+    details: Mapping[str, Any] = field(default_factory=dict)
+
+    @classmethod
+    def command_line(cls, argv: Sequence[str] | None,
+                     inputs: Mapping[str, str | Path] | None = None,
+                     **details: Any) -> RunRecord:
+        """The record of an ``oilgap`` command.
+
+        Parameters
+        ----------
+        argv : sequence of str or None
+            The arguments after ``oilgap`` (None: ``sys.argv[1:]``) [-].
+        inputs : mapping, optional
+            Role -> input file path [-].
+        **details
+            Other facts known before the run [-].
+
+        Returns
+        -------
+        RunRecord
+            ``argv`` starting with ``"oilgap"``, the inputs as strings [-].
+        """
+        args = sys.argv[1:] if argv is None else list(argv)
+        return cls(argv=("oilgap", *args), inputs={k: str(v) for k, v in (inputs or {}).items()},
+                   details=dict(details))
 
 
 def package_version(name: str) -> str | None:
@@ -98,36 +140,6 @@ def utc_now() -> str:
     return _dt.datetime.now(_dt.UTC).strftime("%Y-%m-%dT%H:%M:%SZ")
 
 
-def note_run(argv: Sequence[str] | None, inputs: Mapping[str, str | Path] | None = None,
-             **details: Any) -> None:
-    """Note the command being run (called once by the command line's ``main``).
-
-    Parameters
-    ----------
-    argv : sequence of str or None
-        The arguments after ``oilgap`` (None: ``sys.argv[1:]``) [-].
-    inputs : mapping, optional
-        Role (``"case"``, ``"grid"``, ``"mission"``, ``"data"``, ``"oils"``,
-        ``"model"``) -> input file path [-].
-    **details
-        Other facts known before the run (``thermal_mode`` asked for) [-].
-    """
-    _RUN["argv"] = ["oilgap", *(sys.argv[1:] if argv is None else list(argv))]
-    _RUN["inputs"] = {k: str(v) for k, v in (inputs or {}).items()}
-    _RUN["details"] = dict(details)
-
-
-def clear_run() -> None:
-    """Forget the run noted by :func:`note_run` (the end of ``main``).
-
-    Returns
-    -------
-    None
-        The noted argv, inputs and details [-] are cleared.
-    """
-    _RUN.update(argv=None, inputs={}, details={})
-
-
 def inputs_record(inputs: Mapping[str, str | Path]) -> dict[str, dict[str, Any]]:
     """Each input file with its path, size and SHA-256 (an unreadable one with its
     reason instead).
@@ -153,25 +165,16 @@ def inputs_record(inputs: Mapping[str, str | Path]) -> dict[str, dict[str, Any]]
     return out
 
 
-def _case_gamma(case_path: str | None) -> dict[str, Any]:
-    """gamma and its source of the case file (or the seed joint); empty if unreadable."""
-    try:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")
-            case = read_case_toml(case_path) if case_path else seed_case()
-    except (InputError, OSError):
-        return {}
-    return {"gamma": float(case.friction.gamma), "gamma_source": case.gamma_source}
-
-
-def provenance(**details: Any) -> dict[str, Any]:
+def provenance(run: RunRecord | None = None, **details: Any) -> dict[str, Any]:
     """The provenance document of an output written now.
 
     Parameters
     ----------
+    run : RunRecord, optional
+        The run (None: a run from Python, ``sys.argv`` and no inputs) [-].
     **details
         Facts the writer knows (``thermal_mode``, ``gamma``); they override the
-        ones noted with the run [-].
+        ones in the run's record [-].
 
     Returns
     -------
@@ -180,25 +183,22 @@ def provenance(**details: Any) -> dict[str, Any]:
         (:func:`inputs_record`), ``python``, ``platform``, ``packages`` (name ->
         version), then the details [-].
     """
-    argv = _RUN["argv"] or ["oilgap-python", *sys.argv]
-    inputs = dict(_RUN["inputs"])
-    known = dict(_RUN["details"])
-    if "gamma" not in details and "gamma" not in known and argv[0] == "oilgap":
-        known.update(_case_gamma(inputs.get("case")))
+    run = run or RunRecord()
+    argv = list(run.argv) if run.argv else ["oilgap-python", *sys.argv]
     return {
         "oilgap_version": oilgap_version(),
         "created_utc": utc_now(),
         "command": argv,
-        "inputs": inputs_record(inputs),
+        "inputs": inputs_record(run.inputs),
         "python": platform.python_version(),
         "platform": platform.platform(terse=True),
         "packages": {name: package_version(name) for name in PACKAGES},
-        **known,
+        **run.details,
         **details,
     }
 
 
-def stamp_line(what: str = "written") -> str:
+def stamp_line(what: str = "written", run: RunRecord | None = None) -> str:
     """One comment line for a one-file output: ``# written by oilgap X on DATE by:
     oilgap optimize ...`` (no newline).
 
@@ -206,17 +206,18 @@ def stamp_line(what: str = "written") -> str:
     ----------
     what : str
         The verb [-].
+    run : RunRecord, optional
+        The run (None: a run from Python, named by ``sys.argv``) [-].
 
     Returns
     -------
     str
         The line, starting with ``#`` [-].
     """
-    argv = _RUN["argv"] or ["python", *sys.argv]
+    argv = list(run.argv) if run is not None and run.argv else ["python", *sys.argv]
     return (f"# {what} by oilgap {oilgap_version()} on {utc_now()} by: "
             + " ".join(argv)).replace("\n", " ")
 
 
-__all__ = ["PACKAGES", "PROVENANCE_NAME", "clear_run", "file_sha256", "inputs_record",
-           "note_run", "oilgap_version", "package_version", "provenance", "stamp_line",
-           "utc_now"]
+__all__ = ["PACKAGES", "PROVENANCE_NAME", "RunRecord", "file_sha256", "inputs_record",
+           "oilgap_version", "package_version", "provenance", "stamp_line", "utc_now"]

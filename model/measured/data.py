@@ -44,15 +44,18 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from .errors import InputError
-from .fluids import warn_if_untrusted_state
+from ..errors import InputError
+from ..fluids import warn_if_untrusted_state
+from ..io.tables import read_table, text_codes
+from ..oils import Oil, normalize_oil_name, read_oils_csv
+from ..units import ZERO_CELSIUS_K, cst_to_m2_s, m_to_mm, mm_to_m
 from .kinematics import (
     SPEED_DERIVATIVE_WINDOW_S,
     TEMP_DERIVATIVE_WINDOW_S,
     add_kinematics,
     time_derivative,
 )
-from .measured_validation import (
+from .validation import (
     CORE_COLUMNS,
     INTERNAL_COLUMNS,
     MAX_CV_GROUPS,
@@ -68,9 +71,6 @@ from .measured_validation import (
     MeasuredData,
     validate,
 )
-from .oils import Oil, normalize_oil_name, read_oils_csv
-from .table_io import read_table, text_codes
-from .units import ZERO_CELSIUS_K, cst_to_m2_s, m_to_mm, mm_to_m
 
 __all__ = ["CORE_COLUMNS", "MAX_CV_GROUPS", "MIN_RUN_SAMPLES", "OIL_FREE", "OPTIONAL_COLUMNS",
            "POWER_COLUMNS", "PURPOSES", "REQUIRED_COLUMNS", "SPEED_DERIVATIVE_WINDOW_S",

@@ -63,10 +63,10 @@ from __future__ import annotations
 import numpy as np
 from scipy.signal import lfilter
 
-from . import _math as m
-from .bearing_laws import PALMGREN_MIN_NU_N, palmgren_viscous_moment  # noqa: F401 (re-export)
-from .taylor_couette import CRITICAL_TAYLOR_NUMBER
-from .units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
+from .. import _math as m
+from ..bearing.laws import PALMGREN_MIN_NU_N, palmgren_viscous_moment  # noqa: F401 (re-export)
+from ..taylor_couette import CRITICAL_TAYLOR_NUMBER
+from ..units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
 
 FREE_DISC_TRANSITION_RE = 3.0e5
 """Disc Reynolds number of the laminar-turbulent change of the free-disc law [1]."""

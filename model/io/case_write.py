@@ -1,32 +1,29 @@
-"""Design cases written as TOML: the case document (units in key names) and the file.
+"""Design cases as TOML text: the case document (units in key names) and its text.
 
-The inverse of :func:`oilgap.model.case_io.case_from_dict`: :func:`case_to_dict`
-gives the document, :func:`write_case_toml` writes it through
-:func:`oilgap.model.serialize.toml_dumps` (tomli-w; floats rounded to 6 significant
-digits, ``T1_mm = 37.7133``: what the model can claim, and a file a person reads),
-atomically, with a first comment line saying which oilgap wrote it, when and by which
-command (:func:`oilgap.model.provenance.stamp_line`). Read back, a written case equals
-the original to the rounding (relative 5e-6 on each key's value).
+The inverse of :func:`oilgap.model.io.case_io.case_from_dict`: :func:`case_to_dict`
+gives the document, :func:`dumps_toml` its text through
+:func:`oilgap.model.io.serialize.toml_dumps` (tomli-w; floats rounded to 6 significant
+digits, ``T1_mm = 37.7133``: what the model can claim, and a file a person reads). The
+file is written by :func:`oilgap.studies.io.case_write.write_case_toml` (atomically, with
+a stamp line); read back, a written case equals the original to the rounding (relative
+5e-6 on each key's value).
 """
 
 from __future__ import annotations
 
 import math
 from dataclasses import fields
-from pathlib import Path
 from typing import Any
 
-from .case import MOTOR_FIELD_TO_KEY, THERMAL_TOML_KEYS, DesignCase, motor_value_in_toml_units
+from ..case import MOTOR_FIELD_TO_KEY, THERMAL_TOML_KEYS, DesignCase, motor_value_in_toml_units
+from ..errors import InputError
+from ..fluids import Fluid, builtin_gases, gas_key
+from ..oils import builtin_oils, normalize_oil_name, read_oils_csv
+from ..skin_friction import BRANCH_KEYS
+from ..units import MM_TO_M, kelvin_to_celsius
 from .case_bearing import BEARING_TABLE, bearing_to_doc
 from .case_io import _GAS_CONSTANTS
-from .errors import InputError
-from .files import atomic_write_text
-from .fluids import Fluid, builtin_gases, gas_key
-from .oils import builtin_oils, normalize_oil_name, read_oils_csv
-from .provenance import stamp_line
 from .serialize import toml_dumps
-from .skin_friction import BRANCH_KEYS
-from .units import MM_TO_M, kelvin_to_celsius
 
 
 def case_to_dict(case: DesignCase) -> dict:
@@ -132,7 +129,7 @@ def _csv_flag(oils_csv: str, name: str) -> bool:
 
 
 def dumps_toml(doc: dict) -> str:
-    """The TOML text of a case document (:func:`oilgap.model.serialize.toml_dumps`).
+    """The TOML text of a case document (:func:`oilgap.model.io.serialize.toml_dumps`).
 
     Parameters
     ----------
@@ -148,28 +145,4 @@ def dumps_toml(doc: dict) -> str:
     return toml_dumps(doc)
 
 
-def write_case_toml(case: DesignCase, path: str | Path, header: bool = True) -> Path:
-    """Write a case as TOML that :func:`~oilgap.model.case_io.read_case_toml` reads back
-    to the same case (to 6 significant digits).
-
-    Parameters
-    ----------
-    case : DesignCase
-        The case (SI inside; written with units in the key names, e.g. [mm]).
-    path : str or Path
-        Output file; parent directories are created.
-    header : bool
-        Start with the comment line ``# written by oilgap X on DATE by: COMMAND``.
-
-    Returns
-    -------
-    Path
-        The file written.
-    """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    text = dumps_toml(case_to_dict(case))
-    return atomic_write_text(path, (stamp_line() + "\n" if header else "") + text)
-
-
-__all__ = ["case_to_dict", "dumps_toml", "write_case_toml"]
+__all__ = ["case_to_dict", "dumps_toml"]

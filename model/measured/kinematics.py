@@ -23,7 +23,7 @@ import numpy as np
 import pandas as pd
 from scipy.signal import oaconvolve, savgol_coeffs, savgol_filter
 
-from .units import rpm_to_rad_s
+from ..units import rpm_to_rad_s
 
 SPEED_DERIVATIVE_WINDOW_S = 1.0
 """Savitzky-Golay window [s] for d(omega)/dt (quadratic, at least 5 samples)."""

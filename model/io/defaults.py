@@ -18,7 +18,7 @@ from collections.abc import Iterable, Mapping
 from dataclasses import dataclass, fields, replace
 from typing import TYPE_CHECKING, Any
 
-from .case import (
+from ..case import (
     DEFAULT_GAMMA,
     GAMMA_DEFAULT_SOURCE,
     MOTOR_FIELD_TO_KEY,
@@ -28,15 +28,15 @@ from .case import (
     ThermalSpec,
     motor_value_in_toml_units,
 )
+from ..duty_cycle import DutyCycle
+from ..motor import motor_torque
+from ..skin_friction import BRANCH_KEYS, FrictionLaw
+from ..units import MM_TO_M
 from .case_bearing import bearing_default_notes, bearing_defaults
-from .duty_cycle import DutyCycle
-from .motor import motor_torque
 from .serialize import round_sig
-from .skin_friction import BRANCH_KEYS, FrictionLaw
-from .units import MM_TO_M
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
-    from .case import DesignCase
+    from ..case import DesignCase
 
 SEED_SOURCE = "the seed joint's"
 FILM_STRENGTH_SOURCE = ("the smooth-film theory, used by the film/full modes; the seed's "
@@ -132,7 +132,7 @@ def study_default(field: str, value: Any, unit: str, source: str = "default") ->
 def reader_defaults(doc: Mapping[str, Any], bounds: DesignBounds, motor: Motor,
                     duty: DutyCycle | None = None, thermal: ThermalSpec | None = None
                     ) -> tuple[Default, ...]:
-    """The values :func:`~oilgap.model.case_io.case_from_dict` filled in for ``doc``.
+    """The values :func:`~oilgap.model.io.case_io.case_from_dict` filled in for ``doc``.
 
     Parameters
     ----------

@@ -50,8 +50,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .bearing import bearing_power, bearing_vm_drag_power
-from .effect_laws import (
+from ..bearing.friction import bearing_power, bearing_vm_drag_power
+from ..errors import InputError
+from ..regions import JointGeometry, region_power
+from ..skin_friction import FrictionLaw
+from ..taylor_couette import couette_reynolds, taylor_number
+from ..thermal import steady_temperature
+from .laws import (
     CRITICAL_TAYLOR_NUMBER,
     FREE_DISC_TRANSITION_RE,
     PALMGREN_MIN_NU_N,
@@ -73,7 +78,7 @@ from .effect_laws import (
     taylor_vortex_power,
     thermal_lag_power,
 )
-from .effect_plausibility import (
+from .plausibility import (
     PLAUSIBLE,
     SEAL_TANGENTIAL_FORCE_N_M,
     TIME_DEPENDENT,
@@ -81,15 +86,10 @@ from .effect_plausibility import (
     Plausibility,
     RigFacts,
 )
-from .errors import InputError
-from .regions import JointGeometry, region_power
-from .skin_friction import FrictionLaw
-from .taylor_couette import couette_reynolds, taylor_number
-from .thermal import steady_temperature
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
-    from .bearing import BearingSpec
-    from .oil_state import OilState
+    from ..bearing.friction import BearingSpec
+    from ..oil_state import OilState
 
 __all__ = [
     "RegionState", "EffectContext", "region_states", "effect_context", "cross_region_ratios",

@@ -4,7 +4,7 @@ asked.
 * **Atomic files.** :func:`atomic_write` writes to a temporary file in the target's
   folder, flushes and fsyncs it, then moves it into place with :func:`os.replace`:
   a reader (or a crash, a full disk, Ctrl-C) sees the old file or the new one, never
-  half a file. :func:`atomic_write_text`, :func:`atomic_write_bytes`,
+  half a file. :func:`atomic_write_text`,
   :func:`atomic_to_csv`, :func:`atomic_to_parquet` and :func:`atomic_savefig` are its
   forms. A failed write raises :class:`OutputError` naming the file (exit 2).
 * **No silent overwrite.** :func:`check_out_file` and :func:`check_out_dir` check an
@@ -142,24 +142,6 @@ def atomic_write_text(path: str | Path, text: str, encoding: str = "utf-8") -> P
         ``path``.
     """
     return atomic_write(path, lambda fh: fh.write(text), encoding=encoding)
-
-
-def atomic_write_bytes(path: str | Path, data: bytes) -> Path:
-    """Write ``data`` to ``path`` atomically (:func:`atomic_write`).
-
-    Parameters
-    ----------
-    path : str or Path
-        The file [-].
-    data : bytes
-        Its content [-].
-
-    Returns
-    -------
-    Path
-        ``path``.
-    """
-    return atomic_write(path, lambda fh: fh.write(data), binary=True)
 
 
 FORMULA_START = ("=", "+", "-", "@", "\t", "\r")
@@ -488,6 +470,6 @@ def check_out_dir(path: str | Path, outputs: Sequence[str] = (), force: bool = F
 
 
 __all__ = ["FORMULA_START", "MARKER", "OutputError", "atomic_savefig", "atomic_to_csv",
-           "atomic_to_parquet", "atomic_write", "atomic_write_bytes", "atomic_write_text",
+           "atomic_to_parquet", "atomic_write", "atomic_write_text",
            "check_out_dir", "check_out_file", "existing_outputs", "first_existing",
            "is_number", "neutralise_formulas", "refuse_existing"]

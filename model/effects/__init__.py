@@ -8,5 +8,4 @@ EFFECTS``).
 """
 
 from .library import *  # noqa: F403
-from .library import __all__  # noqa: F401
-from .library import taylor_feature  # noqa: F401 (not in the library's __all__)
+from .library import __all__, taylor_feature  # noqa: F401 (taylor_feature: not in __all__)

@@ -17,7 +17,7 @@ import tempfile
 import time
 from pathlib import Path
 
-from oilgap.model.measured_data import load_measured
+from oilgap.model.measured.data import load_measured
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.studies.loop_report import write_report
 from oilgap.studies.reporting import write_data_csv

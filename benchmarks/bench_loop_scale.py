@@ -53,7 +53,7 @@ def peak_rss_mb() -> float:
 def child(csv: str, out: str) -> None:
     """One size, in its own process: the loop from the file to the report, timed."""
     t0 = time.perf_counter()
-    from oilgap.model.measured_data import load_measured
+    from oilgap.model.measured.data import load_measured
     from oilgap.optim.calibration import LoopEstimator
     from oilgap.studies.loop_report import write_report
     t1 = time.perf_counter()

@@ -26,9 +26,9 @@ import warnings
 
 import numpy as np
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, OilgapWarning, SolverError
 from oilgap.model.evaluation import oil_state
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import builtin_oils
 from oilgap.optim.design import DesignProblem, region1_mean_power
 from oilgap.optim.scipy_reference import solve_slsqp

@@ -30,7 +30,7 @@ import time
 
 import numpy as np
 
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.optim.multiobjective import hypervolume_2d, nondominated
 from oilgap.studies.grid.optimize import clear_problems
 from oilgap.studies.pareto import (

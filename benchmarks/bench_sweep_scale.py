@@ -31,7 +31,7 @@ import casadi as ca
 import numpy as np
 import pandas as pd
 
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.optim.design import lean
 from oilgap.optim.design.variables import to_nlp
 from oilgap.studies.grid import optimize as grid_optimize

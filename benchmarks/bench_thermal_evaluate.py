@@ -29,8 +29,8 @@ import numpy as np
 
 from oilgap.model import joint_loss
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.thermal import joint_steady_temperature
 
 REPEATS = 400

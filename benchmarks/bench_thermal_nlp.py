@@ -24,7 +24,7 @@ from dataclasses import replace
 import numpy as np
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.optim.design import DesignProblem
 
 SPEC = ThermalSpec(sea_temp_C=2.0, resistance_K_W=0.5, heat_capacity_J_K=5e4)

@@ -26,8 +26,8 @@ import time
 import numpy as np
 import pandas as pd
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.evaluation import mean_viscous_power
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.studies.grid.optimize import clear_problems

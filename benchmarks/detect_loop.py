@@ -17,9 +17,9 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from oilgap.model.bearing_catalogue import bearing_spec_from
-from oilgap.model.case_io import seed_case
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.effects import EFFECTS
+from oilgap.model.io.case_io import seed_case
 from oilgap.studies.synth import SynthConfig, weakest_strength
 
 BEARING_RIG = SynthConfig(case=replace(seed_case(), bearing=bearing_spec_from(

@@ -30,7 +30,7 @@ import time
 from dataclasses import replace
 from pathlib import Path
 
-from oilgap.model.case_io import case_from_dict
+from oilgap.model.io.case_io import case_from_dict
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.studies.outside_laws import OPEN_GEOMETRY, SpeedProfile
 from oilgap.studies.outside_rig import (

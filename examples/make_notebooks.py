@@ -153,7 +153,7 @@ command line). `opt.raw` is the module-level result: under `bulk` a comparison w
 same model (`bulk`, the default), so the difference is the design alone.
 """),
     code('''
-from oilgap.model.case_write import write_case_toml  # the façade has no case writer (yet)
+from oilgap.studies.io.case_write import write_case_toml  # the façade has no case writer (yet)
 
 opt_path = write_case_toml(opt.raw.heated.to_case(), OUT / "my_joint_opt.toml")
 opt_case = og.read_case(opt_path)

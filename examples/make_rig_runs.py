@@ -32,7 +32,7 @@ from dataclasses import replace
 from pathlib import Path
 
 from oilgap.model.errors import InputError
-from oilgap.model.files import atomic_to_csv, check_out_file
+from oilgap.studies.io.files import atomic_to_csv, check_out_file
 from oilgap.studies.outside_laws import Annulus, RigGeometry
 from oilgap.studies.outside_rig import OutsideConfig, steady_points, synthesize
 

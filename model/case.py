@@ -23,7 +23,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
-from .bearing import BearingSpec
+from .bearing.friction import BearingSpec
 from .case_limits import (
     MAX_GAP_RATIO,
     MAX_LENGTH_M,
@@ -40,7 +40,7 @@ from .duty_cycle import DutyCycle
 from .errors import InputError, check_positive, check_range
 from .film_heating import WALL_CONDITIONS
 from .fluids import Fluid
-from .inputs import check_physical
+from .io.inputs import check_physical
 from .skin_friction import FrictionLaw, groove_roughness
 from .units import MM_TO_M
 
@@ -442,9 +442,9 @@ class DesignCase:
         Where ``friction.gamma`` came from, for output headers: ``"case"`` (the
         case's ``[friction]``), :data:`GAMMA_DEFAULT_SOURCE` (filled in by the reader)
         or ``"given"`` (set in Python).
-    defaults : tuple of oilgap.model.defaults.Default
+    defaults : tuple of oilgap.model.io.defaults.Default
         The values the case reader filled in [each in its unit]
-        (``oilgap.model.defaults.case_defaults`` lists them with the ones that follow
+        (``oilgap.model.io.defaults.case_defaults`` lists them with the ones that follow
         from the case); empty for a case made in Python.
     """
 

@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from .errors import InputError, check_finite, check_positive
-from .inputs import cell_for_message, check_physical, header_error, read_input_text
+from .io.inputs import cell_for_message, check_physical, header_error, read_input_text
 from .units import rpm_to_rad_s
 
 NODE_MERGE_RTOL = 1e-12

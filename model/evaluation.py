@@ -28,19 +28,19 @@ from dataclasses import asdict, dataclass, replace
 
 import numpy as np
 
-from .bearing import (
+from .bearing.band import BearingModelBand, bearing_model_band
+from .bearing.friction import (
     BearingSpec,
     bearing_mean_power,
     bearing_moment_terms,
     bearing_torque,
     bearing_validity,
 )
-from .bearing_band import BearingModelBand, bearing_model_band
 from .case import DesignCase
-from .case_bearing import bearing_default_notes, bearing_defaults
 from .errors import InputError, SolverError
 from .film_cycle import FilmPeak, film_peak
 from .fluids import warn_if_untrusted_state
+from .io.case_bearing import bearing_default_notes, bearing_defaults
 from .joint_loss import (
     FilmBand,
     applies_film,
@@ -157,7 +157,7 @@ class BearingResult:
         One sentence per range of validity of the model the point is outside.
     model_band : BearingModelBand or None
         Its mean power under every available bearing model at the same oil state [W]
-        (:func:`~oilgap.model.bearing_band.bearing_model_band`), beside the chosen one;
+        (:func:`~oilgap.model.bearing.band.bearing_model_band`), beside the chosen one;
         ``model_band_W`` in the JSON.
     """
 

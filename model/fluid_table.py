@@ -27,7 +27,7 @@ import numpy as np
 
 from . import _math as m
 from .errors import InputError, OilgapWarning, check_finite, check_positive
-from .inputs import cell_for_message, header_error, read_input_text
+from .io.inputs import cell_for_message, header_error, read_input_text
 from .oil_properties import seawater_gauge_pressure
 from .units import (
     MPA_TO_PA,
@@ -339,7 +339,7 @@ def uncommented_csv(path: Path, field: str = "table") -> io.StringIO:
     ------
     InputError
         The file cannot be read or is not UTF-8 text
-        (:func:`~oilgap.model.inputs.read_input_text`).
+        (:func:`~oilgap.model.io.inputs.read_input_text`).
     """
     text = read_input_text(path, field, "CSV file")
     lines = [ln for ln in text.splitlines() if ln.strip() and not ln.lstrip().startswith("#")]
@@ -359,6 +359,6 @@ def number_or_raw(raw):
     -------
     float or Any
         The number [in the unit of its column], or ``raw``
-        (:func:`~oilgap.model.inputs.cell_for_message`).
+        (:func:`~oilgap.model.io.inputs.cell_for_message`).
     """
     return cell_for_message(raw)

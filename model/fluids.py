@@ -46,7 +46,7 @@ import numpy as np
 from . import _math as m
 from .errors import InputError, OilgapWarning, check_finite
 from .fluid_table import TableFluid, number_or_raw, read_fluid_table, uncommented_csv
-from .inputs import check_physical
+from .io.inputs import check_physical
 from .oil_properties import seawater_gauge_pressure
 from .units import (
     MPA_TO_PA,

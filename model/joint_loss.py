@@ -46,7 +46,7 @@ import casadi as ca
 import numpy as np
 
 from . import _math as m
-from .bearing import bearing_mean_power
+from .bearing.friction import bearing_mean_power
 from .errors import InputError
 from .film_cycle import FilmHeating, film_heating_for
 from .oil_properties import seawater_gauge_pressure

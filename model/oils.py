@@ -30,17 +30,14 @@ from __future__ import annotations
 import csv
 import io
 import math
-import warnings
 from dataclasses import dataclass
 from importlib import resources
 from pathlib import Path
 
-import numpy as np
-
 from . import oil_properties as op
-from .errors import InputError, OilgapWarning, check_positive, check_range
-from .fluids import Fluid, builtin_gases, gas_key, warn_if_untrusted_state
-from .inputs import cell_for_message, check_physical, header_error, read_input_text
+from .errors import InputError, check_positive, check_range
+from .fluids import Fluid, builtin_gases, gas_key
+from .io.inputs import cell_for_message, check_physical, header_error, read_input_text
 from .units import ZERO_CELSIUS_K, celsius_to_kelvin, m2_s_to_cst, per_gpa_to_per_pa
 
 OIL_COLUMNS = ("oil", "nu40_cSt", "nu100_cSt", "density_kg_m3")
@@ -205,36 +202,6 @@ class Oil:
         A, B = self.walther
         return op.oil_viscosity_temperature_slope(A, B, self.density_kg_m3, temp_K,
                                                   pressure_gauge_Pa, self.barus_1_Pa)
-
-
-def warn_if_untrusted_temperature(temp_C, field: str = "oil_temp_C",
-                                  fluid: Fluid | None = None) -> None:
-    """Warn (OilgapWarning) if a temperature lies outside the trusted Walther range.
-
-    Parameters
-    ----------
-    temp_C : float or array
-        Oil temperature(s) [degC]; the range is
-        :data:`~oilgap.model.oil_properties.WALTHER_TRUSTED_RANGE_C`.
-    field : str
-        Name of the temperature in the warning.
-    fluid : Fluid, optional
-        A fluid whose own range and law apply instead
-        (:func:`~oilgap.model.fluids.warn_if_untrusted_state` at gauge pressure 0 [Pa]).
-    """
-    if fluid is not None:
-        warn_if_untrusted_state(fluid, temp_C, 0.0, field)
-        return
-    lo, hi = op.WALTHER_TRUSTED_RANGE_C
-    t = np.asarray(temp_C, dtype=float)
-    if t.size and (np.nanmin(t) < lo or np.nanmax(t) > hi):
-        lo_t, hi_t = float(np.nanmin(t)), float(np.nanmax(t))
-        shown = f"{lo_t:g}" if lo_t == hi_t else f"{lo_t:g}..{hi_t:g}"
-        warnings.warn(
-            f"{field} = {shown} degC lies outside "
-            f"[{lo:g}, {hi:g}] degC, where the Walther line through the 40 and 100 degC points "
-            "is trusted; the viscosity there is an extrapolation",
-            OilgapWarning, stacklevel=2)
 
 
 def normalize_oil_name(name: str) -> str:

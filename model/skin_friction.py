@@ -49,7 +49,7 @@ from typing import Literal
 
 from . import _math as m
 from .errors import InputError, check_finite, check_positive
-from .inputs import check_physical
+from .io.inputs import check_physical
 from .taylor_couette import REGIME_BOUNDARIES_RE, couette_moment_coefficient
 
 BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))

@@ -155,22 +155,6 @@ def kelvin_to_celsius(temp_K):
     return temp_K - ZERO_CELSIUS_K
 
 
-def pa_to_mpa(pressure_Pa):
-    """Convert a pressure from [Pa] to [MPa].
-
-    Parameters
-    ----------
-    pressure_Pa : float or array
-        Pressure [Pa].
-
-    Returns
-    -------
-    float or array
-        The same pressure [MPa].
-    """
-    return pressure_Pa / MPA_TO_PA
-
-
 def per_gpa_to_per_pa(coeff_1_GPa):
     """Convert a pressure coefficient from [1/GPa] to [1/Pa].
 

@@ -20,14 +20,14 @@ from dataclasses import replace
 from pathlib import Path
 
 from oilgap.model.case import DesignCase, OperatingPoint
-from oilgap.model.case_io import read_case_toml
-from oilgap.model.case_io import seed_case as _seed_case
-from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError, check_finite
 from oilgap.model.evaluation import evaluate_case
-from oilgap.model.files import check_out_file
+from oilgap.model.io.case_io import read_case_toml
+from oilgap.model.io.case_io import seed_case as _seed_case
 from oilgap.model.joint_loss import resolve_thermal_mode, uses_balance
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
+from oilgap.studies.io.case_write import write_case_toml
+from oilgap.studies.io.files import check_out_file
 from oilgap.studies.results import Evaluation
 
 LAMINAR_LAWS = ("couette", "bilgen-boulos")
@@ -35,7 +35,7 @@ LAMINAR_LAWS = ("couette", "bilgen-boulos")
 
 
 def read_case(path: str | Path) -> DesignCase:
-    """The case TOML at ``path`` (:func:`oilgap.model.case_io.read_case_toml`).
+    """The case TOML at ``path`` (:func:`oilgap.model.io.case_io.read_case_toml`).
 
     Parameters
     ----------
@@ -51,7 +51,7 @@ def read_case(path: str | Path) -> DesignCase:
 
 def write_case(case: DesignCase, path: str | Path, force: bool = False) -> Path:
     """Write ``case`` as a case TOML that :func:`read_case` reads back (floats to 6
-    significant digits; :func:`oilgap.model.case_write.write_case_toml`), atomically; an
+    significant digits; :func:`oilgap.studies.io.case_write.write_case_toml`), atomically; an
     existing file is replaced only with ``force`` (as ``oilgap optimize --out``).
 
     Parameters

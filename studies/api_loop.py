@@ -14,9 +14,9 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError, OilgapWarning, SolverError
-from oilgap.model.measured_data import MeasuredData, load_measured, read_table
+from oilgap.model.io.defaults import gamma_fields
+from oilgap.model.measured.data import MeasuredData, load_measured, read_table
 from oilgap.model.oils import Oil
-from oilgap.model.result_folder import ResultFolder
 from oilgap.optim.calibration.estimator import DEFAULT_MARGIN, LoopEstimator
 from oilgap.optim.calibration.model_io import (
     PREDICTED_POWER,
@@ -26,6 +26,7 @@ from oilgap.optim.calibration.model_io import (
     load_model,
 )
 from oilgap.studies.api import as_case, oil_catalogue
+from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.loop_figures import pages, plot_overview, plot_residuals, plot_windows
 from oilgap.studies.loop_report import (
     format_summary,
@@ -42,7 +43,7 @@ from oilgap.studies.synth import SynthConfig, synthesize
 def read_measured(path: str | Path, oils: dict[str, Oil] | str | Path | None = None
                   ) -> MeasuredData:
     """Rig data (CSV or Parquet) read and validated, every dropped row counted
-    (:func:`oilgap.model.measured_data.load_measured`).
+    (:func:`oilgap.model.measured.data.load_measured`).
 
     Parameters
     ----------
@@ -253,6 +254,7 @@ class Loop(LoopEstimator, ResultView):
         caller already opened). Returns the paths (``json``, ``report``, ``figures``)."""
         self._check_fitted()
         with result_folder("loop", out, force, folder=folder) as f:
+            f.note(**gamma_fields(self.case_))  # the rig case as read, for provenance.json
             f.begin()
             paths = write_report(self, out, figures=figures)
             f.complete()

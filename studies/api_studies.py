@@ -4,7 +4,7 @@
 Each runs the study's module-level ``run`` and wraps its result in a view
 (:mod:`oilgap.studies.results_studies`). With ``out`` the study writes its files into
 that folder as the command does: the folder is checked and locked before any computation
-(:class:`~oilgap.model.result_folder.ResultFolder`), earlier outputs are refused unless
+(:class:`~oilgap.studies.io.result_folder.ResultFolder`), earlier outputs are refused unless
 ``force`` (a sweep continues with ``resume``); ``folder`` is a result folder the caller
 (the command line) already opened.
 """
@@ -20,8 +20,8 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
+from oilgap.model.io.defaults import gamma_fields
 from oilgap.model.oils import Oil
-from oilgap.model.result_folder import ResultFolder
 from oilgap.studies import oil_grade as oil_grade_study
 from oilgap.studies import pareto as pareto_study
 from oilgap.studies import smoothing as smoothing_study
@@ -29,6 +29,7 @@ from oilgap.studies.api import as_case, oil_catalogue
 from oilgap.studies.grid.chunking import DEFAULT_CHUNK_SECONDS
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid
+from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.oil_grade import (
     DEFAULT_DEPTH_RANGE_M,
     DEFAULT_MISSION_HOURS,
@@ -41,8 +42,10 @@ from oilgap.studies.results_studies import OilGrade, Pareto, Smoothing
 from oilgap.studies.results_sweep import Sweep, write_sweep_outputs
 
 
-def _begin(folder: ResultFolder | None) -> None:
+def _begin(folder: ResultFolder | None, case: DesignCase) -> None:
+    """Writing starts; the case's gamma (as read) into the folder's ``provenance.json``."""
     if folder is not None:
+        folder.note(**gamma_fields(case))
         folder.begin()
 
 
@@ -97,7 +100,7 @@ def pareto(case: DesignCase | str | Path | None = None, *,
     base = as_case(case)
     extra = _passed(workers=workers, scheduler=scheduler)
     with result_folder("study pareto", out, force, folder=folder) as f:
-        _begin(f)
+        _begin(f, base)
         r = pareto_study.run(out, base, points, torque_min_Nm, progress, thermal=thermal,
                              **extra)
         _note(f, r.thermal_mode, r.thermal_default)
@@ -155,7 +158,7 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     base = as_case(case)
     m = _mission(mission)
     with result_folder("study oil-grade", out, force, folder=folder) as f:
-        _begin(f)
+        _begin(f, base)
         r = oil_grade_study.run(out, base, m, nu_min_cSt=nu_min_cSt, nu_max_cSt=nu_max_cSt,
                                 depth_range_m=depth_range_m, temp_range_C=temp_range_C,
                                 sea_temp_range_C=sea_temp_range_C,
@@ -203,7 +206,7 @@ def smoothing(case: DesignCase | str | Path | None = None, *, method: str | None
     base = as_case(case)
     T = None if T_values is None else np.asarray(T_values, dtype=float)
     with result_folder("study smoothing", out, force, folder=folder) as f:
-        _begin(f)
+        _begin(f, base)
         r = smoothing_study.run(out, case=base, method=method, resistance_K_W=resistance_K_W,
                                 T_values=T, plateau_tol=plateau_tol, thermal=thermal,
                                 film_evidence=film_evidence)
@@ -251,7 +254,7 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
         g = read_grid(grid) if isinstance(grid, (str, Path)) else grid
         base = as_case(case)
         cat = oil_catalogue(oils)
-        _begin(f)
+        _begin(f, base)
         t0 = time.perf_counter()
         res = run_grid(g, base, mode=mode, out_dir=out, workers=workers,
                        chunk_size=chunk_size, progress=progress, catalogue=cat,

@@ -23,15 +23,15 @@ from pathlib import Path
 
 import numpy as np
 
-from oilgap.model.defaults import (
+from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.io.defaults import (
     Default,
     case_defaults,
     defaults_block,
     defaults_lines,
     study_default,
 )
-from oilgap.model.errors import InputError, OilgapWarning
-from oilgap.model.serialize import Exact, dumps
+from oilgap.model.io.serialize import Exact, dumps
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.ranges import effective_scale
 from oilgap.studies.loop_figures import (

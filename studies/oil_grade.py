@@ -72,11 +72,11 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint
-from oilgap.model.case_io import seed_case
-from oilgap.model.defaults import Default, case_defaults, study_default
 from oilgap.model.errors import InputError, SolverError, check_finite, check_positive, check_range
 from oilgap.model.evaluation import evaluate_case
-from oilgap.model.inputs import header_error, read_input_text
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.defaults import Default, case_defaults, study_default
+from oilgap.model.io.inputs import header_error, read_input_text
 from oilgap.model.joint_loss import FilmBand, bearing_mean_power_at, film_band
 from oilgap.model.joint_loss import resolve_thermal_mode as resolve_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv

@@ -15,8 +15,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 import pandas as pd
 
-from oilgap.model.defaults import defaults_block, defaults_markdown
-from oilgap.model.serialize import dumps
+from oilgap.model.io.defaults import defaults_block, defaults_markdown
+from oilgap.model.io.serialize import dumps
 from oilgap.model.thermal_modes import uses_balance
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.reporting import (

@@ -9,8 +9,8 @@ import contextlib
 from pathlib import Path
 from typing import Any
 
-from oilgap.model.result_folder import PROVENANCE_NAME, ResultFolder
 from oilgap.studies.grid.store import store_files
+from oilgap.studies.io.result_folder import PROVENANCE_NAME, ResultFolder
 
 OUTPUTS: dict[str, tuple[str, ...]] = {
     "loop": ("loop.json", "report.md", "measured_vs_model.png", "residual_vs_speed.png",
@@ -33,7 +33,7 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
                         *store_files("grid_isothermal/"), PROVENANCE_NAME),
 }
 """The files each folder command writes (names or glob patterns relative to ``--out``);
-each writes :data:`~oilgap.model.provenance.PROVENANCE_NAME` (version, date, command,
+each writes :data:`~oilgap.studies.io.provenance.PROVENANCE_NAME` (version, date, command,
 inputs with their SHA-256) when it starts writing."""
 
 

@@ -56,14 +56,14 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
-from oilgap.model.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.errors import (
     InfeasibleError,
     InputError,
     SolverError,
     check_positive,
 )
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.joint_loss import film_band, resolve_thermal_mode
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
@@ -270,7 +270,7 @@ class ParetoResult:
     sweep_time_s: float
     files: tuple[Path, ...] = ()
     defaults: tuple[Default, ...] = ()
-    """What the tool filled in: the case's (:func:`~oilgap.model.defaults.case_defaults`)
+    """What the tool filled in: the case's (:func:`~oilgap.model.io.defaults.case_defaults`)
     and the study's (points, reference point)."""
     is_seed: bool = True
     """Whether the case is the seed joint (the seed's designs are marked only then)."""

@@ -5,7 +5,7 @@ cells) as Markdown pipe tables written by pandas' ``DataFrame.to_markdown``
 (tabulate: columns padded, numbers right-aligned), :func:`write_tables` for the CSVs. Figures:
 :func:`new_figure` draws on the Agg canvas outside pyplot (no global backend,
 safe in worker processes) and :func:`save_figure` writes the PNG. Every file is
-written atomically (:mod:`oilgap.model.files`: a temporary file, then a rename), so
+written atomically (:mod:`oilgap.studies.io.files`: a temporary file, then a rename), so
 a failure never leaves half a file; :func:`write_text` is the form for Markdown and
 JSON.
 """
@@ -25,7 +25,7 @@ from matplotlib.figure import Figure
 from matplotlib.text import Text
 
 from oilgap.model.errors import InputError
-from oilgap.model.files import atomic_savefig, atomic_to_csv, atomic_write_text, is_number
+from oilgap.studies.io.files import atomic_savefig, atomic_to_csv, atomic_write_text, is_number
 
 DPI = 120
 """Resolution of the studies' PNG figures [dots per inch]."""

@@ -2,7 +2,7 @@
 
 Every view wraps the module-level result (``.raw``: a CaseEvaluation, DesignResult,
 ParetoResult...) and gives the same methods: :meth:`ResultView.to_dict` (plain, units in
-the keys), :meth:`ResultView.to_json` (:func:`oilgap.model.serialize.dumps`, rounded),
+the keys), :meth:`ResultView.to_json` (:func:`oilgap.model.io.serialize.dumps`, rounded),
 :meth:`ResultView.to_frame` (pandas, units in the column names),
 :meth:`ResultView.plot` (matplotlib axes), :meth:`ResultView.summary` (the text the
 command line prints; ``str(view)`` too), ``_repr_html_`` (a notebook's display) and
@@ -23,11 +23,10 @@ from pathlib import Path
 from typing import Any
 
 from oilgap.model.case import DesignCase
-from oilgap.model.defaults import case_defaults as model_case_defaults
-from oilgap.model.defaults import defaults_block, gamma_fields, gamma_line
 from oilgap.model.evaluation import CaseEvaluation
-from oilgap.model.files import atomic_write_text, check_out_file
-from oilgap.model.serialize import dumps
+from oilgap.model.io.defaults import case_defaults as model_case_defaults
+from oilgap.model.io.defaults import defaults_block, gamma_fields, gamma_line
+from oilgap.model.io.serialize import dumps
 from oilgap.model.thermal_modes import (
     DEFAULT_MODE_WHY,
     THERMAL_MODE_TEXT,
@@ -35,6 +34,7 @@ from oilgap.model.thermal_modes import (
     uses_balance,
 )
 from oilgap.model.units import m_to_mm
+from oilgap.studies.io.files import atomic_write_text, check_out_file
 
 # ----------------------------------------------------------------------------- helpers
 
@@ -54,7 +54,7 @@ def new_axes(ax: Any = None) -> Any:
 
 
 def case_defaults(case: DesignCase) -> list[dict]:
-    """What the tool filled in for ``case`` (:func:`oilgap.model.defaults.case_defaults`:
+    """What the tool filled in for ``case`` (:func:`oilgap.model.io.defaults.case_defaults`:
     the reader's record, gamma, the bearing's keys, the NLP's groove bounds), each as
     ``{field, value, unit, source}``."""
     return defaults_block(model_case_defaults(case))

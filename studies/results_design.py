@@ -9,8 +9,8 @@ from typing import Any
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.defaults import gamma_fields, gamma_line
 from oilgap.model.evaluation import oil_state
+from oilgap.model.io.defaults import gamma_fields, gamma_line
 from oilgap.model.joint_loss import FilmBand
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, THERMAL_MODE_TEXT
 from oilgap.model.units import m2_s_to_cst

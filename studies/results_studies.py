@@ -17,8 +17,8 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
-from oilgap.model.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_json

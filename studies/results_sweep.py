@@ -16,7 +16,7 @@ from typing import Any
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.defaults import gamma_fields, gamma_line
+from oilgap.model.io.defaults import gamma_fields, gamma_line
 from oilgap.model.joint_loss import FilmBand, film_band, operating_temperature, uses_balance
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.reporting import markdown_table, write_text

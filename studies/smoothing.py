@@ -60,9 +60,9 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
-from oilgap.model.defaults import case_defaults
 from oilgap.model.errors import InputError, SolverError
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.defaults import case_defaults
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.smoothing_case import NO_TABLE4, run_case
 from oilgap.studies.smoothing_evidence import FilmEvidence
@@ -116,7 +116,7 @@ class SmoothingResult:
     ``run_temps`` are None (Table 4 is the seed rig's) and ``loss_vs_T``/``plateau`` are
     the case's own (:mod:`oilgap.studies.smoothing_case`)."""
     defaults: tuple = ()
-    """What the tool filled in (:class:`oilgap.model.defaults.Default`)."""
+    """What the tool filled in (:class:`oilgap.model.io.defaults.Default`)."""
     case_name: str = ""
     thermal_mode: str = ""
     """The thermal mode of the loss (the fit's on the seed rig, the case's otherwise)."""

@@ -22,8 +22,8 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.errors import InputError, SolverError
+from oilgap.model.io.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY
 from oilgap.studies.grid.runner import run_grid

@@ -41,8 +41,8 @@ import pandas as pd
 from scipy.optimize import brentq, least_squares
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import SolverError
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import case_film
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.regions import region_mean_power

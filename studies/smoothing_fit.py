@@ -57,8 +57,8 @@ import pandas as pd
 from scipy.optimize import least_squares
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, SolverError, check_finite
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power
 from oilgap.model.regions import Region, joint_regions
 from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature

@@ -38,8 +38,6 @@ import pandas as pd
 from scipy.integrate import solve_ivp
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
-from oilgap.model.case_write import case_to_dict
 from oilgap.model.effects import (
     EFFECTS,
     EffectContext,
@@ -49,6 +47,8 @@ from oilgap.model.effects import (
     get_effect,
 )
 from oilgap.model.errors import InputError, SolverError, check_finite
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.case_write import case_to_dict
 from oilgap.model.oil_properties import oil_viscosities
 from oilgap.model.oils import builtin_fluids, get_oil, normalize_oil_name
 from oilgap.model.regions import joint_geometry

@@ -23,7 +23,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 
 from .smoothing_fit import (
     T_GROOVED,

@@ -10,7 +10,7 @@ from __future__ import annotations
 from dataclasses import replace
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.studies.grid.store import case_fingerprint
 
 _SEED_FINGERPRINTS: list[str] = []

@@ -29,8 +29,9 @@ import oilgap.optim
 PACKAGES = (oilgap.model, oilgap.optim)
 
 LAW_MODULES = ["oil_properties", "taylor_couette", "skin_friction", "viscous_loss", "motor",
-               "regions", "thermal", "effects", "film_heating", "film_cycle", "joint_loss",
-               "bearing", "bearing_laws", "bearing_catalogue"]
+               "regions", "thermal", "effects.library", "effects.laws", "film_heating",
+               "film_cycle", "joint_loss", "bearing.friction", "bearing.laws",
+               "bearing.catalogue"]
 
 UNIT_RE = re.compile(r"\[(-|[^\[\]\n]*[A-Za-z%][^\[\]\n]*)\]")
 """A unit in brackets: ``[-]`` or bracketed text with a letter (not a citation ``[1]``)."""

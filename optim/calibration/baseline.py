@@ -134,7 +134,7 @@ def fit_baselines(frame: pd.DataFrame) -> dict[float, BaselineFit]:
     ----------
     frame : pandas.DataFrame
         Validated data with kinematics
-        (:func:`oilgap.model.measured_data.add_kinematics`): omega [rad/s],
+        (:func:`oilgap.model.measured.data.add_kinematics`): omega [rad/s],
         domega_dt [rad/s^2], temp_C [degC], power_W [W], speed_rpm [rpm].
 
     Returns

@@ -25,7 +25,7 @@ import numpy as np
 
 from oilgap.model.effects import EFFECTS, taylor_feature
 from oilgap.model.film_heating import film_theory_coefficient
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 from oilgap.model.regions import JointGeometry
 
 from .forward import TAYLOR_SHAPES, ForwardModel

@@ -4,7 +4,7 @@
 ``predict(data)``, learned attributes ending in ``_``). ``fit`` calls the
 stages of this package in order:
 
-1. Validate and load (:mod:`oilgap.model.measured_data`), fit the oil-free
+1. Validate and load (:mod:`oilgap.model.measured.data`), fit the oil-free
    baseline of each T and take it away (:mod:`.baseline`; or read
    ``viscous_power_W``), get nu and rho per sample from each oil's Walther line
    and density law.
@@ -60,10 +60,10 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
 from oilgap.model.effects import CONFOUNDED_FORMS, EFFECTS, RigFacts
 from oilgap.model.errors import InputError
-from oilgap.model.measured_data import (
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.measured.data import (
     MeasuredData,
     Samples,
     add_kinematics,

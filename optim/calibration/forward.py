@@ -37,7 +37,7 @@ from oilgap.model.effects import (
     first_order_lag,
     taylor_feature,
 )
-from oilgap.model.measured_data import TEMP_STEP_K, Samples
+from oilgap.model.measured.data import TEMP_STEP_K, Samples
 from oilgap.model.oil_state import (
     OilState,
     applied_state_name,

@@ -1,4 +1,4 @@
-"""The fitted loop model as a document: write it into ``loop.json``, read it back, predict.
+"""The fitted loop model as a document (``loop.json``'s ``model`` block): read back, predict.
 
 :class:`FittedModel` holds what prediction needs and nothing else: the rig
 (the case's geometry and friction law; each row's fluid comes from the data),
@@ -37,14 +37,13 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import case_from_dict
-from oilgap.model.case_write import case_to_dict
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
-from oilgap.model.files import atomic_write_text
 from oilgap.model.fluid_table import TableFluid
 from oilgap.model.fluids import GasFluid
-from oilgap.model.measured_data import (
+from oilgap.model.io.case_io import case_from_dict
+from oilgap.model.io.case_write import case_to_dict
+from oilgap.model.measured.data import (
     MeasuredData,
     add_kinematics,
     predict_samples,
@@ -53,7 +52,6 @@ from oilgap.model.measured_data import (
 )
 from oilgap.model.oils import Oil, builtin_fluids, normalize_oil_name
 from oilgap.model.regions import joint_geometry
-from oilgap.model.serialize import Exact, dumps
 from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
 from oilgap.model.units import m2_s_to_cst, m_to_mm
 
@@ -540,28 +538,6 @@ class FittedModel:
         return out
 
 
-def save_model(model: FittedModel, path: str | Path) -> Path:
-    """Write a model document (JSON).
-
-    Parameters
-    ----------
-    model : FittedModel
-        The model (laws [-], effect coefficients [library unit], baselines [W]).
-    path : str or Path
-        File written.
-
-    Returns
-    -------
-    Path
-        The file (JSON, units in key names: [mm], [degC], [W]). Every digit is kept
-        (:class:`~oilgap.model.serialize.Exact`, not the 6 significant digits of
-        oilgap's other JSON): rounded to 6 digits, the parameters move predictions by
-        up to 7e-6 relative (0.7 mW on the synthetic rig), so a model read back would no
-        longer predict exactly what the fit predicted.
-    """
-    return atomic_write_text(Path(path), dumps(Exact(model.to_dict())) + "\n")
-
-
 def load_model(path: str | Path) -> FittedModel:
     """Read a model from ``loop.json`` (its ``model`` block) or a bare model document.
 
@@ -597,4 +573,4 @@ def load_model(path: str | Path) -> FittedModel:
 
 
 __all__ = ["FittedModel", "baseline_extrapolated", "fluid_from_dict", "fluid_to_dict",
-           "load_model", "sample_ranges", "save_model"]
+           "load_model", "sample_ranges"]

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 from oilgap.model.units import m2_s_to_cst
 
 STRUCTURE_FRACTION = 0.2

@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.effects import EFFECTS
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
 
 from .candidates import Candidates

@@ -10,7 +10,7 @@ straight mineral oil) come from the data's fluid table.
 
 References
 ----------
-.. [1] The plausible ranges and their sources: :mod:`oilgap.model.effect_plausibility`.
+.. [1] The plausible ranges and their sources: :mod:`oilgap.model.effects.plausibility`.
 .. [2] M. Stone, "Cross-validatory choice and assessment of statistical
    predictions", J. R. Stat. Soc. B 36:111-147, 1974.
 """
@@ -22,7 +22,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 from oilgap.model.oils import normalize_oil_name
 
 from .candidates import Candidates, screen_candidates

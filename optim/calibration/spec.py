@@ -38,7 +38,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from oilgap.model.case import DesignCase
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 from oilgap.model.regions import JointGeometry
 from oilgap.model.skin_friction import (
     BILGEN_BOULOS_ALPHA,

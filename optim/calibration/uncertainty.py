@@ -26,7 +26,7 @@ from __future__ import annotations
 import numpy as np
 from scipy import stats
 
-from oilgap.model.measured_data import Samples
+from oilgap.model.measured.data import Samples
 
 from .baseline import BaselineFit
 from .least_squares import BaseSpec, ModelFit

@@ -33,10 +33,10 @@ import numpy as np
 
 from oilgap.model.case import DesignCase, OperatingPoint, RotorStatorClearance
 from oilgap.model.errors import SolverError
-from oilgap.model.interrupts import raise_if_interrupted
 from oilgap.model.regions import joint_regions, region_mean_power, rotor_stator_radii
 from oilgap.model.skin_friction import groove_roughness
 from oilgap.model.units import MM_TO_M
+from oilgap.optim.interrupts import raise_if_interrupted
 
 from .parameters import DesignParameters
 from .session import Buffered, clamp, run_starts, snap_to_bounds

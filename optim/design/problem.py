@@ -142,7 +142,7 @@ class DesignProblem:
 
     Examples
     --------
-    >>> from oilgap.model.case_io import seed_case
+    >>> from oilgap.model.io.case_io import seed_case
     >>> prob = DesignProblem(seed_case())
     >>> res = prob.solve()                        # doctest: +SKIP
     >>> res.optimal.mean_power_W, res.multipliers["torque_min"].value  # doctest: +SKIP

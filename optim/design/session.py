@@ -35,7 +35,7 @@ import casadi as ca
 import numpy as np
 
 from oilgap.model.errors import InputError, SolverError
-from oilgap.model.interrupts import raise_if_interrupted
+from oilgap.optim.interrupts import raise_if_interrupted
 
 from .variables import QUIET_OPTIONS, SOLVER_OPTIONS, SUCCESS_STATUSES, WARM_OPTIONS
 
@@ -252,7 +252,7 @@ class SolverSession:
         Buffered
             Write ``arg`` (``x0``, ``p``, ``lbx``, ``ubx``, ``lbg``, ``ubg``, and
             ``lam_x0``, ``lam_g0`` when warm), call ``run()`` then
-            :func:`~oilgap.model.interrupts.raise_if_interrupted`, read ``res`` and
+            :func:`~oilgap.optim.interrupts.raise_if_interrupted`, read ``res`` and
             ``stats()``.
         """
         return Buffered(self.solver(warm))

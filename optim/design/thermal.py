@@ -173,7 +173,7 @@ class ThermalDesignProblem:
 
     Examples
     --------
-    >>> from oilgap.model.case_io import seed_case
+    >>> from oilgap.model.io.case_io import seed_case
     >>> from oilgap.optim.design import DesignProblem
     >>> prob = DesignProblem(seed_case(), thermal="film")      # doctest: +SKIP
     >>> res = prob.solve()                                     # doctest: +SKIP

@@ -37,16 +37,15 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from oilgap.model.errors import InfeasibleError, InputError, OilgapWarning, SolverError
-from oilgap.model.interrupts import catching_interrupts, interrupt_pending
-from oilgap.model.provenance import (
+from oilgap.optim.interrupts import catching_interrupts, interrupt_pending
+from oilgap.studies.cli.parsers import build_parser, finite_float
+from oilgap.studies.io.provenance import (
     PACKAGES,
-    clear_run,
+    RunRecord,
     file_sha256,
-    note_run,
     oilgap_version,
     package_version,
 )
-from oilgap.studies.cli.parsers import build_parser, finite_float
 
 __all__ = ["COMMANDS", "LOG", "build_parser", "configure_logging", "finite_float", "main"]
 
@@ -195,7 +194,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     inputs = _inputs(args)
     asked = {"thermal_mode_asked": args.thermal or "default"} if hasattr(args, "thermal") \
         else {}
-    note_run(argv, inputs, **asked)
+    args.run = RunRecord.command_line(argv, inputs, **asked)  # provenance of what it writes
     _debug_run(argv, inputs)
     warnings.showwarning = _show_warning
     warnings.simplefilter("default", OilgapWarning)
@@ -207,7 +206,6 @@ def main(argv: Sequence[str] | None = None) -> int:
             return _dispatch(args)
     finally:
         sys.stderr = stderr
-        clear_run()
         LOG.debug("%s took %.3f s", args.command, time.perf_counter() - start)
 
 

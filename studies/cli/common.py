@@ -7,8 +7,8 @@ import argparse
 from pathlib import Path
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.errors import InputError
+from oilgap.model.io.case_io import read_case_toml, seed_case
 from oilgap.studies.api import thermal_case as api_thermal_case
 from oilgap.studies.api import with_operating
 

@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import argparse
 
-from oilgap.model.result_folder import ResultFolder
 from oilgap.studies.api_loop import Loop
 from oilgap.studies.cli.outputs import out_folder
+from oilgap.studies.io.result_folder import ResultFolder
 
 
 def run(args: argparse.Namespace) -> int:

@@ -19,13 +19,13 @@ import argparse
 import contextlib
 from pathlib import Path
 
-from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError, check_finite, check_positive
-from oilgap.model.files import check_out_file
-from oilgap.model.serialize import dumps
+from oilgap.model.io.serialize import dumps
 from oilgap.studies.api_design import optimize
 from oilgap.studies.cli.common import load_case, thermal_case
 from oilgap.studies.cli.outputs import solver_log_to_stderr
+from oilgap.studies.io.case_write import write_case_toml
+from oilgap.studies.io.files import check_out_file
 from oilgap.studies.results_design import Optimization
 
 
@@ -55,7 +55,7 @@ def _write(res: Optimization, args: argparse.Namespace):
     if not args.out:
         return None
     try:
-        return write_case_toml(res.to_case(), args.out)
+        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None))
     except OSError as e:
         raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
 

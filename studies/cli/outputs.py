@@ -3,7 +3,7 @@ before any computation, and IPOPT's log kept off stdout.
 
 * Every command that writes checks its ``--out`` first (before reading big inputs or
   computing): :func:`out_folder` for the folder commands (``study ...``, ``loop``),
-  :func:`oilgap.model.files.check_out_file` for the one-file commands (``optimize
+  :func:`oilgap.studies.io.files.check_out_file` for the one-file commands (``optimize
   --out``, ``predict``, ``synth``). An existing output is refused unless ``--force``
   (or ``--resume`` for a sweep).
 * The outputs of each folder command are listed in :data:`oilgap.studies.outputs.OUTPUTS`
@@ -23,7 +23,7 @@ import sys
 from collections.abc import Iterator
 from pathlib import Path
 
-from oilgap.model.result_folder import ResultFolder
+from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.outputs import OUTPUTS
 
 SWEEP_HINT = "pass --resume to continue it or --force to start over"
@@ -37,7 +37,7 @@ def out_folder(args: argparse.Namespace, out: str | Path, resume: bool = False
     return ResultFolder(out, OUTPUTS[command], force=getattr(args, "force", False),
                         resume=resume, command=f"oilgap {command}",
                         hint=SWEEP_HINT if command == "study sweep"
-                        else "pass --force to replace them")
+                        else "pass --force to replace them", run=getattr(args, "run", None))
 
 
 def json_quiet(args: argparse.Namespace) -> contextlib.AbstractContextManager:

@@ -17,9 +17,9 @@ from pathlib import Path
 import pandas as pd
 
 from oilgap.model.errors import InputError
-from oilgap.model.files import atomic_to_csv, atomic_to_parquet, check_out_file
 from oilgap.optim.calibration.model_io import REASON
 from oilgap.studies.api_loop import predict
+from oilgap.studies.io.files import atomic_to_csv, atomic_to_parquet, check_out_file
 
 OUT_SUFFIXES = (".csv", ".parquet", ".pq")
 

@@ -9,11 +9,11 @@ import argparse
 import logging
 import sys
 
-from oilgap.model.result_folder import ResultFolder
 from oilgap.studies.api_studies import sweep
 from oilgap.studies.cli.common import show, study_out
 from oilgap.studies.cli.outputs import json_quiet, out_folder
 from oilgap.studies.grid.runner import SweepInterrupted
+from oilgap.studies.io.result_folder import ResultFolder
 
 RESUME_HINT = "rerun the same command with --resume to continue"
 """What Ctrl-C's line tells the user (the folder stays marked incomplete)."""

@@ -9,8 +9,8 @@ import sys
 
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
-from oilgap.model.files import check_out_file
 from oilgap.studies.api_loop import synth
+from oilgap.studies.io.files import check_out_file
 from oilgap.studies.reporting import write_data_csv
 from oilgap.studies.synth import DEFAULT_STRENGTH
 

@@ -19,7 +19,7 @@ returns one result row per grid row.
   store (partial rows dropped and counted) and computes only the points not in it.
   The results are ``results.csv`` and ``results.parquet``.
 * One run per folder: ``out_dir`` is locked for the run
-  (:class:`oilgap.model.result_folder.FolderLock`); a second run is refused.
+  (:class:`oilgap.studies.io.result_folder.FolderLock`); a second run is refused.
 * Ctrl-C: the workers ignore SIGINT; the pool is stopped and its workers ended, and
   :class:`SweepInterrupted` (a ``KeyboardInterrupt`` saying how many points are
   stored) reaches the caller alone (no worker tracebacks); at most one chunk per
@@ -43,12 +43,10 @@ import pandas as pd
 from tqdm import tqdm
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError, OilgapWarning
-from oilgap.model.files import OutputError, atomic_to_csv, atomic_to_parquet
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import default_thermal_mode, resolve_thermal_mode
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
-from oilgap.model.result_folder import FolderLock
 from oilgap.studies.grid.backends import InlineBackend, check_scheduler, make_backend
 from oilgap.studies.grid.chunking import DEFAULT_CHUNK_SECONDS, ChunkSizer
 from oilgap.studies.grid.columns import THERMAL_COLUMNS, result_columns
@@ -64,6 +62,8 @@ from oilgap.studies.grid.store import (
     points_path,
     repair_store,
 )
+from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_to_parquet
+from oilgap.studies.io.result_folder import FolderLock
 
 # --------------------------------------------------------------------------- progress
 

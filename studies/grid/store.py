@@ -32,12 +32,12 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.case_write import case_to_dict
 from oilgap.model.errors import InputError, OilgapWarning
-from oilgap.model.files import OutputError, atomic_to_csv, atomic_write_text
-from oilgap.model.result_folder import LOCK_NAME
+from oilgap.model.io.case_write import case_to_dict
 from oilgap.studies.grid.columns import ENGINE_VERSION, result_columns
 from oilgap.studies.grid.schema import WHERE, is_missing
+from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_write_text
+from oilgap.studies.io.result_folder import LOCK_NAME
 
 _FINGERPRINTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 _KEY = re.compile(r"[0-9A-Za-z_-]+")
@@ -249,7 +249,7 @@ def fold_chunks(path: Path, mode: str) -> int:
     """Fold the chunk files into ``path`` and drop partial or invalid rows; returns how
     many rows were dropped.
 
-    The new points file is written atomically (:func:`oilgap.model.files.atomic_write`)
+    The new points file is written atomically (:func:`oilgap.studies.io.files.atomic_write`)
     before the chunk files are removed: a crash in between leaves rows twice, which
     reads the same (the last row of a key wins). A file written by an older engine
     (other columns) is rewritten with today's columns.

@@ -15,10 +15,10 @@ import pytest
 from matplotlib.axes import Axes
 
 import oilgap as og
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case
-from oilgap.model.serialize import round_sig
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.serialize import round_sig
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.model_io import PREDICTED_VISCOUS
 from oilgap.optim.design import DesignProblem

@@ -15,7 +15,7 @@ matplotlib.use("Agg")
 
 import oilgap as og  # noqa: E402
 from oilgap.model.errors import InputError  # noqa: E402
-from oilgap.model.serialize import round_sig  # noqa: E402
+from oilgap.model.io.serialize import round_sig  # noqa: E402
 from oilgap.studies.cli import main  # noqa: E402
 
 MY_JOINT = Path(__file__).parents[2] / "examples" / "my_joint.toml"

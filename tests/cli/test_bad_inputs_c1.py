@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from oilgap.model import inputs
+from oilgap.model.io import inputs
 from oilgap.studies.cli import main
 
 CASE = """name = "t"

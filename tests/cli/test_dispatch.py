@@ -13,7 +13,10 @@ from oilgap.model.joint_loss import THERMAL_MODES
 from oilgap.studies.cli import COMMANDS, build_parser, parsers
 from oilgap.studies.cli.parsers import EFFECT_NAMES
 
-HEAVY = ("pandas", "matplotlib", "cvxpy", "scipy.signal", "oilgap.optim")
+HEAVY = ("pandas", "matplotlib", "cvxpy", "scipy.signal", "oilgap.optim.design",
+         "oilgap.optim.calibration")
+"""Not loaded by ``oilgap evaluate``: the optimizer's engines (``oilgap.optim.interrupts``,
+the Ctrl-C guard every command installs, is a light module of the package)."""
 
 
 def test_effect_names_are_the_library_keys():

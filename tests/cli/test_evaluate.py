@@ -7,8 +7,8 @@ import sys
 
 import pytest
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.studies.cli import main
 
 BAD_TOML = """
@@ -21,7 +21,7 @@ T4_mm = 26.0
 length_mm = 14.76
 """
 
-JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.serialize)
+JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.io.serialize)
 JSON_ABS = 1e-4  # [K] or [W]: a temperature or power rounded to 6 digits
 
 

@@ -12,8 +12,8 @@ from dataclasses import replace
 import pytest
 
 from oilgap.model.bearing import bearing_mean_power, bearing_torque
-from oilgap.model.case_io import read_case_toml
 from oilgap.model.evaluation import oil_state
+from oilgap.model.io.case_io import read_case_toml
 from oilgap.studies.cli import main
 
 THERMAL = """
@@ -24,7 +24,7 @@ heat_capacity_J_per_K = 5.0e4
 other_heat_W = 3.0
 """
 
-JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.serialize)
+JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.io.serialize)
 JSON_ABS = 1e-4  # [K] or [W]: a temperature or power rounded to 6 digits
 
 

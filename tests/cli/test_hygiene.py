@@ -12,8 +12,8 @@ from pathlib import Path
 import pytest
 
 import oilgap
-from oilgap.model.case_io import seed_case
-from oilgap.model.case_write import case_to_dict, dumps_toml
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.case_write import case_to_dict, dumps_toml
 from oilgap.studies.cli import LOG, build_parser, configure_logging, main
 from oilgap.studies.outputs import OUTPUTS
 

@@ -7,8 +7,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case_io import read_case_toml
 from oilgap.model.effects import TIME_DEPENDENT
+from oilgap.model.io.case_io import read_case_toml
 from oilgap.model.regions import joint_geometry, region_power
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.optim.calibration.candidates import STEADY_POINT_STATUS

@@ -7,14 +7,14 @@ import sys
 import pytest
 
 import oilgap.optim.design.variables as dv
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.optim.design import DesignProblem
 from oilgap.studies.cli import main
 
 POINT_KEYS = {"mean_power_W", "T", "delta_mm", "R_mm", "L_mm", "T1_mm", "T2_mm", "T3_mm",
               "T4_mm", "torque_capability_Nm", "inertia_kgm2"}
 
-JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.serialize)
+JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.io.serialize)
 JSON_ABS = 1e-4  # [K] or [W]: a temperature or power rounded to 6 digits
 
 
@@ -126,7 +126,7 @@ def test_bad_out_path_exits_2(tmp_path, capsys):
 
 def test_bad_case_bounds_exit_2(tmp_path, capsys):
     """radius_min 11 mm leaves the 1.5 mm deep rotor grooves inside the 10 mm shaft bore."""
-    from oilgap.model.case_write import case_to_dict, dumps_toml
+    from oilgap.model.io.case_write import case_to_dict, dumps_toml
 
     doc = case_to_dict(seed_case())
     doc["bounds"]["radius_min_mm"] = 11.0

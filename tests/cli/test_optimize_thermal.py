@@ -8,13 +8,13 @@ from pathlib import Path
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
-from oilgap.model.case_write import write_case_toml
+from oilgap.model.io.case_io import seed_case
 from oilgap.studies.cli import main
+from oilgap.studies.io.case_write import write_case_toml
 
 GOLDEN = Path(__file__).resolve().parents[1] / "golden" / "data" / "optimize_none.json"
 
-JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.serialize)
+JSON_REL = 1e-5  # JSON numbers carry 6 significant digits (oilgap.model.io.serialize)
 JSON_ABS = 1e-4  # [K] or [W]: a temperature or power rounded to 6 digits
 
 

@@ -22,12 +22,12 @@ import pandas as pd
 import pytest
 from matplotlib.figure import Figure
 
-from oilgap.model.files import MARKER, atomic_write_text
-from oilgap.model.measured_data import load_measured
-from oilgap.model.result_folder import LOCK_NAME, FolderLock, ResultFolder
+from oilgap.model.measured.data import load_measured
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.studies.cli import COMMANDS, main
 from oilgap.studies.grid.schema import read_grid_csv
+from oilgap.studies.io.files import MARKER, atomic_write_text
+from oilgap.studies.io.result_folder import LOCK_NAME, FolderLock, ResultFolder
 from oilgap.studies.outputs import OUTPUTS
 from oilgap.studies.synth import SynthConfig, synthesize
 
@@ -261,7 +261,7 @@ def test_sigkill_mid_chunk_then_resume_gives_the_same_results(tmp_path, capsys):
 
 HOLD_LOCK = textwrap.dedent("""
     import sys, time
-    from oilgap.model.result_folder import FolderLock
+    from oilgap.studies.io.result_folder import FolderLock
     with FolderLock(sys.argv[1]):
         print("locked", flush=True)
         time.sleep(60)
@@ -471,8 +471,8 @@ def test_ctrl_c_in_a_parallel_sweep_is_one_line(tmp_path):
 def test_an_interrupt_casadi_swallowed_is_raised_after_the_solve(monkeypatch):
     # CasADi turns Ctrl-C during IPOPT into a failed solve and returns; the handler the
     # command line installs notes it, and the solve raises it again
-    from oilgap.model import interrupts
-    from oilgap.model.case_io import seed_case
+    from oilgap.model.io.case_io import seed_case
+    from oilgap.optim import interrupts
     from oilgap.optim.design import DesignProblem
 
     problem = DesignProblem(seed_case())
@@ -485,7 +485,7 @@ def test_an_interrupt_casadi_swallowed_is_raised_after_the_solve(monkeypatch):
 def test_casadis_own_interrupt_warning_is_not_printed(monkeypatch):
     import io
 
-    from oilgap.model import interrupts
+    from oilgap.optim import interrupts
     from oilgap.studies.cli import _QuietSolverInterrupt
 
     buf = io.StringIO()

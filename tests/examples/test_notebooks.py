@@ -24,8 +24,8 @@ import pandas as pd
 import pytest
 from nbclient import NotebookClient
 
-from oilgap.model.case_io import read_case_toml
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.io.case_io import read_case_toml
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.heating import compare_heating

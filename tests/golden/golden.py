@@ -141,8 +141,8 @@ COMMANDS: list[tuple[str, list[str]]] = [
 
 def seed_thermal_toml() -> str:
     """The seed joint with a ``[thermal]`` table: sea 2 degC, R 0.5 K/W, C 5e4 J/K."""
-    from oilgap.model.case_io import seed_case
-    from oilgap.model.case_write import case_to_dict, dumps_toml
+    from oilgap.model.io.case_io import seed_case
+    from oilgap.model.io.case_write import case_to_dict, dumps_toml
 
     return dumps_toml(case_to_dict(seed_case())) + (
         "\n[thermal]\nsea_temp_C = 2.0\nresistance_K_per_W = 0.5\n"

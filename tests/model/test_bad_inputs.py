@@ -16,14 +16,14 @@ import numpy as np
 import pytest
 
 from oilgap.model import duty_cycle as dc_module
-from oilgap.model import inputs
-from oilgap.model.case_io import case_from_dict, read_case_toml, seed_case
-from oilgap.model.case_write import case_to_dict
 from oilgap.model.duty_cycle import MAX_SAMPLES, DutyCycle
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.fluid_table import read_fluid_table
-from oilgap.model.inputs import read_input_text
+from oilgap.model.io import inputs
+from oilgap.model.io.case_io import case_from_dict, read_case_toml, seed_case
+from oilgap.model.io.case_write import case_to_dict
+from oilgap.model.io.inputs import read_input_text
 from oilgap.model.motor import motor_torque
 from oilgap.model.oils import Oil, read_oils_csv
 from oilgap.model.skin_friction import FrictionLaw, check_friction_ranges

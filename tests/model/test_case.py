@@ -4,10 +4,10 @@ import math
 
 import pytest
 
-from oilgap.model.case_io import read_case_toml, seed_case
-from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
+from oilgap.model.io.case_io import read_case_toml, seed_case
+from oilgap.studies.io.case_write import write_case_toml
 
 SEED_TOML = """
 name = "test joint"

@@ -5,9 +5,10 @@ import dataclasses
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import read_case_toml, seed_case
-from oilgap.model.case_write import case_to_dict, dumps_toml, write_case_toml
 from oilgap.model.errors import InputError
+from oilgap.model.io.case_io import read_case_toml, seed_case
+from oilgap.model.io.case_write import case_to_dict, dumps_toml
+from oilgap.studies.io.case_write import write_case_toml
 
 THERMAL = """
 [thermal]

@@ -4,7 +4,6 @@ import warnings
 
 import pytest
 
-from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.errors import OilgapWarning
 from oilgap.model.evaluation import (
     evaluate_case,
@@ -12,6 +11,7 @@ from oilgap.model.evaluation import (
     oil_state,
     region_powers,
 )
+from oilgap.model.io.case_io import read_case_toml, seed_case
 
 
 def test_smoothing_lowers_loss_only_in_region1():

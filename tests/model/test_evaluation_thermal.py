@@ -19,12 +19,12 @@ import numpy as np
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case, oil_state
+from oilgap.model.io.case_io import read_case_toml, seed_case
+from oilgap.model.io.serialize import plain
 from oilgap.model.joint_loss import joint_mean_power, operating_temperature
 from oilgap.model.oils import get_oil
-from oilgap.model.serialize import plain
 from oilgap.model.thermal import joint_steady_temperature, joint_temperature_transient
 
 GOLDEN = Path(__file__).resolve().parents[1] / "golden" / "data"

@@ -133,9 +133,9 @@ def test_thermal_keys_ranges():
 
 
 def test_loop_film_coefficient_is_the_strength_to_first_order():
-    from oilgap.model.case_io import seed_case
     from oilgap.model.effects import film_temperature
     from oilgap.model.film_heating import film_strength_of, film_theory_coefficient
+    from oilgap.model.io.case_io import seed_case
 
     # hand: delta 1 mm, R 25 mm, L 15 mm, k 0.13: 12 k 2 pi R L = 3.6757e-3 W/(K m)
     c = film_theory_coefficient(1e-3, 0.025, 0.015)
@@ -164,9 +164,9 @@ def test_loop_film_coefficient_is_the_strength_to_first_order():
 def test_thermal_keys_round_trip_and_change_the_film_loss():
     from dataclasses import replace
 
-    from oilgap.model.case_io import case_from_dict, seed_case
-    from oilgap.model.case_write import case_to_dict
-    from oilgap.model.defaults import case_defaults
+    from oilgap.model.io.case_io import case_from_dict, seed_case
+    from oilgap.model.io.case_write import case_to_dict
+    from oilgap.model.io.defaults import case_defaults
     from oilgap.model.joint_loss import joint_mean_power
 
     base = replace(seed_case(), thermal=ThermalSpec(2.0, 0.5, 5e4))
@@ -197,8 +197,8 @@ def test_constant_b_uncertainty_on_the_seed_peak():
     # theta'' = -Na Phi^2 mu0/mu(T), Phi int mu0/mu = 1, theta(0) = theta(1) = 0.
     from scipy.integrate import solve_bvp
 
-    from oilgap.model.case_io import seed_case
     from oilgap.model.film_heating import nahme_number
+    from oilgap.model.io.case_io import seed_case
 
     oil = seed_case().oil
     p = 1025.0 * 9.80665 * 3000.0  # gauge pressure at 3000 m, rho g h

@@ -11,8 +11,6 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import read_case_toml
-from oilgap.model.case_write import case_to_dict, write_case_toml
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import evaluate_case, oil_state
 from oilgap.model.fluids import (
@@ -23,9 +21,12 @@ from oilgap.model.fluids import (
     read_fluid_table,
     warn_if_untrusted_state,
 )
+from oilgap.model.io.case_io import read_case_toml
+from oilgap.model.io.case_write import case_to_dict
 from oilgap.model.oils import builtin_fluids, get_oil, read_oils_csv
 from oilgap.model.regions import joint_regions, region_mean_power
 from oilgap.studies.cli import main
+from oilgap.studies.io.case_write import write_case_toml
 
 R_U = 8.314462618  # J/(mol K), CODATA 2018
 

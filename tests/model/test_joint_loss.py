@@ -10,9 +10,9 @@ import pytest
 from scipy.optimize import brentq
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
 from oilgap.model.film_cycle import film_factors
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import (
     THERMAL_MODES,
     case_film,

@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from oilgap.model.bearing import bearing_mean_power
-from oilgap.model.bearing_catalogue import bearing_spec_from
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.case import OperatingPoint, ThermalSpec
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import (
     bearing_mean_power_at,
     joint_mean_power,

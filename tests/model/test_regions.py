@@ -4,7 +4,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.regions import (
     Region,
     joint_geometry,

@@ -6,13 +6,14 @@ from dataclasses import replace
 
 import pytest
 
-from oilgap.model.case_io import case_from_dict, read_case_toml, seed_case
-from oilgap.model.case_write import case_to_dict, write_case_toml
-from oilgap.model.defaults import case_defaults
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
+from oilgap.model.io.case_io import case_from_dict, read_case_toml, seed_case
+from oilgap.model.io.case_write import case_to_dict
+from oilgap.model.io.defaults import case_defaults
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.studies.cli import main
+from oilgap.studies.io.case_write import write_case_toml
 
 BRANCHES = {"form": "branches", "branch_C": [10.0, 2.0, 1.03, 0.065],
             "branch_alpha": [0.3, 0.3, 0.25, 0.0], "branch_beta": [-1.0, -0.6, -0.5, -0.2]}

@@ -22,7 +22,7 @@ from oilgap.studies.cli import main
 ROOT = Path(__file__).resolve().parents[2]
 README_CASE = re.search(r"`my_joint.toml`:\n\n```toml\n(.*?)```",
                         (ROOT / "README.md").read_text(), re.S).group(1)
-JSON_REL = 1e-5  # the JSON carries 6 significant digits (oilgap.model.serialize)
+JSON_REL = 1e-5  # the JSON carries 6 significant digits (oilgap.model.io.serialize)
 SEED_PAPER_W = 49.45  # the seed paper's isothermal mean loss at the rated point [W]
 
 

@@ -11,9 +11,9 @@ import pytest
 from matplotlib.collections import QuadMesh
 from matplotlib.figure import Figure
 
-from oilgap.model.files import MARKER
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.studies import loop_figures as lf
+from oilgap.studies.io.files import MARKER
 from oilgap.studies.loop_report import write_report
 from oilgap.studies.sweep_figures import choose_layout, plot_sweep, write_sweep_figure
 from oilgap.studies.synth import SynthConfig, synthesize

@@ -10,10 +10,10 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power, oil_state
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main
 from oilgap.studies.grid.evaluate import evaluate_cases

@@ -12,9 +12,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.bearing_catalogue import bearing_spec_from
-from oilgap.model.case_io import seed_case
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.errors import InfeasibleError, InputError
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.studies.cli import main

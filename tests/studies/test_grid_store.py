@@ -7,8 +7,8 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
+from oilgap.model.io.case_io import seed_case
 from oilgap.studies.grid.columns import EVALUATE_RESULTS
 from oilgap.studies.grid.store import (
     append_points,

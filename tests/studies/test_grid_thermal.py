@@ -11,10 +11,9 @@ import pandas as pd
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
-from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case, mean_viscous_power
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import case_film, joint_mean_power, operating_temperature
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.oils import get_oil
@@ -24,6 +23,7 @@ from oilgap.studies.cli import main
 from oilgap.studies.grid.evaluate import evaluate_cases
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import apply_params, read_grid_csv
+from oilgap.studies.io.case_write import write_case_toml
 
 SEA, R, C, Q = 2.0, 0.5, 5e4, 3.0
 

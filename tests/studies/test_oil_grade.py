@@ -7,9 +7,9 @@ import pandas as pd
 import pytest
 
 from oilgap.model.case import MissionSegment, OperatingPoint
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main
 from oilgap.studies.oil_grade import SEED_MISSION, parse_mission, run

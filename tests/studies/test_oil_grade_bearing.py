@@ -34,9 +34,9 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
-from oilgap.model.bearing_catalogue import bearing_spec_from
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.case import OperatingPoint, ThermalSpec
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import operating_temperature
 from oilgap.studies.grid.evaluate import evaluate_cases
 from oilgap.studies.oil_grade import run

@@ -8,13 +8,13 @@ from dataclasses import replace
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
-from oilgap.model.case_write import write_case_toml
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power, operating_temperature
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main
+from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.oil_grade import SEED_MISSION, run
 
 GRADES = ("VG15", "VG22", "VG32")

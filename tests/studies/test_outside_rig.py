@@ -14,9 +14,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.effect_laws import first_order_lag
+from oilgap.model.effects.laws import first_order_lag
 from oilgap.model.errors import InputError
-from oilgap.model.measured_data import validate
+from oilgap.model.measured.data import validate
 from oilgap.model.oils import builtin_oils
 from oilgap.model.skin_friction import bilgen_boulos_cm, couette_law_cm
 from oilgap.studies import outside_laws as laws

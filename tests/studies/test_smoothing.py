@@ -10,9 +10,9 @@ import pytest
 from scipy.optimize import brentq
 
 from oilgap.model.case import OperatingPoint
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main
 from oilgap.studies.smoothing import loss_vs_T, plateau_table, run

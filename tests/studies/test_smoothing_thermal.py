@@ -9,8 +9,8 @@ import pytest
 from scipy.optimize import brentq
 
 from oilgap.model.case import OperatingPoint
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main

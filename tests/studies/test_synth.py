@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 from scipy.integrate import quad
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.effects import end_face_disc_power, first_order_lag
 from oilgap.model.errors import InputError
-from oilgap.model.measured_data import REQUIRED_COLUMNS
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.measured.data import REQUIRED_COLUMNS
 from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_geometry
 from oilgap.model.viscous_loss import clearance_power

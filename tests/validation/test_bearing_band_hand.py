@@ -23,12 +23,12 @@ import pytest
 from scipy.integrate import quad
 
 from oilgap.model.bearing import BearingSpec, bearing_moment_terms
-from oilgap.model.bearing_band import bearing_model_band
-from oilgap.model.bearing_catalogue import bearing_spec_from
-from oilgap.model.bearing_laws import balls_in_still_oil_power, sphere_drag_force
-from oilgap.model.case_bearing import bearing_from_doc
+from oilgap.model.bearing.band import bearing_model_band
+from oilgap.model.bearing.catalogue import bearing_spec_from
+from oilgap.model.bearing.laws import balls_in_still_oil_power, sphere_drag_force
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import OilgapWarning
+from oilgap.model.io.case_bearing import bearing_from_doc
 
 N, NU, RHO, D_IN, D_OUT, FR = 3000.0, 320.0, 880.0, 45.0, 58.0, 50.0
 DM = 0.5 * (D_IN + D_OUT)

@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from oilgap.model.bearing import bearing_mean_power, bearing_moment_terms, bearing_power
-from oilgap.model.bearing_catalogue import bearing_spec_from
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.duty_cycle import DutyCycle
 
 N, NU, D_IN, D_OUT, FR = 3000.0, 320.0, 45.0, 58.0, 50.0

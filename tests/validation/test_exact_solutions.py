@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
 
-from oilgap.model import effect_laws as fx
+from oilgap.model.effects import laws as fx
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.taylor_couette import couette_reynolds, couette_torque, taylor_number
 from oilgap.model.thermal import lumped_temperature_rate

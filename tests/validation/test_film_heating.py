@@ -22,8 +22,8 @@ import pytest
 
 from oilgap.model import film_heating as fh
 from oilgap.model import oil_properties as op
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InputError
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.units import celsius_to_kelvin
 
 MU0, K, B, H = 0.26, 0.13, 0.05, 1.0e-3      # Pa s, W/(m K), 1/K, m

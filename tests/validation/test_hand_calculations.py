@@ -15,9 +15,9 @@ import math
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import read_case_toml, seed_case
 from oilgap.model.effects import cross_region_ratios, effect_context
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.io.case_io import read_case_toml, seed_case
 from oilgap.model.regions import JointGeometry, Region, joint_regions, region_mean_power
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.thermal import steady_temperature

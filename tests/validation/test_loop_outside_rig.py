@@ -36,7 +36,7 @@ from pathlib import Path
 
 import pytest
 
-from oilgap.model.case_io import case_from_dict
+from oilgap.model.io.case_io import case_from_dict
 from oilgap.model.oils import read_oils_csv
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.studies.outside_rig import (

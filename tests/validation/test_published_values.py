@@ -13,7 +13,7 @@ from importlib import resources
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import Oil, builtin_oils, get_oil
 from oilgap.model.regions import joint_geometry, joint_regions
 from oilgap.model.skin_friction import bilgen_boulos_cm

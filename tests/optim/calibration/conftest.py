@@ -1,6 +1,6 @@
 """Sample sets of the calibration-stage tests, built by hand (no synthetic rig, no files).
 
-``make_samples`` writes a :class:`~oilgap.model.measured_data.Samples` out field by
+``make_samples`` writes a :class:`~oilgap.model.measured.data.Samples` out field by
 field: a sine speed, a temperature ramp, nu and rho from each oil's own laws at the
 sample temperature and at +-TEMP_STEP_K, the case's gap, and the viscous power
 given by the caller (default zero).
@@ -11,8 +11,8 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import seed_case
-from oilgap.model.measured_data import TEMP_STEP_K, Samples
+from oilgap.model.io.case_io import seed_case
+from oilgap.model.measured.data import TEMP_STEP_K, Samples
 from oilgap.model.oils import builtin_oils, get_oil
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.units import ZERO_CELSIUS_K

@@ -3,7 +3,7 @@
 import numpy as np
 import pandas as pd
 
-from oilgap.model.measured_data import add_kinematics, validate
+from oilgap.model.measured.data import add_kinematics, validate
 from oilgap.optim.calibration.baseline import BASELINE_TEMP_TERMS, BASELINE_TERMS, fit_baselines
 
 

@@ -19,10 +19,10 @@ import numpy as np
 import pytest
 
 from oilgap.model.bearing import bearing_power, bearing_vm_drag_power
-from oilgap.model.bearing_catalogue import bearing_spec_from
-from oilgap.model.case_io import seed_case
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts, effect_context
 from oilgap.model.errors import InputError
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_geometry
 from oilgap.model.units import celsius_to_kelvin, rpm_to_rad_s

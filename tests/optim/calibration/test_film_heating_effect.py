@@ -9,8 +9,8 @@ import pandas as pd
 import pytest
 from scipy.optimize import brentq
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts, film_temperature
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.regions import joint_geometry
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.studies.cli import main

@@ -18,7 +18,7 @@ from types import SimpleNamespace
 import pytest
 
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.optim.calibration import LoopEstimator, film_wall
 from oilgap.studies.synth import SynthConfig, synthesize
 

@@ -8,9 +8,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.bearing_catalogue import bearing_spec_from
-from oilgap.model.case_io import read_case_toml, seed_case
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.effects import EFFECTS
+from oilgap.model.io.case_io import read_case_toml, seed_case
 from oilgap.model.viscous_loss import clearance_power
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.studies.synth import (

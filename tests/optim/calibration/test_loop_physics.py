@@ -8,9 +8,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case_io import seed_case
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.studies.loop_report import format_summary

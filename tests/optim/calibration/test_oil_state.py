@@ -24,7 +24,7 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
-from oilgap.model.case_io import case_from_dict, seed_case
+from oilgap.model.io.case_io import case_from_dict, seed_case
 from oilgap.model.oil_state import applied_state_name
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
 from oilgap.model.regions import joint_geometry, region_power

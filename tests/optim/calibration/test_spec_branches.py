@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.regions import joint_geometry
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.optim.calibration import LoopEstimator, decide_spec

@@ -7,8 +7,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from oilgap.model.case_io import case_from_dict
 from oilgap.model.effects import taylor_feature
+from oilgap.model.io.case_io import case_from_dict
 from oilgap.model.oils import read_oils_csv
 from oilgap.optim.calibration import LoopEstimator, exact_form_variants
 from oilgap.optim.calibration.model_io import FittedModel

@@ -3,7 +3,7 @@ its optimum."""
 
 import pytest
 
-from oilgap.model.case_io import seed_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.optim.design import DesignProblem
 
 

@@ -17,10 +17,10 @@ import numpy as np
 import pytest
 
 from oilgap.model.bearing import bearing_power
-from oilgap.model.bearing_catalogue import bearing_spec_from
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import operating_temperature
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.units import celsius_to_kelvin

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 import oilgap.optim.design.variables as dv
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError, SolverError
 from oilgap.model.evaluation import evaluate_case, oil_state
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
 from oilgap.optim.design import DesignProblem
 

@@ -12,8 +12,8 @@ import pytest
 
 import oilgap.optim.design.variables as dv
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError, SolverError
+from oilgap.model.io.case_io import seed_case
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.lean import solve_lean
 from oilgap.optim.design.session import (

@@ -23,9 +23,9 @@ import pytest
 
 import oilgap.optim.design.variables as dv
 from oilgap.model.case import ThermalSpec
-from oilgap.model.case_io import seed_case
 from oilgap.model.errors import InfeasibleError, InputError, SolverError
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power, operating_temperature
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import Region, joint_regions, rotor_stator_region

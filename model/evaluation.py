@@ -56,6 +56,7 @@ from .oil_properties import seawater_gauge_pressure
 from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
 from .taylor_couette import couette_reynolds, flow_regime, taylor_number
+from .thermal_modes import ThermalMode
 from .units import celsius_to_kelvin, m2_s_to_cst, m_to_mm, rad_s_to_rpm
 from .viscous_loss import viscous_torque, weighted_mean
 
@@ -451,10 +452,10 @@ def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regio
     with warnings.catch_warnings():
         warnings.simplefilter("default")
         nu, _, rho = oil_state(case, t, d)
-    if mode == "none":
+    if mode == ThermalMode.NONE:
         nodes, weights = case.duty_cycle.speed_distribution()
         means = [region_mean_power(r, nodes, weights, nu, rho, case.friction) for r in regions]
-    elif mode == "film":
+    elif mode == ThermalMode.FILM:
         means = region_mean_powers(case, t, mode, d)
     return t, nu, rho, means
 
@@ -507,7 +508,8 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float):
             bearings = () if case.bearing is None else (bearing_result(case, case.bearing,
                                                                        nu, rho),)
             total = sum(r.mean_power_W for r in results + bearings)
-            iso = total if mode == "none" else float(joint_mean_power(case, t_case, "none", d))
+            iso = total if mode == ThermalMode.NONE else float(
+                joint_mean_power(case, t_case, ThermalMode.NONE.value, d))
     except (OverflowError, ZeroDivisionError) as e:
         raise SolverError(f"the evaluation of {case.name!r} overflowed ({e}); the inputs "
                           "are out of reach of the model") from None

@@ -28,10 +28,8 @@ from oilgap.model.evaluation import evaluate_case
 from oilgap.model.files import check_out_file
 from oilgap.model.joint_loss import resolve_thermal_mode, uses_balance
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
+from oilgap.model.skin_friction import LAMINAR_LAWS
 from oilgap.studies.results import Evaluation
-
-LAMINAR_LAWS = ("couette", "bilgen-boulos")
-"""The laminar laws ``laminar_law`` may name (None: the case's)."""
 
 
 def read_case(path: str | Path) -> DesignCase:

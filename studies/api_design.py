@@ -10,6 +10,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning, check_positive
 from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.optim.design import DesignProblem, compare_heating
 from oilgap.studies.api import as_case, thermal_case, with_operating
 from oilgap.studies.results_design import Optimization, thermal_line
@@ -68,7 +69,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)
     header = thermal_line(mode, thermal is None)
-    if mode == "none":
+    if mode == ThermalMode.NONE:
         res = DesignProblem(c, verbose=verbose).solve(starts=starts, **limits)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)

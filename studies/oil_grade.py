@@ -80,7 +80,7 @@ from oilgap.model.inputs import header_error, read_input_text
 from oilgap.model.joint_loss import FilmBand, bearing_mean_power_at, film_band
 from oilgap.model.joint_loss import resolve_thermal_mode as resolve_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
-from oilgap.model.thermal_modes import uses_balance
+from oilgap.model.thermal_modes import ThermalMode, uses_balance
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
 from oilgap.studies.oil_grade_thermal import compare_recommendations
@@ -286,13 +286,13 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     out = Path(out_dir) if out_dir is not None else None
     how = {"workers": workers, "progress": progress, "scheduler": scheduler}  # run_grid's
     frames_iso = _evaluate(grid, base, catalogue, "none", out, mode, how)
-    frames = frames_iso if mode == "none" else _evaluate(grid, base, catalogue, mode, out, mode,
-                                                         how)
+    isothermal = mode == ThermalMode.NONE
+    frames = frames_iso if isothermal else _evaluate(grid, base, catalogue, mode, out, mode, how)
     table, recommended, runner_up = _decide(base, catalogue, grades, frames,
                                             frames_iso["envelope"], segs, settings, mode)
-    t_iso, rec_iso, run_iso = (table, recommended, runner_up) if mode == "none" else _decide(
+    t_iso, rec_iso, run_iso = (table, recommended, runner_up) if isothermal else _decide(
         base, catalogue, grades, frames_iso, frames_iso["envelope"], segs, settings, "none")
-    comparison = None if mode == "none" else compare_recommendations(
+    comparison = None if isothermal else compare_recommendations(
         table, t_iso, recommended, rec_iso, runner_up, run_iso, mode, base, settings)
     result = OilGradeResult(table, frames["envelope"], frames["rated"], recommended, runner_up,
                             segs, source, settings, (), mode, t_iso, rec_iso, run_iso,

@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
-from oilgap.model.thermal_modes import uses_balance
+from oilgap.model.thermal_modes import ThermalMode, uses_balance
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from oilgap.model.case import DesignCase
@@ -55,7 +55,7 @@ def _physics(per: pd.DataFrame, mode: str, base: DesignCase, settings: dict,
              shown_grades: tuple = ()) -> str:
     """What the mode does to every grade, with the rated point's numbers (the operating
     temperature of ``shown_grades``, the case's oil and the thickest grade)."""
-    if mode == "film":
+    if mode == ThermalMode.FILM:
         return ("Under film the bulk oil is at the given temperature, so both limits are "
                 "the isothermal ones; only the losses change: the film's shear heating "
                 "lowers them, more for thicker grades (Na = b mu U^2/k grows with mu).")

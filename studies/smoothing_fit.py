@@ -62,6 +62,7 @@ from oilgap.model.errors import InputError, SolverError, check_finite
 from oilgap.model.joint_loss import joint_mean_power
 from oilgap.model.regions import Region, joint_regions
 from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.studies.grid.schema import apply_params
 
 EXPERIMENT_OILS = ("VG150", "VG320", "VG680", "VG1000")
@@ -123,16 +124,16 @@ def resolve_fit_mode(method: str | None, thermal: str | None) -> tuple[str, str,
                          "smoothing study")
     default = thermal is None and method != "heat-balance"
     if method is None:
-        method = "heat-balance" if thermal == "full" else DEFAULT_METHOD
-    if method == "shared" and thermal in ("film", "full"):
+        method = "heat-balance" if thermal == ThermalMode.FULL else DEFAULT_METHOD
+    if method == "shared" and thermal in (ThermalMode.FILM, ThermalMode.FULL):
         method = "heat-balance"
     if method == "heat-balance":
-        if thermal == "none":
+        if thermal == ThermalMode.NONE:
             raise InputError("thermal", thermal, "'film' or 'full': the heat-balance fit "
                              "uses the film-heated loss (method 'shared' is the isothermal "
                              "balance)", "smoothing study")
         return method, "full", default
-    if thermal == "full":
+    if thermal == ThermalMode.FULL:
         raise InputError("thermal", thermal, "'none' or 'film' with the per-oil method "
                          "(full, the rig's heat balance, is method 'heat-balance')",
                          "smoothing study")
@@ -142,7 +143,7 @@ def resolve_fit_mode(method: str | None, thermal: str | None) -> tuple[str, str,
 def loss_mode(thermal: str) -> str:
     """The mode of :func:`~oilgap.model.joint_loss.joint_mean_power` for a fit's thermal
     mode: ``none`` stays, ``film`` and ``full`` use the film factor at the run temperature."""
-    return "none" if thermal == "none" else "film"
+    return "none" if thermal == ThermalMode.NONE else "film"
 
 
 # --------------------------------------------------------------------------- heat balance
@@ -269,7 +270,7 @@ class SmoothingFit:
             heat = (f"{loss}T_run = {self.base_temp_C['all']:.2f} degC + "
                     f"{self.resistance_K_W:.4f} K/W{bound} x P_run")
         else:
-            loss = "film-heated loss at " if self.thermal_mode == "film" else ""
+            loss = "film-heated loss at " if self.thermal_mode == ThermalMode.FILM else ""
             heat = (loss + "one effective temperature per oil ("
                     + ", ".join(f"{k} {v:.1f} degC" for k, v in self.base_temp_C.items())
                     + (f") + {self.resistance_K_W:g} K/W x P_run" if self.resistance_K_W

@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.studies.reporting import (
     markdown_table,
     new_figure,
@@ -34,7 +35,7 @@ def thermal_line(fit: SmoothingFit, default: bool) -> str:
     if default:
         text += "default: the heat balance does not fit Table 4 better, see the comparison; "
     text += THERMAL_TEXT[fit.thermal_mode] + f"; method {fit.method}"
-    if fit.thermal_mode != "full":
+    if fit.thermal_mode != ThermalMode.FULL:
         text += "; --thermal full for the heat-balance fit"
     return text + ")"
 

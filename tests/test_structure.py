@@ -151,3 +151,19 @@ def test_the_checker_finds_what_it_looks_for():
     calls = [n for n in ast.walk(tree) if isinstance(n, ast.Call)]
     assert sorted(len(c.args) for c in calls) == [6, 7]
     assert {_callee(c) for c in calls} == {"Point"}
+
+
+def test_modes_forms_and_laws_are_enums_equal_to_their_names():
+    """One definition each; a member equals the plain string a case file or the command
+    line gives, and JSON writes it as that string."""
+    import json
+
+    from oilgap.model import skin_friction, thermal_modes
+    from oilgap.studies import api
+
+    assert thermal_modes.ThermalMode("bulk") == "bulk"
+    assert json.dumps([thermal_modes.ThermalMode.FULL]) == '["full"]'
+    assert thermal_modes.THERMAL_MODES == ("none", "bulk", "film", "full")
+    assert skin_friction.FORMS == ("bilgen-boulos", "smooth", "power-law", "branches")
+    assert skin_friction.LaminarLaw.COUETTE == "couette"
+    assert api.LAMINAR_LAWS is skin_friction.LAMINAR_LAWS

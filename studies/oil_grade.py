@@ -74,7 +74,7 @@ import pandas as pd
 from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint
 from oilgap.model.case_io import seed_case
 from oilgap.model.defaults import Default, case_defaults, study_default
-from oilgap.model.errors import InputError, SolverError, check_finite, check_positive, check_range
+from oilgap.model.errors import InputError, SolverError, check_finite
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.inputs import header_error, read_input_text
 from oilgap.model.joint_loss import FilmBand, bearing_mean_power_at, film_band
@@ -84,25 +84,23 @@ from oilgap.model.thermal_modes import ThermalMode, uses_balance
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
 from oilgap.studies.oil_grade_thermal import compare_recommendations
+from oilgap.studies.settings import (
+    DEFAULT_DEPTH_RANGE_M,
+    DEFAULT_ISO_TOLERANCE,
+    DEFAULT_MISSION_HOURS,
+    DEFAULT_NU_MAX_CST,
+    DEFAULT_NU_MIN_CST,
+    DEFAULT_TEMP_RANGE_C,
+    ISO_GRADES,
+    OilGradeSettings,
+    RunOptions,
+    SweepSettings,
+    split_keywords,
+)
 from oilgap.studies.user_case import is_seed_case
 
-ISO_GRADES = ("VG10", "VG15", "VG22", "VG32", "VG46", "VG68", "VG100", "VG150", "VG220",
-              "VG320", "VG460", "VG680", "VG1000")
 WHERE = "oil-grade study"
 """Context named by the study's InputErrors."""
-DEFAULT_NU_MIN_CST = 13.0
-"""Lubrication limit: minimum viscosity at the hottest envelope point [cSt]."""
-DEFAULT_NU_MAX_CST = 1000.0
-"""Cold limit: maximum viscosity at the coldest envelope point, for start-up [cSt]."""
-DEFAULT_ISO_TOLERANCE = 0.10
-"""ISO 3448 tolerance on nu at 40 degC, applied at its worst to both limits [-]."""
-DEFAULT_DEPTH_RANGE_M = (0.0, 7000.0)
-DEFAULT_TEMP_RANGE_C = (0.0, 40.0)
-"""Envelope temperatures [degC]: the oil's (none, film) or the sea's (bulk, full). The same
-0-40 degC for the sea, so that the thermal and isothermal answers differ by the physics
-only (the surface end stands for deck checks in warm air)."""
-DEFAULT_MISSION_HOURS = 8.0
-"""Mission duration for the mission energy [h] (one working dive)."""
 SEED_MISSION = (MissionSegment(0.0, 20.0, 0.05), MissionSegment(1500.0, 4.0, 0.10),
                 MissionSegment(3000.0, 2.0, 0.85))
 """Default mission of the seed joint (it has none): fractions of the joint's running
@@ -166,17 +164,7 @@ def read_mission_csv(path: str | Path) -> tuple[MissionSegment, ...]:
     return parse_mission(df)
 
 
-def _range(name: str, rng: Sequence[float], lo: float, hi: float) -> tuple[float, float]:
-    if len(rng) != 2:
-        raise InputError(name, rng, "needs (min, max)", "oil-grade study")
-    a = check_range(name + " min", rng[0], lo, hi, "oil-grade study")
-    b = check_range(name + " max", rng[1], lo, hi, "oil-grade study")
-    if b < a:
-        raise InputError(name, (a, b), "max must be >= min", "oil-grade study")
-    return a, b
-
-
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class OilGradeResult:
     """Everything the oil-grade study computes.
 
@@ -221,16 +209,9 @@ class OilGradeResult:
     """The case's own oil at its rated point, beside the opposite film choice."""
 
 
-def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
-        mission=None, grades: Sequence[str] = ISO_GRADES,
-        nu_min_cSt: float = DEFAULT_NU_MIN_CST, nu_max_cSt: float = DEFAULT_NU_MAX_CST,
-        iso_tolerance: float = DEFAULT_ISO_TOLERANCE,
-        depth_range_m: Sequence[float] = DEFAULT_DEPTH_RANGE_M, scheduler: str | None = None,
-        temp_range_C: Sequence[float] | None = None, n_depth: int = 29,
-        n_temp: int = 21, mission_hours: float = DEFAULT_MISSION_HOURS,
-        rated_temps_C: Sequence[float] | None = None, workers: int | None = None,
-        progress: bool | None = False, thermal: str | None = "none",
-        sea_temp_range_C: Sequence[float] | None = None) -> OilGradeResult:
+def run(out_dir: str | Path | None = None, case: DesignCase | None = None, mission=None,
+        settings: OilGradeSettings | None = None,
+        options: RunOptions | None = None) -> OilGradeResult:
     """Run the oil-grade study; with ``out_dir`` write CSVs, JSON, figures and ``summary.md``.
 
     Parameters
@@ -244,47 +225,41 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         them one segment at the case's ``[operating]`` point (its sea temperature under
         ``bulk``/``full``), or :data:`SEED_MISSION` for the seed joint. Under
         ``bulk``/``full`` each row's temperature is the sea's.
-    grades : oil names (default ISO VG10..VG1000 of the catalogue)
-    nu_min_cSt, nu_max_cSt : lubrication and cold limits [cSt]
-    iso_tolerance : grade tolerance applied at its worst [-] (0 to switch off)
-    depth_range_m : the envelope's depths [m]
-    temp_range_C : the envelope's oil temperatures [degC] (none, film; default 0-40)
-    n_depth, n_temp : grid points over the envelope (>= 2 each)
-    mission_hours : mission duration [h]
-    rated_temps_C : temperatures of the loss-vs-grade view at the rated depth
-        (default: envelope min, the case's oil (or sea) temperature, 20 degC, envelope max)
-    workers, progress, scheduler : passed to :func:`~oilgap.studies.grid.runner.run_grid`
-    thermal : {"none", "bulk", "film", "full"} or None
-        Thermal mode (default ``"none"``, the isothermal study; None: ``bulk`` with
-        ``[thermal]``, else ``none``, the command line's default).
-    sea_temp_range_C : the envelope's sea temperatures [degC] (``bulk``/``full`` only; default
-        :data:`DEFAULT_TEMP_RANGE_C`)
+    settings : OilGradeSettings, optional
+        Grades, limits [cSt], tolerance, envelope, grid sizes, mission hours, rated
+        temperatures and thermal mode (default: :class:`OilGradeSettings()`, whose
+        thermal mode None is ``bulk`` with ``[thermal]``, else ``none``).
+    options : RunOptions, optional
+        Workers, scheduler and progress line of the grid
+        (:func:`~oilgap.studies.grid.runner.run_grid`).
 
     Raises
     ------
     InputError
-        Bad limits, ranges, grid sizes, mission or grade names; a thermal mode the case
-        does not allow; ``temp_range_C`` under ``bulk``/``full`` or ``sea_temp_range_C`` without it.
+        Bad mission or grade names; a thermal mode the case does not allow;
+        ``temp_range_C`` under ``bulk``/``full`` or ``sea_temp_range_C`` without it.
     """
+    s = settings if settings is not None else OilGradeSettings()
     base = case if case is not None else seed_case()
-    mode = resolve_mode(base, thermal)
-    settings = _settings(nu_min_cSt, nu_max_cSt, iso_tolerance, depth_range_m,
-                         _temp_axis(mode, temp_range_C, sea_temp_range_C), n_depth, n_temp,
-                         mission_hours)
-    settings.update(thermal_mode=mode, thermal_default=thermal is None,
-                    temp_axis="sea" if uses_balance(mode) else "oil")
-    catalogue, grades = _grades(base, grades)
+    mode = resolve_mode(base, s.thermal)
+    t_lo, t_hi = _temp_axis(mode, s.temp_range_C, s.sea_temp_range_C)
+    settings = {"nu_min_cSt": s.nu_min_cSt, "nu_max_cSt": s.nu_max_cSt,
+                "iso_tolerance": s.iso_tolerance, "depth_range_m": s.depth_range_m,
+                "temp_range_C": (float(t_lo), float(t_hi)), "n_depth": s.n_depth,
+                "n_temp": s.n_temp, "mission_hours": s.mission_hours,
+                "thermal_mode": mode, "thermal_default": s.thermal is None,
+                "temp_axis": "sea" if uses_balance(mode) else "oil"}
+    catalogue, grades = _grades(base, s.grades)
     segs, source = _mission(base, mission, mode)
     settings["rated_depth_m"] = base.operating.depth_m
     settings["rated_temp_C"] = _case_temp(base, mode)
-    rated_given = rated_temps_C is not None
-    if rated_temps_C is None:
-        t_lo, t_hi = settings["temp_range_C"]
-        rated_temps_C = sorted({t_lo, settings["rated_temp_C"], 20.0, t_hi})
-    settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated_temps_C]
+    rated = s.rated_temps_C
+    if rated is None:
+        rated = sorted({t_lo, settings["rated_temp_C"], 20.0, t_hi})
+    settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated]
     grid = _grid(grades, segs, settings)
     out = Path(out_dir) if out_dir is not None else None
-    how = {"workers": workers, "progress": progress, "scheduler": scheduler}  # run_grid's
+    how = options if options is not None else RunOptions(progress=False)
     frames_iso = _evaluate(grid, base, catalogue, "none", out, mode, how)
     isothermal = mode == ThermalMode.NONE
     frames = frames_iso if isothermal else _evaluate(grid, base, catalogue, mode, out, mode, how)
@@ -293,13 +268,15 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     t_iso, rec_iso, run_iso = (table, recommended, runner_up) if isothermal else _decide(
         base, catalogue, grades, frames_iso, frames_iso["envelope"], segs, settings, "none")
     comparison = None if isothermal else compare_recommendations(
-        table, t_iso, recommended, rec_iso, runner_up, run_iso, mode, base, settings)
-    result = OilGradeResult(table, frames["envelope"], frames["rated"], recommended, runner_up,
-                            segs, source, settings, (), mode, t_iso, rec_iso, run_iso,
-                            comparison, _defaults(base, settings, mission is None, source, segs,
-                                                  temp_range_C, sea_temp_range_C,
-                                                  rated_given),
-                            is_seed_case(base), film_band(base, mode))
+        table, t_iso, (recommended, rec_iso), (runner_up, run_iso), mode, base, settings)
+    result = OilGradeResult(
+        table=table, envelope=frames["envelope"], rated=frames["rated"],
+        recommended=recommended, runner_up=runner_up, mission=segs, mission_source=source,
+        settings=settings, thermal_mode=mode, isothermal_table=t_iso,
+        recommended_isothermal=rec_iso, runner_up_isothermal=run_iso, comparison=comparison,
+        defaults=_defaults(base, settings, mission is None, source, segs, s.temp_range_C,
+                           s.sea_temp_range_C, s.rated_temps_C is not None),
+        is_seed=is_seed_case(base), film_band=film_band(base, mode))
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
     return result
@@ -307,8 +284,6 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
 
 def _grades(base: DesignCase, grades: Sequence[str]) -> tuple[dict, list[str]]:
     """The oil catalogue (built-in and the case's table) and the grades' names."""
-    if not grades:
-        raise InputError("grades", list(grades), "needs at least one oil", WHERE)
     catalogue = builtin_oils()
     if base.oils_csv:
         catalogue.update(read_oils_csv(base.oils_csv))
@@ -339,13 +314,14 @@ def _axis(mode: str) -> str:
 
 
 def _evaluate(grid: pd.DataFrame, base: DesignCase, catalogue: dict, mode: str,
-              out: Path | None, study_mode: str, how: dict) -> dict[str, pd.DataFrame]:
+              out: Path | None, study_mode: str, how: RunOptions) -> dict[str, pd.DataFrame]:
     """The grid under one thermal mode: the envelope, mission and rated frames. Points
     are stored under ``out/grid`` (the study's mode) or ``out/grid_isothermal``."""
     sub = "grid" if mode == study_mode else "grid_isothermal"
     res = run_grid(grid.rename(columns={"oil_temp_C": _axis(mode)}), base,
+                   SweepSettings(thermal=mode), how,
                    out_dir=out / sub if out is not None else None, label="oil-grade",
-                   catalogue=catalogue, thermal=mode, **how)
+                   catalogue=catalogue)
     failed = res[res["status"] != "ok"]
     if len(failed):
         where = failed.iloc[0][["oil", "depth_m", _axis(mode)]].to_dict()
@@ -367,26 +343,6 @@ def _decide(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
     recommended, runner_up, best_e = _rank(table)
     _verdicts(table, recommended, runner_up, best_e, settings, mode)
     return table, recommended, runner_up
-
-
-def _settings(nu_min_cSt: float, nu_max_cSt: float, iso_tolerance: float,
-              depth_range_m: Sequence[float], temp_range_C: Sequence[float], n_depth: int,
-              n_temp: int, mission_hours: float) -> dict:
-    """The study's limits, envelope and grid sizes, checked."""
-    nu_min = check_positive("nu_min_cSt", nu_min_cSt, WHERE)
-    nu_max = check_positive("nu_max_cSt", nu_max_cSt, WHERE)
-    if nu_max <= nu_min:
-        raise InputError("nu_max_cSt", nu_max, f"must be > nu_min_cSt = {nu_min:g}", WHERE)
-    tol = check_range("iso_tolerance", iso_tolerance, 0.0, 0.5, WHERE)
-    d_lo, d_hi = _range("depth_range_m", depth_range_m, 0.0, 11_000.0)
-    t_lo, t_hi = _range("temp_range_C", temp_range_C, -20.0, 150.0)
-    for name, n in (("n_depth", n_depth), ("n_temp", n_temp)):
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-            raise InputError(name, n, "must be an integer >= 2", WHERE)
-    hours = check_positive("mission_hours", mission_hours, WHERE)
-    return {"nu_min_cSt": nu_min, "nu_max_cSt": nu_max, "iso_tolerance": tol,
-            "depth_range_m": (d_lo, d_hi), "temp_range_C": (t_lo, t_hi),
-            "n_depth": int(n_depth), "n_temp": int(n_temp), "mission_hours": hours}
 
 
 def _mission(base: DesignCase, mission, mode: str = "none"
@@ -583,10 +539,12 @@ def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | Non
     table["reason"] = reasons
 
 
-def oil_grade_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
+def oil_grade_study(out_dir: str | Path | None = None, case: DesignCase | None = None, mission=None,
+                    **keywords) -> pd.DataFrame:
     """The oil-grade study as one call: one row per grade (see :func:`run`); ``attrs``
     carries ``recommended``, ``runner_up``, ``thermal_mode``, ``recommended_isothermal``."""
-    r = run(out_dir, **kwargs)
+    settings, options = split_keywords(keywords, OilGradeSettings)
+    r = run(out_dir, case, mission, settings, options)
     t = r.table.copy()
     t.attrs.update(recommended=r.recommended, runner_up=r.runner_up,
                    thermal_mode=r.thermal_mode, recommended_isothermal=r.recommended_isothermal)

@@ -119,11 +119,13 @@ def _verdict_changes(per: pd.DataFrame) -> str:
         f"{r.oil} {r.verdict_isothermal} -> {r.verdict}" for r in moved.itertuples()) + "."
 
 
-def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame, rec: str | None,
-                            rec_iso: str | None, runner_up: str | None,
-                            runner_up_iso: str | None, mode: str, base: DesignCase,
-                            settings: dict) -> dict:
+def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame,
+                            recommended: tuple[str | None, str | None],
+                            runner_up: tuple[str | None, str | None], mode: str,
+                            base: DesignCase, settings: dict) -> dict:
     """The recommendation under ``mode`` beside the isothermal one, and why.
+
+    ``recommended`` and ``runner_up`` are (under ``mode``, isothermal) pairs of grade names.
 
     Returns
     -------
@@ -134,6 +136,7 @@ def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame, rec: str |
         the heat path (``sea_temp_range_C``, ``resistance_K_per_W``, ``other_heat_W``,
         ``heat_capacity_J_per_K``, the case's ``sea_temp_C``).
     """
+    (rec, rec_iso), (runner_up, runner_up_iso) = recommended, runner_up
     per = per_grade(table, t_iso)
     changed = rec != rec_iso
     why = " ".join([_physics(per, mode, base, settings, (rec_iso, rec)),

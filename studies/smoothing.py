@@ -88,7 +88,7 @@ from oilgap.studies.user_case import is_seed_case
 # --------------------------------------------------------------------------- the study
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class SmoothingResult:
     """Everything the smoothing study computes.
 
@@ -383,7 +383,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
             path = out / "smoothing_film_evidence.csv"
             evidence.profile.to_csv(path, index=False)
             files = (*files, path)
-    return SmoothingResult(table=table, fit=fit, checks=checks, curves=curves,
+    return SmoothingResult(table=table, fit=fit, checks=checks, loss_vs_T=curves,
                            plateau=plateau, files=files, run_temps=run_temps,
                            thermal_default=default, seed_rig=True,
                            defaults=case_defaults(base), case_name=base.name,
@@ -401,7 +401,7 @@ def _run_case(out_dir, base: DesignCase, s: SmoothingSettings,
     out = Path(out_dir) if out_dir is not None else None
     curve, saving, mode, defaults, files = run_case(out, base, T_values, s.plateau_tol,
                                                     s.thermal)
-    return SmoothingResult(table=None, fit=None, checks=None, curves=curve, plateau=saving,
+    return SmoothingResult(table=None, fit=None, checks=None, loss_vs_T=curve, plateau=saving,
                            files=files, run_temps=None, thermal_default=s.thermal is None,
                            seed_rig=False, defaults=defaults, case_name=base.name,
                            thermal_mode=mode)

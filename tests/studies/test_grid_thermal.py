@@ -21,9 +21,18 @@ from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_regions, region_mean_power
 from oilgap.model.units import celsius_to_kelvin
 from oilgap.studies.cli import main
+from oilgap.studies.grid import runner
 from oilgap.studies.grid.evaluate import evaluate_cases
-from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import apply_params, read_grid_csv
+from oilgap.studies.settings import SweepSettings, split_keywords
+
+
+def run_grid(grid, case=None, *, out_dir=None, catalogue=None, label="sweep", on_chunk=None,
+             **keywords):
+    """The engine from keywords, as the façade builds its records."""
+    return runner.run_grid(grid, case, *split_keywords(keywords, SweepSettings),
+                           out_dir=out_dir, catalogue=catalogue, label=label,
+                           on_chunk=on_chunk)
 
 SEA, R, C, Q = 2.0, 0.5, 5e4, 3.0
 

@@ -88,7 +88,14 @@ RE_FLOOR = 1.0e-12
 
 class FrictionForm(StrEnum):
     """How C_m is computed (:class:`FrictionLaw` ``form``); equal to its plain string, so
-    case files, JSON and the command line keep naming it ``"bilgen-boulos"`` etc."""
+    case files, JSON and the command line keep naming it ``"bilgen-boulos"`` etc.
+
+    Attributes
+    ----------
+    BILGEN_BOULOS, SMOOTH, POWER_LAW, BRANCHES : str
+        Eq. 6 of the seed paper exactly, its smooth form, one power law (Eq. 7), the
+        smooth maximum of branches [-].
+    """
 
     BILGEN_BOULOS = "bilgen-boulos"
     SMOOTH = "smooth"
@@ -98,7 +105,13 @@ class FrictionForm(StrEnum):
 
 class LaminarLaw(StrEnum):
     """The laminar bound of the Eq. 6 forms (:class:`FrictionLaw` ``laminar_law``); equal
-    to its plain string."""
+    to its plain string.
+
+    Attributes
+    ----------
+    COUETTE, BILGEN_BOULOS : str
+        Eq. 6 bounded below by the exact laminar Couette law; Eq. 6 as published [-].
+    """
 
     COUETTE = "couette"
     BILGEN_BOULOS = "bilgen-boulos"

@@ -29,7 +29,14 @@ from enum import StrEnum
 
 class ThermalMode(StrEnum):
     """A thermal mode (see the module's text); equal to its plain string, so case files,
-    JSON and the command line keep naming it ``"none"``, ``"bulk"``, ``"film"``, ``"full"``."""
+    JSON and the command line keep naming it ``"none"``, ``"bulk"``, ``"film"``, ``"full"``.
+
+    Attributes
+    ----------
+    NONE, BULK, FILM, FULL : str
+        Isothermal at the given temperature, isothermal at the heat balance's, film
+        heating at the given temperature, film heating at the balance's [-].
+    """
 
     NONE = "none"
     BULK = "bulk"

@@ -436,12 +436,15 @@ def _result(method, thermal, sol, model, runs, meas, oils, rth_fixed, table4) ->
                   reduction_max_abs_W=float(np.max(np.abs(red))))
     if method != "per-oil":
         rth = float(sol.x[2]) if sol.x[2] >= NEGLIGIBLE_RESISTANCE_K_W else 0.0
-        return SmoothingFit(method, float(sol.x[0]), float(se[0]), {"all": float(sol.x[1])},
-                            {"all": float(se[1])}, rth, float(se[2]), **common)
-    return SmoothingFit(method, float(sol.x[0]), float(se[0]),
-                        {o: float(sol.x[1 + i]) for i, o in enumerate(oils)},
-                        {o: float(se[1 + i]) for i, o in enumerate(oils)}, rth_fixed, None,
-                        **common)
+        return SmoothingFit(
+            method=method, gamma=float(sol.x[0]), gamma_se=float(se[0]),
+            base_temp_C={"all": float(sol.x[1])}, base_temp_se={"all": float(se[1])},
+            resistance_K_W=rth, resistance_se=float(se[2]), **common)
+    return SmoothingFit(
+        method=method, gamma=float(sol.x[0]), gamma_se=float(se[0]),
+        base_temp_C={o: float(sol.x[1 + i]) for i, o in enumerate(oils)},
+        base_temp_se={o: float(se[1 + i]) for i, o in enumerate(oils)}, resistance_K_W=rth_fixed,
+        resistance_se=None, **common)
 
 
 def _refuse_unidentified(method, thermal, sol, se, rth_fixed) -> None:

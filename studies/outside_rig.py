@@ -248,8 +248,8 @@ def _regions(cfg: OutsideConfig, runs: _Runs, omega, nu, rho):
     for region, gap, T in specs:
         R = region.radius_m
         nu_eff = nu * carreau_ratio(np.abs(omega) * R / gap, lam) if lam else nu
-        p, re = annulus_power(omega, nu_eff, rho, R, gap, region.length_m, T, cfg.gamma_true,
-                              cfg.couette_floor)
+        p, re = annulus_power(omega, nu_eff, rho, R, gap, region.length_m,
+                              roughness=(T, cfg.gamma_true), couette_floor=cfg.couette_floor)
         out.append((p, re, R, gap))
     return out
 

@@ -53,7 +53,7 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -374,20 +374,19 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     checks, run_temps = fit_comparison(base, table4, fit, s.sensitivity_K_W)
     curves = loss_vs_T(fit, base, T_values, True, table4)
     plateau = plateau_table(curves, s.plateau_tol)
-    files: tuple[Path, ...] = ()
     evidence = film_evidence_of(base, table4) if s.film_evidence else None
-    if out is not None:
-        files = write_outputs(out, table, fit, checks, curves, plateau, base, run_temps,
-                              default)
-        if evidence is not None:
-            path = out / "smoothing_film_evidence.csv"
-            evidence.profile.to_csv(path, index=False)
-            files = (*files, path)
-    return SmoothingResult(table=table, fit=fit, checks=checks, loss_vs_T=curves,
-                           plateau=plateau, files=files, run_temps=run_temps,
-                           thermal_default=default, seed_rig=True,
-                           defaults=case_defaults(base), case_name=base.name,
-                           thermal_mode=fit.thermal_mode, film_evidence=evidence)
+    result = SmoothingResult(table=table, fit=fit, checks=checks, loss_vs_T=curves,
+                             plateau=plateau, run_temps=run_temps, thermal_default=default,
+                             seed_rig=True, defaults=case_defaults(base), case_name=base.name,
+                             thermal_mode=fit.thermal_mode, film_evidence=evidence)
+    if out is None:
+        return result
+    files = write_outputs(out, result, base)
+    if evidence is not None:
+        path = out / "smoothing_film_evidence.csv"
+        evidence.profile.to_csv(path, index=False)
+        files = (*files, path)
+    return replace(result, files=files)
 
 
 def _run_case(out_dir, base: DesignCase, s: SmoothingSettings,

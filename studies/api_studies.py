@@ -135,7 +135,7 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     with result_folder("study oil-grade", out, force, folder=folder) as f:
         _begin(f)
         r = oil_grade_study.run(out, base, m, settings, options)
-        _note(f, r.thermal_mode, r.settings["thermal_default"])
+        _note(f, r.thermal_mode, r.settings.thermal_default)
     return OilGrade(r, base, _out(out))
 
 

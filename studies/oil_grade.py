@@ -65,7 +65,7 @@ from __future__ import annotations
 import csv
 import io
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 from pathlib import Path
 
 import numpy as np
@@ -164,6 +164,33 @@ def read_mission_csv(path: str | Path) -> tuple[MissionSegment, ...]:
     return parse_mission(df)
 
 
+@dataclass(frozen=True, kw_only=True)
+class OilGradeEnvelope:
+    """The oil-grade study's settings as applied to its case and thermal mode: the
+    limits [cSt], tolerance [-], envelope [m], [degC] (the oil's or, under ``bulk``/
+    ``full``, the sea's: ``temp_axis``), grid sizes, mission hours [h] and the rated point
+    [m], [degC] of the loss-vs-grade view."""
+
+    nu_min_cSt: float
+    nu_max_cSt: float
+    iso_tolerance: float
+    depth_range_m: tuple[float, float]
+    temp_range_C: tuple[float, float]
+    n_depth: int
+    n_temp: int
+    mission_hours: float
+    thermal_mode: str
+    thermal_default: bool
+    temp_axis: str
+    rated_depth_m: float
+    rated_temp_C: float
+    rated_temps_C: list[float]
+
+    def to_dict(self) -> dict:
+        """The fields as a dict (``oil_grade.json``'s ``settings``)."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
+
+
 @dataclass(frozen=True, eq=False, kw_only=True)
 class OilGradeResult:
     """Everything the oil-grade study computes.
@@ -194,7 +221,7 @@ class OilGradeResult:
     runner_up: str | None
     mission: tuple[MissionSegment, ...]
     mission_source: str
-    settings: dict
+    settings: OilGradeEnvelope
     files: tuple[Path, ...] = ()
     thermal_mode: str = "none"
     isothermal_table: pd.DataFrame | None = None
@@ -243,20 +270,19 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None, missi
     base = case if case is not None else seed_case()
     mode = resolve_mode(base, s.thermal)
     t_lo, t_hi = _temp_axis(mode, s.temp_range_C, s.sea_temp_range_C)
-    settings = {"nu_min_cSt": s.nu_min_cSt, "nu_max_cSt": s.nu_max_cSt,
-                "iso_tolerance": s.iso_tolerance, "depth_range_m": s.depth_range_m,
-                "temp_range_C": (float(t_lo), float(t_hi)), "n_depth": s.n_depth,
-                "n_temp": s.n_temp, "mission_hours": s.mission_hours,
-                "thermal_mode": mode, "thermal_default": s.thermal is None,
-                "temp_axis": "sea" if uses_balance(mode) else "oil"}
     catalogue, grades = _grades(base, s.grades)
     segs, source = _mission(base, mission, mode)
-    settings["rated_depth_m"] = base.operating.depth_m
-    settings["rated_temp_C"] = _case_temp(base, mode)
+    rated_temp = _case_temp(base, mode)
     rated = s.rated_temps_C
     if rated is None:
-        rated = sorted({t_lo, settings["rated_temp_C"], 20.0, t_hi})
-    settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated]
+        rated = sorted({t_lo, rated_temp, 20.0, t_hi})
+    settings = OilGradeEnvelope(
+        nu_min_cSt=s.nu_min_cSt, nu_max_cSt=s.nu_max_cSt, iso_tolerance=s.iso_tolerance,
+        depth_range_m=s.depth_range_m, temp_range_C=(float(t_lo), float(t_hi)),
+        n_depth=s.n_depth, n_temp=s.n_temp, mission_hours=s.mission_hours, thermal_mode=mode,
+        thermal_default=s.thermal is None, temp_axis="sea" if uses_balance(mode) else "oil",
+        rated_depth_m=base.operating.depth_m, rated_temp_C=rated_temp,
+        rated_temps_C=[check_finite("rated_temps_C", t, WHERE) for t in rated])
     grid = _grid(grades, segs, settings)
     out = Path(out_dir) if out_dir is not None else None
     how = options if options is not None else RunOptions(progress=False)
@@ -335,7 +361,7 @@ def _evaluate(grid: pd.DataFrame, base: DesignCase, catalogue: dict, mode: str,
 
 
 def _decide(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
-            cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: dict,
+            cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: OilGradeEnvelope,
             mode: str) -> tuple[pd.DataFrame, str | None, str | None]:
     """The grade table under ``mode``, ranked, with verdicts; (table, recommended,
     runner-up)."""
@@ -369,17 +395,18 @@ _STUDY_DEFAULTS = (("nu_min_cSt", DEFAULT_NU_MIN_CST, "cSt"),  # settings key, d
                    ("mission_hours", DEFAULT_MISSION_HOURS, "h"))
 
 
-def _defaults(base: DesignCase, settings: dict, mission_default: bool, source: str, segs,
-              temp_range_C, sea_temp_range_C, rated_given: bool) -> tuple[Default, ...]:
+def _defaults(base: DesignCase, settings: OilGradeEnvelope, mission_default: bool, source: str,
+              segs, temp_range_C, sea_temp_range_C,
+              rated_given: bool) -> tuple[Default, ...]:
     """The case's defaults and the study's: each setting left at its default (by value),
     the envelope's temperatures, the mission when the tool chose it, the rated view."""
     out = list(case_defaults(base))
     for key, default, unit in _STUDY_DEFAULTS:
-        v = settings[key]
+        v = getattr(settings, key)
         if (tuple(v) if isinstance(v, (tuple, list)) else v) == default:
             out.append(study_default(f"oil_grade.{key}", default, unit))
     if temp_range_C is None and sea_temp_range_C is None:
-        out.append(study_default(f"oil_grade.{settings['temp_axis']}_temp_range_C",
+        out.append(study_default(f"oil_grade.{settings.temp_axis}_temp_range_C",
                                  DEFAULT_TEMP_RANGE_C, "degC"))
     if mission_default and not base.mission:
         seed = source.startswith("default seed")
@@ -389,17 +416,18 @@ def _defaults(base: DesignCase, settings: dict, mission_default: bool, source: s
             "one segment at the case's [operating] point; the case has no [[mission]]"))
     if not rated_given:
         out.append(study_default("oil_grade.rated_temps_C", ", ".join(
-            f"{t:g}" for t in settings["rated_temps_C"]), "degC",
+            f"{t:g}" for t in settings.rated_temps_C), "degC",
             "envelope min, the case's temperature, 20 degC, envelope max"))
     return tuple(out)
 
 
-def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> pd.DataFrame:
+def _grid(grades: list[str], segs: Sequence[MissionSegment],
+          settings: OilGradeEnvelope) -> pd.DataFrame:
     """One grid for every grade: the envelope, the mission rows and the rated-depth view
     (temperatures in ``oil_temp_C``; renamed to ``sea_temp_C`` under ``bulk``/``full``)."""
-    depths = np.linspace(*settings["depth_range_m"], settings["n_depth"])
-    temps = np.linspace(*settings["temp_range_C"], settings["n_temp"])
-    rated_temps = settings["rated_temps_C"]
+    depths = np.linspace(*settings.depth_range_m, settings.n_depth)
+    temps = np.linspace(*settings.temp_range_C, settings.n_temp)
+    rated_temps = settings.rated_temps_C
     D, Tm = np.meshgrid(depths, temps, indexing="ij")
     env = pd.DataFrame({"depth_m": np.tile(D.ravel(), len(grades)),
                         "oil_temp_C": np.tile(Tm.ravel(), len(grades)),
@@ -407,23 +435,23 @@ def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> 
     mis = pd.DataFrame({"depth_m": np.tile([s.depth_m for s in segs], len(grades)),
                         "oil_temp_C": np.tile([s.oil_temp_C for s in segs], len(grades)),
                         "oil": np.repeat(grades, len(segs)), "label": "mission"})
-    rat = pd.DataFrame({"depth_m": settings["rated_depth_m"],
+    rat = pd.DataFrame({"depth_m": settings.rated_depth_m,
                         "oil_temp_C": np.tile(rated_temps, len(grades)),
                         "oil": np.repeat(grades, len(rated_temps)), "label": "rated"})
     return pd.concat([env, mis, rat], ignore_index=True)
 
 
 def _grade_row(base: DesignCase, oil, e: pd.DataFrame, c: pd.DataFrame, m: pd.DataFrame,
-               r: pd.DataFrame, fr: np.ndarray, settings: dict, mode: str) -> dict:
+               r: pd.DataFrame, fr: np.ndarray, settings: OilGradeEnvelope, mode: str) -> dict:
     """One grade's row: lowest operating viscosity over the envelope ``e``, cold-start
     viscosity over the isothermal envelope ``c``, mission ``m`` and rated ``r`` rows."""
-    tol, axis = settings["iso_tolerance"], _axis(mode)
+    tol, axis = settings.iso_tolerance, _axis(mode)
     i_lo, i_hi = e["nu_cSt"].idxmin(), c["nu_cSt"].idxmax()
     lo_nu, hi_nu = float(e.loc[i_lo, "nu_cSt"]), float(c.loc[i_hi, "nu_cSt"])
     mean_p = float(m["mean_power_W"].to_numpy() @ fr)
     cold_case = replace(base, oil=oil, operating=OperatingPoint(
         float(c.loc[i_hi, "depth_m"]), float(c.loc[i_hi, "oil_temp_C"])))
-    r_case = r[np.isclose(r[axis], settings["rated_temp_C"])]
+    r_case = r[np.isclose(r[axis], settings.rated_temp_C)]
 
     def rated(k: str) -> float:
         return float(r_case[k].iloc[0]) if len(r_case) else float("nan")
@@ -434,15 +462,15 @@ def _grade_row(base: DesignCase, oil, e: pd.DataFrame, c: pd.DataFrame, m: pd.Da
         "nu_min_at_m": float(e.loc[i_lo, "depth_m"]),
         "nu_max_envelope_cSt": hi_nu, "nu_max_at_C": float(c.loc[i_hi, "oil_temp_C"]),
         "nu_max_at_m": float(c.loc[i_hi, "depth_m"]),
-        "passes_lubrication": bool((1 - tol) * lo_nu >= settings["nu_min_cSt"]),
-        "passes_cold": bool((1 + tol) * hi_nu <= settings["nu_max_cSt"]),
+        "passes_lubrication": bool((1 - tol) * lo_nu >= settings.nu_min_cSt),
+        "passes_cold": bool((1 + tol) * hi_nu <= settings.nu_max_cSt),
         "peak_viscous_torque_cold_Nm": evaluate_case(  # a start: not yet heated
             cold_case, thermal="none").viscous_torque_peak_Nm,
         "envelope_min_power_W": float(e["mean_power_W"].min()),
         "envelope_max_power_W": float(e["mean_power_W"].max()),
         "rated_power_W": rated("mean_power_W"),
         "mission_mean_power_W": mean_p,
-        "mission_energy_Wh": mean_p * settings["mission_hours"],
+        "mission_energy_Wh": mean_p * settings.mission_hours,
         "thermal_mode": mode,
         "nu_min_at_sea_C": float(e.loc[i_lo, axis]) if uses_balance(mode) else float("nan"),
         "oil_temp_op_max_C": float(e["oil_temp_op_C"].max()),
@@ -469,7 +497,7 @@ def _bearing_columns(base: DesignCase, oil, m: pd.DataFrame, r: pd.DataFrame,
 
 
 def _grade_table(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
-                 cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: dict,
+                 cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: OilGradeEnvelope,
                  mode: str) -> pd.DataFrame:
     """One row per grade (:func:`_grade_row`): the limits' checks, the cold peak torque,
     the powers and the mission energy under ``mode``."""
@@ -495,9 +523,9 @@ def _rank(table: pd.DataFrame) -> tuple[str | None, str | None, float]:
     return recommended, runner_up, best_e
 
 
-def _why_fails(r: pd.Series, settings: dict, mode: str) -> list[str]:
+def _why_fails(r: pd.Series, settings: OilGradeEnvelope, mode: str) -> list[str]:
     """The limits a grade fails, each with its numbers."""
-    tol, nu_min, nu_max = (settings[k] for k in ("iso_tolerance", "nu_min_cSt", "nu_max_cSt"))
+    tol, nu_min, nu_max = settings.iso_tolerance, settings.nu_min_cSt, settings.nu_max_cSt
     why = []
     if not r["passes_lubrication"]:
         where = (f"its operating {r['nu_min_at_C']:.1f} degC (sea {r['nu_min_at_sea_C']:g} "
@@ -519,7 +547,7 @@ def _why_fails(r: pd.Series, settings: dict, mode: str) -> list[str]:
 
 
 def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | None,
-              best_e: float, settings: dict, mode: str = "none") -> None:
+              best_e: float, settings: OilGradeEnvelope, mode: str = "none") -> None:
     """Add ``verdict`` and ``reason``: why each grade fails, loses or wins."""
     verdicts, reasons = [], []
     for _, r in table.iterrows():

@@ -18,7 +18,9 @@ PACKAGES = ("model", "optim", "studies", "api")
 MAX_PARAMETERS = 8
 MAX_POSITIONAL = 6
 
-# TODO(issue 19): 5 public functions still take more than 8 parameters.
+# TODO(issue 19): 5 public functions still take more than 8 parameters. Left to the lanes
+# that own them: optim/design (the solver path being rewritten), optim/calibration (the
+# film effect being edited there) and model/effects.py (moving to model/effects/).
 ALLOWED_PARAMETERS: set[str] = {
     "model/effects.py:effect_context",
     "optim/calibration/selection.py:select_effects",
@@ -27,10 +29,9 @@ ALLOWED_PARAMETERS: set[str] = {
     "optim/design/parameters.py:resolve_parameters",
 }
 
-# TODO(issue 19): 43 constructor calls still pass more than 6 positional
-# arguments, as {"path:Callee": count}.
+# TODO(issue 19): 32 constructor calls still pass more than 6 positional
+# arguments, as {"path:Callee": count}; the same three lanes own them.
 ALLOWED_CALLS: dict[str, int] = {
-    "model/bearing_catalogue.py:ProductRow": 11,
     "model/effects.py:Effect": 10,
     "model/effects.py:EffectContext": 1,
     "model/effects.py:RegionState": 1,

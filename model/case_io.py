@@ -43,7 +43,7 @@ from .errors import InputError, OilgapWarning, check_finite, check_range
 from .fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
 from .inputs import cell_for_message, read_input_text
 from .oils import Oil, get_oil, read_oils_csv
-from .skin_friction import BRANCH_KEYS, FrictionForm, FrictionLaw, check_friction_ranges
+from .skin_friction import BRANCH_KEYS, FrictionLaw, check_friction_ranges
 from .units import MM_TO_M, celsius_to_kelvin
 
 MAX_CASE_BYTES = 16 * 2**20
@@ -178,7 +178,7 @@ def _friction_value(key: str, value, fd: dict):
         return str(value)
     if key not in BRANCH_KEYS:
         return check_finite(key, value, "friction")
-    if fd.get("form") != FrictionForm.BRANCHES:
+    if fd.get("form") != "branches":
         raise InputError(key, value, 'applies to form = "branches" only', "friction")
     if not isinstance(value, list) or not value:
         raise InputError(key, value, "an array of numbers, one per branch (e.g. four for "

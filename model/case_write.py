@@ -25,7 +25,7 @@ from .fluids import Fluid, builtin_gases, gas_key
 from .oils import builtin_oils, normalize_oil_name, read_oils_csv
 from .provenance import stamp_line
 from .serialize import toml_dumps
-from .skin_friction import BRANCH_KEYS, FrictionForm
+from .skin_friction import BRANCH_KEYS
 from .units import MM_TO_M, kelvin_to_celsius
 
 
@@ -62,7 +62,7 @@ def case_to_dict(case: DesignCase) -> dict:
     f = case.friction
     doc["friction"] = {"form": f.form, "laminar_law": f.laminar_law, "gamma": f.gamma,
                        "scale": f.scale, "C": f.C, "alpha": f.alpha, "beta": f.beta}
-    if f.form == FrictionForm.BRANCHES:
+    if f.form == "branches":
         doc["friction"].update({k: list(getattr(f, k)) for k in BRANCH_KEYS})
     md = {}
     for fl in fields(case.motor):

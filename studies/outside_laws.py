@@ -296,7 +296,7 @@ OPEN_GEOMETRY = RigGeometry("rig without a bearing region (outside rig)",
 """A larger motor, no bearing annulus in the oil (as tests/data/rig_no_bearing.toml)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RigBaseline:
     """Electrical input without oil and the heat it leaves in the joint.
 

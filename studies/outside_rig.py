@@ -112,7 +112,7 @@ that what is left for the search is of the same few watts as the others."""
 # --------------------------------------------------------------------------- configuration
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class OutsideConfig:
     """What the outside rig simulates (SI unless the name says otherwise).
 

@@ -119,7 +119,7 @@ def dry_powers(table4: pd.DataFrame) -> np.ndarray:
     return np.tile([float(dry["measured_before_W"]), float(dry["measured_after_W"])], n)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BalanceFit:
     """One fit of Table 4 with the rig's heat balance at film strength ``strength``.
 
@@ -209,7 +209,7 @@ def _regression(temps_C: np.ndarray, power_W: np.ndarray) -> dict[str, float]:
     return {"intercept_C": float(coef[0]), "slope_K_W": float(coef[1]), "r2": float(r2)}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FilmEvidence:
     """What Table 4 says about film heating (module docstring).
 

@@ -220,7 +220,7 @@ def rig_case(oil: str, roughness_T: float, gamma: float,
                                "depth_m": RIG_DEPTH_M})
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SmoothingFit:
     """One set of model parameters for all oils, fitted to Table 4's measured powers.
 

@@ -1,6 +1,7 @@
 """The code's shape (issue 19): no public function takes more than 8 parameters (a settings
 or options object counts as one), and no call to a class constructor passes more than 6
-positional arguments (records are built by keyword, so their fields cannot be mixed up).
+positional arguments (records are built by keyword, so their fields cannot be mixed up;
+a classmethod's ``cls(...)`` counts as a constructor call).
 
 An AST walk over ``model/``, ``optim/``, ``studies/`` and ``api/``; the offenders are printed.
 ``ALLOWED_*`` lists the offenders still to fix, by function or class name (not path: files
@@ -30,7 +31,7 @@ ALLOWED_PARAMETERS: set[str] = {
     "resolve_parameters",  # optim/design/parameters.py
 }
 
-# TODO(issue 19): 32 constructor calls still pass more than 6 positional
+# TODO(issue 19): 34 constructor calls still pass more than 6 positional
 # arguments, as {"Callee": count}; the same three lanes own them.
 ALLOWED_CALLS: dict[str, int] = {
     "Effect": 10,  # model/effects.py
@@ -48,6 +49,7 @@ ALLOWED_CALLS: dict[str, int] = {
     "DesignResult": 1,  # optim/design/problem.py
     "DesignPoint": 1,  # optim/design/results.py
     "ThermalDesignResult": 1,  # optim/design/thermal.py
+    "cls": 2,  # optim/calibration/model_io.py (classmethod constructors)
 }
 
 
@@ -85,8 +87,9 @@ def offenders() -> tuple[dict[str, int], Counter]:
                     wide[f"{rel}:{node.name}"] = n
             elif isinstance(node, ast.Call):
                 name = _callee(node)
-                if (name and name[0].isupper() and not name.isupper()
-                        and len(node.args) > MAX_POSITIONAL):
+                constructor = name == "cls" or (name and name[0].isupper()
+                                                 and not name.isupper())
+                if constructor and len(node.args) > MAX_POSITIONAL:
                     calls[f"{rel}:{name}"] += 1
     return wide, calls
 

@@ -513,6 +513,25 @@ class _Computed:
     total_W: float
     isothermal_W: float
 
+    def evaluation(self, case: DesignCase, mode: str, by_default: bool, depth_m: float,
+                   band) -> CaseEvaluation:
+        """The :class:`CaseEvaluation` of these numbers (``band``: the film band)."""
+        spec = case.thermal if uses_balance(mode) else None
+        cycle, total, rows = case.duty_cycle, self.total_W, self.regions + self.bearings
+        return CaseEvaluation(
+            case_name=case.name, oil=case.oil.name, thermal_mode=mode,
+            thermal_mode_default=by_default, oil_temp_C=self.oil_temp_C,
+            sea_temp_C=None if spec is None else float(spec.sea_temp_C),
+            resistance_K_per_W=None if spec is None else float(spec.resistance_K_W),
+            other_heat_W=None if spec is None else float(spec.other_heat_W), depth_m=depth_m,
+            nu_cSt=m2_s_to_cst(self.nu_m2_s), density_kg_m3=float(self.rho_kg_m3),
+            laminar_law=case.friction.laminar_law, form=case.friction.form,
+            peak_speed_rpm=rad_s_to_rpm(cycle.peak_omega_rad_s), regions=self.regions,
+            total_mean_power_W=total, isothermal_total_mean_power_W=self.isothermal_W,
+            viscous_torque_peak_Nm=sum(r.torque_peak_Nm for r in rows),
+            cycle_energy_J=total * cycle.duration_s, bearings=self.bearings,
+            film_applied=applies_film(mode), film_band=band)
+
 
 def _computed(case: DesignCase, mode: str, t_case: float, d: float) -> _Computed:
     """The evaluation's numbers, checked finite (numpy's overflow warnings are replaced by
@@ -608,21 +627,6 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
                          "the heat balance sets the oil temperature (change [thermal] "
                          "sea_temp_C, or choose thermal 'none' or 'film')")
     c = _computed(case, mode, t_case, d)
-    t, nu, rho, results, bearings = c.oil_temp_C, c.nu_m2_s, c.rho_kg_m3, c.regions, c.bearings
-    total, iso = c.total_W, c.isothermal_W
     at = case if oil_temp_C is None else replace(
         case, operating=replace(case.operating, oil_temp_C=t_case))
-    band = film_band(at, mode, d, total)
-    cycle = case.duty_cycle
-    return CaseEvaluation(
-        case_name=case.name, oil=case.oil.name, thermal_mode=mode,
-        thermal_mode_default=thermal is None, oil_temp_C=t,
-        sea_temp_C=None if spec is None else float(spec.sea_temp_C),
-        resistance_K_per_W=None if spec is None else float(spec.resistance_K_W),
-        other_heat_W=None if spec is None else float(spec.other_heat_W), depth_m=d,
-        nu_cSt=m2_s_to_cst(nu), density_kg_m3=float(rho), laminar_law=case.friction.laminar_law,
-        form=case.friction.form, peak_speed_rpm=rad_s_to_rpm(cycle.peak_omega_rad_s),
-        regions=results, total_mean_power_W=total, isothermal_total_mean_power_W=iso,
-        viscous_torque_peak_Nm=sum(r.torque_peak_Nm for r in results + bearings),
-        cycle_energy_J=total * cycle.duration_s, bearings=bearings, film_applied=applies_film(mode),
-        film_band=band)
+    return c.evaluation(case, mode, thermal is None, d, film_band(at, mode, d, c.total_W))

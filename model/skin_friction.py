@@ -86,15 +86,14 @@ SMOOTH_MAX_WIDTH = 0.02
 RE_FLOOR = 1.0e-12
 """Reynolds numbers below this are evaluated at it (power there is ~0 anyway)."""
 
+
 class FrictionForm(StrEnum):
-    """How C_m is computed (:class:`FrictionLaw` ``form``); equal to its plain string, so
-    case files, JSON and the command line keep naming it ``"bilgen-boulos"`` etc.
+    """How C_m is computed (:class:`FrictionLaw` ``form``), equal to its plain string.
 
     Attributes
     ----------
     BILGEN_BOULOS, SMOOTH, POWER_LAW, BRANCHES : str
-        Eq. 6 of the seed paper exactly, its smooth form, one power law (Eq. 7), the
-        smooth maximum of branches [-].
+        Eq. 6 exactly, its smooth form, one power law (Eq. 7), smooth max of branches [-].
     """
 
     BILGEN_BOULOS = "bilgen-boulos"
@@ -104,8 +103,7 @@ class FrictionForm(StrEnum):
 
 
 class LaminarLaw(StrEnum):
-    """The laminar bound of the Eq. 6 forms (:class:`FrictionLaw` ``laminar_law``); equal
-    to its plain string.
+    """The laminar bound of Eq. 6 (:class:`FrictionLaw` ``laminar_law``), equal to its string.
 
     Attributes
     ----------
@@ -118,10 +116,7 @@ class LaminarLaw(StrEnum):
 
 
 FORMS = tuple(f.value for f in FrictionForm)
-"""The friction forms' names [-]."""
-
-LAMINAR_LAWS = tuple(law.value for law in LaminarLaw)
-"""The laminar laws' names [-] (the one list: the façade and the command line use it)."""
+LAMINAR_LAWS = tuple(law.value for law in LaminarLaw)  # the one list of both
 
 FRICTION_RANGES = {
     "gamma": (0.0, 3.0, "T^gamma >= 1: grooves raise a clearance's loss (every smoothed run "
@@ -594,13 +589,10 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
         base = law.scale * branches_cm(re, gap_ratio, law.branch_C, law.branch_alpha,
                                        law.branch_beta, floor=floor)
     else:
-        couette = law.laminar_law == LaminarLaw.COUETTE
-        if law.form == FrictionForm.SMOOTH:
-            cm = couette_law_cm_smooth if couette else bilgen_boulos_cm_smooth
-            base = law.scale * cm(re, gap_ratio, alpha=law.alpha)
-        else:
-            cm = couette_law_cm if couette else bilgen_boulos_cm
-            base = law.scale * cm(re, gap_ratio, law.alpha)
+        couette, smooth = law.laminar_law == LaminarLaw.COUETTE, law.form == FrictionForm.SMOOTH
+        cm = ((couette_law_cm_smooth if smooth else couette_law_cm) if couette
+              else (bilgen_boulos_cm_smooth if smooth else bilgen_boulos_cm))
+        base = law.scale * cm(re, gap_ratio, alpha=law.alpha)
     if isinstance(law.gamma, (int, float)) and law.gamma == 0.0:
         return base
     return base * groove_roughness_factor(roughness_T, law.gamma)

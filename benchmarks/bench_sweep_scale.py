@@ -36,6 +36,7 @@ from oilgap.optim.design import lean
 from oilgap.optim.design.variables import to_nlp
 from oilgap.studies.grid import optimize as grid_optimize
 from oilgap.studies.grid import runner
+from oilgap.studies.settings import RunOptions, SweepSettings
 
 CHAIN = 50
 
@@ -51,8 +52,8 @@ def grid(n: int) -> pd.DataFrame:
 def backend_run(g: pd.DataFrame, workers: int, scheduler: str | None) -> dict:
     """Points per second and overhead per task of one run."""
     t0 = time.perf_counter()
-    res = runner.run_grid(g, mode="optimize", workers=workers, progress=False,
-                          thermal="none", scheduler=scheduler)
+    res = runner.run_grid(g, None, SweepSettings(mode="optimize", thermal="none"),
+                          RunOptions(workers=workers, progress=False, scheduler=scheduler))
     wall = time.perf_counter() - t0
     chunks, busy, start = (res.attrs[k] for k in ("chunks", "worker_s", "backend_start_s"))
     return {"backend": res.attrs["backend"], "points": len(res),

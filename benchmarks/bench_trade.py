@@ -34,6 +34,7 @@ from oilgap.studies.grid.optimize import clear_problems
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import apply_params
 from oilgap.studies.pareto import gap_front
+from oilgap.studies.settings import RunOptions
 
 N_GRID = 10_000
 N_FRONT = 50
@@ -55,17 +56,17 @@ def main() -> int:
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         t0 = time.perf_counter()
-        r1 = run_grid(g, base, workers=1, progress=False)
+        r1 = run_grid(g, base, options=RunOptions(workers=1, progress=False))
         rows.append(("engine, 1 process", time.perf_counter() - t0))
         t0 = time.perf_counter()
-        run_grid(g, base, workers=2, progress=False)
+        run_grid(g, base, options=RunOptions(workers=2, progress=False))
         rows.append(("engine, 2 processes", time.perf_counter() - t0))
         t0 = time.perf_counter()
-        r2 = run_grid(g, base, workers=2, out_dir=tmp, progress=False)
+        r2 = run_grid(g, base, options=RunOptions(workers=2, progress=False), out_dir=tmp)
         t_two = time.perf_counter() - t0
         rows.append(("engine, 2 processes, writing points/results CSV", t_two))
         t0 = time.perf_counter()
-        r3 = run_grid(g, base, workers=2, out_dir=tmp, progress=False)
+        r3 = run_grid(g, base, options=RunOptions(workers=2, progress=False), out_dir=tmp)
         rows.append((f"rerun, same folder ({r3.attrs['computed']} recomputed)",
                      time.perf_counter() - t0))
     t0 = time.perf_counter()

@@ -403,7 +403,7 @@ THERMAL_TOML_KEYS = {  # TOML key of [thermal] -> ThermalSpec field (same unit, 
 """``[thermal]`` key -> :class:`ThermalSpec` field."""
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class DesignCase:
     """A joint to evaluate or optimize (all SI inside).
 

@@ -66,12 +66,18 @@ class DutyCycle:
         How the cycle was made, in the units of the case file (``kind``,
         ``peak_speed_rpm`` [rpm], ``frequency_hz`` [Hz], ``duration_s`` [s],
         ``sample_interval_s`` [s], or ``csv``); written back by the TOML writer.
+    cache : dict
+        Results computed once per cycle (not an input; see the field's note).
     """
 
     time_s: np.ndarray
     omega_rad_s: np.ndarray
     description: str = ""
     spec: dict = field(default_factory=dict, repr=False)
+    cache: dict = field(default_factory=dict, init=False, repr=False, compare=False)
+    """What is computed once per cycle (the cycle is immutable): the speed distribution,
+    the film settings per ``[thermal]`` (:func:`oilgap.model.joint_loss.case_film`). A
+    copy made with :func:`dataclasses.replace` starts with an empty one."""
 
     @classmethod
     def sine(cls, peak_speed_rpm: float = 3000.0, frequency_hz: float = 0.05,
@@ -222,7 +228,7 @@ class DutyCycle:
         weights : ndarray
             Time fraction of each node [-] (sum 1).
         """
-        cached = self.__dict__.get("_speed_distribution")
+        cached = self.cache.get("speed_distribution")
         if cached is not None:
             return cached
         a = np.abs(self.omega_rad_s)
@@ -231,7 +237,7 @@ class DutyCycle:
         _, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
         weights = np.bincount(inverse, weights=self.sample_weights())
         dist = (a[first], weights)
-        object.__setattr__(self, "_speed_distribution", dist)
+        self.cache["speed_distribution"] = dist
         return dist
 
 

@@ -56,11 +56,12 @@ from .oil_properties import seawater_gauge_pressure
 from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
 from .taylor_couette import couette_reynolds, flow_regime, taylor_number
+from .thermal_modes import ThermalMode
 from .units import celsius_to_kelvin, m2_s_to_cst, m_to_mm, rad_s_to_rpm
 from .viscous_loss import viscous_torque, weighted_mean
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RegionResult:
     """Result for one clearance region over the duty cycle.
 
@@ -121,7 +122,7 @@ class RegionResult:
     film_temp_rise_peak_K: float | None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BearingResult:
     """Result for the case's rolling bearing over the duty cycle (its own row).
 
@@ -176,7 +177,7 @@ class BearingResult:
     model_band: BearingModelBand | None = None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class CaseEvaluation:
     """Result of :func:`evaluate_case`.
 
@@ -390,12 +391,16 @@ def _region_result(case: DesignCase, region, p_mean: float, nu, rho, b, film,
     regimes = tuple(r for r in ("laminar", "laminar with vortices",
                                 "turbulent with vortices", "turbulent") if r in visited)
     return RegionResult(
-        region.name, R, gap, region.length_m, float(region.roughness_T), re_peak,
-        float(taylor_number(re_peak, gap, R)), regimes,
-        float(moment_coefficient(re_peak, gap / R, case.friction, region.roughness_T)),
-        float(p_mean), tq, peak.nahme_peak, peak.nahme_effective_peak,
-        peak.film_factor_steady_peak, peak.film_factor_effective_peak,
-        peak.applied(apply_film), bool(apply_film), peak.film_temp_rise_peak_K)
+        name=region.name, radius_m=R, gap_m=gap, length_m=region.length_m,
+        roughness_T=float(region.roughness_T), Re_peak=re_peak,
+        Ta_peak=float(taylor_number(re_peak, gap, R)), regimes=regimes,
+        Cm_peak=float(moment_coefficient(re_peak, gap / R, case.friction, region.roughness_T)),
+        mean_power_W=float(p_mean), torque_peak_Nm=tq, nahme_peak=peak.nahme_peak,
+        nahme_effective_peak=peak.nahme_effective_peak,
+        film_factor_steady_peak=peak.film_factor_steady_peak,
+        film_factor_effective_peak=peak.film_factor_effective_peak,
+        film_factor_applied_peak=peak.applied(apply_film), film_applied=bool(apply_film),
+        film_temp_rise_peak_K=peak.film_temp_rise_peak_K)
 
 
 def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float,
@@ -432,13 +437,15 @@ def bearing_result(case: DesignCase, spec: BearingSpec, nu_m2_s: float,
              for k, v in bearing_moment_terms(spec, nodes, nu_m2_s).items()}
     valid = bearing_validity(spec, cycle.peak_omega_rad_s, nu_m2_s)
     return BearingResult(
-        spec.name, spec.model, spec.kind, float(spec.pitch_diameter_m),
-        float(bearing_mean_power(spec, nodes, weights, nu_m2_s)),
-        float(bearing_torque(spec, cycle.peak_omega_rad_s, nu_m2_s)), terms,
-        bearing_defaults(spec), bearing_default_notes(spec), float(valid.kappa),
-        float(valid.speed_factor_mm_rpm), valid.notes,
-        None if rho_kg_m3 is None else bearing_model_band(spec, nodes, weights, nu_m2_s,
-                                                          rho_kg_m3))
+        name=spec.name, model=spec.model, kind=spec.kind,
+        pitch_diameter_m=float(spec.pitch_diameter_m),
+        mean_power_W=float(bearing_mean_power(spec, nodes, weights, nu_m2_s)),
+        torque_peak_Nm=float(bearing_torque(spec, cycle.peak_omega_rad_s, nu_m2_s)), terms=terms,
+        defaults=bearing_defaults(spec), default_notes=bearing_default_notes(spec),
+        kappa_peak=float(valid.kappa), speed_factor_peak_mm_rpm=float(valid.speed_factor_mm_rpm),
+        validity_notes=valid.notes,
+        model_band=None if rho_kg_m3 is None else bearing_model_band(
+            spec, nodes, weights, nu_m2_s, rho_kg_m3))
 
 
 def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regions):
@@ -451,10 +458,10 @@ def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regio
     with warnings.catch_warnings():
         warnings.simplefilter("default")
         nu, _, rho = oil_state(case, t, d)
-    if mode == "none":
+    if mode == ThermalMode.NONE:
         nodes, weights = case.duty_cycle.speed_distribution()
         means = [region_mean_power(r, nodes, weights, nu, rho, case.friction) for r in regions]
-    elif mode == "film":
+    elif mode == ThermalMode.FILM:
         means = region_mean_powers(case, t, mode, d)
     return t, nu, rho, means
 
@@ -494,7 +501,39 @@ def _refuse_non_finite(case: DesignCase, t: float, d: float, nu, rho,
                           "result is not reported")
 
 
-def _computed(case: DesignCase, mode: str, t_case: float, d: float):
+@dataclass(frozen=True, kw_only=True)
+class _Computed:
+    """The evaluation's numbers before they become a :class:`CaseEvaluation`."""
+
+    oil_temp_C: float
+    nu_m2_s: float
+    rho_kg_m3: float
+    regions: tuple[RegionResult, ...]
+    bearings: tuple[BearingResult, ...]
+    total_W: float
+    isothermal_W: float
+
+    def evaluation(self, case: DesignCase, mode: str, by_default: bool, depth_m: float,
+                   band) -> CaseEvaluation:
+        """The :class:`CaseEvaluation` of these numbers (``band``: the film band)."""
+        spec = case.thermal if uses_balance(mode) else None
+        cycle, total, rows = case.duty_cycle, self.total_W, self.regions + self.bearings
+        return CaseEvaluation(
+            case_name=case.name, oil=case.oil.name, thermal_mode=mode,
+            thermal_mode_default=by_default, oil_temp_C=self.oil_temp_C,
+            sea_temp_C=None if spec is None else float(spec.sea_temp_C),
+            resistance_K_per_W=None if spec is None else float(spec.resistance_K_W),
+            other_heat_W=None if spec is None else float(spec.other_heat_W), depth_m=depth_m,
+            nu_cSt=m2_s_to_cst(self.nu_m2_s), density_kg_m3=float(self.rho_kg_m3),
+            laminar_law=case.friction.laminar_law, form=case.friction.form,
+            peak_speed_rpm=rad_s_to_rpm(cycle.peak_omega_rad_s), regions=self.regions,
+            total_mean_power_W=total, isothermal_total_mean_power_W=self.isothermal_W,
+            viscous_torque_peak_Nm=sum(r.torque_peak_Nm for r in rows),
+            cycle_energy_J=total * cycle.duration_s, bearings=self.bearings,
+            film_applied=applies_film(mode), film_band=band)
+
+
+def _computed(case: DesignCase, mode: str, t_case: float, d: float) -> _Computed:
     """The evaluation's numbers, checked finite (numpy's overflow warnings are replaced by
     the check: a non-finite loss is refused, never printed)."""
     try:
@@ -507,7 +546,8 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float):
             bearings = () if case.bearing is None else (bearing_result(case, case.bearing,
                                                                        nu, rho),)
             total = sum(r.mean_power_W for r in results + bearings)
-            iso = total if mode == "none" else float(joint_mean_power(case, t_case, "none", d))
+            iso = total if mode == ThermalMode.NONE else float(
+                joint_mean_power(case, t_case, ThermalMode.NONE.value, d))
     except (OverflowError, ZeroDivisionError) as e:
         raise SolverError(f"the evaluation of {case.name!r} overflowed ({e}); the inputs "
                           "are out of reach of the model") from None
@@ -515,7 +555,8 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float):
     if not (np.isfinite(total) and np.isfinite(iso)):
         raise SolverError(f"the total loss is not finite ({total:g} W, isothermal {iso:g} W); "
                           "the result is not reported")
-    return t, nu, rho, results, bearings, total, iso
+    return _Computed(oil_temp_C=t, nu_m2_s=nu, rho_kg_m3=rho, regions=results,
+                     bearings=bearings, total_W=total, isothermal_W=iso)
 
 
 def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
@@ -585,16 +626,7 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
         raise InputError("oil_temp_C", oil_temp_C, f"not given under thermal mode '{mode}': "
                          "the heat balance sets the oil temperature (change [thermal] "
                          "sea_temp_C, or choose thermal 'none' or 'film')")
-    t, nu, rho, results, bearings, total, iso = _computed(case, mode, t_case, d)
+    c = _computed(case, mode, t_case, d)
     at = case if oil_temp_C is None else replace(
         case, operating=replace(case.operating, oil_temp_C=t_case))
-    band = film_band(at, mode, d, total)
-    cycle = case.duty_cycle
-    return CaseEvaluation(
-        case.name, case.oil.name, mode, thermal is None, t,
-        None if spec is None else float(spec.sea_temp_C),
-        None if spec is None else float(spec.resistance_K_W),
-        None if spec is None else float(spec.other_heat_W), d, m2_s_to_cst(nu), float(rho),
-        case.friction.laminar_law, case.friction.form, rad_s_to_rpm(cycle.peak_omega_rad_s),
-        results, total, iso, sum(r.torque_peak_Nm for r in results + bearings),
-        total * cycle.duration_s, bearings, applies_film(mode), band)
+    return c.evaluation(case, mode, thermal is None, d, film_band(at, mode, d, c.total_W))

@@ -429,7 +429,9 @@ def film_heating_for(duty_cycle, thermal=None) -> FilmHeating:
     k = None if thermal is None else thermal.conductivity_W_mK
     s = None if thermal is None else getattr(thermal, "film_strength", None)
     w = None if thermal is None else getattr(thermal, "wall_floating", None)
-    return FilmHeating(walls, MINERAL_OIL_CONDUCTIVITY_W_MK if k is None else float(k),
-                       MINERAL_OIL_DIFFUSIVITY_M2_S, tuple(float(f) for f in freqs),
-                       tuple(float(p) for p in weights), 1.0 if s is None else float(s),
-                       None if w is None else float(w))
+    return FilmHeating(
+        walls=walls, conductivity_W_mK=MINERAL_OIL_CONDUCTIVITY_W_MK if k is None else float(k),
+        diffusivity_m2_s=MINERAL_OIL_DIFFUSIVITY_M2_S,
+        frequencies_rad_s=tuple(float(f) for f in freqs),
+        spectral_weights=tuple(float(p) for p in weights), strength=1.0 if s is None else float(s),
+        wall_floating=None if w is None else float(w))

@@ -309,11 +309,11 @@ def read_fluid_table(path: str | Path, name: str | None = None,
                          f"at every pressure; temp_C = {absent[0][0]:g} is missing there", where)
     grid = [[pts[(t, p)] for t in temps] for p in press]
     return TableFluid(
-        name or path.stem, tuple(float(celsius_to_kelvin(t)) for t in temps),
-        tuple(tuple(float(cst_to_m2_s(c[0])) for c in r) for r in grid),
-        tuple(tuple(c[1] for c in r) for r in grid),
-        tuple(p * MPA_TO_PA for p in press) if has_p and len(press) > 1 else (),
-        polymer_thickened, outside, str(path))
+        name=name or path.stem, temps_K=tuple(float(celsius_to_kelvin(t)) for t in temps),
+        nu_m2_s=tuple(tuple(float(cst_to_m2_s(c[0])) for c in r) for r in grid),
+        rho_kg_m3=tuple(tuple(c[1] for c in r) for r in grid),
+        pressures_Pa=tuple(p * MPA_TO_PA for p in press) if has_p and len(press) > 1 else (),
+        polymer_thickened=polymer_thickened, outside=outside, source=str(path))
 
 
 

@@ -161,7 +161,7 @@ def case_film(case: DesignCase) -> FilmHeating:
     FilmHeating
         Walls, k [W/(m K)], alpha [m^2/s], heating spectrum [rad/s], [-].
     """
-    cache = case.duty_cycle.__dict__.setdefault("_film_cache", {})
+    cache = case.duty_cycle.cache.setdefault("film", {})
     th = case.thermal
     key = ((th.walls, th.conductivity_W_mK, th.film_strength, th.wall_floating) if th
            else None)

@@ -127,8 +127,10 @@ def measured_oil_state(temp_K, nu_m2_s, density_kg_m3) -> OilState:
         Lagged and film states the same arrays as the measured one.
     """
     T = np.asarray(temp_K, dtype=float)
-    return OilState(T, T, T, nu_m2_s, nu_m2_s, nu_m2_s, density_kg_m3, density_kg_m3,
-                    density_kg_m3)
+    return OilState(
+        temp_measured_K=T, temp_lagged_K=T, temp_film_K=T, nu_measured_m2_s=nu_m2_s,
+        nu_lagged_m2_s=nu_m2_s, nu_film_m2_s=nu_m2_s, density_measured_kg_m3=density_kg_m3,
+        density_lagged_kg_m3=density_kg_m3, density_film_kg_m3=density_kg_m3)
 
 
 def lagged_oil_state(measured: OilState, lag_s: float, temp_lagged_K,

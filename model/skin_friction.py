@@ -45,6 +45,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, replace
+from enum import StrEnum
 from typing import Literal
 
 from . import _math as m
@@ -85,8 +86,37 @@ SMOOTH_MAX_WIDTH = 0.02
 RE_FLOOR = 1.0e-12
 """Reynolds numbers below this are evaluated at it (power there is ~0 anyway)."""
 
-FORMS = ("bilgen-boulos", "smooth", "power-law", "branches")
-LAMINAR_LAWS = ("couette", "bilgen-boulos")
+
+class FrictionForm(StrEnum):
+    """How C_m is computed (:class:`FrictionLaw` ``form``), equal to its plain string.
+
+    Attributes
+    ----------
+    BILGEN_BOULOS, SMOOTH, POWER_LAW, BRANCHES : str
+        Eq. 6 exactly, its smooth form, one power law (Eq. 7), smooth max of branches [-].
+    """
+
+    BILGEN_BOULOS = "bilgen-boulos"
+    SMOOTH = "smooth"
+    POWER_LAW = "power-law"
+    BRANCHES = "branches"
+
+
+class LaminarLaw(StrEnum):
+    """The laminar bound of Eq. 6 (:class:`FrictionLaw` ``laminar_law``), equal to its string.
+
+    Attributes
+    ----------
+    COUETTE, BILGEN_BOULOS : str
+        Eq. 6 bounded below by the exact laminar Couette law; Eq. 6 as published [-].
+    """
+
+    COUETTE = "couette"
+    BILGEN_BOULOS = "bilgen-boulos"
+
+
+FORMS = tuple(f.value for f in FrictionForm)
+LAMINAR_LAWS = tuple(law.value for law in LaminarLaw)  # the one list of both
 
 FRICTION_RANGES = {
     "gamma": (0.0, 3.0, "T^gamma >= 1: grooves raise a clearance's loss (every smoothed run "
@@ -487,7 +517,8 @@ class FrictionLaw:
             ``form = "smooth"`` unless the form is ``"power-law"`` or ``"branches"``
             (smooth already); C_m stays [-].
         """
-        return self if self.form in ("power-law", "branches") else replace(self, form="smooth")
+        smooth_already = self.form in (FrictionForm.POWER_LAW, FrictionForm.BRANCHES)
+        return self if smooth_already else replace(self, form=FrictionForm.SMOOTH.value)
 
 
 def check_friction_ranges(law: FrictionLaw, where: str = "friction") -> FrictionLaw:
@@ -516,7 +547,7 @@ def check_friction_ranges(law: FrictionLaw, where: str = "friction") -> Friction
     """
     for name, (lo, hi, reason) in FRICTION_RANGES.items():
         check_physical(name, getattr(law, name), lo, hi, reason, where)
-    if law.form == "branches":
+    if law.form == FrictionForm.BRANCHES:
         for key, name in zip(BRANCH_KEYS, ("C", "alpha", "beta"), strict=True):
             lo, hi, reason = FRICTION_RANGES[name]
             for k, v in enumerate(getattr(law, key)):
@@ -550,20 +581,18 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
     Deep-Sea Electric Manipulator, Eqs. 6-8) [3]; Bilgen & Boulos [1].
     """
     re = m.fmax(reynolds, RE_FLOOR)
-    if law.form == "power-law":
+    if law.form == FrictionForm.POWER_LAW:
         base = power_law_cm(re, gap_ratio, law.C, law.alpha, law.beta)
-    elif law.form == "branches":
-        floor = (couette_moment_coefficient(re, gap_ratio) if law.laminar_law == "couette"
-                 else None)
+    elif law.form == FrictionForm.BRANCHES:
+        floor = (couette_moment_coefficient(re, gap_ratio)
+                 if law.laminar_law == LaminarLaw.COUETTE else None)
         base = law.scale * branches_cm(re, gap_ratio, law.branch_C, law.branch_alpha,
                                        law.branch_beta, floor=floor)
-    elif law.laminar_law == "couette":
-        base = law.scale * (couette_law_cm_smooth(re, gap_ratio, alpha=law.alpha)
-                            if law.form == "smooth" else couette_law_cm(re, gap_ratio, law.alpha))
     else:
-        base = law.scale * (bilgen_boulos_cm_smooth(re, gap_ratio, alpha=law.alpha)
-                            if law.form == "smooth" else bilgen_boulos_cm(re, gap_ratio,
-                                                                           law.alpha))
+        couette, smooth = law.laminar_law == LaminarLaw.COUETTE, law.form == FrictionForm.SMOOTH
+        cm = ((couette_law_cm_smooth if smooth else couette_law_cm) if couette
+              else (bilgen_boulos_cm_smooth if smooth else bilgen_boulos_cm))
+        base = law.scale * cm(re, gap_ratio, alpha=law.alpha)
     if isinstance(law.gamma, (int, float)) and law.gamma == 0.0:
         return base
     return base * groove_roughness_factor(roughness_T, law.gamma)

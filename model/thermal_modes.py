@@ -24,14 +24,34 @@ References
 
 from __future__ import annotations
 
-THERMAL_MODES = ("none", "bulk", "film", "full")
+from enum import StrEnum
+
+
+class ThermalMode(StrEnum):
+    """A thermal mode (see the module's text); equal to its plain string, so case files,
+    JSON and the command line keep naming it ``"none"``, ``"bulk"``, ``"film"``, ``"full"``.
+
+    Attributes
+    ----------
+    NONE, BULK, FILM, FULL : str
+        Isothermal at the given temperature, isothermal at the heat balance's, film
+        heating at the given temperature, film heating at the balance's [-].
+    """
+
+    NONE = "none"
+    BULK = "bulk"
+    FILM = "film"
+    FULL = "full"
+
+
+THERMAL_MODES = tuple(m.value for m in ThermalMode)
 """Thermal modes: isothermal at the given temperature, isothermal at the bulk balance's,
 film heating at the given temperature, film heating at the bulk balance's [-]."""
 
-FILM_MODES = ("film", "full")
+FILM_MODES = (ThermalMode.FILM.value, ThermalMode.FULL.value)
 """The modes that apply the film-heating correction [-]."""
 
-BALANCE_MODES = ("bulk", "full")
+BALANCE_MODES = (ThermalMode.BULK.value, ThermalMode.FULL.value)
 """The modes whose bulk oil temperature is the heat balance's (need ``[thermal]``) [-]."""
 
 THERMAL_MODE_TEXT = {

@@ -143,7 +143,9 @@ def solve_slsqp(problem: DesignProblem, x0: Sequence[float] | None = None, *,
     dt = time.perf_counter() - t0
     x_mm = np.clip(res.x, lo_mm, hi_mm)
     p1 = power(x_mm)
-    return ReferenceResult(x_mm * MM_TO_M, p1,
-                           p1 + problem.constant_power(params.nu_m2_s, params.rho_kg_m3),
-                           torque(x_mm), inertia(x_mm), bool(res.success), str(res.message),
-                           int(res.nit), int(res.nfev), dt)
+    return ReferenceResult(
+        x_m=x_mm * MM_TO_M, region1_power_W=p1,
+        mean_power_W=p1 + problem.constant_power(params.nu_m2_s, params.rho_kg_m3),
+        torque_capability_Nm=torque(x_mm), inertia_kgm2=inertia(x_mm), success=bool(res.success),
+        message=str(res.message), iterations=int(res.nit), evaluations=int(res.nfev),
+        solve_time_s=dt)

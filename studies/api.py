@@ -26,12 +26,10 @@ from oilgap.model.io.case_io import read_case_toml
 from oilgap.model.io.case_io import seed_case as _seed_case
 from oilgap.model.joint_loss import resolve_thermal_mode, uses_balance
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
+from oilgap.model.skin_friction import LAMINAR_LAWS
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
 from oilgap.studies.results import Evaluation
-
-LAMINAR_LAWS = ("couette", "bilgen-boulos")
-"""The laminar laws ``laminar_law`` may name (None: the case's)."""
 
 
 def read_case(path: str | Path) -> DesignCase:

@@ -5,28 +5,24 @@ from __future__ import annotations
 
 import warnings
 from pathlib import Path
+from typing import Any
 
 from oilgap.model.case import DesignCase
-from oilgap.model.errors import InputError, OilgapWarning, check_positive
+from oilgap.model.errors import OilgapWarning
 from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.optim.design import DesignProblem, compare_heating
 from oilgap.studies.api import as_case, thermal_case, with_operating
 from oilgap.studies.results_design import Optimization, thermal_line
-
-
-def _starts(starts: int) -> int:
-    if isinstance(starts, bool) or not isinstance(starts, int) or starts < 1:
-        raise InputError("starts", starts, "an integer >= 1 is required")
-    return starts
+from oilgap.studies.settings import DesignLimits
 
 
 def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
-             thermal: str | None = None, sea_temp_C: float | None = None, starts: int = 1,
-             torque_min_Nm: float | None = None, inertia_max_ratio: float | None = None,
-             verbose: bool = False) -> Optimization:
+             thermal: str | None = None, sea_temp_C: float | None = None,
+             **keywords: Any) -> Optimization:
     """The region-1 geometry (R, delta, groove fill, L) of least mean power under the
     motor's torque, the rotor inertia and the case's bounds (``oilgap optimize``).
 
@@ -41,14 +37,15 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C
         As :func:`oilgap.studies.api.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
-    starts : int
-        Start points: the case's design and ``starts - 1`` random points in the bounds.
-    torque_min_Nm : float, optional
-        Required torque capability [N m] (default: the case's, else the initial design's).
-    inertia_max_ratio : float, optional
-        Rotor inertia limit over the case's unfilled rotor [-] (default: the case's).
-    verbose : bool
-        IPOPT's iterations printed.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.DesignLimits`, or ``limits=``,
+        the record whole: ``starts`` (start points: the case's design and ``starts - 1``
+        random points in the bounds; default
+        :data:`~oilgap.studies.settings.DEFAULT_STARTS`, as ``oilgap optimize``),
+        ``torque_min_Nm`` (required torque capability [N m]; default: the case's, else
+        the initial design's), ``inertia_max_ratio`` (rotor inertia limit over the case's
+        unfilled rotor [-]; default: the case's); and ``verbose=True`` to print IPOPT's
+        iterations.
 
     Returns
     -------
@@ -60,15 +57,20 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     InputError, InfeasibleError, SolverError
         Bad input; constraints that conflict; IPOPT failing.
     """
-    starts = _starts(starts)
-    limits = {"torque_min_Nm": None if torque_min_Nm is None
-              else check_positive("torque_min_Nm", torque_min_Nm),
-              "inertia_max_ratio": None if inertia_max_ratio is None
-              else check_positive("inertia_max_ratio", inertia_max_ratio)}
+    kw = dict(keywords)
+    verbose = bool(kw.pop("verbose", False))
+    lim = kw.pop("limits", None)
+    unknown = set(kw) - DesignLimits.names()
+    if unknown:
+        raise TypeError(f"unexpected keyword(s): {', '.join(sorted(unknown))}")
+    if lim is not None and kw:
+        raise TypeError(f"give limits or {', '.join(sorted(kw))}, not both")
+    lim = lim if lim is not None else DesignLimits(**kw)
+    starts, limits = lim.starts, lim.constraints()
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)
     header = thermal_line(mode, thermal is None)
-    if mode == "none":
+    if mode == ThermalMode.NONE:
         res = DesignProblem(c, verbose=verbose).solve(starts=starts, **limits)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)

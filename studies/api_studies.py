@@ -12,11 +12,9 @@ that folder as the command does: the folder is checked and locked before any com
 from __future__ import annotations
 
 import time
-from collections.abc import Sequence
 from pathlib import Path
 from typing import Any
 
-import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
@@ -26,20 +24,20 @@ from oilgap.studies import oil_grade as oil_grade_study
 from oilgap.studies import pareto as pareto_study
 from oilgap.studies import smoothing as smoothing_study
 from oilgap.studies.api import as_case, oil_catalogue
-from oilgap.studies.grid.chunking import DEFAULT_CHUNK_SECONDS
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid
 from oilgap.studies.io.result_folder import ResultFolder
-from oilgap.studies.oil_grade import (
-    DEFAULT_DEPTH_RANGE_M,
-    DEFAULT_MISSION_HOURS,
-    DEFAULT_NU_MAX_CST,
-    DEFAULT_NU_MIN_CST,
-    read_mission_csv,
-)
+from oilgap.studies.oil_grade import read_mission_csv
 from oilgap.studies.outputs import result_folder
 from oilgap.studies.results_studies import OilGrade, Pareto, Smoothing
 from oilgap.studies.results_sweep import Sweep, write_sweep_outputs
+from oilgap.studies.settings import (
+    OilGradeSettings,
+    ParetoSettings,
+    SmoothingSettings,
+    SweepSettings,
+    split_keywords,
+)
 
 
 def _begin(folder: ResultFolder | None, case: DesignCase) -> None:
@@ -47,11 +45,6 @@ def _begin(folder: ResultFolder | None, case: DesignCase) -> None:
     if folder is not None:
         folder.note(**gamma_fields(case))
         folder.begin()
-
-
-def _passed(**kwargs: Any) -> dict:
-    """The options given (not None): passed on only when the caller chose them."""
-    return {k: v for k, v in kwargs.items() if v is not None}
 
 
 def _out(out: str | Path | None) -> Path | None:
@@ -64,11 +57,8 @@ def _note(folder: ResultFolder | None, mode: str, default: bool) -> None:
         folder.note(thermal_mode=mode, thermal_mode_default=bool(default))
 
 
-def pareto(case: DesignCase | str | Path | None = None, *,
-           points: int = pareto_study.DEFAULT_POINTS, torque_min_Nm: float | None = None,
-           out: str | Path | None = None, force: bool = False, workers: int | None = None,
-           scheduler: str | None = None, progress: bool | None = False,
-           folder: ResultFolder | None = None, thermal: str | None = None) -> Pareto:
+def pareto(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
+           force: bool = False, folder: ResultFolder | None = None, **keywords: Any) -> Pareto:
     """The gap-loss and loss-inertia Pareto fronts by epsilon-constraint sweeps
     (``oilgap study pareto``; :func:`oilgap.studies.pareto.run`).
 
@@ -76,33 +66,29 @@ def pareto(case: DesignCase | str | Path | None = None, *,
     ----------
     case : DesignCase, path or None
         The joint (None: the seed joint).
-    points : int
-        Points per front (>= 50).
-    torque_min_Nm : float, optional
-        Required torque capability [N m] (default: the case's own).
     out : path, optional
         Folder for the CSVs, figures and ``summary.md``.
     force : bool
         Replace earlier outputs in ``out``.
-    workers, scheduler : optional
-        Processes, and a Dask scheduler (``"local"``, ``"tcp://HOST:PORT"``), where the
-        study takes them.
-    progress : bool, optional
-        Progress bar on stderr.
-    thermal : {"none", "bulk", "film", "full"}, optional
-        Thermal mode of the fronts and the marked designs (default: ``bulk`` with
-        ``[thermal]``, else ``none``, as ``og.evaluate`` and ``og.optimize``).
+    folder : ResultFolder, optional
+        A result folder the caller already opened.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.ParetoSettings` (``points``: per
+        front, >= 50; ``torque_min_Nm``: required torque capability [N m], default the
+        case's own; ``thermal``: ``"none"``, ``"bulk"``, ``"film"``, ``"full"``, default
+        ``bulk`` with ``[thermal]``, else ``none``) and of
+        :class:`~oilgap.studies.settings.RunOptions` (``workers``, ``scheduler``,
+        ``progress``), or ``settings=`` / ``options=``, the records whole.
 
     Returns
     -------
     Pareto
     """
     base = as_case(case)
-    extra = _passed(workers=workers, scheduler=scheduler)
+    settings, options = split_keywords(keywords, ParetoSettings)
     with result_folder("study pareto", out, force, folder=folder) as f:
         _begin(f, base)
-        r = pareto_study.run(out, base, points, torque_min_Nm, progress, thermal=thermal,
-                             **extra)
+        r = pareto_study.run(out, base, settings, options)
         _note(f, r.thermal_mode, r.thermal_default)
     return Pareto(r, base, _out(out))
 
@@ -118,15 +104,8 @@ def _mission(mission: Any) -> Any:
 
 
 def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = None,
-              thermal: str | None = None, nu_min_cSt: float = DEFAULT_NU_MIN_CST,
-              nu_max_cSt: float = DEFAULT_NU_MAX_CST,
-              depth_range_m: Sequence[float] = DEFAULT_DEPTH_RANGE_M,
-              temp_range_C: Sequence[float] | None = None,
-              sea_temp_range_C: Sequence[float] | None = None,
-              mission_hours: float = DEFAULT_MISSION_HOURS, out: str | Path | None = None,
-              force: bool = False, workers: int | None = None,
-              scheduler: str | None = None, progress: bool | None = False,
-              folder: ResultFolder | None = None, **options: Any) -> OilGrade:
+              out: str | Path | None = None, force: bool = False,
+              folder: ResultFolder | None = None, **keywords: Any) -> OilGrade:
     """The ISO VG grade for a joint over its envelope and mission (``oilgap study
     oil-grade``; :func:`oilgap.studies.oil_grade.run`).
 
@@ -137,19 +116,17 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     mission : list of dicts, DataFrame, CSV path or None
         Rows ``depth_m`` [m], ``oil_temp_C`` [degC], ``fraction`` [-] (default: the
         case's ``[[mission]]`` rows, else the study's default mission).
-    thermal : {"none", "bulk", "film", "full"}, optional
-        Thermal mode (default: ``bulk`` with ``[thermal]``, else ``none``).
-    nu_min_cSt, nu_max_cSt : float
-        Lubrication and cold-start limits [cSt].
-    depth_range_m, temp_range_C, sea_temp_range_C : pairs of float
-        The envelope [m], [degC] (oil's under none/film, sea's under bulk/full).
-    mission_hours : float
-        Mission duration [h].
-    out, force, workers, scheduler, progress
-        As :func:`pareto` (the grid of grades and envelope runs on the scheduler).
-    **options
-        Other options of :func:`oilgap.studies.oil_grade.run` (``grades``,
-        ``iso_tolerance``, ``n_depth``, ``n_temp``, ``rated_temps_C``).
+    out, force, folder
+        As :func:`pareto`.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.OilGradeSettings` (``thermal``;
+        ``nu_min_cSt``, ``nu_max_cSt``: lubrication and cold-start limits [cSt];
+        ``depth_range_m``, ``temp_range_C``, ``sea_temp_range_C``: the envelope [m],
+        [degC], the oil's under none/film, the sea's under bulk/full; ``mission_hours``
+        [h]; ``grades``, ``iso_tolerance``, ``n_depth``, ``n_temp``, ``rated_temps_C``)
+        and of :class:`~oilgap.studies.settings.RunOptions` (``workers``, ``scheduler``,
+        ``progress``: the grid of grades and envelope runs on the scheduler), or
+        ``settings=`` / ``options=``, the records whole.
 
     Returns
     -------
@@ -157,24 +134,17 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     """
     base = as_case(case)
     m = _mission(mission)
+    settings, options = split_keywords(keywords, OilGradeSettings)
     with result_folder("study oil-grade", out, force, folder=folder) as f:
         _begin(f, base)
-        r = oil_grade_study.run(out, base, m, nu_min_cSt=nu_min_cSt, nu_max_cSt=nu_max_cSt,
-                                depth_range_m=depth_range_m, temp_range_C=temp_range_C,
-                                sea_temp_range_C=sea_temp_range_C,
-                                mission_hours=mission_hours, workers=workers,
-                                progress=progress, thermal=thermal, scheduler=scheduler,
-                                **options)
-        _note(f, r.thermal_mode, r.settings["thermal_default"])
+        r = oil_grade_study.run(out, base, m, settings, options)
+        _note(f, r.thermal_mode, r.settings.thermal_default)
     return OilGrade(r, base, _out(out))
 
 
-def smoothing(case: DesignCase | str | Path | None = None, *, method: str | None = None,
-              thermal: str | None = None, resistance_K_W: float = 0.0,
-              T_values: Sequence[float] | None = None,
-              plateau_tol: float = smoothing_study.PLATEAU_TOL,
-              out: str | Path | None = None, force: bool = False,
-              folder: ResultFolder | None = None, film_evidence: bool = False) -> Smoothing:
+def smoothing(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
+              force: bool = False, folder: ResultFolder | None = None,
+              **keywords: Any) -> Smoothing:
     """What smoothing the grooves saves (``oilgap study smoothing``;
     :func:`oilgap.studies.smoothing.run`): the fit on the seed's Table 4 and the loss
     against the roughness T.
@@ -183,44 +153,36 @@ def smoothing(case: DesignCase | str | Path | None = None, *, method: str | None
     ----------
     case : DesignCase, path or None
         Base joint (None: the seed joint).
-    method : {"per-oil", "shared", "heat-balance"}, optional
-        How the runs' temperatures are fitted (default per-oil).
-    thermal : {"none", "film", "full"}, optional
-        The loss at the runs' temperatures (default none).
-    resistance_K_W : float
-        Per-oil method: fixed R_th [K/W].
-    T_values : sequence of float, optional
-        Roughness values of the loss-vs-T view [-] (default 1 to 5 by 0.05).
-    plateau_tol : float
-        Where the loss counts as levelled off [-] (fraction of P(T = 1)).
-    out, force
+    out, force, folder
         As :func:`pareto`.
-    film_evidence : bool
-        Also fit the film strength s with the rig's heat balance (seed rig only):
-        ``result.film_evidence`` (docs/thermal.md#evidence).
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.SmoothingSettings`, or
+        ``settings=``: ``method`` (``"per-oil"``, ``"shared"``, ``"heat-balance"``; how
+        the runs' temperatures are fitted, default per-oil), ``thermal`` (``"none"``,
+        ``"film"``, ``"full"``: the loss at the runs' temperatures, default none),
+        ``resistance_K_W`` (per-oil method: fixed R_th [K/W]), ``T_values`` (roughness
+        values of the loss-vs-T view [-], default 1 to 5 by 0.05), ``plateau_tol``
+        (where the loss counts as levelled off [-], fraction of P(T = 1)),
+        ``film_evidence`` (also fit the film strength s with the rig's heat balance,
+        seed rig only: ``result.film_evidence``, docs/thermal.md#evidence).
 
     Returns
     -------
     Smoothing
     """
     base = as_case(case)
-    T = None if T_values is None else np.asarray(T_values, dtype=float)
+    settings, _ = split_keywords(keywords, SmoothingSettings, run_options=False)
     with result_folder("study smoothing", out, force, folder=folder) as f:
         _begin(f, base)
-        r = smoothing_study.run(out, case=base, method=method, resistance_K_W=resistance_K_W,
-                                T_values=T, plateau_tol=plateau_tol, thermal=thermal,
-                                film_evidence=film_evidence)
+        r = smoothing_study.run(out, base, settings)
         _note(f, r.thermal_mode, r.thermal_default)
-    return Smoothing(r, base, plateau_tol, _out(out))
+    return Smoothing(r, base, settings.plateau_tol, _out(out))
 
 
 def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None = None, *,
-          mode: str = "evaluate", thermal: str | None = None, out: str | Path | None = None,
-          resume: bool = False, force: bool = False, workers: int | None = None,
-          scheduler: str | None = None, progress: bool | None = None,
-          oils: dict[str, Oil] | str | Path | None = None, chunk_size: int | None = None,
-          chunk_seconds: float = DEFAULT_CHUNK_SECONDS, retry_failed: bool = False,
-          folder: ResultFolder | None = None) -> Sweep:
+          out: str | Path | None = None, resume: bool = False, force: bool = False,
+          oils: dict[str, Oil] | str | Path | None = None,
+          folder: ResultFolder | None = None, **keywords: Any) -> Sweep:
     """Evaluate or optimize every row of a grid (``oilgap study sweep``;
     :func:`oilgap.studies.grid.runner.run_grid`), resumable in ``out``.
 
@@ -230,25 +192,30 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
         One row per point (columns: :data:`oilgap.studies.grid.columns.PARAM_COLUMNS`).
     case : DesignCase, path or None
         Base case (None: the seed joint).
-    mode : {"evaluate", "optimize"}
-    thermal : {"none", "bulk", "film", "full"}, optional
-        Thermal mode (default: ``bulk`` with ``[thermal]``, else ``none``).
     out : path, optional
         Folder of the resumable store, ``results.csv``/``.parquet``, ``sweep.png`` and
         ``summary.md``.
     resume, force : bool
         Continue the sweep stored in ``out``, or discard it.
-    workers, scheduler, progress, chunk_size, chunk_seconds, retry_failed
-        As :func:`~oilgap.studies.grid.runner.run_grid`.
     oils : path or dict, optional
         Oils to look ``oil`` names up in.
+    folder : ResultFolder, optional
+        A result folder the caller already opened.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.SweepSettings` (``mode``:
+        ``"evaluate"`` or ``"optimize"``; ``thermal``: default ``bulk`` with
+        ``[thermal]``, else ``none``; ``retry_failed``) and of
+        :class:`~oilgap.studies.settings.RunOptions` (``workers``, ``scheduler``,
+        ``progress``, ``chunk_size``, ``chunk_seconds``), as
+        :func:`~oilgap.studies.grid.runner.run_grid` takes them, or ``settings=`` /
+        ``options=``, the records whole.
 
     Returns
     -------
     Sweep
     """
-    extra = _passed(scheduler=scheduler)
-    resume = resume or retry_failed
+    settings, options = split_keywords(keywords, SweepSettings)
+    resume = resume or settings.retry_failed
     name = Path(grid).name if isinstance(grid, (str, Path)) else "the grid"
     with result_folder("study sweep", out, force, resume, folder) as f:  # before reading
         g = read_grid(grid) if isinstance(grid, (str, Path)) else grid
@@ -256,11 +223,9 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
         cat = oil_catalogue(oils)
         _begin(f, base)
         t0 = time.perf_counter()
-        res = run_grid(g, base, mode=mode, out_dir=out, workers=workers,
-                       chunk_size=chunk_size, progress=progress, catalogue=cat,
-                       retry_failed=retry_failed, thermal=thermal,
-                       chunk_seconds=chunk_seconds, **extra)
-        view = Sweep(res, base, g, mode, time.perf_counter() - t0, _out(out), name, scheduler)
+        res = run_grid(g, base, settings, options, out_dir=out, catalogue=cat)
+        view = Sweep(res, base, g, settings.mode, elapsed_s=time.perf_counter() - t0,
+                     out=_out(out), grid_name=name, scheduler=options.scheduler)
         _note(f, view.thermal_mode, res.attrs.get("thermal_default", False))
         if out is not None:
             view.files = write_sweep_outputs(view, Path(out))

@@ -46,7 +46,7 @@ MODELS = {"without_T": ("case's law without T", "tab:red", "-", 0.7),
 """Each prediction's legend entry, colour, line style and width."""
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class LoopCurves:
     """What the loop's figures draw, one entry per oil sample (SI, time in seconds).
 
@@ -95,11 +95,11 @@ class LoopCurves:
                 idx = np.nonzero(s.run_code == c)[0]
                 t[idx] = np.arange(len(idx))
         keys = ("without_T", "with_T") + (("with_effect",) if loop.effects_ else ())
-        return cls(tuple(s.run_names), np.asarray(s.run_code), t, has_time,
-                   np.asarray(s.speed_rpm, float), np.asarray(s.temp_C, float),
-                   np.asarray(s.viscous_W, float), np.asarray(s.oil),
-                   np.asarray(s.roughness_T, float),
-                   {k: np.asarray(loop.pred_[k], float) for k in keys})
+        return cls(run_names=tuple(s.run_names), run_code=np.asarray(s.run_code), time_s=t,
+                   has_time=has_time, speed_rpm=np.asarray(s.speed_rpm, float),
+                   temp_C=np.asarray(s.temp_C, float), measured_W=np.asarray(s.viscous_W, float),
+                   oil=np.asarray(s.oil), roughness_T=np.asarray(s.roughness_T, float),
+                   predictions={k: np.asarray(loop.pred_[k], float) for k in keys})
 
     def run_label(self, i: int) -> str:
         """A run in words: "VG320-T4: VG320, T = 4, 21..35 degC"."""

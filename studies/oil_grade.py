@@ -65,14 +65,14 @@ from __future__ import annotations
 import csv
 import io
 from collections.abc import Sequence
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, fields, replace
 from pathlib import Path
 
 import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase, MissionSegment, OperatingPoint
-from oilgap.model.errors import InputError, SolverError, check_finite, check_positive, check_range
+from oilgap.model.errors import InputError, SolverError, check_finite
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import Default, case_defaults, study_default
@@ -80,29 +80,27 @@ from oilgap.model.io.inputs import header_error, read_input_text
 from oilgap.model.joint_loss import FilmBand, bearing_mean_power_at, film_band
 from oilgap.model.joint_loss import resolve_thermal_mode as resolve_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
-from oilgap.model.thermal_modes import uses_balance
+from oilgap.model.thermal_modes import ThermalMode, uses_balance
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
 from oilgap.studies.oil_grade_thermal import compare_recommendations
+from oilgap.studies.settings import (
+    DEFAULT_DEPTH_RANGE_M,
+    DEFAULT_ISO_TOLERANCE,
+    DEFAULT_MISSION_HOURS,
+    DEFAULT_NU_MAX_CST,
+    DEFAULT_NU_MIN_CST,
+    DEFAULT_TEMP_RANGE_C,
+    ISO_GRADES,
+    OilGradeSettings,
+    RunOptions,
+    SweepSettings,
+    split_keywords,
+)
 from oilgap.studies.user_case import is_seed_case
 
-ISO_GRADES = ("VG10", "VG15", "VG22", "VG32", "VG46", "VG68", "VG100", "VG150", "VG220",
-              "VG320", "VG460", "VG680", "VG1000")
 WHERE = "oil-grade study"
 """Context named by the study's InputErrors."""
-DEFAULT_NU_MIN_CST = 13.0
-"""Lubrication limit: minimum viscosity at the hottest envelope point [cSt]."""
-DEFAULT_NU_MAX_CST = 1000.0
-"""Cold limit: maximum viscosity at the coldest envelope point, for start-up [cSt]."""
-DEFAULT_ISO_TOLERANCE = 0.10
-"""ISO 3448 tolerance on nu at 40 degC, applied at its worst to both limits [-]."""
-DEFAULT_DEPTH_RANGE_M = (0.0, 7000.0)
-DEFAULT_TEMP_RANGE_C = (0.0, 40.0)
-"""Envelope temperatures [degC]: the oil's (none, film) or the sea's (bulk, full). The same
-0-40 degC for the sea, so that the thermal and isothermal answers differ by the physics
-only (the surface end stands for deck checks in warm air)."""
-DEFAULT_MISSION_HOURS = 8.0
-"""Mission duration for the mission energy [h] (one working dive)."""
 SEED_MISSION = (MissionSegment(0.0, 20.0, 0.05), MissionSegment(1500.0, 4.0, 0.10),
                 MissionSegment(3000.0, 2.0, 0.85))
 """Default mission of the seed joint (it has none): fractions of the joint's running
@@ -166,17 +164,34 @@ def read_mission_csv(path: str | Path) -> tuple[MissionSegment, ...]:
     return parse_mission(df)
 
 
-def _range(name: str, rng: Sequence[float], lo: float, hi: float) -> tuple[float, float]:
-    if len(rng) != 2:
-        raise InputError(name, rng, "needs (min, max)", "oil-grade study")
-    a = check_range(name + " min", rng[0], lo, hi, "oil-grade study")
-    b = check_range(name + " max", rng[1], lo, hi, "oil-grade study")
-    if b < a:
-        raise InputError(name, (a, b), "max must be >= min", "oil-grade study")
-    return a, b
+@dataclass(frozen=True, kw_only=True)
+class OilGradeEnvelope:
+    """The oil-grade study's settings as applied to its case and thermal mode: the
+    limits [cSt], tolerance [-], envelope [m], [degC] (the oil's or, under ``bulk``/
+    ``full``, the sea's: ``temp_axis``), grid sizes, mission hours [h] and the rated point
+    [m], [degC] of the loss-vs-grade view."""
+
+    nu_min_cSt: float
+    nu_max_cSt: float
+    iso_tolerance: float
+    depth_range_m: tuple[float, float]
+    temp_range_C: tuple[float, float]
+    n_depth: int
+    n_temp: int
+    mission_hours: float
+    thermal_mode: str
+    thermal_default: bool
+    temp_axis: str
+    rated_depth_m: float
+    rated_temp_C: float
+    rated_temps_C: list[float]
+
+    def to_dict(self) -> dict:
+        """The fields as a dict (``oil_grade.json``'s ``settings``)."""
+        return {f.name: getattr(self, f.name) for f in fields(self)}
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class OilGradeResult:
     """Everything the oil-grade study computes.
 
@@ -206,7 +221,7 @@ class OilGradeResult:
     runner_up: str | None
     mission: tuple[MissionSegment, ...]
     mission_source: str
-    settings: dict
+    settings: OilGradeEnvelope
     files: tuple[Path, ...] = ()
     thermal_mode: str = "none"
     isothermal_table: pd.DataFrame | None = None
@@ -221,16 +236,9 @@ class OilGradeResult:
     """The case's own oil at its rated point, beside the opposite film choice."""
 
 
-def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
-        mission=None, grades: Sequence[str] = ISO_GRADES,
-        nu_min_cSt: float = DEFAULT_NU_MIN_CST, nu_max_cSt: float = DEFAULT_NU_MAX_CST,
-        iso_tolerance: float = DEFAULT_ISO_TOLERANCE,
-        depth_range_m: Sequence[float] = DEFAULT_DEPTH_RANGE_M, scheduler: str | None = None,
-        temp_range_C: Sequence[float] | None = None, n_depth: int = 29,
-        n_temp: int = 21, mission_hours: float = DEFAULT_MISSION_HOURS,
-        rated_temps_C: Sequence[float] | None = None, workers: int | None = None,
-        progress: bool | None = False, thermal: str | None = "none",
-        sea_temp_range_C: Sequence[float] | None = None) -> OilGradeResult:
+def run(out_dir: str | Path | None = None, case: DesignCase | None = None, mission=None,
+        settings: OilGradeSettings | None = None,
+        options: RunOptions | None = None) -> OilGradeResult:
     """Run the oil-grade study; with ``out_dir`` write CSVs, JSON, figures and ``summary.md``.
 
     Parameters
@@ -244,62 +252,57 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         them one segment at the case's ``[operating]`` point (its sea temperature under
         ``bulk``/``full``), or :data:`SEED_MISSION` for the seed joint. Under
         ``bulk``/``full`` each row's temperature is the sea's.
-    grades : oil names (default ISO VG10..VG1000 of the catalogue)
-    nu_min_cSt, nu_max_cSt : lubrication and cold limits [cSt]
-    iso_tolerance : grade tolerance applied at its worst [-] (0 to switch off)
-    depth_range_m : the envelope's depths [m]
-    temp_range_C : the envelope's oil temperatures [degC] (none, film; default 0-40)
-    n_depth, n_temp : grid points over the envelope (>= 2 each)
-    mission_hours : mission duration [h]
-    rated_temps_C : temperatures of the loss-vs-grade view at the rated depth
-        (default: envelope min, the case's oil (or sea) temperature, 20 degC, envelope max)
-    workers, progress, scheduler : passed to :func:`~oilgap.studies.grid.runner.run_grid`
-    thermal : {"none", "bulk", "film", "full"} or None
-        Thermal mode (default ``"none"``, the isothermal study; None: ``bulk`` with
-        ``[thermal]``, else ``none``, the command line's default).
-    sea_temp_range_C : the envelope's sea temperatures [degC] (``bulk``/``full`` only; default
-        :data:`DEFAULT_TEMP_RANGE_C`)
+    settings : OilGradeSettings, optional
+        Grades, limits [cSt], tolerance, envelope, grid sizes, mission hours, rated
+        temperatures and thermal mode (default: :class:`OilGradeSettings()`, whose
+        thermal mode None is ``bulk`` with ``[thermal]``, else ``none``).
+    options : RunOptions, optional
+        Workers, scheduler and progress line of the grid
+        (:func:`~oilgap.studies.grid.runner.run_grid`).
 
     Raises
     ------
     InputError
-        Bad limits, ranges, grid sizes, mission or grade names; a thermal mode the case
-        does not allow; ``temp_range_C`` under ``bulk``/``full`` or ``sea_temp_range_C`` without it.
+        Bad mission or grade names; a thermal mode the case does not allow;
+        ``temp_range_C`` under ``bulk``/``full`` or ``sea_temp_range_C`` without it.
     """
+    s = settings if settings is not None else OilGradeSettings()
     base = case if case is not None else seed_case()
-    mode = resolve_mode(base, thermal)
-    settings = _settings(nu_min_cSt, nu_max_cSt, iso_tolerance, depth_range_m,
-                         _temp_axis(mode, temp_range_C, sea_temp_range_C), n_depth, n_temp,
-                         mission_hours)
-    settings.update(thermal_mode=mode, thermal_default=thermal is None,
-                    temp_axis="sea" if uses_balance(mode) else "oil")
-    catalogue, grades = _grades(base, grades)
+    mode = resolve_mode(base, s.thermal)
+    t_lo, t_hi = _temp_axis(mode, s.temp_range_C, s.sea_temp_range_C)
+    catalogue, grades = _grades(base, s.grades)
     segs, source = _mission(base, mission, mode)
-    settings["rated_depth_m"] = base.operating.depth_m
-    settings["rated_temp_C"] = _case_temp(base, mode)
-    rated_given = rated_temps_C is not None
-    if rated_temps_C is None:
-        t_lo, t_hi = settings["temp_range_C"]
-        rated_temps_C = sorted({t_lo, settings["rated_temp_C"], 20.0, t_hi})
-    settings["rated_temps_C"] = [check_finite("rated_temps_C", t, WHERE) for t in rated_temps_C]
+    rated_temp = _case_temp(base, mode)
+    rated = s.rated_temps_C
+    if rated is None:
+        rated = sorted({t_lo, rated_temp, 20.0, t_hi})
+    settings = OilGradeEnvelope(
+        nu_min_cSt=s.nu_min_cSt, nu_max_cSt=s.nu_max_cSt, iso_tolerance=s.iso_tolerance,
+        depth_range_m=s.depth_range_m, temp_range_C=(float(t_lo), float(t_hi)),
+        n_depth=s.n_depth, n_temp=s.n_temp, mission_hours=s.mission_hours, thermal_mode=mode,
+        thermal_default=s.thermal is None, temp_axis="sea" if uses_balance(mode) else "oil",
+        rated_depth_m=base.operating.depth_m, rated_temp_C=rated_temp,
+        rated_temps_C=[check_finite("rated_temps_C", t, WHERE) for t in rated])
     grid = _grid(grades, segs, settings)
     out = Path(out_dir) if out_dir is not None else None
-    how = {"workers": workers, "progress": progress, "scheduler": scheduler}  # run_grid's
+    how = options if options is not None else RunOptions(progress=False)
     frames_iso = _evaluate(grid, base, catalogue, "none", out, mode, how)
-    frames = frames_iso if mode == "none" else _evaluate(grid, base, catalogue, mode, out, mode,
-                                                         how)
+    isothermal = mode == ThermalMode.NONE
+    frames = frames_iso if isothermal else _evaluate(grid, base, catalogue, mode, out, mode, how)
     table, recommended, runner_up = _decide(base, catalogue, grades, frames,
                                             frames_iso["envelope"], segs, settings, mode)
-    t_iso, rec_iso, run_iso = (table, recommended, runner_up) if mode == "none" else _decide(
+    t_iso, rec_iso, run_iso = (table, recommended, runner_up) if isothermal else _decide(
         base, catalogue, grades, frames_iso, frames_iso["envelope"], segs, settings, "none")
-    comparison = None if mode == "none" else compare_recommendations(
-        table, t_iso, recommended, rec_iso, runner_up, run_iso, mode, base, settings)
-    result = OilGradeResult(table, frames["envelope"], frames["rated"], recommended, runner_up,
-                            segs, source, settings, (), mode, t_iso, rec_iso, run_iso,
-                            comparison, _defaults(base, settings, mission is None, source, segs,
-                                                  temp_range_C, sea_temp_range_C,
-                                                  rated_given),
-                            is_seed_case(base), film_band(base, mode))
+    comparison = None if isothermal else compare_recommendations(
+        table, t_iso, (recommended, rec_iso), (runner_up, run_iso), mode, base, settings)
+    result = OilGradeResult(
+        table=table, envelope=frames["envelope"], rated=frames["rated"],
+        recommended=recommended, runner_up=runner_up, mission=segs, mission_source=source,
+        settings=settings, thermal_mode=mode, isothermal_table=t_iso,
+        recommended_isothermal=rec_iso, runner_up_isothermal=run_iso, comparison=comparison,
+        defaults=_defaults(base, settings, mission is None, source, segs, s.temp_range_C,
+                           s.sea_temp_range_C, s.rated_temps_C is not None),
+        is_seed=is_seed_case(base), film_band=film_band(base, mode))
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
     return result
@@ -307,8 +310,6 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
 
 def _grades(base: DesignCase, grades: Sequence[str]) -> tuple[dict, list[str]]:
     """The oil catalogue (built-in and the case's table) and the grades' names."""
-    if not grades:
-        raise InputError("grades", list(grades), "needs at least one oil", WHERE)
     catalogue = builtin_oils()
     if base.oils_csv:
         catalogue.update(read_oils_csv(base.oils_csv))
@@ -339,13 +340,14 @@ def _axis(mode: str) -> str:
 
 
 def _evaluate(grid: pd.DataFrame, base: DesignCase, catalogue: dict, mode: str,
-              out: Path | None, study_mode: str, how: dict) -> dict[str, pd.DataFrame]:
+              out: Path | None, study_mode: str, how: RunOptions) -> dict[str, pd.DataFrame]:
     """The grid under one thermal mode: the envelope, mission and rated frames. Points
     are stored under ``out/grid`` (the study's mode) or ``out/grid_isothermal``."""
     sub = "grid" if mode == study_mode else "grid_isothermal"
     res = run_grid(grid.rename(columns={"oil_temp_C": _axis(mode)}), base,
+                   SweepSettings(thermal=mode), how,
                    out_dir=out / sub if out is not None else None, label="oil-grade",
-                   catalogue=catalogue, thermal=mode, **how)
+                   catalogue=catalogue)
     failed = res[res["status"] != "ok"]
     if len(failed):
         where = failed.iloc[0][["oil", "depth_m", _axis(mode)]].to_dict()
@@ -359,7 +361,7 @@ def _evaluate(grid: pd.DataFrame, base: DesignCase, catalogue: dict, mode: str,
 
 
 def _decide(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
-            cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: dict,
+            cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: OilGradeEnvelope,
             mode: str) -> tuple[pd.DataFrame, str | None, str | None]:
     """The grade table under ``mode``, ranked, with verdicts; (table, recommended,
     runner-up)."""
@@ -367,26 +369,6 @@ def _decide(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
     recommended, runner_up, best_e = _rank(table)
     _verdicts(table, recommended, runner_up, best_e, settings, mode)
     return table, recommended, runner_up
-
-
-def _settings(nu_min_cSt: float, nu_max_cSt: float, iso_tolerance: float,
-              depth_range_m: Sequence[float], temp_range_C: Sequence[float], n_depth: int,
-              n_temp: int, mission_hours: float) -> dict:
-    """The study's limits, envelope and grid sizes, checked."""
-    nu_min = check_positive("nu_min_cSt", nu_min_cSt, WHERE)
-    nu_max = check_positive("nu_max_cSt", nu_max_cSt, WHERE)
-    if nu_max <= nu_min:
-        raise InputError("nu_max_cSt", nu_max, f"must be > nu_min_cSt = {nu_min:g}", WHERE)
-    tol = check_range("iso_tolerance", iso_tolerance, 0.0, 0.5, WHERE)
-    d_lo, d_hi = _range("depth_range_m", depth_range_m, 0.0, 11_000.0)
-    t_lo, t_hi = _range("temp_range_C", temp_range_C, -20.0, 150.0)
-    for name, n in (("n_depth", n_depth), ("n_temp", n_temp)):
-        if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < 2:
-            raise InputError(name, n, "must be an integer >= 2", WHERE)
-    hours = check_positive("mission_hours", mission_hours, WHERE)
-    return {"nu_min_cSt": nu_min, "nu_max_cSt": nu_max, "iso_tolerance": tol,
-            "depth_range_m": (d_lo, d_hi), "temp_range_C": (t_lo, t_hi),
-            "n_depth": int(n_depth), "n_temp": int(n_temp), "mission_hours": hours}
 
 
 def _mission(base: DesignCase, mission, mode: str = "none"
@@ -413,17 +395,18 @@ _STUDY_DEFAULTS = (("nu_min_cSt", DEFAULT_NU_MIN_CST, "cSt"),  # settings key, d
                    ("mission_hours", DEFAULT_MISSION_HOURS, "h"))
 
 
-def _defaults(base: DesignCase, settings: dict, mission_default: bool, source: str, segs,
-              temp_range_C, sea_temp_range_C, rated_given: bool) -> tuple[Default, ...]:
+def _defaults(base: DesignCase, settings: OilGradeEnvelope, mission_default: bool, source: str,
+              segs, temp_range_C, sea_temp_range_C,
+              rated_given: bool) -> tuple[Default, ...]:
     """The case's defaults and the study's: each setting left at its default (by value),
     the envelope's temperatures, the mission when the tool chose it, the rated view."""
     out = list(case_defaults(base))
     for key, default, unit in _STUDY_DEFAULTS:
-        v = settings[key]
+        v = getattr(settings, key)
         if (tuple(v) if isinstance(v, (tuple, list)) else v) == default:
             out.append(study_default(f"oil_grade.{key}", default, unit))
     if temp_range_C is None and sea_temp_range_C is None:
-        out.append(study_default(f"oil_grade.{settings['temp_axis']}_temp_range_C",
+        out.append(study_default(f"oil_grade.{settings.temp_axis}_temp_range_C",
                                  DEFAULT_TEMP_RANGE_C, "degC"))
     if mission_default and not base.mission:
         seed = source.startswith("default seed")
@@ -433,17 +416,18 @@ def _defaults(base: DesignCase, settings: dict, mission_default: bool, source: s
             "one segment at the case's [operating] point; the case has no [[mission]]"))
     if not rated_given:
         out.append(study_default("oil_grade.rated_temps_C", ", ".join(
-            f"{t:g}" for t in settings["rated_temps_C"]), "degC",
+            f"{t:g}" for t in settings.rated_temps_C), "degC",
             "envelope min, the case's temperature, 20 degC, envelope max"))
     return tuple(out)
 
 
-def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> pd.DataFrame:
+def _grid(grades: list[str], segs: Sequence[MissionSegment],
+          settings: OilGradeEnvelope) -> pd.DataFrame:
     """One grid for every grade: the envelope, the mission rows and the rated-depth view
     (temperatures in ``oil_temp_C``; renamed to ``sea_temp_C`` under ``bulk``/``full``)."""
-    depths = np.linspace(*settings["depth_range_m"], settings["n_depth"])
-    temps = np.linspace(*settings["temp_range_C"], settings["n_temp"])
-    rated_temps = settings["rated_temps_C"]
+    depths = np.linspace(*settings.depth_range_m, settings.n_depth)
+    temps = np.linspace(*settings.temp_range_C, settings.n_temp)
+    rated_temps = settings.rated_temps_C
     D, Tm = np.meshgrid(depths, temps, indexing="ij")
     env = pd.DataFrame({"depth_m": np.tile(D.ravel(), len(grades)),
                         "oil_temp_C": np.tile(Tm.ravel(), len(grades)),
@@ -451,23 +435,23 @@ def _grid(grades: list[str], segs: Sequence[MissionSegment], settings: dict) -> 
     mis = pd.DataFrame({"depth_m": np.tile([s.depth_m for s in segs], len(grades)),
                         "oil_temp_C": np.tile([s.oil_temp_C for s in segs], len(grades)),
                         "oil": np.repeat(grades, len(segs)), "label": "mission"})
-    rat = pd.DataFrame({"depth_m": settings["rated_depth_m"],
+    rat = pd.DataFrame({"depth_m": settings.rated_depth_m,
                         "oil_temp_C": np.tile(rated_temps, len(grades)),
                         "oil": np.repeat(grades, len(rated_temps)), "label": "rated"})
     return pd.concat([env, mis, rat], ignore_index=True)
 
 
 def _grade_row(base: DesignCase, oil, e: pd.DataFrame, c: pd.DataFrame, m: pd.DataFrame,
-               r: pd.DataFrame, fr: np.ndarray, settings: dict, mode: str) -> dict:
+               r: pd.DataFrame, fr: np.ndarray, settings: OilGradeEnvelope, mode: str) -> dict:
     """One grade's row: lowest operating viscosity over the envelope ``e``, cold-start
     viscosity over the isothermal envelope ``c``, mission ``m`` and rated ``r`` rows."""
-    tol, axis = settings["iso_tolerance"], _axis(mode)
+    tol, axis = settings.iso_tolerance, _axis(mode)
     i_lo, i_hi = e["nu_cSt"].idxmin(), c["nu_cSt"].idxmax()
     lo_nu, hi_nu = float(e.loc[i_lo, "nu_cSt"]), float(c.loc[i_hi, "nu_cSt"])
     mean_p = float(m["mean_power_W"].to_numpy() @ fr)
     cold_case = replace(base, oil=oil, operating=OperatingPoint(
         float(c.loc[i_hi, "depth_m"]), float(c.loc[i_hi, "oil_temp_C"])))
-    r_case = r[np.isclose(r[axis], settings["rated_temp_C"])]
+    r_case = r[np.isclose(r[axis], settings.rated_temp_C)]
 
     def rated(k: str) -> float:
         return float(r_case[k].iloc[0]) if len(r_case) else float("nan")
@@ -478,15 +462,15 @@ def _grade_row(base: DesignCase, oil, e: pd.DataFrame, c: pd.DataFrame, m: pd.Da
         "nu_min_at_m": float(e.loc[i_lo, "depth_m"]),
         "nu_max_envelope_cSt": hi_nu, "nu_max_at_C": float(c.loc[i_hi, "oil_temp_C"]),
         "nu_max_at_m": float(c.loc[i_hi, "depth_m"]),
-        "passes_lubrication": bool((1 - tol) * lo_nu >= settings["nu_min_cSt"]),
-        "passes_cold": bool((1 + tol) * hi_nu <= settings["nu_max_cSt"]),
+        "passes_lubrication": bool((1 - tol) * lo_nu >= settings.nu_min_cSt),
+        "passes_cold": bool((1 + tol) * hi_nu <= settings.nu_max_cSt),
         "peak_viscous_torque_cold_Nm": evaluate_case(  # a start: not yet heated
             cold_case, thermal="none").viscous_torque_peak_Nm,
         "envelope_min_power_W": float(e["mean_power_W"].min()),
         "envelope_max_power_W": float(e["mean_power_W"].max()),
         "rated_power_W": rated("mean_power_W"),
         "mission_mean_power_W": mean_p,
-        "mission_energy_Wh": mean_p * settings["mission_hours"],
+        "mission_energy_Wh": mean_p * settings.mission_hours,
         "thermal_mode": mode,
         "nu_min_at_sea_C": float(e.loc[i_lo, axis]) if uses_balance(mode) else float("nan"),
         "oil_temp_op_max_C": float(e["oil_temp_op_C"].max()),
@@ -513,7 +497,7 @@ def _bearing_columns(base: DesignCase, oil, m: pd.DataFrame, r: pd.DataFrame,
 
 
 def _grade_table(base: DesignCase, catalogue: dict, grades: list[str], frames: dict,
-                 cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: dict,
+                 cold_env: pd.DataFrame, segs: Sequence[MissionSegment], settings: OilGradeEnvelope,
                  mode: str) -> pd.DataFrame:
     """One row per grade (:func:`_grade_row`): the limits' checks, the cold peak torque,
     the powers and the mission energy under ``mode``."""
@@ -539,9 +523,9 @@ def _rank(table: pd.DataFrame) -> tuple[str | None, str | None, float]:
     return recommended, runner_up, best_e
 
 
-def _why_fails(r: pd.Series, settings: dict, mode: str) -> list[str]:
+def _why_fails(r: pd.Series, settings: OilGradeEnvelope, mode: str) -> list[str]:
     """The limits a grade fails, each with its numbers."""
-    tol, nu_min, nu_max = (settings[k] for k in ("iso_tolerance", "nu_min_cSt", "nu_max_cSt"))
+    tol, nu_min, nu_max = settings.iso_tolerance, settings.nu_min_cSt, settings.nu_max_cSt
     why = []
     if not r["passes_lubrication"]:
         where = (f"its operating {r['nu_min_at_C']:.1f} degC (sea {r['nu_min_at_sea_C']:g} "
@@ -563,7 +547,7 @@ def _why_fails(r: pd.Series, settings: dict, mode: str) -> list[str]:
 
 
 def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | None,
-              best_e: float, settings: dict, mode: str = "none") -> None:
+              best_e: float, settings: OilGradeEnvelope, mode: str = "none") -> None:
     """Add ``verdict`` and ``reason``: why each grade fails, loses or wins."""
     verdicts, reasons = [], []
     for _, r in table.iterrows():
@@ -583,10 +567,12 @@ def _verdicts(table: pd.DataFrame, recommended: str | None, runner_up: str | Non
     table["reason"] = reasons
 
 
-def oil_grade_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
+def oil_grade_study(out_dir: str | Path | None = None, case: DesignCase | None = None, mission=None,
+                    **keywords) -> pd.DataFrame:
     """The oil-grade study as one call: one row per grade (see :func:`run`); ``attrs``
     carries ``recommended``, ``runner_up``, ``thermal_mode``, ``recommended_isothermal``."""
-    r = run(out_dir, **kwargs)
+    settings, options = split_keywords(keywords, OilGradeSettings)
+    r = run(out_dir, case, mission, settings, options)
     t = r.table.copy()
     t.attrs.update(recommended=r.recommended, runner_up=r.runner_up,
                    thermal_mode=r.thermal_mode, recommended_isothermal=r.recommended_isothermal)

@@ -60,7 +60,7 @@ def draw_heatmap(result: OilGradeResult, base: DesignCase, ax) -> None:
     ax.figure.colorbar(cs, ax=ax, label="mean viscous power over the duty cycle [W]")
     ax.plot([s.oil_temp_C for s in result.mission], [s.depth_m for s in result.mission],
             "wo", mec="k", ms=7, label="mission profile rows")
-    t_case = result.settings["rated_temp_C"]
+    t_case = result.settings.rated_temp_C
     ax.plot(t_case, base.operating.depth_m, "r*", ms=15, mec="k",
             label=f"{_whose(result)} rated condition ({base.operating.depth_m:g} m, "
                   f"{t_case:g} degC)")
@@ -89,19 +89,19 @@ def draw_vs_grade(result: OilGradeResult, base: DesignCase, ax) -> None:
     col, words = _axis_words(result)
     t = result.table
     x = np.arange(len(t))
-    for k, temp in enumerate(result.settings["rated_temps_C"]):
+    for k, temp in enumerate(result.settings.rated_temps_C):
         r = result.rated[np.isclose(result.rated[col], temp)]
         r = r.set_index("oil").loc[t["oil"]]
         ax.semilogy(x, r["mean_power_W"], "o-", color=f"C{k}", ms=4,
                     label=f"{'sea ' if col == 'sea_temp_C' else ''}{temp:g} degC at "
-                          f"{result.settings['rated_depth_m']:g} m")
+                          f"{result.settings.rated_depth_m:g} m")
     _shade_failures(ax, t)
     seed_oil = base.oil.name
     if seed_oil in list(t["oil"]):
         i = list(t["oil"]).index(seed_oil)
         ax.plot(i, t.loc[i, "rated_power_W"], "ks", mfc="none", ms=12, mew=1.5,
                 label=f"{'seed design' if result.is_seed else 'this design'} ({seed_oil}, "
-                      f"{result.settings['rated_temp_C']:g} degC)")
+                      f"{result.settings.rated_temp_C:g} degC)")
     if result.recommended:
         i = list(t["oil"]).index(result.recommended)
         ax.plot(i, t.loc[i, "rated_power_W"], "r*", ms=16, mec="k",
@@ -109,7 +109,7 @@ def draw_vs_grade(result: OilGradeResult, base: DesignCase, ax) -> None:
     ax.set_xticks(x, list(t["oil"]), rotation=45)
     ax.set_xlabel("ISO VG grade (cSt at 40 degC)")
     ax.set_ylabel("mean viscous power over the duty cycle [W]")
-    ax.set_title(f"Loss against oil grade at the rated depth ({result.settings['rated_depth_m']:g}"
+    ax.set_title(f"Loss against oil grade at the rated depth ({result.settings.rated_depth_m:g}"
                  f" m), thermal {result.thermal_mode}; curves by {words} temperature", fontsize=10)
     ax.grid(alpha=0.3, which="both")
     ax.legend(fontsize=7.5, loc="upper left")
@@ -131,13 +131,13 @@ def _figure_thermal(result: OilGradeResult, path: Path) -> Path:
     a1.semilogy(x, per["mission_energy_isothermal_Wh"], "o--", color="C0", label="isothermal")
     a1.semilogy(x, per["mission_energy_Wh"], "o-", color="C3",
                 label=f"thermal {result.thermal_mode}")
-    a1.set_ylabel(f"mission energy ({s['mission_hours']:g} h) [Wh]")
+    a1.set_ylabel(f"mission energy ({s.mission_hours:g} h) [Wh]")
     a2.semilogy(x, per["nu_min_isothermal_cSt"], "o--", color="C0", label="isothermal")
     a2.semilogy(x, per["nu_min_cSt"], "o-", color="C3", label=f"thermal {result.thermal_mode}"
                 " (at the operating temperature)")
-    a2.axhline(s["nu_min_cSt"] / (1 - s["iso_tolerance"]), color="k", ls=":",
-               label=f"lubrication limit {s['nu_min_cSt']:g} cSt / (1 - "
-                     f"{s['iso_tolerance']:g})")
+    a2.axhline(s.nu_min_cSt / (1 - s.iso_tolerance), color="k", ls=":",
+               label=f"lubrication limit {s.nu_min_cSt:g} cSt / (1 - "
+                     f"{s.iso_tolerance:g})")
     a2.set_ylabel("lowest viscosity over the envelope [cSt]")
     for ax in (a1, a2):
         ax.set_xticks(x, list(per["oil"]), rotation=45)
@@ -193,33 +193,33 @@ def summary_markdown(result: OilGradeResult, base: DesignCase) -> str:
     show = t[["oil", "nu_min_envelope_cSt", "nu_max_envelope_cSt", "rated_power_W",
               "mission_mean_power_W", "mission_energy_Wh", "verdict", "reason"]].rename(
         columns={"nu_min_envelope_cSt": "nu min [cSt]", "nu_max_envelope_cSt": "nu max [cSt]",
-                 "rated_power_W": f"P at {s['rated_depth_m']:g} m, "
-                                  f"{'sea ' if s['temp_axis'] == 'sea' else ''}"
-                                  f"{s['rated_temp_C']:g} degC [W]",
+                 "rated_power_W": f"P at {s.rated_depth_m:g} m, "
+                                  f"{'sea ' if s.temp_axis == 'sea' else ''}"
+                                  f"{s.rated_temp_C:g} degC [W]",
                  "mission_mean_power_W": "mission mean P [W]",
-                 "mission_energy_Wh": f"mission energy ({s['mission_hours']:g} h) [Wh]"})
+                 "mission_energy_Wh": f"mission energy ({s.mission_hours:g} h) [Wh]"})
     if uses_balance(result.thermal_mode):
         show.insert(2, "T oil max [degC]", t["oil_temp_op_max_C"])
     mis = pd.DataFrame([{"depth_m": m.depth_m, _axis_words(result)[0]: m.oil_temp_C,
                          "fraction": m.fraction} for m in result.mission])
     lines = [
         f"# Oil grade for {base.name}", "",
-        f"Thermal mode: {thermal_description(base, result.thermal_mode, s['thermal_default'])}.",
+        f"Thermal mode: {thermal_description(base, result.thermal_mode, s.thermal_default)}.",
         "", _headline(result, base), "", *band_markdown(result, base),
-        f"Envelope: depth {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m, {words} "
-        f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC ({s['n_depth']} x "
-        f"{s['n_temp']} grid). Lubrication limit: nu >= {s['nu_min_cSt']:g} cSt at the "
+        f"Envelope: depth {s.depth_range_m[0]:g}-{s.depth_range_m[1]:g} m, {words} "
+        f"{s.temp_range_C[0]:g}-{s.temp_range_C[1]:g} degC ({s.n_depth} x "
+        f"{s.n_temp} grid). Lubrication limit: nu >= {s.nu_min_cSt:g} cSt at the "
         "thinnest point" + (" (the viscosity at each grade's operating temperature from "
                             "the heat balance)" if uses_balance(result.thermal_mode) else "")
-        + f"; cold-start limit: nu <= {s['nu_max_cSt']:g} cSt at the thickest"
+        + f"; cold-start limit: nu <= {s.nu_max_cSt:g} cSt at the thickest"
         + (" (the oil at the sea temperature before it warms)"
            if uses_balance(result.thermal_mode) else "")
-        + f"; both with the ISO 3448 +-{100 * s['iso_tolerance']:g} % grade tolerance at its "
+        + f"; both with the ISO 3448 +-{100 * s.iso_tolerance:g} % grade tolerance at its "
         "worst. Loss: mean viscous power over the case's duty cycle "
         f"({base.duty_cycle.description}), friction form `{base.friction.form}`, laminar law "
         f"`{base.friction.laminar_law}`, gamma = {base.friction.gamma:g} "
         f"({base.gamma_source}).", "",
-        f"Mission profile ({result.mission_source}), {s['mission_hours']:g} h:", "",
+        f"Mission profile ({result.mission_source}), {s.mission_hours:g} h:", "",
         markdown_table(mis, 2), "",
         markdown_table(show, 1),
         *_thermal_section(result), "",
@@ -241,12 +241,13 @@ def result_json(result: OilGradeResult, base: DesignCase) -> dict:
     """The study's answer as one JSON document (top-level ``thermal_mode``; under
     ``bulk``/``full`` ``sea_temp_C``; the comparison under ``bulk``/``film``/``full``)."""
     s = result.settings
-    doc = {"thermal_mode": result.thermal_mode, "thermal_default": s["thermal_default"],
+    doc = {"thermal_mode": result.thermal_mode, "thermal_default": s.thermal_default,
            "case": base.name, "recommended": result.recommended,
            "runner_up": result.runner_up,
            "recommended_isothermal": result.recommended_isothermal,
            "runner_up_isothermal": result.runner_up_isothermal,
-           "settings": {k: (list(v) if isinstance(v, tuple) else v) for k, v in s.items()},
+           "settings": {k: (list(v) if isinstance(v, tuple) else v)
+                        for k, v in s.to_dict().items()},
            "mission": [{"depth_m": m.depth_m, "temp_C": m.oil_temp_C, "fraction": m.fraction}
                        for m in result.mission],
            "grades": json.loads(result.table.to_json(orient="records")),

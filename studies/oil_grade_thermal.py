@@ -21,10 +21,11 @@ from typing import TYPE_CHECKING
 
 import pandas as pd
 
-from oilgap.model.thermal_modes import uses_balance
+from oilgap.model.thermal_modes import ThermalMode, uses_balance
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from oilgap.model.case import DesignCase
+    from oilgap.studies.oil_grade import OilGradeEnvelope
 
 _PER_GRADE = {  # comparison column -> (table column, from the isothermal table?)
     "verdict_isothermal": ("verdict", True), "verdict": ("verdict", False),
@@ -51,11 +52,11 @@ def per_grade(table: pd.DataFrame, t_iso: pd.DataFrame) -> pd.DataFrame:
     return out
 
 
-def _physics(per: pd.DataFrame, mode: str, base: DesignCase, settings: dict,
+def _physics(per: pd.DataFrame, mode: str, base: DesignCase, settings: OilGradeEnvelope,
              shown_grades: tuple = ()) -> str:
     """What the mode does to every grade, with the rated point's numbers (the operating
     temperature of ``shown_grades``, the case's oil and the thickest grade)."""
-    if mode == "film":
+    if mode == ThermalMode.FILM:
         return ("Under film the bulk oil is at the given temperature, so both limits are "
                 "the isothermal ones; only the losses change: the film's shear heating "
                 "lowers them, more for thicker grades (Na = b mu U^2/k grows with mu).")
@@ -66,7 +67,7 @@ def _physics(per: pd.DataFrame, mode: str, base: DesignCase, settings: dict,
     temps = ", ".join(f"{g} {r.rated_oil_temp_op_C:.1f} degC" for g, r in shown.iterrows())
     return (f"Under {mode} every grade runs above the sea by R (P + Q) (R "
             f"{th.resistance_K_W:g} K/W, Q {th.other_heat_W:g} W): at the rated point "
-            f"({settings['rated_depth_m']:g} m, sea {settings['rated_temp_C']:g} degC) {temps}. "
+            f"({settings.rated_depth_m:g} m, sea {settings.rated_temp_C:g} degC) {temps}. "
             "A thicker grade loses more and runs hotter, so its operating viscosity falls; the "
             "lubrication check uses the operating viscosity, the cold-start check the oil at the "
             "sea temperature before it warms (unchanged).")
@@ -76,16 +77,16 @@ def _row(per: pd.DataFrame, oil: str) -> pd.Series:
     return per.set_index("oil").loc[oil]
 
 
-def _unchanged(per: pd.DataFrame, rec: str | None, mode: str, settings: dict) -> str:
+def _unchanged(per: pd.DataFrame, rec: str | None, mode: str, settings: OilGradeEnvelope) -> str:
     """Why the recommendation stays."""
     if rec is None:
         return f"No grade passes both limits, isothermal or under {mode}."
     r = _row(per, rec)
-    tol = settings["iso_tolerance"]
+    tol = settings.iso_tolerance
     return (f"The recommendation does not change: {rec} still passes both limits (lowest "
             f"viscosity {r['nu_min_cSt']:.1f} cSt at {r['nu_min_at_C']:.1f} degC against "
             f"{r['nu_min_isothermal_cSt']:.1f} cSt isothermal; {(1 - tol) * r['nu_min_cSt']:.1f}"
-            f" cSt at the -{100 * tol:g} % tolerance against the {settings['nu_min_cSt']:g} "
+            f" cSt at the -{100 * tol:g} % tolerance against the {settings.nu_min_cSt:g} "
             f"cSt limit) and still has the lowest mission energy of the passing grades "
             f"({r['mission_energy_Wh']:.0f} Wh against {r['mission_energy_isothermal_Wh']:.0f}"
             f" Wh isothermal, {r['mission_energy_change_pct']:+.0f} %).")
@@ -119,11 +120,13 @@ def _verdict_changes(per: pd.DataFrame) -> str:
         f"{r.oil} {r.verdict_isothermal} -> {r.verdict}" for r in moved.itertuples()) + "."
 
 
-def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame, rec: str | None,
-                            rec_iso: str | None, runner_up: str | None,
-                            runner_up_iso: str | None, mode: str, base: DesignCase,
-                            settings: dict) -> dict:
+def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame,
+                            recommended: tuple[str | None, str | None],
+                            runner_up: tuple[str | None, str | None], mode: str,
+                            base: DesignCase, settings: OilGradeEnvelope) -> dict:
     """The recommendation under ``mode`` beside the isothermal one, and why.
+
+    ``recommended`` and ``runner_up`` are (under ``mode``, isothermal) pairs of grade names.
 
     Returns
     -------
@@ -134,6 +137,7 @@ def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame, rec: str |
         the heat path (``sea_temp_range_C``, ``resistance_K_per_W``, ``other_heat_W``,
         ``heat_capacity_J_per_K``, the case's ``sea_temp_C``).
     """
+    (rec, rec_iso), (runner_up, runner_up_iso) = recommended, runner_up
     per = per_grade(table, t_iso)
     changed = rec != rec_iso
     why = " ".join([_physics(per, mode, base, settings, (rec_iso, rec)),
@@ -145,7 +149,7 @@ def compare_recommendations(table: pd.DataFrame, t_iso: pd.DataFrame, rec: str |
            "changed": changed, "why": why, "grades": per}
     if uses_balance(mode):
         th = base.thermal
-        out.update(sea_temp_C=th.sea_temp_C, sea_temp_range_C=list(settings["temp_range_C"]),
+        out.update(sea_temp_C=th.sea_temp_C, sea_temp_range_C=list(settings.temp_range_C),
                    resistance_K_per_W=th.resistance_K_W, other_heat_W=th.other_heat_W,
                    heat_capacity_J_per_K=th.heat_capacity_J_K)
     return out

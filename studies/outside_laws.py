@@ -147,13 +147,15 @@ def couette_moment_coefficient(re, gap_ratio):
     return 8.0 * (1.0 + gap_ratio) ** 2 / ((2.0 + gap_ratio) * re)
 
 
-def annulus_power(omega, nu, rho, radius_m, gap_m, length_m, roughness_T=1.0, gamma=0.0,
-                  couette_floor=True):
+def annulus_power(omega, nu, rho, radius_m, gap_m, length_m, *,
+                  roughness: tuple[float, float] = (1.0, 0.0), couette_floor=True):
     """Viscous power [W] of one clearance and its Couette Re [-].
 
     ``Re = |w| R delta / nu``; C_m from Eq. 6 (piecewise), at least the Couette
-    value if ``couette_floor``; times T^gamma; ``P = 0.5 pi C_m rho |w|^3 R^4 L`` [1], [2].
+    value if ``couette_floor``; times T^gamma with ``roughness = (T, gamma)``;
+    ``P = 0.5 pi C_m rho |w|^3 R^4 L`` [1], [2].
     """
+    roughness_T, gamma = roughness
     w = np.abs(omega)
     re = w * radius_m * gap_m / nu
     x = gap_m / radius_m
@@ -294,7 +296,7 @@ OPEN_GEOMETRY = RigGeometry("rig without a bearing region (outside rig)",
 """A larger motor, no bearing annulus in the oil (as tests/data/rig_no_bearing.toml)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RigBaseline:
     """Electrical input without oil and the heat it leaves in the joint.
 

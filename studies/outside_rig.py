@@ -112,7 +112,7 @@ that what is left for the search is of the same few watts as the others."""
 # --------------------------------------------------------------------------- configuration
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class OutsideConfig:
     """What the outside rig simulates (SI unless the name says otherwise).
 
@@ -248,8 +248,8 @@ def _regions(cfg: OutsideConfig, runs: _Runs, omega, nu, rho):
     for region, gap, T in specs:
         R = region.radius_m
         nu_eff = nu * carreau_ratio(np.abs(omega) * R / gap, lam) if lam else nu
-        p, re = annulus_power(omega, nu_eff, rho, R, gap, region.length_m, T, cfg.gamma_true,
-                              cfg.couette_floor)
+        p, re = annulus_power(omega, nu_eff, rho, R, gap, region.length_m,
+                              roughness=(T, cfg.gamma_true), couette_floor=cfg.couette_floor)
         out.append((p, re, R, gap))
     return out
 

@@ -78,12 +78,16 @@ from oilgap.studies.reporting import (
     write_tables,
     write_text,
 )
+from oilgap.studies.settings import (
+    DEFAULT_POINTS,
+    MIN_POINTS,
+    ParetoSettings,
+    RunOptions,
+    SweepSettings,
+    split_keywords,
+)
 from oilgap.studies.user_case import design_label, is_seed_case
 
-MIN_POINTS = 50
-"""The fewest points a front may have."""
-DEFAULT_POINTS = 60
-"""Points per front when ``points`` is left out."""
 SEED_LABELS = ("seed (T = 4)", "smoothed seed (T = 2)")
 """The ``design`` labels of the seed joint's rows (seed case only)."""
 
@@ -139,26 +143,29 @@ def _check_points(n: int) -> int:
     return int(n)
 
 
+_QUIET = RunOptions(progress=False)
+"""The fronts' default run: in this process, no progress line."""
+
+
 def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
-           progress: bool | None, label: str, scheduler: str | None = None,
-           workers: int | None = None, thermal: str = "none") -> pd.DataFrame:
+           options: RunOptions, label: str, thermal: str = "none") -> pd.DataFrame:
     """One front: one warm-started chain (one chunk) on this process, or on ``workers``
     processes of a Dask ``scheduler`` (:func:`~oilgap.studies.grid.runner.run_grid`)."""
     grid = pd.DataFrame({column: eps})
     for k, v in extra.items():
         grid[k] = v
-    res = run_grid(grid, case, mode="optimize", out_dir=out_dir,
-                   workers=1 if scheduler is None else (workers or 1),
-                   chunk_size=len(grid), progress=progress, label=label, scheduler=scheduler,
-                   thermal=thermal)
+    o = options
+    chain = RunOptions(workers=1 if o.scheduler is None else (o.workers or 1),
+                       scheduler=o.scheduler, progress=o.progress, chunk_size=len(grid))
+    res = run_grid(grid, case, SweepSettings(mode="optimize", thermal=thermal), chain,
+                   out_dir=out_dir, label=label)
     res["epsilon"] = eps
     return res
 
 
 def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
-              torque_min_Nm: float | None = None, out_dir: str | Path | None = None,
-              progress: bool | None = False, spacing: str = "arc",
-              scheduler: str | None = None, workers: int | None = None,
+              torque_min_Nm: float | None = None, out_dir: str | Path | None = None, *,
+              spacing: str = "arc", options: RunOptions | None = None,
               thermal: str = "none") -> pd.DataFrame:
     """The gap-loss front: ``min P s.t. delta <= eps`` for ``points`` values of eps, under
     the thermal mode ``thermal``.
@@ -198,8 +205,8 @@ def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
                                       points)
         except (InfeasibleError, SolverError):
             pass  # the sweep reports the failing end as a row; keep equal steps
-    return _sweep(base, "delta_max_mm", eps, extra, out_dir, progress, "pareto gap",
-                  scheduler, workers, thermal)
+    return _sweep(base, "delta_max_mm", eps, extra, out_dir, options or _QUIET, "pareto gap",
+                  thermal)
 
 
 def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = None,
@@ -229,9 +236,8 @@ def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = N
 
 
 def inertia_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
-                  torque_min_Nm: float | None = None, out_dir: str | Path | None = None,
-                  progress: bool | None = False, scheduler: str | None = None,
-                  workers: int | None = None, thermal: str = "none") -> pd.DataFrame:
+                  torque_min_Nm: float | None = None, out_dir: str | Path | None = None, *,
+                  options: RunOptions | None = None, thermal: str = "none") -> pd.DataFrame:
     """The loss-inertia front: ``min P s.t. J <= eps`` for ``points`` values of eps, under
     the thermal mode ``thermal``.
 
@@ -251,14 +257,14 @@ def inertia_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
     r_max = max(free["inertia_ratio"], r_min)
     s = np.linspace(1.0, 0.0, points)
     eps = r_min + (r_max - r_min) * s * s  # denser towards the steep end at the lightest rotor
-    return _sweep(base, "inertia_max_ratio", eps, extra, out_dir, progress, "pareto inertia",
-                  scheduler, workers, thermal)
+    return _sweep(base, "inertia_max_ratio", eps, extra, out_dir, options or _QUIET,
+                  "pareto inertia", thermal)
 
 
 # --------------------------------------------------------------------------- the study
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class ParetoResult:
     """Everything the Pareto study computes."""
 
@@ -306,9 +312,8 @@ def study_defaults(base: DesignCase, points: int, ref: tuple[float, float]
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
-        points: int = DEFAULT_POINTS, torque_min_Nm: float | None = None,
-        progress: bool | None = False, scheduler: str | None = None,
-        workers: int | None = None, thermal: str | None = None) -> ParetoResult:
+        settings: ParetoSettings | None = None,
+        options: RunOptions | None = None) -> ParetoResult:
     """Run both sweeps; with ``out_dir`` write CSVs, figures and ``summary.md``.
 
     Parameters
@@ -316,51 +321,52 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     out_dir : path, optional
     case : DesignCase, optional
         Default: the seed joint (grooved).
-    points : int
-        Points per front (>= 50).
-    torque_min_Nm : float, optional
-        Required torque capability [N m] (default: the case's own).
-    progress : bool, optional
-        Progress line on stderr.
-    scheduler : str, optional
-        Run the sweeps on Dask: ``"local"`` (a LocalCluster of ``workers`` processes)
-        or ``"tcp://HOST:PORT"`` (:mod:`oilgap.studies.grid.backends`); each front is
-        one warm-started chain, so one task.
-    workers : int, optional
-        Processes of the LocalCluster (default 1).
-    thermal : {"none", "bulk", "film", "full"}, optional
-        Thermal mode of the fronts and the marked designs (default:
+    settings : ParetoSettings, optional
+        ``points`` per front (>= 50), ``torque_min_Nm`` (required torque capability
+        [N m]; default: the case's own) and ``thermal``, the thermal mode of the fronts
+        and the marked designs (default:
         :func:`~oilgap.model.joint_loss.default_thermal_mode`, ``bulk`` with
         ``[thermal]``, else ``none``).
+    options : RunOptions, optional
+        ``progress`` (progress line on stderr), ``scheduler`` (run the sweeps on Dask:
+        ``"local"``, a LocalCluster of ``workers`` processes, or ``"tcp://HOST:PORT"``,
+        :mod:`oilgap.studies.grid.backends`; each front is one warm-started chain, so one
+        task) and ``workers`` (processes of the LocalCluster, default 1).
     """
+    s = settings if settings is not None else ParetoSettings()
+    o = options if options is not None else _QUIET
     base = case if case is not None else seed_case()
-    points = _check_points(points)
-    mode = resolve_thermal_mode(base, thermal)
+    points, torque_min_Nm = s.points, s.torque_min_Nm
+    mode = resolve_thermal_mode(base, s.thermal)
     out = Path(out_dir) if out_dir is not None else None
     t0 = time.perf_counter()
-    gf = gap_front(base, points, torque_min_Nm, out / "grid_gap" if out else None, progress,
-                   scheduler=scheduler, workers=workers, thermal=mode)
+    gf = gap_front(base, points, torque_min_Nm, out / "grid_gap" if out else None,
+                   options=o, thermal=mode)
     sweep_t = time.perf_counter() - t0
     inf = inertia_front(base, points, torque_min_Nm, out / "grid_inertia" if out else None,
-                        progress, scheduler=scheduler, workers=workers, thermal=mode)
+                        options=o, thermal=mode)
     seeds = seed_points(base, mode)
     ref = default_reference_point(base, seeds)
     ok = gf[gf["status"] == "ok"]
     hv = hypervolume_2d(ok[["delta_mm", "mean_power_W"]].to_numpy(), ref)
-    result = ParetoResult(gf, inf, seeds, ref, hv, sweep_t, (),
-                          study_defaults(base, points, ref), is_seed_case(base), base.name,
-                          mode, thermal is None)
+    result = ParetoResult(gap_front=gf, inertia_front=inf, seeds=seeds,
+                          reference_point=ref, hypervolume=hv, sweep_time_s=sweep_t,
+                          defaults=study_defaults(base, points, ref),
+                          is_seed=is_seed_case(base), case_name=base.name, thermal_mode=mode,
+                          thermal_default=s.thermal is None)
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
     return result
 
 
-def pareto_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
+def pareto_study(out_dir: str | Path | None = None, case: DesignCase | None = None,
+                 **keywords) -> pd.DataFrame:
     """The Pareto study as one call: the gap-loss front (see :func:`run`).
 
     ``attrs`` carries the hypervolume, its reference point and the sweep time.
     """
-    r = run(out_dir, **kwargs)
+    settings, options = split_keywords(keywords, ParetoSettings)
+    r = run(out_dir, case, settings, options)
     t = r.gap_front.copy()
     t.attrs.update(hypervolume=r.hypervolume, reference_point=r.reference_point,
                    sweep_time_s=r.sweep_time_s)

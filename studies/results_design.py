@@ -12,7 +12,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import oil_state
 from oilgap.model.io.defaults import gamma_fields, gamma_line
 from oilgap.model.joint_loss import FilmBand
-from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, THERMAL_MODE_TEXT
+from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, THERMAL_MODE_TEXT, ThermalMode
 from oilgap.model.units import m2_s_to_cst
 from oilgap.optim.design import DesignResult, HeatingComparison
 from oilgap.optim.design.results import POINT_MEANINGS
@@ -35,7 +35,7 @@ def thermal_line(mode: str, default: bool) -> str:
     if default:
         text += f"default: {DEFAULT_MODE_WHY}; "
     text += MODE_TEXT[mode]
-    if mode != "none":
+    if mode != ThermalMode.NONE:
         text += "; --thermal none for the seed paper's isothermal model"
     return text + ")"
 

@@ -174,10 +174,10 @@ class OilGrade(StudyView):
         envelope), the recommendation, the grade table, the mission, the files written."""
         r, s = self.raw, self.raw.settings
         axis = "sea" if uses_balance(r.thermal_mode) else "oil"
-        thermal = thermal_description(self.case, r.thermal_mode, s["thermal_default"])
+        thermal = thermal_description(self.case, r.thermal_mode, s.thermal_default)
         lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
-                 f"envelope    {s['depth_range_m'][0]:g}-{s['depth_range_m'][1]:g} m x {axis} "
-                 f"{s['temp_range_C'][0]:g}-{s['temp_range_C'][1]:g} degC", ""]
+                 f"envelope    {s.depth_range_m[0]:g}-{s.depth_range_m[1]:g} m x {axis} "
+                 f"{s.temp_range_C[0]:g}-{s.temp_range_C[1]:g} degC", ""]
         if r.film_band is not None:
             lines += [f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
                       f"film band: {r.film_band.line()}", ""]

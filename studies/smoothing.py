@@ -53,7 +53,7 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 import numpy as np
@@ -64,6 +64,7 @@ from oilgap.model.errors import InputError, SolverError
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import case_defaults
 from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.settings import INLINE, SmoothingSettings, SweepSettings, split_keywords
 from oilgap.studies.smoothing_case import NO_TABLE4, run_case
 from oilgap.studies.smoothing_evidence import FilmEvidence
 from oilgap.studies.smoothing_evidence import film_evidence as film_evidence_of
@@ -87,7 +88,7 @@ from oilgap.studies.user_case import is_seed_case
 # --------------------------------------------------------------------------- the study
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class SmoothingResult:
     """Everything the smoothing study computes.
 
@@ -132,8 +133,8 @@ def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
     grid = pd.DataFrame({"oil": [o for o, _ in runs], "T": [t for _, t in runs],
                          "oil_temp_C": [fit.temps_C[r] for r in runs],
                          "depth_m": RIG_DEPTH_M, "gamma": fit.gamma})
-    res = run_grid(grid, base, out_dir=out_dir, workers=1, progress=False, label="smoothing",
-                   thermal=fit.loss_mode)
+    res = run_grid(grid, base, SweepSettings(thermal=fit.loss_mode), INLINE, out_dir=out_dir,
+                   label="smoothing")
     bad = res[res["status"] != "ok"]
     if len(bad):
         raise SolverError(f"smoothing run failed: {bad['error'].iloc[0]}", "evaluation")
@@ -282,7 +283,7 @@ def loss_vs_T(fit: SmoothingFit, base: DesignCase | None = None,
             "depth_m": op.depth_m}))
     grid = pd.concat(frames, ignore_index=True)
     res = run_grid(grid[["oil", "T", "oil_temp_C", "depth_m"]].assign(gamma=fit.gamma), base,
-                   workers=1, progress=False, label="smoothing", thermal=fit.loss_mode)
+                   SweepSettings(thermal=fit.loss_mode), INLINE, label="smoothing")
     bad = res[res["status"] != "ok"]
     if len(bad):
         raise SolverError(f"loss-vs-T point failed: {bad['error'].iloc[0]}", "evaluation")
@@ -332,10 +333,7 @@ def plateau_table(curves: pd.DataFrame, tol: float = PLATEAU_TOL) -> pd.DataFram
 
 
 def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
-        method: str | None = None, resistance_K_W: float = 0.0,
-        T_values: np.ndarray | None = None, plateau_tol: float = PLATEAU_TOL,
-        sensitivity_K_W: tuple[float, ...] = (0.05, 0.1, 0.2),
-        thermal: str | None = None, film_evidence: bool = False) -> SmoothingResult:
+        settings: SmoothingSettings | None = None) -> SmoothingResult:
     """Run the smoothing study; with ``out_dir`` write its CSVs, figures and summary.
 
     Parameters
@@ -346,71 +344,77 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         other case: what smoothing its grooves would save at its own operating point
         with its own gamma, T from its own value down to 1
         (:func:`oilgap.studies.smoothing_case.run_case`); no fit, no Table 4 (the seed
-        rig's measurement); ``method`` and ``resistance_K_W`` are refused.
-    method, resistance_K_W, thermal : see :func:`fit_smoothing`
-        (method None and thermal None: ``per-oil`` with the isothermal loss, the
-        default; ``thermal="full"`` is the heat-balance fit).
-    T_values : array, optional
-        Roughness values of the design-space view (default 1 to 5 by 0.05; all >= 1).
-    plateau_tol : float
-        Criterion of :func:`plateau_table` (default 0.05).
-    sensitivity_K_W : tuple of float
-        ``R_th`` values [K/W] of the per-oil sensitivity fits (gamma against how
-        much colder the smoothed runs were).
-    film_evidence : bool
-        Also fit the film strength with the rig's heat balance
+        rig's measurement); ``method``, ``resistance_K_W`` and ``film_evidence`` are
+        refused.
+    settings : SmoothingSettings, optional
+        ``method``, ``resistance_K_W``, ``thermal`` (see :func:`fit_smoothing`; method
+        None and thermal None: ``per-oil`` with the isothermal loss, the default;
+        ``thermal="full"`` is the heat-balance fit); ``T_values``, the roughness values
+        of the design-space view (default 1 to 5 by 0.05; all >= 1); ``plateau_tol``,
+        the criterion of :func:`plateau_table` (default 0.05); ``sensitivity_K_W``, the
+        ``R_th`` values [K/W] of the per-oil sensitivity fits (gamma against how much
+        colder the smoothed runs were); ``film_evidence``: also fit the film strength
+        with the rig's heat balance
         (:func:`oilgap.studies.smoothing_evidence.film_evidence`; seed rig only; writes
         ``smoothing_film_evidence.csv``).
     """
+    s = settings if settings is not None else SmoothingSettings()
     base = case if case is not None else seed_case()
-    if not (0.0 < plateau_tol < 1.0):
-        raise InputError("plateau_tol", plateau_tol, "must lie in (0, 1)", "smoothing study")
+    T_values = None if s.T_values is None else np.asarray(s.T_values, dtype=float)
     if not is_seed_case(base):
-        if film_evidence:
+        if s.film_evidence:
             raise InputError("film_evidence", True, "the seed rig only (Table 4 is its "
                              "measurement)", "smoothing study")
-        return _run_case(out_dir, base, method, resistance_K_W, T_values, plateau_tol, thermal)
-    method, thermal, default = resolve_fit_mode(method, thermal)
+        return _run_case(out_dir, base, s, T_values)
+    method, thermal, default = resolve_fit_mode(s.method, s.thermal)
     table4 = load_table4()
-    fit = fit_smoothing(method, resistance_K_W, base, table4, thermal)
+    fit = fit_smoothing(method, s.resistance_K_W, base, table4, thermal)
     out = Path(out_dir) if out_dir is not None else None
     table = _table(fit, base, table4, out / "grid" if out else None)
-    checks, run_temps = fit_comparison(base, table4, fit, tuple(sensitivity_K_W))
+    checks, run_temps = fit_comparison(base, table4, fit, s.sensitivity_K_W)
     curves = loss_vs_T(fit, base, T_values, True, table4)
-    plateau = plateau_table(curves, plateau_tol)
-    files: tuple[Path, ...] = ()
-    evidence = film_evidence_of(base, table4) if film_evidence else None
-    if out is not None:
-        files = write_outputs(out, table, fit, checks, curves, plateau, base, run_temps,
-                              default)
-        if evidence is not None:
-            path = out / "smoothing_film_evidence.csv"
-            evidence.profile.to_csv(path, index=False)
-            files = (*files, path)
-    return SmoothingResult(table, fit, checks, curves, plateau, files, run_temps, default,
-                           True, case_defaults(base), base.name, fit.thermal_mode, evidence)
+    plateau = plateau_table(curves, s.plateau_tol)
+    evidence = film_evidence_of(base, table4) if s.film_evidence else None
+    result = SmoothingResult(table=table, fit=fit, checks=checks, loss_vs_T=curves,
+                             plateau=plateau, run_temps=run_temps, thermal_default=default,
+                             seed_rig=True, defaults=case_defaults(base), case_name=base.name,
+                             thermal_mode=fit.thermal_mode, film_evidence=evidence)
+    if out is None:
+        return result
+    files = write_outputs(out, result, base)
+    if evidence is not None:
+        path = out / "smoothing_film_evidence.csv"
+        evidence.profile.to_csv(path, index=False)
+        files = (*files, path)
+    return replace(result, files=files)
 
 
-def _run_case(out_dir, base: DesignCase, method, resistance_K_W: float, T_values,
-              plateau_tol: float, thermal: str | None) -> SmoothingResult:
+def _run_case(out_dir, base: DesignCase, s: SmoothingSettings,
+              T_values: np.ndarray | None) -> SmoothingResult:
     """The smoothing study on a case other than the seed joint."""
-    for name, v, unset in (("method", method, None), ("resistance_K_W", resistance_K_W, 0.0)):
+    for name, v, unset in (("method", s.method, None), ("resistance_K_W", s.resistance_K_W,
+                                                          0.0)):
         if v != unset:
             raise InputError(name, v, "applies to the seed rig's Table 4 fit only; " + NO_TABLE4,
                              "smoothing study")
     out = Path(out_dir) if out_dir is not None else None
-    curve, saving, mode, defaults, files = run_case(out, base, T_values, plateau_tol, thermal)
-    return SmoothingResult(None, None, None, curve, saving, files, None, thermal is None,
-                           False, defaults, base.name, mode)
+    curve, saving, mode, defaults, files = run_case(out, base, T_values, s.plateau_tol,
+                                                    s.thermal)
+    return SmoothingResult(table=None, fit=None, checks=None, loss_vs_T=curve, plateau=saving,
+                           files=files, run_temps=None, thermal_default=s.thermal is None,
+                           seed_rig=False, defaults=defaults, case_name=base.name,
+                           thermal_mode=mode)
 
 
-def smoothing_study(out_dir: str | Path | None = None, **kwargs) -> pd.DataFrame:
+def smoothing_study(out_dir: str | Path | None = None, case: DesignCase | None = None,
+                    **keywords) -> pd.DataFrame:
     """The smoothing study as one call: the Table-4-shaped DataFrame (see :func:`run`).
 
     ``attrs`` carries the fitted ``gamma``, its standard error, the method, the thermal
     mode and the RMS of the powers and of the reductions.
     """
-    r = run(out_dir, **kwargs)
+    settings, _ = split_keywords(keywords, SmoothingSettings, run_options=False)
+    r = run(out_dir, case, settings)
     t = r.table.copy()
     t.attrs.update(gamma=r.fit.gamma, gamma_se=r.fit.gamma_se, method=r.fit.method,
                    thermal_mode=r.fit.thermal_mode, rms_W=r.fit.rms_W,

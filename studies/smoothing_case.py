@@ -34,6 +34,7 @@ from oilgap.studies.reporting import (
     write_tables,
     write_text,
 )
+from oilgap.studies.settings import INLINE, SweepSettings
 
 WHERE = "smoothing study"
 T_STEP = 0.05
@@ -62,8 +63,8 @@ def case_T_values(case: DesignCase, T_values: np.ndarray | None = None) -> np.nd
 def case_curve(case: DesignCase, T_values: np.ndarray, mode: str) -> pd.DataFrame:
     """The case's mean loss [W] against T at its own operating point under ``mode``:
     ``curve, oil, T, oil_temp_C, depth_m, mean_power_W, dP_dT_W``."""
-    res = run_grid(pd.DataFrame({"T": T_values}), case, workers=1, progress=False,
-                   label="smoothing", thermal=mode)
+    res = run_grid(pd.DataFrame({"T": T_values}), case, SweepSettings(thermal=mode), INLINE,
+                   label="smoothing")
     bad = res[res["status"] != "ok"]
     if len(bad):
         raise SolverError(f"loss-vs-T point failed: {bad['error'].iloc[0]}", "evaluation")

@@ -119,7 +119,7 @@ def dry_powers(table4: pd.DataFrame) -> np.ndarray:
     return np.tile([float(dry["measured_before_W"]), float(dry["measured_after_W"])], n)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BalanceFit:
     """One fit of Table 4 with the rig's heat balance at film strength ``strength``.
 
@@ -195,9 +195,10 @@ def _fit(rig: _Rig, strength: float | None, x0: np.ndarray) -> BalanceFit:
             se = float(np.sqrt(max(cov[-1, -1], 0.0)))
         except np.linalg.LinAlgError:
             se = float("inf")
-    return BalanceFit(s, se, float(sol.x[0]), float(sol.x[1]), float(sol.x[2]), ssr,
-                      float(np.sqrt(ssr / len(rig.meas))), pinned, tuple(map(float, temps)),
-                      tuple(map(float, powers)))
+    return BalanceFit(
+        strength=s, strength_se=se, gamma=float(sol.x[0]), room_temp_C=float(sol.x[1]),
+        resistance_K_W=float(sol.x[2]), ssr_W2=ssr, rms_W=float(np.sqrt(ssr / len(rig.meas))),
+        at_bounds=pinned, temps_C=tuple(map(float, temps)), powers_W=tuple(map(float, powers)))
 
 
 def _regression(temps_C: np.ndarray, power_W: np.ndarray) -> dict[str, float]:
@@ -208,7 +209,7 @@ def _regression(temps_C: np.ndarray, power_W: np.ndarray) -> dict[str, float]:
     return {"intercept_C": float(coef[0]), "slope_K_W": float(coef[1]), "r2": float(r2)}
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class FilmEvidence:
     """What Table 4 says about film heating (module docstring).
 
@@ -355,9 +356,11 @@ def film_evidence(base: DesignCase | None = None, table4: pd.DataFrame | None = 
         "at_bounds": ",".join(f.at_bounds),
         "delta_n_log_ssr": n * np.log(f.ssr_W2 / best.ssr_W2)} for f in fits])
     po_none = _per_oil("none", base, table4)
-    return FilmEvidence(profile, best, _interval(profile), po_none,
-                        _per_oil("film", base, table4), _film_at(po_none, base, table4),
-                        _vg1000(po_none, base, table4), walls)
+    return FilmEvidence(
+        profile=profile, best=best, interval=_interval(profile), per_oil_none=po_none,
+        per_oil_film=_per_oil("film", base, table4),
+        film_at_isothermal=_film_at(po_none, base, table4), vg1000=_vg1000(po_none, base, table4),
+        walls=walls)
 
 
 EVIDENCE_VERDICT = ("film heating at full strength (s = 1) is not supported by Table 4: at "

@@ -62,6 +62,7 @@ from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power
 from oilgap.model.regions import Region, joint_regions
 from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.studies.grid.schema import apply_params
 
 EXPERIMENT_OILS = ("VG150", "VG320", "VG680", "VG1000")
@@ -123,16 +124,16 @@ def resolve_fit_mode(method: str | None, thermal: str | None) -> tuple[str, str,
                          "smoothing study")
     default = thermal is None and method != "heat-balance"
     if method is None:
-        method = "heat-balance" if thermal == "full" else DEFAULT_METHOD
-    if method == "shared" and thermal in ("film", "full"):
+        method = "heat-balance" if thermal == ThermalMode.FULL else DEFAULT_METHOD
+    if method == "shared" and thermal in (ThermalMode.FILM, ThermalMode.FULL):
         method = "heat-balance"
     if method == "heat-balance":
-        if thermal == "none":
+        if thermal == ThermalMode.NONE:
             raise InputError("thermal", thermal, "'film' or 'full': the heat-balance fit "
                              "uses the film-heated loss (method 'shared' is the isothermal "
                              "balance)", "smoothing study")
         return method, "full", default
-    if thermal == "full":
+    if thermal == ThermalMode.FULL:
         raise InputError("thermal", thermal, "'none' or 'film' with the per-oil method "
                          "(full, the rig's heat balance, is method 'heat-balance')",
                          "smoothing study")
@@ -142,7 +143,7 @@ def resolve_fit_mode(method: str | None, thermal: str | None) -> tuple[str, str,
 def loss_mode(thermal: str) -> str:
     """The mode of :func:`~oilgap.model.joint_loss.joint_mean_power` for a fit's thermal
     mode: ``none`` stays, ``film`` and ``full`` use the film factor at the run temperature."""
-    return "none" if thermal == "none" else "film"
+    return "none" if thermal == ThermalMode.NONE else "film"
 
 
 # --------------------------------------------------------------------------- heat balance
@@ -219,7 +220,7 @@ def rig_case(oil: str, roughness_T: float, gamma: float,
                                "depth_m": RIG_DEPTH_M})
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SmoothingFit:
     """One set of model parameters for all oils, fitted to Table 4's measured powers.
 
@@ -269,7 +270,7 @@ class SmoothingFit:
             heat = (f"{loss}T_run = {self.base_temp_C['all']:.2f} degC + "
                     f"{self.resistance_K_W:.4f} K/W{bound} x P_run")
         else:
-            loss = "film-heated loss at " if self.thermal_mode == "film" else ""
+            loss = "film-heated loss at " if self.thermal_mode == ThermalMode.FILM else ""
             heat = (loss + "one effective temperature per oil ("
                     + ", ".join(f"{k} {v:.1f} degC" for k, v in self.base_temp_C.items())
                     + (f") + {self.resistance_K_W:g} K/W x P_run" if self.resistance_K_W
@@ -435,12 +436,15 @@ def _result(method, thermal, sol, model, runs, meas, oils, rth_fixed, table4) ->
                   reduction_max_abs_W=float(np.max(np.abs(red))))
     if method != "per-oil":
         rth = float(sol.x[2]) if sol.x[2] >= NEGLIGIBLE_RESISTANCE_K_W else 0.0
-        return SmoothingFit(method, float(sol.x[0]), float(se[0]), {"all": float(sol.x[1])},
-                            {"all": float(se[1])}, rth, float(se[2]), **common)
-    return SmoothingFit(method, float(sol.x[0]), float(se[0]),
-                        {o: float(sol.x[1 + i]) for i, o in enumerate(oils)},
-                        {o: float(se[1 + i]) for i, o in enumerate(oils)}, rth_fixed, None,
-                        **common)
+        return SmoothingFit(
+            method=method, gamma=float(sol.x[0]), gamma_se=float(se[0]),
+            base_temp_C={"all": float(sol.x[1])}, base_temp_se={"all": float(se[1])},
+            resistance_K_W=rth, resistance_se=float(se[2]), **common)
+    return SmoothingFit(
+        method=method, gamma=float(sol.x[0]), gamma_se=float(se[0]),
+        base_temp_C={o: float(sol.x[1 + i]) for i, o in enumerate(oils)},
+        base_temp_se={o: float(se[1 + i]) for i, o in enumerate(oils)}, resistance_K_W=rth_fixed,
+        resistance_se=None, **common)
 
 
 def _refuse_unidentified(method, thermal, sol, se, rth_fixed) -> None:

@@ -4,11 +4,13 @@ the thermal-mode line and the comparison of the thermal models (shared with the 
 from __future__ import annotations
 
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.studies.reporting import (
     markdown_table,
     new_figure,
@@ -17,6 +19,9 @@ from oilgap.studies.reporting import (
     write_text,
 )
 from oilgap.studies.smoothing_fit import T_GROOVED, T_SMOOTHED, SmoothingFit
+
+if TYPE_CHECKING:
+    from oilgap.studies.smoothing import SmoothingResult
 
 THERMAL_TEXT = {
     "none": "isothermal oil at the fitted run temperatures, the seed paper's model",
@@ -34,7 +39,7 @@ def thermal_line(fit: SmoothingFit, default: bool) -> str:
     if default:
         text += "default: the heat balance does not fit Table 4 better, see the comparison; "
     text += THERMAL_TEXT[fit.thermal_mode] + f"; method {fit.method}"
-    if fit.thermal_mode != "full":
+    if fit.thermal_mode != ThermalMode.FULL:
         text += "; --thermal full for the heat-balance fit"
     return text + ")"
 
@@ -245,11 +250,12 @@ def summary_markdown(table: pd.DataFrame, fit: SmoothingFit, checks: pd.DataFram
     return "\n".join(lines) + "\n"
 
 
-def write_outputs(out: Path, table: pd.DataFrame, fit: SmoothingFit, checks: pd.DataFrame,
-                  curves: pd.DataFrame, plateau: pd.DataFrame, base: DesignCase,
-                  run_temps: pd.DataFrame | None = None, default: bool = True
-                  ) -> tuple[Path, ...]:
-    """Write the study's CSVs, PNG figures and ``summary.md`` into ``out``."""
+def write_outputs(out: Path, result: SmoothingResult, base: DesignCase) -> tuple[Path, ...]:
+    """Write the study's CSVs, PNG figures and ``summary.md`` into ``out`` (the seed rig's
+    fit: ``result.table``, ``fit``, ``checks``, ``loss_vs_T``, ``plateau``, ``run_temps``)."""
+    r = result
+    table, fit, checks, curves, plateau = r.table, r.fit, r.checks, r.loss_vs_T, r.plateau
+    run_temps, default = r.run_temps, r.thermal_default
     tables = {"smoothing_table4.csv": table, "smoothing_fits.csv": checks,
               "smoothing_loss_vs_T.csv": curves, "smoothing_plateau.csv": plateau}
     if run_temps is not None:

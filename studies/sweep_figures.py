@@ -478,8 +478,8 @@ def _describe(layout: Layout) -> str:
 
 def plot_sweep(res: pd.DataFrame, base_power: float | None = None,
                base_name: str = "base case", thermal: str | None = None,
-               mode: str | None = None, grid_name: str | None = None, ax: Axes | None = None,
-               fig: Figure | None = None, layout: Layout | None = None
+               mode: str | None = None, grid_name: str | None = None,
+               ax: Axes | Figure | None = None, layout: Layout | None = None
                ) -> tuple[Figure, np.ndarray]:
     """Draw a sweep's result frame in the layout its grid's dimensions call for.
 
@@ -495,8 +495,8 @@ def plot_sweep(res: pd.DataFrame, base_power: float | None = None,
     thermal, mode, grid_name : str, optional
         For the title (default: the frame's ``thermal_mode``; ``optimize`` when the frame
         holds optimize results; "the grid") [-].
-    ax, fig : Axes or Figure, optional
-        Where to draw: the axes' place (subdivided for several panels) or the whole
+    ax : Axes or Figure, optional
+        Where to draw: an axes' place (subdivided for several panels) or a whole
         figure; default a new Agg figure [-].
     layout : Layout, optional
         Default :func:`choose_layout` [-].
@@ -524,9 +524,8 @@ def plot_sweep(res: pd.DataFrame, base_power: float | None = None,
     power = ("optimal design's " if mode == "optimize" else "") + \
         "mean viscous power over the duty cycle [W]"
     st = _Style(_norm(ok[POWER]), base_power, base_name, power)
-    target = ax if ax is not None else fig
     draw = {"facets": _facets, "pairwise": _pairwise}.get(layout.kind, _single)
-    fig, axes = draw(target, ok, layout, st)
+    fig, axes = draw(ax, ok, layout, st)
     title = (f"Sweep of {grid_name or 'the grid'} ({mode}, thermal mode {thermal}): "
              f"{len(ok)}/{len(res)} points\n"
              + textwrap.fill(_describe(layout) + (f"; {'; '.join(notes)}" if notes else ""),

@@ -73,7 +73,7 @@ DEFAULT_STRENGTH = {
 """Strength of each effect when ``--strength`` is not given (unit: Effect.strength_unit)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BaselineTruth:
     """Load and motor losses of the simulated joint (electrical input without oil).
 
@@ -133,7 +133,7 @@ SYNTH_OILS = ("VG150", "VG320", "VG680", "VG1000")
 """The rig's four oils (ISO VG grades of the built-in catalogue)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class SynthConfig:
     """What the synthetic rig simulates (SI unless the name says otherwise).
 

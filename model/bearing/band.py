@@ -149,5 +149,6 @@ def bearing_model_band(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s: float,
         parts.update(skf_no_drag=no_drag, drag_vm_term=vm_term - no_drag)
     members[f"palmgren_f0_{lo:g}"] = mean(replace(spec, model="palmgren", f0=lo))
     members[f"palmgren_f0_{hi:g}"] = mean(replace(spec, model="palmgren", f0=hi))
-    return BearingModelBand(chosen_label(spec), mean(spec), min(members.values()),
-                            max(members.values()), members, parts, (lo, hi))
+    return BearingModelBand(
+        chosen=chosen_label(spec), chosen_W=mean(spec), min_W=min(members.values()),
+        max_W=max(members.values()), members_W=members, parts_W=parts, f0_range=(lo, hi))

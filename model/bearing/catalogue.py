@@ -87,17 +87,39 @@ class ProductRow:
 
 
 PRODUCTS: dict[str, ProductRow] = {r.designation: r for r in (
-    ProductRow("61807", 35, 47, 7, 4.36, 3.35, 30000, 18000),
-    ProductRow("61808", 40, 52, 7, 4.49, 3.75, 26000, 16000),
-    ProductRow("61809", 45, 58, 7, 6.63, 6.10, 22000, 14000),
-    ProductRow("61810", 50, 65, 7, 6.76, 6.80, 20000, 13000),
-    ProductRow("61811", 55, 72, 9, 9.04, 8.8, 19000, 12000),
-    ProductRow("61812", 60, 78, 10, 11.9, 11.4, 17000, 11000),
-    ProductRow("61909", 45, 68, 12, 14.0, 10.8, 20000, 13000),
-    ProductRow("16009", 45, 75, 10, 16.5, 10.8, 20000, 12000),
-    ProductRow("6009", 45, 75, 16, 22.1, 14.6, 20000, 12000),
-    ProductRow("6209", 45, 85, 19, 35.1, 21.6, 17000, 11000),
-    ProductRow("6309", 45, 100, 25, 55.3, 31.5, 15000, 9500),
+    ProductRow(
+        designation="61807", bore_mm=35, outside_mm=47, width_mm=7, dynamic_rating_kN=4.36,
+        static_rating_kN=3.35, reference_speed_rpm=30000, limiting_speed_rpm=18000),
+    ProductRow(
+        designation="61808", bore_mm=40, outside_mm=52, width_mm=7, dynamic_rating_kN=4.49,
+        static_rating_kN=3.75, reference_speed_rpm=26000, limiting_speed_rpm=16000),
+    ProductRow(
+        designation="61809", bore_mm=45, outside_mm=58, width_mm=7, dynamic_rating_kN=6.63,
+        static_rating_kN=6.10, reference_speed_rpm=22000, limiting_speed_rpm=14000),
+    ProductRow(
+        designation="61810", bore_mm=50, outside_mm=65, width_mm=7, dynamic_rating_kN=6.76,
+        static_rating_kN=6.80, reference_speed_rpm=20000, limiting_speed_rpm=13000),
+    ProductRow(
+        designation="61811", bore_mm=55, outside_mm=72, width_mm=9, dynamic_rating_kN=9.04,
+        static_rating_kN=8.8, reference_speed_rpm=19000, limiting_speed_rpm=12000),
+    ProductRow(
+        designation="61812", bore_mm=60, outside_mm=78, width_mm=10, dynamic_rating_kN=11.9,
+        static_rating_kN=11.4, reference_speed_rpm=17000, limiting_speed_rpm=11000),
+    ProductRow(
+        designation="61909", bore_mm=45, outside_mm=68, width_mm=12, dynamic_rating_kN=14.0,
+        static_rating_kN=10.8, reference_speed_rpm=20000, limiting_speed_rpm=13000),
+    ProductRow(
+        designation="16009", bore_mm=45, outside_mm=75, width_mm=10, dynamic_rating_kN=16.5,
+        static_rating_kN=10.8, reference_speed_rpm=20000, limiting_speed_rpm=12000),
+    ProductRow(
+        designation="6009", bore_mm=45, outside_mm=75, width_mm=16, dynamic_rating_kN=22.1,
+        static_rating_kN=14.6, reference_speed_rpm=20000, limiting_speed_rpm=12000),
+    ProductRow(
+        designation="6209", bore_mm=45, outside_mm=85, width_mm=19, dynamic_rating_kN=35.1,
+        static_rating_kN=21.6, reference_speed_rpm=17000, limiting_speed_rpm=11000),
+    ProductRow(
+        designation="6309", bore_mm=45, outside_mm=100, width_mm=25, dynamic_rating_kN=55.3,
+        static_rating_kN=31.5, reference_speed_rpm=15000, limiting_speed_rpm=9500),
 )}
 """Open deep-groove ball bearings of SKF 10000 EN [1]_ (61808-61810 are the notes'; the
 others were read from the same transcription), by designation."""

@@ -164,9 +164,11 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     name = str(doc.get("name", "unnamed case"))
     friction, gamma_source = _gamma_default(fd, friction, region1)
     bounds = bounds if bounds is not None else DesignBounds.around(region1)
-    return DesignCase(name, region1, region2, oil, operating, duty, friction, motor, bounds,
-                      tuple(mission), oils_csv, thermal, bearing_from_doc(doc), gamma_source,
-                      reader_defaults(doc, bounds, motor, thermal=thermal))
+    return DesignCase(
+        name=name, region1=region1, region2=region2, oil=oil, operating=operating, duty_cycle=duty,
+        friction=friction, motor=motor, bounds=bounds, mission=tuple(mission), oils_csv=oils_csv,
+        thermal=thermal, bearing=bearing_from_doc(doc), gamma_source=gamma_source,
+        defaults=reader_defaults(doc, bounds, motor, thermal=thermal))
 
 
 def _friction_value(key: str, value, fd: dict):

@@ -331,10 +331,12 @@ def _samples(o: pd.DataFrame, state, y: np.ndarray, has_time: bool, cv=None) -> 
     cv_group, cv_names, cv_by = cv if cv is not None else (None, None, "run")
     f = {c: o[c].to_numpy(dtype=float) for c in ("roughness_T", "time_s", "speed_rpm", "omega",
                                                  "domega_dt", "temp_C", "dtemp_dt")}
-    return Samples(runs, code, names, _text(o["oil"]), f["roughness_T"],
-                   f["time_s"], f["speed_rpm"], f["omega"], f["domega_dt"], f["temp_C"],
-                   f["dtemp_dt"], nu, rho, nu_pm, rho_pm, gap, y, o.index.to_numpy(), has_time,
-                   cv_group, cv_names, cv_by)
+    return Samples(
+        run=runs, run_code=code, run_names=names, oil=_text(o["oil"]), roughness_T=f["roughness_T"],
+        time_s=f["time_s"], speed_rpm=f["speed_rpm"], omega=f["omega"], domega_dt=f["domega_dt"],
+        temp_C=f["temp_C"], dtemp_dt=f["dtemp_dt"], nu_m2_s=nu, density_kg_m3=rho, nu_pm=nu_pm,
+        rho_pm=rho_pm, gap1_m=gap, viscous_W=y, index=o.index.to_numpy(), has_time=has_time,
+        cv_group=cv_group, cv_names=cv_names, cv_by=cv_by)
 
 
 def oil_samples(data: MeasuredData, region1_gap_m: float,

@@ -374,8 +374,10 @@ def validate(df: pd.DataFrame, oils: dict[str, Oil] | None = None,
     keys = (keep, num["time_s"][keep], run[keep]) if has_time else (keep, run[keep])
     rows = keep[np.lexsort(keys)]
     frame = _frame(df, rows, num, run, run_names, oil, oil_names, oil_free, has_time)
-    return MeasuredData(frame, kind, d.result(), n_read, source, ignored, catalogue, has_time,
-                        d.code, _override_notes(num, d.alive & ~oil_free))
+    return MeasuredData(
+        frame=frame, kind=kind, dropped=d.result(), n_read=n_read, source=source,
+        ignored_columns=ignored, oils=catalogue, has_time=has_time, drop_code=d.code,
+        notes=_override_notes(num, d.alive & ~oil_free))
 
 
 def _override_notes(num: dict, oil_rows: np.ndarray) -> tuple[str, ...]:

@@ -163,9 +163,10 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
     if q + k == 0:  # nothing to fit: the model at the given parameters
         law = spec.law(np.zeros(0))
         out = full or model
-        return ModelFit(np.zeros(0), np.zeros(0), law, out.base_power(law),
-                        np.zeros((out.samples.n, 0)), np.zeros((model.samples.n, 0)),
-                        np.ones(0), (), np.zeros(0))
+        return ModelFit(
+            x=np.zeros(0), theta=np.zeros(0), law=law, pred=out.base_power(law),
+            jac_base=np.zeros((out.samples.n, 0)), jac=np.zeros((model.samples.n, 0)),
+            scale=np.ones(0), names=(), lower=np.zeros(0))
     sc = np.ones(k) if scale is None else np.where(np.asarray(scale) > 0, scale, 1.0)
     lo_t = np.array([0.0 if EFFECTS[n].nonnegative else -np.inf for n in names])
     hi_t = np.array([EFFECTS[n].upper for n in names])
@@ -188,8 +189,10 @@ def fit_model(model: ForwardModel, spec: BaseSpec, x0: np.ndarray, names: tuple[
     out = full or model
     jfull = prob.jacobian(res.x) if out is model else None
     jb = jfull[:, :q] if jfull is not None else np.zeros((out.samples.n, q))
-    return ModelFit(x, np.array([coefs[n] for n in names]), spec.law(x), prob.power(res.x, out),
-                    jb, jfull, sc, tuple(names), lo_t)
+    return ModelFit(
+        x=x, theta=np.array([coefs[n] for n in names]), law=spec.law(x),
+        pred=prob.power(res.x, out), jac_base=jb, jac=jfull, scale=sc, names=tuple(names),
+        lower=lo_t)
 
 
 def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.ndarray,
@@ -242,7 +245,9 @@ def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.
     pred = model.power(law, coefs)
     if not np.all(np.isfinite(pred)):
         return None
-    return ModelFit(x, theta, law, pred, fit.jac_base, None, fit.scale, fit.names, fit.lower)
+    return ModelFit(
+        x=x, theta=theta, law=law, pred=pred, jac_base=fit.jac_base, jac=None, scale=fit.scale,
+        names=fit.names, lower=fit.lower)
 
 
 ALPHA_MIN_WEIGHT = 0.1

@@ -142,8 +142,9 @@ class Refitter:
                       full=self.model)
         x = x_all.copy()
         x[keep] = f.x
-        return ModelFit(x, f.theta, spec.law(x), f.pred, f.jac_base, None, f.scale, f.names,
-                        f.lower)
+        return ModelFit(
+            x=x, theta=f.theta, law=spec.law(x), pred=f.pred, jac_base=f.jac_base, jac=None,
+            scale=f.scale, names=f.names, lower=f.lower)
 
     def leave_one_run_out(self, names, x_start: np.ndarray, theta_start: np.ndarray | None,
                           at: ModelFit | None = None) -> HeldOut:
@@ -249,7 +250,9 @@ def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
     chosen = selection.chosen
     accepted = [cands.name[j] for j in chosen]
     if not accepted:
-        return FinalModel(base, [], chosen, before, before, None, [])
+        return FinalModel(
+            fit=base, accepted=[], chosen=chosen, before=before, after=before, nonlinear_check=None,
+            log=[])
     lin_coef = selection.selector.coef(chosen)
     start = []
     for j in chosen:  # coefficient start: linear amplitude, or amplitude x variant value
@@ -263,9 +266,12 @@ def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
     if ha > hb * (1.0 - margin):  # the honest held-out check overrules
         log = [{"step": "nonlinear check", "rejected": accepted,
                 "gain_pct": 100 * (1 - ha / hb)}]
-        return FinalModel(base, [], (), before, before, check, log)
-    return _prune_nonlinear(refitter, FinalModel(fit, accepted, chosen, before, after, check,
-                                                 [], m), margin)
+        return FinalModel(
+            fit=base, accepted=[], chosen=(), before=before, after=before, nonlinear_check=check,
+            log=log)
+    return _prune_nonlinear(refitter, FinalModel(
+        fit=fit, accepted=accepted, chosen=chosen, before=before, after=after,
+        nonlinear_check=check, log=[], taylor_exponent=m), margin)
 
 
 def _fit_taylor_shape(refitter: Refitter, base: ModelFit, cands: Candidates,
@@ -325,8 +331,10 @@ def _prune_nonlinear(refitter: Refitter, final: FinalModel, margin: float) -> Fi
         ha, hb = rmse(y - after.pred), rmse(y - final.before.pred)
         check = {"heldout_before_W": hb, "heldout_after_W": ha,
                  "gain_pct": 100 * (1 - ha / hb)}
-        final = FinalModel(fit, names, tuple(final.chosen[i] for i in keep), final.before,
-                           after, check, log, final.taylor_exponent)
+        final = FinalModel(
+            fit=fit, accepted=names, chosen=tuple(final.chosen[i] for i in keep),
+            before=final.before, after=after, nonlinear_check=check, log=log,
+            taylor_exponent=final.taylor_exponent)
     return final
 
 
@@ -420,7 +428,9 @@ def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, 
         check = {"heldout_before_W": hb, "heldout_after_W": e, "gain_pct": 100 * (1 - e / hb)}
         log = [*final.log, {"step": "nonlinear add", "added": n,
                             "gain_pct": 100.0 * (1.0 - e / e_now)}]
-        final = FinalModel(fit, [*final.accepted, n], (*final.chosen, cands.columns_of(n)[0]),
-                           final.before, ho, check, log, final.taylor_exponent)
+        final = FinalModel(
+            fit=fit, accepted=[*final.accepted, n], chosen=(*final.chosen, cands.columns_of(n)[0]),
+            before=final.before, after=ho, nonlinear_check=check, log=log,
+            taylor_exponent=final.taylor_exponent)
         added = True
     return _prune_nonlinear(refitter, final, margin) if added else final

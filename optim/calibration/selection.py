@@ -543,8 +543,9 @@ def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
     -------
     Selection
     """
-    sel = selector or LeaveOneRunOutSelector(jac, cands.columns, residual, run_code,
-                                             np.array(cands.nonneg, bool), cands.group, hold)
+    sel = selector or LeaveOneRunOutSelector(
+        J=jac, F=cands.columns, r=residual, run_code=run_code, nonneg=np.array(cands.nonneg, bool),
+        group=cands.group, hold=hold)
     e0 = sel.cv(())
     path = sel.lasso_path()
     entry: dict[str, float] = {}
@@ -556,4 +557,6 @@ def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
     scored = score_alone(cands, sel, e0, noise_W, entry)
     steps = stepwise_selection(sel, cands, e0, entry, noise_W, margin, min_explained,
                                max_effects, exclude)
-    return Selection(sel, e0, entry, lasso, scored, steps.chosen, steps.log, frozenset(exclude))
+    return Selection(
+        selector=sel, heldout_before_W=e0, lasso_entry=entry, lasso_path=lasso, candidates=scored,
+        chosen=steps.chosen, log=steps.log, exclude=frozenset(exclude))

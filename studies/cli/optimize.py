@@ -27,6 +27,7 @@ from oilgap.studies.cli.outputs import solver_log_to_stderr
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
 from oilgap.studies.results_design import Optimization
+from oilgap.studies.settings import DesignLimits
 
 
 def _number(args: argparse.Namespace, attr: str, field: str,
@@ -66,14 +67,14 @@ def run(args: argparse.Namespace) -> int:
     args.depth_m = _number(args, "depth_m", "--depth-m")
     torque_min = _number(args, "torque_min_nm", "--torque-min-nm", positive=True)
     inertia_ratio = _number(args, "inertia_max_ratio", "--inertia-max-ratio", positive=True)
-    starts = _starts(args)
+    limits = DesignLimits(torque_min_Nm=torque_min, inertia_max_ratio=inertia_ratio,
+                          starts=_starts(args))
     if args.out:  # before any computation: folder writable, no earlier file unless --force
         check_out_file(args.out, args.force)
     case, _ = thermal_case(load_case(args), args)  # the options checked, named as given
     log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
     with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
-        res = optimize(case, thermal=args.thermal, starts=starts, torque_min_Nm=torque_min,
-                       inertia_max_ratio=inertia_ratio, verbose=args.verbose)
+        res = optimize(case, thermal=args.thermal, limits=limits, verbose=args.verbose)
     out_path = _write(res, args)
     if args.json:
         print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None}))

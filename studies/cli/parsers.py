@@ -14,6 +14,18 @@ import math
 
 from oilgap.model.thermal_modes import THERMAL_MODES
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
+from oilgap.studies.settings import (
+    DEFAULT_CHUNK_SECONDS,
+    DEFAULT_DEPTH_RANGE_M,
+    DEFAULT_ISO_TOLERANCE,
+    DEFAULT_MISSION_HOURS,
+    DEFAULT_NU_MAX_CST,
+    DEFAULT_NU_MIN_CST,
+    DEFAULT_POINTS,
+    DEFAULT_STARTS,
+    MIN_POINTS,
+    PLATEAU_TOL,
+)
 
 EFFECT_NAMES = ("end_face_disc", "bearing_ball_churning", "bearing_ball_drag",
                 "seal_coulomb_friction",
@@ -156,10 +168,10 @@ def add_optimize(sub) -> None:
     p.add_argument("--inertia-max-ratio", metavar="X",
                    help="rotor inertia limit as a multiple of the case's unfilled rotor "
                    "(default: the case's bounds.inertia_max_ratio)")
-    p.add_argument("--starts", metavar="N", default="8",
+    p.add_argument("--starts", metavar="N", default=str(DEFAULT_STARTS),
                    help="start points: the case's design and N-1 random points in the bounds; "
-                   "the best optimum is reported (default 8; the loss can be non-convex near "
-                   "the Re = 64/500 regime breaks)")
+                   f"the best optimum is reported (default {DEFAULT_STARTS}; the loss can be "
+                   "non-convex near the Re = 64/500 regime breaks)")
     p.add_argument("--smoothed", action="store_true",
                    help="without CASE: start from the seed joint smoothed with epoxy (T = 2)")
     add_thermal_argument(p)
@@ -226,9 +238,9 @@ def _add_smoothing(ss) -> None:
     s.add_argument("--t-max", type=finite_float, default=None,
                    help="largest T (default 5; on a case its own T)")
     s.add_argument("--t-step", type=finite_float, default=0.05, help="T step")
-    s.add_argument("--plateau-tol", type=finite_float, default=0.05,
+    s.add_argument("--plateau-tol", type=finite_float, default=PLATEAU_TOL,
                    help="loss counts as levelled off within this fraction of P(T=1) "
-                   "(default 0.05)")
+                   f"(default {PLATEAU_TOL:g})")
     s.add_argument("--film-evidence", action="store_true",
                    help="seed rig: also fit the film strength s in [0, 1] with the rig's "
                    "heat balance T = T0 + R P (docs/thermal.md#evidence)")
@@ -243,8 +255,8 @@ def _add_pareto(ss) -> None:
     s.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/pareto/)")
     add_force(s)
-    s.add_argument("--points", type=positive_int, default=60,
-                   help="points per front (>= 50, default 60)")
+    s.add_argument("--points", type=positive_int, default=DEFAULT_POINTS,
+                   help=f"points per front (>= {MIN_POINTS}, default {DEFAULT_POINTS})")
     s.add_argument("--torque-min-nm", type=finite_float,
                    help="required torque capability [N m] (default: the case's own)")
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
@@ -264,16 +276,17 @@ def _add_oil_grade(ss) -> None:
     s.add_argument("--mission", metavar="MISSION.csv",
                    help="mission profile depth_m,oil_temp_C,fraction (default: the case's "
                    "[[mission]] rows, else the stated seed mission)")
-    s.add_argument("--nu-min-cst", type=finite_float, default=13.0,
+    s.add_argument("--nu-min-cst", type=finite_float, default=DEFAULT_NU_MIN_CST,
                    help="lubrication limit: minimum viscosity at the hottest point [cSt] "
-                   "(default 13)")
-    s.add_argument("--nu-max-cst", type=finite_float, default=1000.0,
+                   f"(default {DEFAULT_NU_MIN_CST:g})")
+    s.add_argument("--nu-max-cst", type=finite_float, default=DEFAULT_NU_MAX_CST,
                    help="cold-start limit: maximum viscosity at the coldest point [cSt] "
-                   "(default 1000)")
-    s.add_argument("--iso-tolerance", type=finite_float, default=0.10,
-                   help="ISO 3448 grade tolerance applied at its worst (default 0.10)")
-    s.add_argument("--depth-min-m", type=finite_float, default=0.0)
-    s.add_argument("--depth-max-m", type=finite_float, default=7000.0)
+                   f"(default {DEFAULT_NU_MAX_CST:g})")
+    s.add_argument("--iso-tolerance", type=finite_float, default=DEFAULT_ISO_TOLERANCE,
+                   help="ISO 3448 grade tolerance applied at its worst "
+                   f"(default {DEFAULT_ISO_TOLERANCE:.2f})")
+    s.add_argument("--depth-min-m", type=finite_float, default=DEFAULT_DEPTH_RANGE_M[0])
+    s.add_argument("--depth-max-m", type=finite_float, default=DEFAULT_DEPTH_RANGE_M[1])
     s.add_argument("--temp-min-c", type=finite_float,
                    help="oil temperature range, thermal none/film [degC] (default 0)")
     s.add_argument("--temp-max-c", type=finite_float, help="(default 40)")
@@ -281,8 +294,8 @@ def _add_oil_grade(ss) -> None:
                    help="thermal bulk/full: the envelope's sea temperatures [degC]; the oil's "
                    "operating temperature is a result (default 0 40, the same as the oil's "
                    "under none, so that the answers differ by the heating only)")
-    s.add_argument("--mission-hours", type=finite_float, default=8.0,
-                   help="mission duration for the energy [h] (default 8)")
+    s.add_argument("--mission-hours", type=finite_float, default=DEFAULT_MISSION_HOURS,
+                   help=f"mission duration for the energy [h] (default {DEFAULT_MISSION_HOURS:g})")
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
     _scheduler(s)
     add_thermal_argument(s)
@@ -311,8 +324,9 @@ def _add_sweep(ss) -> None:
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
     s.add_argument("--chunk-size", type=positive_int, help="fixed rows per task (default: "
                    "chunks sized by time, --chunk-seconds)")
-    s.add_argument("--chunk-seconds", type=finite_float, default=3.0, metavar="S",
-                   help="target time of a chunk on a worker [s] (default 3): smooth "
+    s.add_argument("--chunk-seconds", type=finite_float, default=DEFAULT_CHUNK_SECONDS,
+                   metavar="S", help="target time of a chunk on a worker [s] (default "
+                   f"{DEFAULT_CHUNK_SECONDS:g}): smooth "
                    "progress, and Ctrl-C loses at most one chunk per worker")
     _scheduler(s)
     s.add_argument("--retry-failed", action="store_true",

@@ -12,7 +12,8 @@ from oilgap.studies.api import as_case
 from oilgap.studies.api_studies import oil_grade
 from oilgap.studies.cli.common import show, study_out
 from oilgap.studies.cli.outputs import json_quiet, out_folder
-from oilgap.studies.oil_grade import DEFAULT_TEMP_RANGE_C, read_mission_csv
+from oilgap.studies.oil_grade import read_mission_csv
+from oilgap.studies.settings import DEFAULT_TEMP_RANGE_C, OilGradeSettings, RunOptions
 
 
 def _temp_range(args: argparse.Namespace) -> tuple[float, float] | None:
@@ -28,15 +29,17 @@ def run(args: argparse.Namespace) -> int:
     """``oilgap study oil-grade``: grade table and recommendation; exit 3 if none passes."""
     case = as_case(args.case)
     mission = read_mission_csv(args.mission) if args.mission else None
+    settings = OilGradeSettings(thermal=args.thermal, nu_min_cSt=args.nu_min_cst,
+                                nu_max_cSt=args.nu_max_cst, iso_tolerance=args.iso_tolerance,
+                                depth_range_m=(args.depth_min_m, args.depth_max_m),
+                                temp_range_C=_temp_range(args),
+                                sea_temp_range_C=args.sea_temp_range_c,
+                                mission_hours=args.mission_hours)
     out = study_out(args, "oil-grade")
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
-        r = oil_grade(case, mission=mission, thermal=args.thermal,
-                      nu_min_cSt=args.nu_min_cst, nu_max_cSt=args.nu_max_cst,
-                      iso_tolerance=args.iso_tolerance,
-                      depth_range_m=(args.depth_min_m, args.depth_max_m),
-                      temp_range_C=_temp_range(args), sea_temp_range_C=args.sea_temp_range_c,
-                      mission_hours=args.mission_hours, out=out, workers=args.workers,
-                      scheduler=args.scheduler, progress=args.progress, folder=folder)
+        r = oil_grade(case, mission=mission, out=out, folder=folder, settings=settings,
+                      options=RunOptions(workers=args.workers, scheduler=args.scheduler,
+                                         progress=args.progress))
     show(r, args)
     if r.recommended is None:
         raise InfeasibleError("no oil grade meets both the lubrication limit "

@@ -11,6 +11,7 @@ from oilgap.studies.api import as_case
 from oilgap.studies.api_studies import pareto
 from oilgap.studies.cli.common import show, study_out
 from oilgap.studies.cli.outputs import json_quiet, out_folder
+from oilgap.studies.settings import ParetoSettings, RunOptions
 
 
 def run(args: argparse.Namespace) -> int:
@@ -18,8 +19,10 @@ def run(args: argparse.Namespace) -> int:
     case = as_case(args.case)
     out = study_out(args, "pareto")
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
-        r = pareto(case, points=args.points, torque_min_Nm=args.torque_min_nm,
-                   out=out, workers=args.workers, scheduler=args.scheduler,
-                   progress=args.progress, folder=folder, thermal=args.thermal)
+        r = pareto(case, out=out, folder=folder,
+                   settings=ParetoSettings(points=args.points, torque_min_Nm=args.torque_min_nm,
+                                           thermal=args.thermal),
+                   options=RunOptions(workers=args.workers, scheduler=args.scheduler,
+                                      progress=args.progress))
     show(r, args)
     return 0

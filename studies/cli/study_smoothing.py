@@ -15,6 +15,7 @@ from oilgap.studies.api import as_case
 from oilgap.studies.api_studies import smoothing
 from oilgap.studies.cli.common import show, study_out
 from oilgap.studies.cli.outputs import json_quiet, out_folder
+from oilgap.studies.settings import SmoothingSettings
 from oilgap.studies.user_case import is_seed_case
 
 
@@ -49,9 +50,10 @@ def run(args: argparse.Namespace) -> int:
          and args.t_step == 0.05 else _t_values(args, float(case.region1.roughness)))
     out = study_out(args, "smoothing")
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
-        r = smoothing(case, method=args.method, thermal=args.thermal,
-                      resistance_K_W=args.r_th_k_per_w, T_values=T,
-                      plateau_tol=args.plateau_tol, out=out, folder=folder,
-                      film_evidence=getattr(args, "film_evidence", False))
+        settings = SmoothingSettings(method=args.method, thermal=args.thermal,
+                                     resistance_K_W=args.r_th_k_per_w, T_values=T,
+                                     plateau_tol=args.plateau_tol,
+                                     film_evidence=getattr(args, "film_evidence", False))
+        r = smoothing(case, out=out, folder=folder, settings=settings)
     show(r, args)
     return 0

@@ -14,6 +14,7 @@ from oilgap.studies.cli.common import show, study_out
 from oilgap.studies.cli.outputs import json_quiet, out_folder
 from oilgap.studies.grid.runner import SweepInterrupted
 from oilgap.studies.io.result_folder import ResultFolder
+from oilgap.studies.settings import RunOptions, SweepSettings
 
 RESUME_HINT = "rerun the same command with --resume to continue"
 """What Ctrl-C's line tells the user (the folder stays marked incomplete)."""
@@ -37,10 +38,12 @@ def run(args: argparse.Namespace) -> int:
 def _sweep(args: argparse.Namespace, out, folder: ResultFolder) -> int:
     """The sweep inside its locked result folder."""
     with json_quiet(args):
-        r = sweep(args.grid, args.case, mode=args.mode, thermal=args.thermal, out=out,
-                  workers=args.workers, scheduler=args.scheduler, progress=args.progress,
-                  oils=args.oils, chunk_size=args.chunk_size, chunk_seconds=args.chunk_seconds,
-                  retry_failed=args.retry_failed, folder=folder)
+        r = sweep(args.grid, args.case, out=out, oils=args.oils, folder=folder,
+                  settings=SweepSettings(mode=args.mode, thermal=args.thermal,
+                                         retry_failed=args.retry_failed),
+                  options=RunOptions(workers=args.workers, scheduler=args.scheduler,
+                                     progress=args.progress, chunk_size=args.chunk_size,
+                                     chunk_seconds=args.chunk_seconds))
     folder.complete()
     show(r, args)
     bad = r.raw[r.raw["status"] != "ok"]

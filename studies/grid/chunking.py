@@ -19,9 +19,7 @@ from __future__ import annotations
 import math
 
 from oilgap.model.errors import InputError, check_positive
-
-DEFAULT_CHUNK_SECONDS = 3.0
-"""Target wall time of one chunk on a worker [s]."""
+from oilgap.studies.settings import DEFAULT_CHUNK_SECONDS
 
 PRIOR_S_PER_POINT = {"evaluate": 2e-4, "optimize": 5e-3}
 """Cost of one point before any is measured [s]: vectorised evaluation, one IPOPT solve

@@ -47,6 +47,7 @@ from oilgap.model.thermal_modes import (
     DEFAULT_MODE_WHY,
     THERMAL_MODE_TEXT,
     THERMAL_MODES,
+    ThermalMode,
     uses_balance,
 )
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
@@ -173,7 +174,7 @@ def _evaluate_group(cases: list[DesignCase], idx: list[int], mode: str,
     out["R_mm_res"][ii] = r1.radius_m[:, 0] / MM_TO_M
     out["L_mm_res"][ii] = r1.length_m[:, 0] / MM_TO_M
     out["mean_power_W"][ii] = total
-    out["isothermal_power_W"][ii] = total if mode == "none" else np.asarray(
+    out["isothermal_power_W"][ii] = total if mode == ThermalMode.NONE else np.asarray(
         joint_mean_power(c0, given, "none", depths, regions, include_bearing=True),
         dtype=float)
     out["oil_temp_op_C"][ii] = temps
@@ -305,6 +306,6 @@ def thermal_description(case: DesignCase, thermal: str, by_default: bool,
     th = case.thermal
     if uses_balance(thermal) and th is not None:
         text += f"; R {th.resistance_K_W:g} K/W, Q {th.other_heat_W:g} W, {th.walls}"
-    if thermal != "none":
+    if thermal != ThermalMode.NONE:
         text += "; --thermal none for the seed paper's isothermal model"
     return text + ")"

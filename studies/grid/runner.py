@@ -38,7 +38,6 @@ from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import IO
 
-import numpy as np
 import pandas as pd
 from tqdm import tqdm
 
@@ -48,7 +47,7 @@ from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import default_thermal_mode, resolve_thermal_mode
 from oilgap.model.oils import Oil, get_oil, read_oils_csv
 from oilgap.studies.grid.backends import InlineBackend, check_scheduler, make_backend
-from oilgap.studies.grid.chunking import DEFAULT_CHUNK_SECONDS, ChunkSizer
+from oilgap.studies.grid.chunking import ChunkSizer
 from oilgap.studies.grid.columns import THERMAL_COLUMNS, result_columns
 from oilgap.studies.grid.evaluate import evaluate_chunk
 from oilgap.studies.grid.optimize import nlp_thermal_modes, optimize_chunk
@@ -64,6 +63,7 @@ from oilgap.studies.grid.store import (
 )
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_to_parquet
 from oilgap.studies.io.result_folder import FolderLock
+from oilgap.studies.settings import RunOptions, SweepSettings
 
 # --------------------------------------------------------------------------- progress
 
@@ -145,14 +145,6 @@ def resolve_grid_thermal(base: DesignCase, mode: str, thermal: str | None
                              f"{', '.join(carried)} so far", WHERE)
         return resolved, False
     return resolve_thermal_mode(base, thermal), thermal is None
-
-
-def _check_workers(workers: int | None) -> int:
-    if workers is None:
-        workers = os.cpu_count() or 1
-    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
-        raise InputError("workers", workers, "must be an integer >= 1", WHERE)
-    return workers
 
 
 def _catalogue(grid: pd.DataFrame, base: DesignCase,
@@ -295,14 +287,11 @@ def _checked(grid: pd.DataFrame, case: DesignCase | None, mode: str, thermal: st
     return grid, base, thermal, by_default
 
 
-def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "evaluate",
-             out_dir: str | Path | None = None, workers: int | None = None,
-             chunk_size: int | None = None, progress: bool | None = None,
-             catalogue: Mapping[str, Oil] | None = None,
-             label: str = "sweep", retry_failed: bool = False,
-             on_chunk: Callable[[int], None] | None = None,
-             thermal: str | None = "none", scheduler: str | None = None,
-             chunk_seconds: float = DEFAULT_CHUNK_SECONDS) -> pd.DataFrame:
+def run_grid(grid: pd.DataFrame, case: DesignCase | None = None,
+             settings: SweepSettings | None = None, options: RunOptions | None = None, *,
+             out_dir: str | Path | None = None, catalogue: Mapping[str, Oil] | None = None,
+             label: str = "sweep",
+             on_chunk: Callable[[int], None] | None = None) -> pd.DataFrame:
     """Evaluate or optimize every row of a grid of parameter combinations.
 
     Parameters
@@ -313,37 +302,34 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
         base case's value.
     case : DesignCase, optional
         Base case (default: the seed joint, grooved).
-    mode : {"evaluate", "optimize"}
+    settings : SweepSettings, optional
+        ``mode`` (``"evaluate"`` or ``"optimize"``), ``thermal`` (None: the default,
+        :func:`resolve_grid_thermal`; under ``bulk``/``full`` the grid may hold
+        ``sea_temp_C``, ``resistance_K_per_W`` and not ``oil_temp_C``, a result:
+        ``oil_temp_op_C``) and ``retry_failed`` (recompute points stored as errors;
+        default: they count as finished). Default ``SweepSettings()``.
+    options : RunOptions, optional
+        ``workers`` (processes; default all local cores; 1 runs in this process; with
+        ``scheduler="local"`` the processes of the LocalCluster), ``scheduler`` (None:
+        local processes, ``"local"``: a Dask LocalCluster, ``"tcp://HOST:PORT"``: a
+        running Dask scheduler, :mod:`oilgap.studies.grid.backends`; the same rows and
+        numbers), ``progress`` (progress line on stderr; default: when stderr is a
+        terminal), ``chunk_size`` (fixed rows per task; in optimize mode each chunk is
+        then one warm-started chain; default: chunks sized by time, with fixed chains of
+        :data:`~oilgap.studies.grid.chunking.WARM_CHAIN` rows in optimize mode) and
+        ``chunk_seconds`` (target wall time of a chunk on its worker [s], default 3,
+        :mod:`oilgap.studies.grid.chunking`).
     out_dir : path, optional
         Folder for ``points_<mode>.csv`` (finished points, stored chunk by chunk)
         and ``results.csv``/``results.parquet``; a rerun with the same folder skips
         the points already there.
-    workers : int, optional
-        Processes (default: all local cores; 1 runs in this process); with
-        ``scheduler="local"`` the processes of the LocalCluster.
-    chunk_size : int, optional
-        Fixed rows per task (in optimize mode each chunk is then one warm-started
-        chain). Default: chunks sized by time (``chunk_seconds``,
-        :mod:`oilgap.studies.grid.chunking`), with fixed chains of
-        :data:`~oilgap.studies.grid.chunking.WARM_CHAIN` rows in optimize mode.
-    chunk_seconds : float
-        Target wall time of a chunk on its worker [s] (default 3).
-    scheduler : str, optional
-        None (local processes), ``"local"`` (a Dask LocalCluster of ``workers``
-        processes) or ``"tcp://HOST:PORT"`` (a running Dask scheduler;
-        :mod:`oilgap.studies.grid.backends`). The same rows and numbers.
-    progress : bool, optional
-        Progress line on stderr (default: when stderr is a terminal).
     catalogue : mapping, optional
         Oils to look ``oil`` names up in (default: the case's ``oils_csv`` or
         the built-in ISO VG catalogue).
-    retry_failed : bool
-        Recompute points stored as errors (default: they count as finished).
-    thermal : {"none", "bulk", "film", "full"} or None
-        Thermal mode (:mod:`oilgap.model.joint_loss`; default ``"none"``, the
-        isothermal model; None: the default, :func:`resolve_grid_thermal`).
-        Under ``bulk``/``full`` the grid may hold ``sea_temp_C``, ``resistance_K_per_W``
-        and not ``oil_temp_C`` (a result: ``oil_temp_op_C``).
+    label : str
+        The progress line's label.
+    on_chunk : callable, optional
+        Called with the rows of each finished chunk.
 
     Returns
     -------
@@ -366,15 +352,18 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None, mode: str = "ev
         Ctrl-C with an ``out_dir``: the points finished so far are stored (a
         ``KeyboardInterrupt`` saying how many).
     """
-    grid, base, thermal, by_default = _checked(grid, case, mode, thermal)
+    s = settings if settings is not None else SweepSettings()
+    o = options if options is not None else RunOptions()
+    mode, progress = s.mode, o.progress
+    grid, base, thermal, by_default = _checked(grid, case, mode, s.thermal)
     catalogue = _catalogue(grid, base, catalogue)
-    workers = _check_workers(workers)
-    scheduler = check_scheduler(scheduler)
-    sizer = ChunkSizer(mode, workers, chunk_seconds, chunk_size)
+    workers = o.workers if o.workers is not None else (os.cpu_count() or 1)
+    scheduler = check_scheduler(o.scheduler)
+    sizer = ChunkSizer(mode, workers, o.chunk_seconds, o.chunk_size)
     keys = point_keys(grid, base, mode, {"thermal": thermal})
     t0 = time.perf_counter()
     with contextlib.ExitStack() as stack:
-        store, done = _open_store(out_dir, mode, retry_failed, stack)
+        store, done = _open_store(out_dir, mode, s.retry_failed, stack)
         todo_keys, todo_rows = _todo(keys, grid, done)
         n = len(todo_rows)
         t_start = time.perf_counter()

@@ -26,6 +26,7 @@ from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError, check_positive
 from oilgap.model.oils import Oil, get_oil
 from oilgap.model.skin_friction import check_friction_ranges
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.model.units import MM_TO_M
 from oilgap.studies.grid.columns import (
     MODES,
@@ -128,7 +129,7 @@ def check_thermal_columns(grid: pd.DataFrame, thermal: str, case: DesignCase) ->
         Naming the column, the mode and what to do instead.
     """
     given = [c for c in grid.columns if grid[c].map(lambda v: not is_missing(v)).any()]
-    if thermal in ("bulk", "full"):
+    if thermal in (ThermalMode.BULK, ThermalMode.FULL):
         if "oil_temp_C" in given:
             raise InputError("oil_temp_C", "a grid column", f"under thermal mode '{thermal}' "
                              "the oil temperature is a result of the heat balance; vary "

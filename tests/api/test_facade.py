@@ -24,6 +24,7 @@ from oilgap.optim.calibration.model_io import PREDICTED_VISCOUS
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.multiobjective import hypervolume_2d
 from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.settings import INLINE, SweepSettings
 from oilgap.studies.synth import SynthConfig, synthesize
 
 THERMAL_CASE = Path(__file__).parents[1] / "golden" / "data" / "seed_thermal.toml"
@@ -159,7 +160,7 @@ def test_loop_report_refuses_an_existing_report(tmp_path):
 def test_sweep_is_run_grid(tmp_path):
     grid = pd.DataFrame({"oil": ["VG22", "VG32", "VG46"], "oil_temp_C": [2.0, 10.0, 20.0]})
     sw = og.sweep(grid, thermal="none", workers=1, progress=False, out=tmp_path / "sw")
-    ref = run_grid(grid, seed_case(), workers=1, progress=False, thermal="none")
+    ref = run_grid(grid, seed_case(), SweepSettings(thermal="none"), INLINE)
     frame, doc = _common(sw, ["mean_power_W", "oil_temp_C"])
     np.testing.assert_array_equal(frame["mean_power_W"], ref["mean_power_W"])
     assert doc["ok"] == 3 and (tmp_path / "sw" / "results.csv").exists()

@@ -30,6 +30,7 @@ from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.heating import compare_heating
 from oilgap.studies import oil_grade, pareto
+from oilgap.studies.settings import OilGradeSettings, ParetoSettings
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 INPUTS = ("my_joint.toml", "mission.csv", "rig_runs.csv", "rig_new_points.csv")
@@ -112,7 +113,7 @@ def test_01_evaluate_and_optimize(tmp_path, monkeypatch):
 
 def test_02_pareto(tmp_path, monkeypatch):
     found = execute("02_pareto_gap_inertia.ipynb", tmp_path, monkeypatch)
-    r = pareto.run(case=case(), points=50)
+    r = pareto.run(case=case(), settings=ParetoSettings(points=50))
     gap = r.gap_front[r.gap_front["status"] == "ok"]
     assert number(found, "gap front points") == len(gap)
     printed(found, "least loss on the gap front", gap["mean_power_W"].min())
@@ -122,8 +123,9 @@ def test_02_pareto(tmp_path, monkeypatch):
 def test_03_oil_grade(tmp_path, monkeypatch):
     found = execute("03_oil_grade_for_a_mission.ipynb", tmp_path, monkeypatch)
     r = oil_grade.run(case=case(), mission=oil_grade.read_mission_csv(EXAMPLES / "mission.csv"),
-                      thermal=None, depth_range_m=(0.0, 4500.0), sea_temp_range_C=(0.0, 30.0),
-                      n_depth=10, n_temp=7)
+                      settings=OilGradeSettings(thermal=None, depth_range_m=(0.0, 4500.0),
+                                                sea_temp_range_C=(0.0, 30.0), n_depth=10,
+                                                n_temp=7))
     assert found["recommended"] == r.recommended
     energy = r.table.set_index("oil").loc[r.recommended, "mission_energy_Wh"]
     printed(found, "mission energy of the recommended grade", energy)

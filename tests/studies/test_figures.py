@@ -136,9 +136,11 @@ def test_the_window_spans_the_last_cycles_of_the_speed():
     t = np.arange(0, 300, 0.2)
     speed = 3000 * np.sin(0.1 * np.pi * t)  # period 20 s
     assert lf.cycle_period_s(t, speed) == pytest.approx(20.0, abs=0.2)
-    c = lf.LoopCurves(("a",), np.zeros(len(t), int), t, True, speed, np.full(len(t), 20.0),
-                      speed**2 / 1e5, np.array(["VG22"] * len(t)), np.full(len(t), 4.0),
-                      {"without_T": speed**2 / 2e5, "with_T": speed**2 / 1e5})
+    c = lf.LoopCurves(run_names=("a",), run_code=np.zeros(len(t), int), time_s=t,
+                      has_time=True, speed_rpm=speed, temp_C=np.full(len(t), 20.0),
+                      measured_W=speed**2 / 1e5, oil=np.array(["VG22"] * len(t)),
+                      roughness_T=np.full(len(t), 4.0),
+                      predictions={"without_T": speed**2 / 2e5, "with_T": speed**2 / 1e5})
     lo, hi = lf.window_of(c, 0, cycles=2)
     assert hi == pytest.approx(299.8) and hi - lo == pytest.approx(40.0, abs=0.5)
     assert lf.cycle_period_s(t, np.full(len(t), 1000.0)) is None  # no cycle: whole run

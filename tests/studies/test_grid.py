@@ -16,9 +16,19 @@ from oilgap.model.evaluation import mean_viscous_power, oil_state
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main
+from oilgap.studies.grid import runner
 from oilgap.studies.grid.evaluate import evaluate_cases
-from oilgap.studies.grid.runner import progress_bar, run_grid
+from oilgap.studies.grid.runner import progress_bar
 from oilgap.studies.grid.schema import apply_params, read_grid_csv, validate_grid
+from oilgap.studies.settings import SweepSettings, split_keywords
+
+
+def run_grid(grid, case=None, *, out_dir=None, catalogue=None, label="sweep", on_chunk=None,
+             **keywords):
+    """The engine from keywords, as the façade builds its records."""
+    return runner.run_grid(grid, case, *split_keywords(keywords, SweepSettings),
+                           out_dir=out_dir, catalogue=catalogue, label=label,
+                           on_chunk=on_chunk)
 
 
 def random_grid(n, seed=0):

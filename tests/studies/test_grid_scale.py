@@ -23,8 +23,17 @@ from oilgap.studies.grid.chunking import WARM_CHAIN, ChunkSizer
 from oilgap.studies.grid.columns import OPTIMIZE_RESULTS
 from oilgap.studies.grid.evaluate import evaluate_cases
 from oilgap.studies.grid.optimize import optimize_chunk
-from oilgap.studies.grid.runner import SweepInterrupted, run_grid
+from oilgap.studies.grid.runner import SweepInterrupted
 from oilgap.studies.grid.schema import read_grid, read_grid_csv
+from oilgap.studies.settings import SweepSettings, split_keywords
+
+
+def run_grid(grid, case=None, *, out_dir=None, catalogue=None, label="sweep", on_chunk=None,
+             **keywords):
+    """The engine from keywords, as the façade builds its records."""
+    return runner.run_grid(grid, case, *split_keywords(keywords, SweepSettings),
+                           out_dir=out_dir, catalogue=catalogue, label=label,
+                           on_chunk=on_chunk)
 
 EVAL = pd.DataFrame({"oil_temp_C": np.repeat([4.0, 20.0, 35.0], 4),
                      "gap_mm": np.tile([0.4, 0.5, 0.6, 0.7], 3)})

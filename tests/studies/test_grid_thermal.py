@@ -20,10 +20,19 @@ from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_regions, region_mean_power
 from oilgap.model.units import celsius_to_kelvin
 from oilgap.studies.cli import main
+from oilgap.studies.grid import runner
 from oilgap.studies.grid.evaluate import evaluate_cases
-from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import apply_params, read_grid_csv
 from oilgap.studies.io.case_write import write_case_toml
+from oilgap.studies.settings import SweepSettings, split_keywords
+
+
+def run_grid(grid, case=None, *, out_dir=None, catalogue=None, label="sweep", on_chunk=None,
+             **keywords):
+    """The engine from keywords, as the façade builds its records."""
+    return runner.run_grid(grid, case, *split_keywords(keywords, SweepSettings),
+                           out_dir=out_dir, catalogue=catalogue, label=label,
+                           on_chunk=on_chunk)
 
 SEA, R, C, Q = 2.0, 0.5, 5e4, 3.0
 
@@ -92,8 +101,11 @@ def test_none_is_the_isothermal_model_exactly():
     rows = pd.DataFrame({"oil": ["VG22", "VG32", "VG15"], "oil_temp_C": [2.0, 10.0, None],
                          "depth_m": [3000.0, 1000.0, None], "gap_mm": [1.0, 0.8, 1.2],
                          "T": [4.0, 2.0, None]})
-    res = run_grid(rows, workers=1)  # the Python default is none
+    res = run_grid(rows, workers=1, thermal="none")
     assert res.attrs["thermal_mode"] == "none" and not res.attrs["thermal_default"]
+    default = run_grid(rows, workers=1)  # one default with the CLI: none on the seed joint
+    assert default.attrs["thermal_mode"] == "none" and default.attrs["thermal_default"]
+    assert default["mean_power_W"].equals(res["mean_power_W"])
     for row, got in zip(rows.to_dict("records"), res.to_dict("records"), strict=True):
         case = apply_params(seed_case(), row)
         assert got["mean_power_W"] == mean_viscous_power(case)

@@ -11,8 +11,15 @@ from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
+from oilgap.studies import oil_grade
 from oilgap.studies.cli import main
-from oilgap.studies.oil_grade import SEED_MISSION, parse_mission, run
+from oilgap.studies.oil_grade import SEED_MISSION, parse_mission
+from oilgap.studies.settings import OilGradeSettings, split_keywords
+
+
+def run(out_dir=None, case=None, mission=None, **keywords):
+    """The study from keywords, as the façade builds its records."""
+    return oil_grade.run(out_dir, case, mission, *split_keywords(keywords, OilGradeSettings))
 
 GRADES = ("VG10", "VG15", "VG22", "VG32", "VG46")
 SMALL = dict(grades=GRADES, n_depth=3, n_temp=3, workers=1)

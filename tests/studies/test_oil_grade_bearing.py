@@ -38,8 +38,14 @@ from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.case import OperatingPoint, ThermalSpec
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import operating_temperature
+from oilgap.studies import oil_grade
 from oilgap.studies.grid.evaluate import evaluate_cases
-from oilgap.studies.oil_grade import run
+from oilgap.studies.settings import OilGradeSettings, split_keywords
+
+
+def run(out_dir=None, case=None, mission=None, **keywords):
+    """The study from keywords, as the façade builds its records."""
+    return oil_grade.run(out_dir, case, mission, *split_keywords(keywords, OilGradeSettings))
 
 OILS = "oil,nu40_cSt,nu100_cSt,density_kg_m3\nDENSE600,600,45,1900\nLIGHT1200,1200,60,850\n"
 STUDY = dict(grades=["DENSE600", "LIGHT1200"], depth_range_m=(0.0, 0.0),

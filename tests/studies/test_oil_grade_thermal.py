@@ -13,9 +13,16 @@ from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power, operating_temperature
 from oilgap.model.oils import get_oil
+from oilgap.studies import oil_grade
 from oilgap.studies.cli import main
 from oilgap.studies.io.case_write import write_case_toml
-from oilgap.studies.oil_grade import SEED_MISSION, run
+from oilgap.studies.oil_grade import SEED_MISSION
+from oilgap.studies.settings import OilGradeSettings, split_keywords
+
+
+def run(out_dir=None, case=None, mission=None, **keywords):
+    """The study from keywords, as the façade builds its records."""
+    return oil_grade.run(out_dir, case, mission, *split_keywords(keywords, OilGradeSettings))
 
 GRADES = ("VG15", "VG22", "VG32")
 SEA, R = 2.0, 0.5

@@ -86,7 +86,7 @@ def test_couette_power_is_the_margules_torque():
     # by hand: Cm = 8 (1.03937)^2 / (2.03937 * 2.54) = 1.66839; P = 0.5 pi Cm rho w^3 R^4 L
     assert p == pytest.approx(0.5 * math.pi * 1.66839 * 900 * 1e6 * R**4 * L, rel=1e-5)
     # the groove factor multiplies: T^gamma = 4^0.5 = 2
-    p4, _ = laws.annulus_power(w, nu, rho, R, d, L, roughness_T=4.0, gamma=0.5)
+    p4, _ = laws.annulus_power(w, nu, rho, R, d, L, roughness=(4.0, 0.5))
     assert p4 == pytest.approx(2 * p, rel=1e-12)
     # x = 0.227 (region 2): Eq. 6 lies above Couette at Re = 10, so the floor is not active
     x = 5 / 22
@@ -254,7 +254,7 @@ def test_oil_runs_follow_eq6_and_oil_free_runs_the_baseline():
             continue
         nu, rho = laws.fluid_state(oil, tr["temp_oil_C"][i])
         r1, r2 = cfg.geometry.region1, cfg.geometry.region2
-        p1, _ = laws.annulus_power(w, nu, rho, r1.radius_m, gap, r1.length_m, T, 0.5)
+        p1, _ = laws.annulus_power(w, nu, rho, r1.radius_m, gap, r1.length_m, roughness=(T, 0.5))
         p2, _ = laws.annulus_power(w, nu, rho, r2.radius_m, r2.gap_m, r2.length_m)
         assert np.allclose(tr["viscous_W"][i], p1 + p2, rtol=1e-12), name
 
@@ -287,7 +287,8 @@ def test_shear_thinning_follows_carreau_in_laminar_flow():
     # the temperatures differ slightly (less heat), so compare at the thinned run's state:
     # laminar flow at the Couette floor, P proportional to mu, so P_thin / P = Carreau ratio
     nu, rho = laws.fluid_state("VG680", thin["temp_oil_C"][0])
-    p, re = laws.annulus_power(thin["omega"][0], nu, rho, 0.0254, 0.001, 0.01476, 2.0, 0.5)
+    p, re = laws.annulus_power(thin["omega"][0], nu, rho, 0.0254, 0.001, 0.01476,
+                               roughness=(2.0, 0.5))
     assert np.all(re[moving] < 64)
     assert np.allclose(thin["measured_W"][0][moving] / p[moving], ratio[moving], rtol=1e-12)
     assert np.min(ratio[moving]) == pytest.approx((1 + (lam * W0 * 25.4) ** 2) ** -0.2)  # 0.906

@@ -27,6 +27,7 @@ from oilgap.studies.pareto import (
     seed_points,
 )
 from oilgap.studies.reporting import new_figure
+from oilgap.studies.settings import INLINE, ParetoSettings, SweepSettings
 
 
 @pytest.fixture(scope="module")
@@ -93,8 +94,8 @@ def test_numpy_problem_matches_the_nlp(fronts):
 
 
 def test_infeasible_points_are_rows_with_their_error():
-    res = run_grid(pd.DataFrame({"inertia_max_ratio": [1.05, 0.2]}), mode="optimize",
-                   workers=1, progress=False)
+    res = run_grid(pd.DataFrame({"inertia_max_ratio": [1.05, 0.2]}), None,
+                   SweepSettings(mode="optimize"), INLINE)
     assert list(res["status"]) == ["ok", "error"]
     assert "InfeasibleError" in res["error"].iloc[1]
 
@@ -105,7 +106,7 @@ def test_too_few_points_refused():
 
 
 def test_outputs_written(tmp_path):
-    r = run(tmp_path, points=50)
+    r = run(tmp_path, settings=ParetoSettings(points=50))
     for f in ("pareto_gap.csv", "pareto_inertia.csv", "pareto_gap.png", "pareto_inertia.png",
               "summary.md"):
         assert (tmp_path / f).stat().st_size > 0
@@ -139,7 +140,7 @@ def test_pareto_takes_the_thermal_modes(tmp_path, capsys):
     assert "Thermal mode: film (" in md and "Film band of seed (T = 4)" in md
     prov = json.loads((out / "provenance.json").read_text())
     assert (prov["thermal_mode"], prov["thermal_mode_default"]) == ("film", False)
-    r = run(None, points=50, thermal="film")
+    r = run(None, settings=ParetoSettings(points=50, thermal="film"))
     fig, ax = new_figure(7.8, 5.0)
     draw_gap_front(r, ax)
     assert ax.get_title().endswith("thermal film)")

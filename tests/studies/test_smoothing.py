@@ -15,6 +15,7 @@ from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
 from oilgap.studies.cli import main
+from oilgap.studies.settings import SmoothingSettings
 from oilgap.studies.smoothing import loss_vs_T, plateau_table, run
 from oilgap.studies.smoothing_fit import (
     T_GROOVED,
@@ -129,7 +130,7 @@ def test_loss_vs_T_uses_the_model_and_refuses_T_below_1():
 
 
 def test_study_table_and_outputs(tmp_path):
-    r = run(tmp_path, sensitivity_K_W=(), T_values=np.linspace(1, 5, 9))
+    r = run(tmp_path, settings=SmoothingSettings(sensitivity_K_W=(), T_values=np.linspace(1, 5, 9)))
     rows = r.table[r.table["group"] > 0]
     for _, row in rows.iterrows():
         before = mean_viscous_power(rig(row["oil"], False, r.fit.gamma,

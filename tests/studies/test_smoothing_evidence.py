@@ -77,10 +77,11 @@ def test_cli_flag_and_seed_only():
     from oilgap.model.errors import InputError
     from oilgap.studies import smoothing
     from oilgap.studies.cli import build_parser
+    from oilgap.studies.settings import SmoothingSettings
 
     args = build_parser().parse_args(["study", "smoothing", "--film-evidence"])
     assert args.film_evidence is True
     assert build_parser().parse_args(["study", "smoothing"]).film_evidence is False
     other = rig_case("VG150", 3.0, 0.5)  # not the seed joint: no Table 4
     with pytest.raises(InputError, match="film_evidence"):
-        smoothing.run(case=other, film_evidence=True)
+        smoothing.run(case=other, settings=SmoothingSettings(film_evidence=True))

@@ -15,6 +15,7 @@ from oilgap.model.io.defaults import case_defaults, defaults_block, defaults_lin
 from oilgap.optim.design import DesignProblem
 from oilgap.studies import oil_grade, pareto, smoothing
 from oilgap.studies.cli import main
+from oilgap.studies.settings import OilGradeSettings, ParetoSettings, SmoothingSettings
 
 matplotlib.use("Agg")
 
@@ -72,7 +73,7 @@ def test_reader_records_every_default(case):
 
 def test_pareto_on_a_user_case_shows_that_case_only(case, tmp_path):
     c, _ = case
-    r = pareto.run(tmp_path / "p", c, points=50)
+    r = pareto.run(tmp_path / "p", c, ParetoSettings(points=50))
     assert list(r.seeds["design"]) == ["this design (my joint)"]
     assert not r.is_seed
     # the reference point is this design's own power and the case's gap_max
@@ -88,8 +89,8 @@ def test_pareto_on_a_user_case_shows_that_case_only(case, tmp_path):
 
 def test_oil_grade_default_mission_comes_from_the_case(case, tmp_path):
     c, _ = case
-    r = oil_grade.run(tmp_path / "og", c, grades=("VG15", "VG32"), n_depth=2, n_temp=2,
-                      thermal="none")
+    r = oil_grade.run(tmp_path / "og", c, settings=OilGradeSettings(
+        grades=("VG15", "VG32"), n_depth=2, n_temp=2, thermal="none"))
     assert [(m.depth_m, m.oil_temp_C, m.fraction) for m in r.mission] == [(4000.0, 4.0, 1.0)]
     assert "case's [operating]" in r.mission_source and not r.is_seed
     doc = json.loads((tmp_path / "og" / "oil_grade.json").read_text())
@@ -134,4 +135,4 @@ def test_smoothing_on_a_case_matches_evaluate(case, tmp_path, capsys):
     out = capsys.readouterr().out
     assert "filled to T = 2" in out and "seed rig" in out and "gamma       0.566" in out
     with pytest.raises(Exception, match="seed rig"):
-        smoothing.run(None, c, method="shared")
+        smoothing.run(None, c, SmoothingSettings(method="shared"))

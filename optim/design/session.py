@@ -99,7 +99,7 @@ class Buffered:
         return self._buf.stats()
 
 
-@dataclass
+@dataclass(kw_only=True)
 class SolveOutput:
     """What one IPOPT call returned (the ordinary call's, as numpy arrays).
 
@@ -233,11 +233,12 @@ class SolverSession:
         raise_if_interrupted()  # CasADi turns Ctrl-C into a failed solve: re-raise it
         dt = time.perf_counter() - t0
         stats = solver.stats()
-        return SolveOutput(str(stats.get("return_status", "unknown")),
-                           int(stats.get("iter_count", -1)), dt,
-                           np.asarray(sol["x"]).ravel(), float(sol["f"]),
-                           np.asarray(sol["g"]).ravel(), np.asarray(sol["lam_x"]).ravel(),
-                           np.asarray(sol["lam_g"]).ravel())
+        return SolveOutput(status=str(stats.get("return_status", "unknown")),
+                           iterations=int(stats.get("iter_count", -1)), time_s=dt,
+                           x=np.asarray(sol["x"]).ravel(), f=float(sol["f"]),
+                           g=np.asarray(sol["g"]).ravel(),
+                           lam_x=np.asarray(sol["lam_x"]).ravel(),
+                           lam_g=np.asarray(sol["lam_g"]).ravel())
 
     def buffered(self, warm: bool = False) -> Buffered:
         """A new buffered caller of the solver (one per thread: buffers are not shared).

@@ -20,8 +20,10 @@ functions: the loss rises with viscosity at fixed b, and with speed (Na ~ U^2, P
 The torque Phi sqrt(Na) does NOT rise with speed beyond Na = 18.2 (isothermal walls), but
 the loss does. Through the temperature the oil's b changes too (P ~ k Na Phi(Na)/(b U^2)):
 where b rises fast enough as the oil cools the film-heated loss can fall with falling
-temperature; with an insulated rotor this happens on the seed joint below -14 degC for
-VG10 (model.thermal's module docstring): the counterexample is written out below.
+temperature. With an insulated rotor this happens on the seed joint for VG10 between
+-15.5 and -14 degC and for VG1000 below -19.5 degC (model.thermal's module docstring:
+"below -14 degC (VG10)"): the counterexamples are written out below. None of these
+properties found a bug in the code.
 """
 
 import dataclasses
@@ -136,13 +138,12 @@ def test_balance_root_is_the_one_a_dense_scan_finds(a, b, c, r, sea, q):
     t, rising, falling = scan_roots(power, base, r, top + 1.0)
     # P falls with T, so g rises: one sign change, no other, and the solver's root in it
     assert len(rising) == 1 and len(falling) == 0
-    cell = t[1] - t[0]
     i = rising[0]
-    assert t[i] - 1e-8 - cell <= t_root <= t[i + 1] + 1e-8 + cell
+    assert t[i] - 1e-8 <= t_root <= t[i + 1] + 1e-8
     assert abs(t_root - base - r * p_root) < 1e-8
 
 
-@settings(max_examples=6, deadline=None)
+@settings(max_examples=12, deadline=None)
 @given(mode=st.sampled_from(("bulk", "full")), walls=st.sampled_from(WALLS),
        r=st.floats(0.05, 3.0), sea=st.floats(-2.0, 25.0), q=st.floats(0.0, 30.0),
        oil=st.sampled_from(sorted(builtin_oils())))

@@ -33,6 +33,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.case import ThermalSpec
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.film_heating import film_factor
@@ -254,10 +255,16 @@ class ScaledOil:
         return getattr(self._oil, name)
 
 
-def mode_case(mode, walls, oil="VG22", strength=None):
-    """The seed joint with an oil grade; with ``[thermal]`` when ``walls`` is given (a
-    name, or a wall floating w in [0, 1]) or the mode needs the balance."""
-    case = dataclasses.replace(SEED, oil=builtin_oils()[oil])
+BEARINGS = (None, bearing_spec_from({"designation": "6809"}),
+            bearing_spec_from({"designation": "6809", "model": "palmgren", "f0": 2.0}))
+"""No rolling bearing, the SKF model and Palmgren's for a 6809 (tests/model/bearing)."""
+
+
+def mode_case(mode, walls, oil="VG22", strength=None, bearing=None):
+    """The seed joint with an oil grade (and a rolling bearing); with ``[thermal]`` when
+    ``walls`` is given (a name, or a wall floating w in [0, 1]) or the mode needs the
+    balance."""
+    case = dataclasses.replace(SEED, oil=builtin_oils()[oil], bearing=bearing)
     if walls is None and mode not in ("bulk", "full"):
         return case
     if walls is None or isinstance(walls, str):
@@ -269,16 +276,18 @@ temps_st = st.lists(st.floats(-2.0, 80.0), min_size=1, max_size=8)
 walls_st = st.one_of(st.sampled_from(WALLS), unit_st)
 strength_st = st.one_of(st.none(), unit_st)
 oil_st = st.sampled_from(sorted(builtin_oils()))
+bearing_st = st.sampled_from(BEARINGS)
 
 
 @settings(max_examples=40, deadline=None)
 @given(mode=st.sampled_from(MODES), walls=walls_st, strength=strength_st, oil=oil_st,
-       k=st.floats(1.0 + 1e-6, 5.0), temps=temps_st)
-def test_joint_loss_rises_with_viscosity_at_fixed_b(mode, walls, strength, oil, k, temps):
+       k=st.floats(1.0 + 1e-6, 5.0), temps=temps_st, bearing=bearing_st)
+def test_joint_loss_rises_with_viscosity_at_fixed_b(mode, walls, strength, oil, k, temps,
+                                                    bearing):
     # the oil's viscosity times k at every T, its b unchanged: P_iso rises, and under the
     # film modes Na_eff ~ mu so P ~ Na Phi(Na) rises (module docstring); the Taylor fade
     # applies more of the correction as the oil thickens, and still the loss rises
-    case = mode_case(mode, walls, oil, strength)
+    case = mode_case(mode, walls, oil, strength, bearing)
     thick = dataclasses.replace(case, oil=ScaledOil(case.oil, k))
     t = np.asarray(temps)
     assert np.all(joint_mean_power(thick, t, mode) > joint_mean_power(case, t, mode))
@@ -297,15 +306,16 @@ def test_balanced_loss_and_temperature_rise_with_viscosity(mode, walls, oil, k):
 
 @settings(max_examples=40, deadline=None)
 @given(mode=st.sampled_from(MODES), walls=st.sampled_from(WALLS), strength=strength_st,
-       oil=oil_st, t_pair=st.tuples(st.floats(-30.0, 150.0), st.floats(0.01, 40.0)))
-def test_joint_loss_rises_as_the_oil_cools(mode, walls, strength, oil, t_pair):
+       oil=oil_st, t_pair=st.tuples(st.floats(-30.0, 150.0), st.floats(0.01, 40.0)),
+       bearing=bearing_st)
+def test_joint_loss_rises_as_the_oil_cools(mode, walls, strength, oil, t_pair, bearing):
     # none/bulk: P rises with mu. film/full: on the seed joint for every grade from
     # -30 degC up with isothermal walls, from -2 degC up with an insulated rotor (not
     # below: see the counterexample)
     cold = t_pair[0]
     if walls == "adiabatic-rotor" and mode in ("film", "full"):
         cold = max(cold, -2.0)
-    case = mode_case(mode, walls, oil, strength)
+    case = mode_case(mode, walls, oil, strength, bearing)
     warm = cold + t_pair[1]
     assert joint_mean_power(case, cold, mode) > joint_mean_power(case, warm, mode)
 
@@ -338,10 +348,11 @@ def with_peak(case, rpm):
 @settings(max_examples=30, deadline=None)
 @given(mode=st.sampled_from(MODES), walls=walls_st, strength=strength_st, oil=oil_st,
        rpm=st.floats(50.0, 20_000.0), f=st.floats(1.01, 2.0), temp=st.floats(-2.0, 80.0),
-       smooth=st.booleans())
-def test_joint_loss_rises_with_peak_speed(mode, walls, strength, oil, rpm, f, temp, smooth):
+       smooth=st.booleans(), bearing=bearing_st)
+def test_joint_loss_rises_with_peak_speed(mode, walls, strength, oil, rpm, f, temp, smooth,
+                                          bearing):
     # P_iso ~ C_m Re^2 omega rises with speed; under the film modes P ~ U^2 Phi(Na), Na ~ U^2
-    case = mode_case(mode, walls, oil, strength)
+    case = mode_case(mode, walls, oil, strength, bearing)
     if smooth:
         case = dataclasses.replace(case, friction=case.friction.smooth())
     slow, fast = with_peak(case, rpm), with_peak(case, f * rpm)

@@ -51,13 +51,13 @@ from oilgap.model.units import celsius_to_kelvin
 
 from .smoothing_fit import (
     MAX_RESISTANCE_K_W,
-    _stacked,
     cases_power,
     fit_smoothing,
     load_table4,
     measured_runs,
     power_function,
     rig_case,
+    stacked_power_function,
 )
 
 FILM_STRENGTH_GRID = tuple(round(0.1 * i, 1) for i in range(11))
@@ -79,36 +79,23 @@ def film_power_function(cases: list[DesignCase], strength: float,
     """
     if strength == 0.0:
         return power_function(cases, "none")
-    groups: dict[tuple, list[int]] = {}
-    for i, c in enumerate(cases):
-        groups.setdefault((c.oil, c.friction, id(c.duty_cycle), c.thermal), []).append(i)
-    stacks: dict[int, list] = {}
 
-    def power_at(temps_C) -> np.ndarray:
-        t = np.asarray(temps_C, dtype=float).reshape(-1, len(cases))
-        k = t.shape[0]
-        if k not in stacks:
-            stacks[k] = [(idx, _stacked(cases, idx, k),
-                          np.tile([cases[i].operating.depth_m for i in idx], k))
-                         for idx in groups.values()]
-        out = np.empty_like(t)
-        for idx, regions, depth in stacks[k]:
-            c = cases[idx[0]]
-            film = replace(case_film(c), strength=float(strength))
-            if walls is not None:
-                film = (replace(film, walls=walls, wall_floating=None) if isinstance(walls, str)
-                        else replace(film, wall_floating=float(walls)))
-            t_k = celsius_to_kelvin(t[:, idx].ravel())
-            p = seawater_gauge_pressure(depth)
-            nu, _, rho = c.oil.properties(t_k, p)
-            b = c.oil.temperature_slope(t_k, p)
-            nu, rho, b = (np.asarray(v, dtype=float)[..., None] for v in (nu, rho, b))
-            nodes, weights = c.duty_cycle.speed_distribution()
-            total = sum(region_mean_power(r, nodes, weights, nu, rho, c.friction, film, b)
-                        for r in regions)
-            out[:, idx] = np.asarray(total, dtype=float).reshape(k, len(idx))
-        return out.ravel()
-    return power_at
+    def evaluate(c, temps_C, depth, regions):
+        film = replace(case_film(c), strength=float(strength))
+        if walls is not None:
+            film = (replace(film, walls=walls, wall_floating=None) if isinstance(walls, str)
+                    else replace(film, wall_floating=float(walls)))
+        t_k = celsius_to_kelvin(temps_C)
+        p = seawater_gauge_pressure(depth)
+        nu, _, rho = c.oil.properties(t_k, p)
+        b = c.oil.temperature_slope(t_k, p)
+        nu, rho, b = (np.asarray(v, dtype=float)[..., None] for v in (nu, rho, b))
+        nodes, weights = c.duty_cycle.speed_distribution()
+        return sum(region_mean_power(r, nodes, weights, nu, rho, c.friction, film, b)
+                   for r in regions)
+
+    return stacked_power_function(
+        cases, evaluate, key=lambda c: (c.oil, c.friction, id(c.duty_cycle), c.thermal))
 
 
 def dry_powers(table4: pd.DataFrame) -> np.ndarray:

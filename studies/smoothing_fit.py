@@ -158,15 +158,16 @@ def _stacked(cases: list[DesignCase], idx: list[int], k: int) -> list[Region]:
             for r in range(len(geos[0]))]
 
 
-def power_function(cases: list[DesignCase], mode: str = "none"):
-    """``power_at(temps)``: mean viscous power [W] of the cases at temperatures [degC]
-    (k per case, case fastest), :func:`~oilgap.model.joint_loss.joint_mean_power` in
-    ``mode`` (``none`` or ``film``). Cases sharing an oil, a friction law, a duty cycle
-    and a heat path go in one call on their stacked regions (built once per k)."""
+def stacked_power_function(cases: list[DesignCase], evaluate, key=None):
+    """``power_at(temps)`` over the cases (k temperatures per case, case fastest): the
+    cases that share ``key(case)`` go in one ``evaluate(case, temps_C, depth_m, regions)``
+    call on their stacked regions (built once per k). The skeleton of
+    :func:`power_function` and the film evidence's strength-scaled power."""
+    key = key or (lambda c: (c.oil, c.friction, id(c.duty_cycle), c.thermal,
+                             c.region2 is None))
     groups: dict[tuple, list[int]] = {}
     for i, c in enumerate(cases):
-        key = (c.oil, c.friction, id(c.duty_cycle), c.thermal, c.region2 is None)
-        groups.setdefault(key, []).append(i)
+        groups.setdefault(key(c), []).append(i)
     stacks: dict[int, list] = {}
 
     def power_at(temps_C) -> np.ndarray:
@@ -178,10 +179,19 @@ def power_function(cases: list[DesignCase], mode: str = "none"):
                          for idx in groups.values()]
         out = np.empty_like(t)
         for idx, regions, depth in stacks[k]:
-            p = joint_mean_power(cases[idx[0]], t[:, idx].ravel(), mode, depth, regions)
+            p = evaluate(cases[idx[0]], t[:, idx].ravel(), depth, regions)
             out[:, idx] = np.asarray(p, dtype=float).reshape(k, len(idx))
         return out.ravel()
     return power_at
+
+
+def power_function(cases: list[DesignCase], mode: str = "none"):
+    """``power_at(temps)``: mean viscous power [W] of the cases at temperatures [degC]
+    (k per case, case fastest), :func:`~oilgap.model.joint_loss.joint_mean_power` in
+    ``mode`` (``none`` or ``film``). Cases sharing an oil, a friction law, a duty cycle
+    and a heat path go in one call on their stacked regions (built once per k)."""
+    return stacked_power_function(
+        cases, lambda c, t, depth, regions: joint_mean_power(c, t, mode, depth, regions))
 
 
 def cases_power(cases: list[DesignCase], temps_C: np.ndarray, mode: str = "none"

@@ -34,9 +34,6 @@ ALLOWED_PARAMETERS: set[str] = {
 # TODO(issue 19): 23 constructor calls still pass more than 6 positional
 # arguments, as {"Callee": count}; the same three lanes own them.
 ALLOWED_CALLS: dict[str, int] = {
-    "Effect": 10,  # model/effects.py
-    "EffectContext": 1,  # model/effects.py
-    "RegionState": 1,  # model/effects.py
     "BaselineFit": 2,  # optim/calibration/baseline.py, model_io.py
     "cls": 2,  # optim/calibration/model_io.py (classmethod constructors)
     "EffectResult": 1,  # optim/calibration/results.py

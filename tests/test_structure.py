@@ -20,12 +20,7 @@ PACKAGES = ("model", "optim", "studies", "api")
 MAX_PARAMETERS = 8
 MAX_POSITIONAL = 6
 
-# TODO(issue 19): 5 public functions still take more than 8 parameters. Left to the lanes
-# that own them: optim/design (the solver path being rewritten), optim/calibration (the
-# film effect being edited there) and model/effects.py (moving to model/effects/).
-ALLOWED_PARAMETERS: set[str] = {
-    "effect_context",  # model/effects.py
-}
+ALLOWED_PARAMETERS: set[str] = set()
 
 ALLOWED_CALLS: dict[str, int] = {}
 

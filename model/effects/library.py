@@ -92,8 +92,9 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
     from ..oil_state import OilState
 
 __all__ = [
-    "RegionState", "EffectContext", "region_states", "effect_context", "cross_region_ratios",
-    "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect", "FREE_DISC_TRANSITION_RE",
+    "RegionState", "EffectContext", "Precomputed", "region_states", "effect_context",
+    "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect",
+    "FREE_DISC_TRANSITION_RE",
     "PALMGREN_MIN_NU_N", "CRITICAL_TAYLOR_NUMBER", "disc_reynolds",
     "free_disc_moment_coefficient", "end_face_disc_power", "enclosed_disc_couette_power",
     "palmgren_viscous_moment", "ball_churning_power", "coulomb_friction_power",
@@ -229,9 +230,26 @@ def region_states(geometry: JointGeometry, omega_rad_s, nu_m2_s, powers_W
     return tuple(out)
 
 
+@dataclass(frozen=True, kw_only=True)
+class Precomputed:
+    """What the caller of :func:`effect_context` already has (None: computed, or zero).
+
+    Attributes
+    ----------
+    powers_W : sequence of arrays or None
+        Viscous power of each region [W].
+    dtemp_dt_K_s, dpower_dt_W_s, dpower_dtemp_W_K : array or None
+        Oil temperature rate [K/s], viscous power's time and temperature slopes [W/s], [W/K].
+    """
+
+    powers_W: list | tuple | None = None
+    dtemp_dt_K_s: np.ndarray | None = None
+    dpower_dt_W_s: np.ndarray | None = None
+    dpower_dtemp_W_K: np.ndarray | None = None
+
+
 def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2_s,
-                   density_kg_m3, law: FrictionLaw | None, *, powers_W=None,
-                   dtemp_dt_K_s=None, dpower_dt_W_s=None, dpower_dtemp_W_K=None,
+                   density_kg_m3, law: FrictionLaw | None, *, given: Precomputed | None = None,
                    oil: OilState | None = None) -> EffectContext:
     """The one builder of an :class:`EffectContext` (rig simulator and calibration alike).
 
@@ -249,15 +267,9 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
     density_kg_m3 : float or array
         Oil density per sample [kg/m^3].
     law : FrictionLaw or None
-        Friction law of the clearance model (used unless ``powers_W`` is given).
-    powers_W : sequence of arrays, optional
-        Region powers already computed [W].
-    dtemp_dt_K_s : array, optional
-        Rate of change of the oil temperature [K/s] (zero if not given).
-    dpower_dt_W_s : array, optional
-        Time derivative of the viscous power [W/s] (zero if not given).
-    dpower_dtemp_W_K : array, optional
-        Temperature derivative of the viscous power [W/K] (zero if not given).
+        Friction law of the clearance model (used unless ``given.powers_W`` is given).
+    given : Precomputed, optional
+        Region powers [W] and derivatives along the record already computed.
     oil : OilState, optional
         The oil state ``nu_m2_s`` and ``density_kg_m3`` come from (kept for the record).
 
@@ -266,6 +278,8 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
     EffectContext
         All per-sample arrays broadcast to the samples' shape (SI).
     """
+    g = Precomputed() if given is None else given
+    powers_W = g.powers_W
     ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
     omega = np.asarray(omega_rad_s, dtype=float) * ones
     if powers_W is None:
@@ -275,9 +289,9 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
     return EffectContext(
         omega_rad_s=omega, domega_dt_rad_s2=np.asarray(domega_dt_rad_s2, dtype=float) * ones,
         nu_m2_s=nu_m2_s, density_kg_m3=density_kg_m3,
-        dtemp_dt_K_s=zeros if dtemp_dt_K_s is None else dtemp_dt_K_s,
-        dpower_dt_W_s=zeros if dpower_dt_W_s is None else dpower_dt_W_s,
-        dpower_dtemp_W_K=zeros if dpower_dtemp_W_K is None else dpower_dtemp_W_K,
+        dtemp_dt_K_s=zeros if g.dtemp_dt_K_s is None else g.dtemp_dt_K_s,
+        dpower_dt_W_s=zeros if g.dpower_dt_W_s is None else g.dpower_dt_W_s,
+        dpower_dtemp_W_K=zeros if g.dpower_dtemp_W_K is None else g.dpower_dtemp_W_K,
         regions=region_states(geometry, omega, nu_m2_s, powers_W),
         disc_radii_m=geometry.disc_radii_m,
         bearing_pitch_diameter_m=geometry.bearing_pitch_diameter_m,

@@ -174,7 +174,7 @@ def test_library_module_re_exports_the_laws():
                  "end_face_disc_power", "CRITICAL_TAYLOR_NUMBER"):
         assert getattr(fx, name) is getattr(effect_laws, name)
     assert set(effect_laws.__dict__) >= {n for n in fx.__all__ if n not in (
-        "RegionState", "EffectContext", "region_states", "effect_context",
+        "RegionState", "EffectContext", "Precomputed", "region_states", "effect_context",
         "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect",
         "film_temperature")  # the film's fixed point on a power callable: its own here
         and n not in effect_plausibility.__dict__}  # the plausible ranges: their own module

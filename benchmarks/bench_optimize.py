@@ -67,15 +67,15 @@ def duty_cycle_section(prob: DesignProblem, x_opt: np.ndarray) -> None:
           f"{'rel. error':>12}")
     for label, x in (("seed", prob.x_case_m), ("optimal", x_opt)):
         for law_name, law in (("exact Eq. 6", case.friction), ("smooth (NLP)", prob.law)):
-            plain = float(region1_mean_power(*x, nu, rho, samples,
+            plain = float(region1_mean_power(x, nu, rho, samples,
                                              np.full(samples.size, 1.0 / samples.size), law))
-            red = float(region1_mean_power(*x, nu, rho, nodes, weights, law))
+            red = float(region1_mean_power(x, nu, rho, nodes, weights, law))
             print(f"   {label:<10}{law_name:<16}{plain:>20.12f}{red:>16.12f}"
                   f"{abs(red - plain) / plain:>12.1e}")
-    t_plain, _ = timed(lambda: [region1_mean_power(*prob.x_case_m, nu, rho, samples,
+    t_plain, _ = timed(lambda: [region1_mean_power(prob.x_case_m, nu, rho, samples,
                                                    np.ones(samples.size) / samples.size,
                                                    prob.law) for _ in range(200)])
-    t_red, _ = timed(lambda: [region1_mean_power(*prob.x_case_m, nu, rho, prob.nodes_rad_s,
+    t_red, _ = timed(lambda: [region1_mean_power(prob.x_case_m, nu, rho, prob.nodes_rad_s,
                                                  prob.weights, prob.law) for _ in range(200)])
     print(f"   numpy objective: {t_plain / 200 * 1e6:.0f} us with 1500 samples, "
           f"{t_red / 200 * 1e6:.0f} us with the nodes")

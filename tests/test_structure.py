@@ -20,33 +20,9 @@ PACKAGES = ("model", "optim", "studies", "api")
 MAX_PARAMETERS = 8
 MAX_POSITIONAL = 6
 
-# TODO(issue 19): 5 public functions still take more than 8 parameters. Left to the lanes
-# that own them: optim/design (the solver path being rewritten), optim/calibration (the
-# film effect being edited there) and model/effects.py (moving to model/effects/).
-ALLOWED_PARAMETERS: set[str] = {
-    "effect_context",  # model/effects.py
-    "select_effects",  # optim/calibration/selection.py
-    "stepwise_selection",  # optim/calibration/selection.py
-    "region1_mean_power",  # optim/design/objective.py
-    "resolve_parameters",  # optim/design/parameters.py
-}
+ALLOWED_PARAMETERS: set[str] = set()
 
-# TODO(issue 19): 23 constructor calls still pass more than 6 positional
-# arguments, as {"Callee": count}; the same three lanes own them.
-ALLOWED_CALLS: dict[str, int] = {
-    "Effect": 10,  # model/effects.py
-    "EffectContext": 1,  # model/effects.py
-    "RegionState": 1,  # model/effects.py
-    "BaselineFit": 2,  # optim/calibration/baseline.py, model_io.py
-    "cls": 2,  # optim/calibration/model_io.py (classmethod constructors)
-    "EffectResult": 1,  # optim/calibration/results.py
-    "EffectSearch": 1,  # optim/calibration/search.py
-    "DesignParameters": 1,  # optim/design/parameters.py
-    "DesignObjective": 1,  # optim/design/problem.py
-    "DesignResult": 1,  # optim/design/problem.py
-    "DesignPoint": 1,  # optim/design/results.py
-    "ThermalDesignResult": 1,  # optim/design/thermal.py
-}
+ALLOWED_CALLS: dict[str, int] = {}
 
 
 def _files():

@@ -92,8 +92,9 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
     from ..oil_state import OilState
 
 __all__ = [
-    "RegionState", "EffectContext", "region_states", "effect_context", "cross_region_ratios",
-    "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect", "FREE_DISC_TRANSITION_RE",
+    "RegionState", "EffectContext", "Precomputed", "region_states", "effect_context",
+    "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect",
+    "FREE_DISC_TRANSITION_RE",
     "PALMGREN_MIN_NU_N", "CRITICAL_TAYLOR_NUMBER", "disc_reynolds",
     "free_disc_moment_coefficient", "end_face_disc_power", "enclosed_disc_couette_power",
     "palmgren_viscous_moment", "ball_churning_power", "coulomb_friction_power",
@@ -105,7 +106,7 @@ __all__ = [
 ]
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RegionState:
     """One clearance region over the samples (arrays of length n, or floats).
 
@@ -136,7 +137,7 @@ class RegionState:
     taylor: np.ndarray
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class EffectContext:
     """Per-sample quantities the effect features need (SI arrays of length n).
 
@@ -223,14 +224,32 @@ def region_states(geometry: JointGeometry, omega_rad_s, nu_m2_s, powers_W
     for region, p in zip(geometry.regions, powers_W, strict=True):
         R, gap = region.radius_m, region.gap_m
         re = couette_reynolds(omega_rad_s, R, gap, nu_m2_s)
-        out.append(RegionState(region.name, R, gap * ones, region.length_m, p, re,
-                               taylor_number(re, gap, R)))
+        out.append(RegionState(name=region.name, radius_m=R, gap_m=gap * ones,
+                               length_m=region.length_m, power_W=p, reynolds=re,
+                               taylor=taylor_number(re, gap, R)))
     return tuple(out)
 
 
+@dataclass(frozen=True, kw_only=True)
+class Precomputed:
+    """What the caller of :func:`effect_context` already has (None: computed, or zero).
+
+    Attributes
+    ----------
+    powers_W : sequence of arrays or None
+        Viscous power of each region [W].
+    dtemp_dt_K_s, dpower_dt_W_s, dpower_dtemp_W_K : array or None
+        Oil temperature rate [K/s], viscous power's time and temperature slopes [W/s], [W/K].
+    """
+
+    powers_W: list | tuple | None = None
+    dtemp_dt_K_s: np.ndarray | None = None
+    dpower_dt_W_s: np.ndarray | None = None
+    dpower_dtemp_W_K: np.ndarray | None = None
+
+
 def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2_s,
-                   density_kg_m3, law: FrictionLaw | None, *, powers_W=None,
-                   dtemp_dt_K_s=None, dpower_dt_W_s=None, dpower_dtemp_W_K=None,
+                   density_kg_m3, law: FrictionLaw | None, *, given: Precomputed | None = None,
                    oil: OilState | None = None) -> EffectContext:
     """The one builder of an :class:`EffectContext` (rig simulator and calibration alike).
 
@@ -248,15 +267,9 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
     density_kg_m3 : float or array
         Oil density per sample [kg/m^3].
     law : FrictionLaw or None
-        Friction law of the clearance model (used unless ``powers_W`` is given).
-    powers_W : sequence of arrays, optional
-        Region powers already computed [W].
-    dtemp_dt_K_s : array, optional
-        Rate of change of the oil temperature [K/s] (zero if not given).
-    dpower_dt_W_s : array, optional
-        Time derivative of the viscous power [W/s] (zero if not given).
-    dpower_dtemp_W_K : array, optional
-        Temperature derivative of the viscous power [W/K] (zero if not given).
+        Friction law of the clearance model (used unless ``given.powers_W`` is given).
+    given : Precomputed, optional
+        Region powers [W] and derivatives along the record already computed.
     oil : OilState, optional
         The oil state ``nu_m2_s`` and ``density_kg_m3`` come from (kept for the record).
 
@@ -265,6 +278,8 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
     EffectContext
         All per-sample arrays broadcast to the samples' shape (SI).
     """
+    g = Precomputed() if given is None else given
+    powers_W = g.powers_W
     ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
     omega = np.asarray(omega_rad_s, dtype=float) * ones
     if powers_W is None:
@@ -272,12 +287,15 @@ def effect_context(geometry: JointGeometry, omega_rad_s, domega_dt_rad_s2, nu_m2
                     for r in geometry.regions]
     zeros = np.zeros_like(ones)
     return EffectContext(
-        omega, np.asarray(domega_dt_rad_s2, dtype=float) * ones, nu_m2_s, density_kg_m3,
-        zeros if dtemp_dt_K_s is None else dtemp_dt_K_s,
-        zeros if dpower_dt_W_s is None else dpower_dt_W_s,
-        zeros if dpower_dtemp_W_K is None else dpower_dtemp_W_K,
-        region_states(geometry, omega, nu_m2_s, powers_W), geometry.disc_radii_m,
-        geometry.bearing_pitch_diameter_m, getattr(geometry, "bearing", None), oil)
+        omega_rad_s=omega, domega_dt_rad_s2=np.asarray(domega_dt_rad_s2, dtype=float) * ones,
+        nu_m2_s=nu_m2_s, density_kg_m3=density_kg_m3,
+        dtemp_dt_K_s=zeros if g.dtemp_dt_K_s is None else g.dtemp_dt_K_s,
+        dpower_dt_W_s=zeros if g.dpower_dt_W_s is None else g.dpower_dt_W_s,
+        dpower_dtemp_W_K=zeros if g.dpower_dtemp_W_K is None else g.dpower_dtemp_W_K,
+        regions=region_states(geometry, omega, nu_m2_s, powers_W),
+        disc_radii_m=geometry.disc_radii_m,
+        bearing_pitch_diameter_m=geometry.bearing_pitch_diameter_m,
+        bearing=getattr(geometry, "bearing", None), oil=oil)
 
 
 def cross_region_ratios(ctx: EffectContext, lam_s: float) -> list[np.ndarray]:
@@ -384,7 +402,7 @@ def _f_delay(c: EffectContext):
     return sensor_delay_power(c.dpower_dt_W_s, 1.0)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class Effect:
     """A candidate effect of the library.
 
@@ -480,57 +498,69 @@ def _signed_sqrt(x: float) -> float:
 
 
 EFFECTS: dict[str, Effect] = {e.name: e for e in (
-    Effect("end_face_disc", "rotor end-face disc friction",
-           "k * C_M rho |w|^3 (D^5 - D_i^5)/64, C_M = 3.87 Re_r^-0.5 (0.146 Re_r^-0.2 > 3e5), "
-           "Re_r = |w| r_o^2/nu",
-           "Pyrhönen et al. 2014 sec. 9.5; Schlichting & Gersten 2017 sec. 5.3.3",
-           "k (multiple of the free-disc value, both faces)", "-", True, _f_disc, "-"),
-    Effect("bearing_ball_churning", "bearing ball churning",
-           "M_0 |w|, M_0 = 1e-7 f0 (nu[cSt] n[rpm])^(2/3) d_m[mm]^3 N mm, "
+    Effect(name="end_face_disc", title="rotor end-face disc friction",
+           formula="k * C_M rho |w|^3 (D^5 - D_i^5)/64, C_M = 3.87 Re_r^-0.5 (0.146 Re_r^-0.2 > "
+                   "3e5), Re_r = |w| r_o^2/nu",
+           reference="Pyrhönen et al. 2014 sec. 9.5; Schlichting & Gersten 2017 sec. 5.3.3",
+           coefficient="k (multiple of the free-disc value, both faces)", unit="-",
+           nonnegative=True, feature=_f_disc, strength_unit="-"),
+    Effect(name="bearing_ball_churning", title="bearing ball churning",
+           formula="M_0 |w|, M_0 = 1e-7 f0 (nu[cSt] n[rpm])^(2/3) d_m[mm]^3 N mm, "
            "d_m = 2 R2 + delta2",
-           "Palmgren 1959; Harris & Kotzalas 2006 ch. 9; with [bearing]: SKF catalogue "
+           reference="Palmgren 1959; Harris & Kotzalas 2006 ch. 9; with [bearing]: SKF catalogue "
            "'Friction' (10000 EN) or Palmgren",
-           "f0 or c (Palmgren factor; with [bearing]: c multiplies the case's bearing "
-           "model P_bearing(w, nu) of oilgap.model.bearing, 1 = the model is right)", "-",
-           True, _f_churning, "-"),
-    Effect("bearing_ball_drag", "drag of the bearing's balls in the oil",
-           "k * 0.4 V_M K_ball d_m[mm]^5 n[rpm]^2 |w| N mm (SKF's V_M drag term of the "
+           coefficient="f0 or c (Palmgren factor; with [bearing]: c multiplies the case's bearing "
+           "model P_bearing(w, nu) of oilgap.model.bearing, 1 = the model is right)", unit="-",
+           nonnegative=True, feature=_f_churning, strength_unit="-"),
+    Effect(name="bearing_ball_drag", title="drag of the bearing's balls in the oil",
+           formula="k * 0.4 V_M K_ball d_m[mm]^5 n[rpm]^2 |w| N mm (SKF's V_M drag term of the "
            "case's [bearing])",
-           "SKF catalogue 'Friction' (10000 EN), drag losses; balls as spheres in still "
+           reference="SKF catalogue 'Friction' (10000 EN), drag losses; balls as spheres in still "
            "oil: Schiller & Naumann 1933 (docs/bearing.md#the-bearing-model-band)",
-           "k (drag scale: multiple of SKF's V_M drag term; with bearing_ball_churning the "
-           "drag is scaled by about c + k)", "-", True, _f_ball_drag, "-"),
-    Effect("seal_coulomb_friction", "seal / Coulomb friction", "tau_c |w|",
-           "Coulomb friction; Müller & Nau 1998 ch. 5 (lip-seal torque)",
-           "tau_c (friction torque)", "N m", True, _f_seal, "N m"),
-    Effect("oil_inertia", "entrained oil inertia", "rho I_V w dw/dt",
-           "kinetic energy of oil turning with the rotor, d/dt(J w^2/2), J = rho I_V",
-           "I_V (second moment of the entrained oil volume)", "m^5", True, _f_inertia, "m^5"),
-    Effect("thermal_lag", "thermal lag of the gap oil",
-           "-tau (dP/dT) dT/dt  (T_oil = T_meas/(1 + tau s), first order)",
-           "lumped-capacitance first-order response, Bergman et al. 2011 sec. 5.2",
-           "tau (lag of the gap oil behind the measured temperature; < 0: it leads)", "s",
-           False, _f_thermal, "s"),
-    Effect("taylor_vortex_onset", "Taylor-vortex onset",
-           "k * sum_i P_i max(0, (Ta_i/41.3)^2 - 1)",
-           "Taylor 1923; Stuart 1958 (JFM 4:1); Donnelly 1958",
-           "k (torque excess per unit supercriticality)", "-", True, _f_taylor, "-"),
-    Effect("shear_thinning", "shear thinning of the oil",
-           "-lambda^2 * sum_i (|w| R_i/delta_i)^2 P_i  (Cross mu/mu0 = 1/(1+(lambda g)^2), "
+           coefficient="k (drag scale: multiple of SKF's V_M drag term; with "
+                       "bearing_ball_churning the drag is scaled by about c + k)", unit="-",
+                       nonnegative=True, feature=_f_ball_drag,
+           strength_unit="-"),
+    Effect(name="seal_coulomb_friction", title="seal / Coulomb friction", formula="tau_c |w|",
+           reference="Coulomb friction; Müller & Nau 1998 ch. 5 (lip-seal torque)",
+           coefficient="tau_c (friction torque)", unit="N m", nonnegative=True, feature=_f_seal,
+           strength_unit="N m"),
+    Effect(name="oil_inertia", title="entrained oil inertia", formula="rho I_V w dw/dt",
+           reference="kinetic energy of oil turning with the rotor, d/dt(J w^2/2), J = rho I_V",
+           coefficient="I_V (second moment of the entrained oil volume)", unit="m^5",
+           nonnegative=True, feature=_f_inertia, strength_unit="m^5"),
+    Effect(name="thermal_lag", title="thermal lag of the gap oil",
+           formula="-tau (dP/dT) dT/dt  (T_oil = T_meas/(1 + tau s), first order)",
+           reference="lumped-capacitance first-order response, Bergman et al. 2011 sec. 5.2",
+           coefficient="tau (lag of the gap oil behind the measured temperature; < 0: it leads)",
+           unit="s", nonnegative=False, feature=_f_thermal, strength_unit="s"),
+    Effect(name="taylor_vortex_onset", title="Taylor-vortex onset",
+           formula="k * sum_i P_i max(0, (Ta_i/41.3)^2 - 1)",
+           reference="Taylor 1923; Stuart 1958 (JFM 4:1); Donnelly 1958",
+           coefficient="k (torque excess per unit supercriticality)", unit="-", nonnegative=True,
+           feature=_f_taylor, strength_unit="-"),
+    Effect(name="shear_thinning", title="shear thinning of the oil",
+           formula="-lambda^2 * sum_i (|w| R_i/delta_i)^2 P_i  (Cross mu/mu0 = 1/(1+(lambda g)^2), "
            "first order)",
-           "Cross 1965; Bird, Armstrong & Hassager 1987 sec. 4.4 (Carreau)",
-           "lambda^2 (Cross time constant squared)", "s^2", True, _f_shear, "s",
+           reference="Cross 1965; Bird, Armstrong & Hassager 1987 sec. 4.4 (Carreau)",
+           coefficient="lambda^2 (Cross time constant squared)", unit="s^2", nonnegative=True,
+           feature=_f_shear, strength_unit="s",
            coefficient_from_strength=lambda s: float(s) ** 2,
            strength_from_coefficient=_signed_sqrt),
-    Effect("sensor_delay", "power-sensor delay", "-d dP/dt  (P_meas(t) = P(t - d))",
-           "first-order expansion of a time shift (dead time)",
-           "d (delay of the power reading behind the speed reading)", "s", True, _f_delay,
-           "s"),
-    Effect("film_heating", "viscous heating of the film",
-           "c P dP/dT, c = s delta (1 + 3w)/(12 k 2 pi R L)  (T_film = T_meas + c P(T_film), "
-           "first order)", "Nahme 1940 (Ing.-Arch. 11:191), the lumped film of "
-           "oilgap.model.film_heating", "s (film strength: 1 = the smooth-film theory; wall "
-           "condition w held unless identified)", "-", True, _f_film, "-", upper=1.0),
+    Effect(name="sensor_delay", title="power-sensor delay",
+           formula="-d dP/dt  (P_meas(t) = P(t - d))",
+           reference="first-order expansion of a time shift (dead time)",
+           coefficient="d (delay of the power reading behind the speed reading)", unit="s",
+           nonnegative=True, feature=_f_delay, strength_unit="s"),
+    Effect(name="film_heating", title="viscous heating of the film",
+           formula="c P dP/dT, c = s delta (1 + 3w)/(12 k 2 pi R L)  (T_film = T_meas + c "
+                   "P(T_film), first order)",
+           reference="Nahme 1940 (Ing.-Arch. 11:191), the lumped film of "
+                     "oilgap.model.film_heating",
+           coefficient="s (film strength: 1 = the smooth-film theory; wall "
+                       "condition w held unless identified)", unit="-", nonnegative=True,
+                       feature=_f_film,
+           strength_unit="-", upper=1.0),
 )}
 """The candidate-effect library, by stable name."""
 

@@ -34,7 +34,7 @@ def _baseline_matrix(omega, alpha, dtemp, with_temp: bool) -> np.ndarray:
     return np.column_stack(cols)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class BaselineFit:
     """Oil-free baseline of one roughness T: ``P = sum_j c_j f_j(w, dw/dt, T)`` [W].
 
@@ -171,9 +171,11 @@ def fit_baselines(frame: pd.DataFrame) -> dict[float, BaselineFit]:
             notes.append(f"oil runs reach {np.abs(o['speed_rpm']).max():.0f} rpm, beyond the "
                          f"oil-free runs' {smax:.0f} rpm: baseline extrapolated in speed")
         terms = BASELINE_TERMS + (BASELINE_TEMP_TERMS if with_temp else ())
-        out[float(T)] = BaselineFit(float(T), terms, coef, tref, rmse, len(g),
-                                    (float(temp.min()), float(temp.max())), smax, tuple(notes),
-                                    cov)
+        out[float(T)] = BaselineFit(roughness_T=float(T), terms=terms, coef=coef, temp_ref_C=tref,
+                                    rmse_W=rmse, n_samples=len(g),
+                                    temp_range_C=(float(temp.min()), float(temp.max())),
+                                    speed_max_rpm=smax, notes=tuple(notes),
+                                    cov=cov)
     return out
 
 

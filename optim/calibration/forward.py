@@ -32,6 +32,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.effects import (
     EFFECTS,
     EffectContext,
+    Precomputed,
     cross_region_ratios,
     effect_context,
     first_order_lag,
@@ -312,8 +313,8 @@ class ForwardModel:
         s = self.samples
         pw = powers if powers is not None else [np.zeros(s.n)] * len(self.geometry.regions)
         return effect_context(self.geometry, s.omega, s.domega_dt, state.nu_m2_s,
-                              state.density_kg_m3, None, powers_W=pw, dtemp_dt_K_s=s.dtemp_dt,
-                              oil=state)
+                              state.density_kg_m3, None,
+                              given=Precomputed(powers_W=pw, dtemp_dt_K_s=s.dtemp_dt), oil=state)
 
     def state_feature(self, name: str, state: OilState) -> np.ndarray:
         """Feature of a law-independent effect (disc, bearing, seal, inertia) at ``state``.
@@ -423,8 +424,9 @@ class ForwardModel:
         if derivatives:
             dP_dt, dP_dT = self._power_derivatives(law)
             slopes = {"dpower_dt_W_s": dP_dt, "dpower_dtemp_W_K": dP_dT}
-        return effect_context(self.geometry, s.omega, s.domega_dt, nu, rho, law, powers_W=pw,
-                              dtemp_dt_K_s=s.dtemp_dt, oil=state, **slopes)
+        given = Precomputed(powers_W=pw, dtemp_dt_K_s=s.dtemp_dt, **slopes)
+        return effect_context(self.geometry, s.omega, s.domega_dt, nu, rho, law, given=given,
+                              oil=state)
 
     def oil_properties(self, temp_K: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Viscosity [m^2/s] and density [kg/m^3] at the oil temperature ``temp_K`` [K].

@@ -165,9 +165,12 @@ def _baseline_to_dict(b: BaselineFit) -> dict:
 
 def _baseline_from_dict(d: dict) -> BaselineFit:
     d = _dec(d)
-    return BaselineFit(float(d["roughness_T"]), tuple(d["terms"]), np.array(d["coef"], float),
-                       float(d["temp_ref_C"]), float(d["rmse_W"]), int(d["n_samples"]),
-                       tuple(d["temp_range_C"]), float(d["speed_max_rpm"]), ())
+    return BaselineFit(roughness_T=float(d["roughness_T"]), terms=tuple(d["terms"]),
+                       coef=np.array(d["coef"], float),
+                       temp_ref_C=float(d["temp_ref_C"]), rmse_W=float(d["rmse_W"]),
+                       n_samples=int(d["n_samples"]),
+                       temp_range_C=tuple(d["temp_range_C"]),
+                       speed_max_rpm=float(d["speed_max_rpm"]), notes=())
 
 
 def _case_doc(case: DesignCase) -> dict:
@@ -223,7 +226,7 @@ def sample_ranges(s) -> dict:
     return {k: [float(np.min(v)), float(np.max(v))] for k, v in vals.items() if len(v)}
 
 
-@dataclass
+@dataclass(kw_only=True)
 class FittedModel:
     """What a fitted loop predicts with: rig, laws, effects, baselines, fluids.
 
@@ -305,10 +308,14 @@ class FittedModel:
         keys = {normalize_oil_name(str(o)) for o in pd.unique(s.oil)}
         fluids = {k: f for k, f in est.data_.oils.items() if k in keys}
         laws = dict(zip(STAGES, (est.law_without_T_, est.law_with_T_, est.law_), strict=True))
-        return cls(est.case_, laws, {k: float(v) for k, v in est.effect_coef_.items()},
-                   dict(est.baselines_), fluids, float(est.geometry_.regions[0].gap_m), 0.0,
-                   est.data_.kind, bool(s.has_time), str(s.cv_by), sample_ranges(s),
-                   float(getattr(est, "taylor_exponent_", 2.0)), est.forward_model_.film_wall)
+        return cls(case=est.case_, laws=laws,
+                   effects={k: float(v) for k, v in est.effect_coef_.items()},
+                   baselines=dict(est.baselines_), fluids=fluids,
+                   region1_gap_m=float(est.geometry_.regions[0].gap_m), pressure_gauge_Pa=0.0,
+                   kind=est.data_.kind, has_time=bool(s.has_time), cv_by=str(s.cv_by),
+                   ranges=sample_ranges(s),
+                   taylor_exponent=float(getattr(est, "taylor_exponent_", 2.0)),
+                   film_wall=est.forward_model_.film_wall)
 
     def to_dict(self) -> dict:
         """The ``model`` block of ``loop.json`` (JSON-safe; units in key names).
@@ -375,10 +382,15 @@ class FittedModel:
             m = float(doc.get("shapes", {}).get("taylor_vortex_onset", {}).get("exponent", 2.0))
             if not m > 0:
                 raise InputError("model.shapes.taylor_vortex_onset.exponent", m, "> 0")
-            model = cls(case, laws, effects, {b.roughness_T: b for b in base}, fluids, gap,
-                        float(doc.get("pressure_gauge_Pa", 0.0)), str(doc.get("kind", "")),
-                        bool(doc.get("has_time", True)), str(doc.get("cv_by", "run")), ranges,
-                        m, film_wall_of_doc(doc, effects))
+            model = cls(case=case, laws=laws, effects=effects,
+                        baselines={b.roughness_T: b for b in base}, fluids=fluids,
+                        region1_gap_m=gap,
+                        pressure_gauge_Pa=float(doc.get("pressure_gauge_Pa", 0.0)),
+                        kind=str(doc.get("kind", "")),
+                        has_time=bool(doc.get("has_time", True)),
+                        cv_by=str(doc.get("cv_by", "run")),
+                        ranges=ranges,
+                        taylor_exponent=m, film_wall=film_wall_of_doc(doc, effects))
         except (KeyError, TypeError, ValueError, AttributeError) as e:
             raise InputError("model", f"{type(e).__name__}: {e}", "a complete model block "
                              "written by oilgap loop is required") from None

@@ -27,7 +27,7 @@ from .refit import FinalModel, rmse
 from .selection import Selection
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class EffectResult:
     """An accepted effect with its fitted coefficient and confidence interval.
 
@@ -121,9 +121,11 @@ def effect_results(model: ForwardModel, final: FinalModel, ci: tuple[np.ndarray,
         if n == "film_heating":
             shape = film_shape(model, c, (lo, hi))
         out.append(EffectResult(
-            n, eff.title, formula, eff.reference, c, lo, hi,
-            eff.unit, float(eff.strength_from_coefficient(c)), eff.strength_unit, gains[n],
-            rmse(only), shape))
+            name=n, title=eff.title, formula=formula, reference=eff.reference, coefficient=c,
+            ci_low=lo, ci_high=hi,
+            unit=eff.unit, strength=float(eff.strength_from_coefficient(c)),
+            strength_unit=eff.strength_unit, heldout_gain_pct=gains[n],
+            rms_power_W=rmse(only), shape=shape))
     return out
 
 

@@ -29,7 +29,7 @@ from .candidates import Candidates, screen_candidates
 from .forward import ForwardModel
 from .least_squares import ModelFit, fit_model, rescale_level
 from .refit import FinalModel, Refitter, add_state_readers, refit_selected
-from .selection import Selection, select_effects
+from .selection import Selection, Thresholds, select_effects
 from .spec import BaseSpec, cv_groups
 
 
@@ -87,7 +87,7 @@ class SearchOptions:
     has_time: bool = True
 
 
-@dataclass
+@dataclass(kw_only=True)
 class EffectSearch:
     """The outcome of the effect search on one calibration.
 
@@ -156,10 +156,11 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
     implausible: dict[str, str] = {}
     log: list[dict] = []
     selector = None
+    limits = Thresholds(noise_W=noise_W, margin=opts.margin, min_explained=opts.min_explained,
+                        max_effects=opts.max_effects)
     for _ in range(len(cands.usable) + 1):
-        sel = select_effects(base.jac_base, r0, cv_groups(s), cands, noise_W, opts.margin,
-                             opts.min_explained, opts.max_effects, frozenset(implausible),
-                             hold, selector)
+        sel = select_effects(base.jac_base, r0, cv_groups(s), cands, limits,
+                             frozenset(implausible), hold, selector)
         selector = sel.selector
         final = refit_selected(refitter, base, cands, sel, opts.margin)
         final = add_state_readers(refitter, final, cands, opts.margin, opts.max_effects,
@@ -175,7 +176,8 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
         for n, why in bad.items():
             log.append({"step": "plausibility", "rejected": n, "reason": why})
         implausible.update(bad)
-    return EffectSearch(spec, base, cands, sel, final, refitter, implausible, log)
+    return EffectSearch(spec=spec, base=base, cands=cands, selection=sel, final=final,
+                        refitter=refitter, implausible=implausible, log=log)
 
 
 def evidence_trial(model: ForwardModel, search: EffectSearch, held: dict[str, float],

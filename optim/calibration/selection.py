@@ -301,6 +301,28 @@ def _explained(e_before: float, e_after: float, noise_W: float) -> float:
     return (e_before ** 2 - e_after ** 2) / st if st > 0 else 0.0
 
 
+@dataclass(frozen=True, kw_only=True)
+class Thresholds:
+    """The acceptance thresholds of the effect selection.
+
+    Attributes
+    ----------
+    noise_W : float
+        Noise level of the power reading [W].
+    margin : float
+        Relative fall of the held-out RMSE each effect must bring [-].
+    min_explained : float
+        Share of the held-out structure above noise the effects must explain [-].
+    max_effects : int
+        Most effects accepted together.
+    """
+
+    noise_W: float
+    margin: float
+    min_explained: float
+    max_effects: int
+
+
 @dataclass
 class StepwiseResult:
     """Outcome of forward selection and backward pruning.
@@ -363,8 +385,7 @@ def _best_pair(sel: LeaveOneRunOutSelector, cands: Candidates, chosen: tuple[int
 
 
 def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float,
-                       entry: dict[str, float], noise_W: float, margin: float,
-                       min_explained: float, max_effects: int,
+                       entry: dict[str, float], limits: Thresholds,
                        exclude: frozenset[str] | set[str] = frozenset()) -> StepwiseResult:
     """Forward selection on the held-out RMSE, backward pruning, then the structure check.
 
@@ -389,13 +410,9 @@ def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float
         Held-out RMSE of the calibration alone [W].
     entry : dict
         Effect -> lambda / lambda_max at which it enters the lasso path [-].
-    noise_W : float
-        Noise level [W].
-    margin, min_explained : float
-        Required relative fall of the held-out RMSE per step and explained share
-        of the set [-].
-    max_effects : int
-        Most effects accepted together.
+    limits : Thresholds
+        Noise level [W], required relative fall of the held-out RMSE per step and
+        explained share of the set [-], most effects accepted together.
     exclude : set of str
         Effects not to select (implausible, or not applicable to these data).
 
@@ -403,6 +420,8 @@ def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float
     -------
     StepwiseResult
     """
+    noise_W, margin = limits.noise_W, limits.margin
+    min_explained, max_effects = limits.min_explained, limits.max_effects
     name = cands.name
     chosen: tuple[int, ...] = ()
     e_cur = e0
@@ -511,8 +530,7 @@ class Selection:
 
 
 def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
-                   cands: Candidates, noise_W: float, margin: float, min_explained: float,
-                   max_effects: int, exclude: frozenset[str] = frozenset(),
+                   cands: Candidates, limits: Thresholds, exclude: frozenset[str] = frozenset(),
                    hold: dict | None = None, selector: LeaveOneRunOutSelector | None = None
                    ) -> Selection:
     """Lasso path, held-out scores and stepwise selection of the candidate columns.
@@ -526,12 +544,8 @@ def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
     run_code : array of int
         Cross-validation group of each sample (the run by default).
     cands : Candidates
-    noise_W : float
-        Noise level [W].
-    margin, min_explained : float
-        Acceptance thresholds [-].
-    max_effects : int
-        Most effects accepted together.
+    limits : Thresholds
+        Noise level [W], acceptance thresholds [-] and most effects accepted together.
     exclude : frozenset of str
         Effects not to select.
     hold : dict, optional
@@ -554,9 +568,8 @@ def select_effects(jac: np.ndarray, residual: np.ndarray, run_code: np.ndarray,
             entry.setdefault(cands.name[j], lam)
     lasso = [{"lambda_rel": lam, "support": sorted({cands.name[j] for j in sup})}
              for lam, sup in path]
-    scored = score_alone(cands, sel, e0, noise_W, entry)
-    steps = stepwise_selection(sel, cands, e0, entry, noise_W, margin, min_explained,
-                               max_effects, exclude)
+    scored = score_alone(cands, sel, e0, limits.noise_W, entry)
+    steps = stepwise_selection(sel, cands, e0, entry, limits, exclude)
     return Selection(
         selector=sel, heldout_before_W=e0, lasso_entry=entry, lasso_path=lasso, candidates=scored,
         chosen=steps.chosen, log=steps.log, exclude=frozenset(exclude))

@@ -19,7 +19,7 @@ One module per responsibility:
 from .feasibility import check_feasible, infeasibility_message
 from .heating import HeatingComparison, compare_heating
 from .objective import DesignObjective, region1_mean_power
-from .parameters import DesignParameters, resolve_parameters
+from .parameters import DesignParameters
 from .problem import DesignProblem, solve_design
 from .results import (
     DesignPoint,
@@ -36,7 +36,7 @@ from .variables import VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 __all__ = [
     "VARIABLES", "VARIABLE_LABELS", "DesignParameters", "DesignPoint", "DesignProblem",
     "DesignResult", "Multiplier", "region1_mean_power", "solve_design", "DesignObjective",
-    "resolve_parameters", "check_feasible", "infeasibility_message", "convert_multipliers",
+    "check_feasible", "infeasibility_message", "convert_multipliers",
     "design_point", "to_nlp", "from_nlp", "ThermalDesignProblem", "ThermalDesignResult",
     "HeatingComparison", "compare_heating", "DEFAULT_STARTS", "SolverSession",
 ]

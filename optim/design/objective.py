@@ -31,8 +31,8 @@ from oilgap.model.regions import region_mean_power, rotor_stator_region
 from oilgap.model.skin_friction import FrictionLaw
 
 
-def region1_mean_power(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m, nu_m2_s,
-                       rho_kg_m3, nodes_rad_s, weights, law: FrictionLaw) -> Any:
+def region1_mean_power(x_m, nu_m2_s, rho_kg_m3, nodes_rad_s, weights,
+                       law: FrictionLaw) -> Any:
     """Mean viscous power of region 1 over a speed distribution [1].
 
     :func:`~oilgap.model.regions.region_mean_power` of the region built from
@@ -42,14 +42,10 @@ def region1_mean_power(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m, nu_m2
 
     Parameters
     ----------
-    R_m : float, array or CasADi symbol
-        Rotor outer radius R = T2 [m].
-    delta_m : float, array or CasADi symbol
-        Clearance delta = T3 - T2 [m].
-    rotor_groove_m, stator_groove_m : float, array or CasADi symbol
-        Groove depths left open by the epoxy fill, d_r and d_s [m].
-    L_m : float, array or CasADi symbol
-        Clearance length [m].
+    x_m : sequence of 5 (float, array or CasADi symbol)
+        The design variables (R, delta, d_r, d_s, L) [m]: rotor outer radius R = T2,
+        clearance delta = T3 - T2, groove depths d_r and d_s left open by the epoxy
+        fill, clearance length L.
     nu_m2_s : float or CasADi symbol
         Kinematic viscosity [m^2/s].
     rho_kg_m3 : float or CasADi symbol
@@ -66,11 +62,11 @@ def region1_mean_power(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m, nu_m2
     float, array or CasADi expression
         Mean power [W].
     """
-    region = rotor_stator_region(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m)
+    region = rotor_stator_region(*x_m)
     return region_mean_power(region, nodes_rad_s, weights, nu_m2_s, rho_kg_m3, law)
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DesignObjective:
     """Mean power P1, torque capability and rotor inertia of design vectors (numpy).
 
@@ -131,7 +127,7 @@ class DesignObjective:
         """
         (R, d, a, b, L), rows = self._columns(x_m)
         nodes = self.nodes_rad_s[None, :] if rows else self.nodes_rad_s
-        p1 = region1_mean_power(R, d, a, b, L, self.nu_m2_s, self.rho_kg_m3, nodes,
+        p1 = region1_mean_power((R, d, a, b, L), self.nu_m2_s, self.rho_kg_m3, nodes,
                                 self.weights, self.law)
         return np.ravel(p1) if rows else p1
 

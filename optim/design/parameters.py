@@ -24,7 +24,7 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
     from .problem import DesignProblem
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DesignParameters:
     """The parameters one solve used (SI).
 
@@ -183,17 +183,20 @@ def _check_bounds(problem: DesignProblem, lo: list, hi: list) -> None:
                          "bottoms outside the shaft bore", "optimize")
 
 
-def resolve_parameters(problem: DesignProblem, *, oil: Fluid | None = None,
-                       oil_temp_C: float | None = None, depth_m: float | None = None,
-                       nu_m2_s: float | None = None, rho_kg_m3: float | None = None,
-                       torque_min_Nm: float | None = None,
-                       inertia_max_ratio: float | None = None,
-                       gap_min_m: float | None = None, gap_max_m: float | None = None,
-                       radius_min_m: float | None = None, radius_max_m: float | None = None,
-                       length_min_m: float | None = None, length_max_m: float | None = None,
-                       fix: Mapping[str, float] | Sequence[str] | None = None
-                       ) -> DesignParameters:
+def _resolve_parameters(problem: DesignProblem, *, oil: Fluid | None = None,
+                        oil_temp_C: float | None = None, depth_m: float | None = None,
+                        nu_m2_s: float | None = None, rho_kg_m3: float | None = None,
+                        torque_min_Nm: float | None = None,
+                        inertia_max_ratio: float | None = None,
+                        gap_min_m: float | None = None, gap_max_m: float | None = None,
+                        radius_min_m: float | None = None, radius_max_m: float | None = None,
+                        length_min_m: float | None = None, length_max_m: float | None = None,
+                        fix: Mapping[str, float] | Sequence[str] | None = None
+                        ) -> DesignParameters:
     """Resolve and validate the parameters of a solve of ``problem``.
+
+    The body of :meth:`.problem.DesignProblem.parameters` (its only caller: the
+    overrides of a solve, by keyword).
 
     Parameters
     ----------
@@ -238,8 +241,10 @@ def resolve_parameters(problem: DesignProblem, *, oil: Fluid | None = None,
     lo, hi = _bounds(problem, ((radius_min_m, radius_max_m), (gap_min_m, gap_max_m),
                                (None, None), (None, None), (length_min_m, length_max_m)), fix)
     _check_bounds(problem, lo, hi)
-    return DesignParameters(the_oil.name, t, d, nu, rho, tmin, problem.inertia_ref_kgm2,
-                            ratio * problem.inertia_ref_kgm2, tuple(lo), tuple(hi), raw, oil)
+    return DesignParameters(oil=the_oil.name, oil_temp_C=t, depth_m=d, nu_m2_s=nu, rho_kg_m3=rho,
+                            torque_min_Nm=tmin, inertia_ref_kgm2=problem.inertia_ref_kgm2,
+                            inertia_max_kgm2=ratio * problem.inertia_ref_kgm2, lower_m=tuple(lo),
+                            upper_m=tuple(hi), raw_oil_state=raw, oil_obj=oil)
 
 
-__all__ = ["DesignParameters", "resolve_parameters"]
+__all__ = ["DesignParameters"]

@@ -73,7 +73,7 @@ from oilgap.model.units import MM_TO_M
 
 from .feasibility import check_feasible
 from .objective import DesignObjective, region1_mean_power
-from .parameters import DesignParameters, resolve_parameters
+from .parameters import DesignParameters, _resolve_parameters
 from .results import (
     DesignPoint,
     DesignResult,
@@ -193,7 +193,7 @@ class DesignProblem:
         p = ca.SX.sym("p", 2)  # (nu [m^2/s], rho [kg/m^3])
         R, delta, d_r, d_s, L = ((ca.exp(y[i]) if LOG_VARIABLES[i] else y[i]) * MM_TO_M
                                  for i in range(5))
-        p1 = region1_mean_power(R, delta, d_r, d_s, L, p[0], p[1], ca.DM(self.nodes_rad_s),
+        p1 = region1_mean_power((R, delta, d_r, d_s, L), p[0], p[1], ca.DM(self.nodes_rad_s),
                                 self.weights, self.law)
         tau = motor_torque(m, R, delta, L)[0]
         J = rotor_inertia(m, R, d_r, L, self.machined_rotor_groove_m)
@@ -336,8 +336,10 @@ class DesignProblem:
         """
         nu, rho = ((self.nu_m2_s, self.rho_kg_m3) if params is None
                    else (params.nu_m2_s, params.rho_kg_m3))
-        return DesignObjective(self.nodes_rad_s, self.weights, self.law, self.case.motor,
-                               self.machined_rotor_groove_m, nu, rho)
+        return DesignObjective(nodes_rad_s=self.nodes_rad_s, weights=self.weights, law=self.law,
+                               motor=self.case.motor,
+                               machined_rotor_groove_m=self.machined_rotor_groove_m, nu_m2_s=nu,
+                               rho_kg_m3=rho)
 
     def parameters(self, **overrides: Any) -> DesignParameters:
         """Resolve and validate the parameters of a solve.
@@ -345,13 +347,13 @@ class DesignProblem:
         Parameters
         ----------
         **overrides
-            As :meth:`solve` (:func:`.parameters.resolve_parameters`).
+            As :meth:`solve` (resolved by ``parameters._resolve_parameters``).
 
         Returns
         -------
         DesignParameters
         """
-        return resolve_parameters(self, **overrides)
+        return _resolve_parameters(self, **overrides)
 
     def check_feasible(self, params: DesignParameters, x_hint_m: np.ndarray | None = None
                        ) -> None:
@@ -495,10 +497,13 @@ class DesignProblem:
             raise self.failure("non-finite result", out.iterations, y, out.f, out.g, nu, rho)
         lam_x, lam_g = out.lam_x, out.lam_g
         mults, active = convert_multipliers(params, optimal, lam_x, lam_g)
-        return DesignResult(out.status, True, out.iterations, out.time_s, initial,
-                            optimal, active, mults, params, self.case_for(params),
-                            self.machined_rotor_groove_m, self.machined_stator_groove_m, 1,
-                            {"lam_x": lam_x, "lam_g": lam_g})
+        return DesignResult(status=out.status, success=True, iterations=out.iterations,
+                            solve_time_s=out.time_s, initial=initial,
+                            optimal=optimal, active_constraints=active, multipliers=mults,
+                            parameters=params, case=self.case_for(params),
+                            machined_rotor_groove_m=self.machined_rotor_groove_m,
+                            machined_stator_groove_m=self.machined_stator_groove_m, starts=1,
+                            _raw={"lam_x": lam_x, "lam_g": lam_g})
 
     def failure(self, status: str, iterations: int, y: np.ndarray, f: float, g: np.ndarray,
                 nu_m2_s: float, rho_kg_m3: float) -> SolverError:

@@ -57,7 +57,7 @@ POINT_MEANINGS: dict[str, str] = {
 table of the optimize reports and the heating comparison)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class DesignPoint:
     """One region-1 design with everything the optimizer reports (SI).
 
@@ -190,10 +190,13 @@ def design_point(x_m: np.ndarray, p1: float, tau: float, J: float, p2: float, mo
     _, bg, kc = motor_torque(motor, R, delta, L)
     T1, T2, T3, T4 = rotor_stator_radii(R, delta, d_r, d_s)
     total = p1 + p2 if bearing_W is None else p1 + p2 + bearing_W
-    return DesignPoint(R, delta, d_r, d_s, L, T1, T2, T3, T4,
-                       float(groove_roughness(T1, T2, T3, T4)), p1, p2, total, tau,
-                       float(bg), float(kc), J, J / inertia_ref_kgm2,
-                       None if bearing_W is None else float(bearing_W))
+    return DesignPoint(R_m=R, delta_m=delta, rotor_groove_depth_m=d_r, stator_groove_depth_m=d_s,
+                       L_m=L, T1_m=T1, T2_m=T2, T3_m=T3, T4_m=T4,
+                       T=float(groove_roughness(T1, T2, T3, T4)), region1_power_W=p1,
+                       region2_power_W=p2, mean_power_W=total, torque_capability_Nm=tau,
+                       airgap_flux_density_T=float(bg), carter_coefficient=float(kc),
+                       inertia_kgm2=J, inertia_ratio=J / inertia_ref_kgm2,
+                       bearing_power_W=None if bearing_W is None else float(bearing_W))
 
 
 @dataclass(frozen=True)
@@ -324,7 +327,7 @@ def convert_multipliers(params: DesignParameters, opt: DesignPoint, lam_x: np.nd
     return out, tuple(head + active)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class DesignResult:
     """An optimum of the design NLP (solver failures raise instead).
 
@@ -452,7 +455,7 @@ class DesignResult:
         return evaluate_case(start, thermal="none"), evaluate_case(opt, thermal="none")
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, kw_only=True)
 class ThermalDesignResult(DesignResult):
     """An optimum of the design NLP under a thermal mode (``bulk``, ``film`` or ``full``).
 

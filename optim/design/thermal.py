@@ -478,10 +478,13 @@ class ThermalDesignProblem:
                  - self._parts(nlp, x_m, temp - h)[:3].sum()) / (2 * h))}
         case = self.isothermal.case_for(params)
         return ThermalDesignResult(
-            out.status, True, out.iterations, out.time_s, initial, optimal, active,
-            mults, params, replace(case, thermal=spec) if full else case,
-            self.isothermal.machined_rotor_groove_m, self.isothermal.machined_stator_groove_m,
-            1, {"lam_x": lam_x, "lam_g": lam_g}, thermal_mode=self.mode,
+            status=out.status, success=True, iterations=out.iterations, solve_time_s=out.time_s,
+            initial=initial, optimal=optimal, active_constraints=active,
+            multipliers=mults, parameters=params,
+            case=replace(case, thermal=spec) if full else case,
+            machined_rotor_groove_m=self.isothermal.machined_rotor_groove_m,
+            machined_stator_groove_m=self.isothermal.machined_stator_groove_m,
+            starts=1, _raw={"lam_x": lam_x, "lam_g": lam_g}, thermal_mode=self.mode,
             initial_oil_temp_C=t_start, oil_temp_C=temp,
             sea_temp_C=spec.sea_temp_C if full else None, thermal=spec, **costs)
 

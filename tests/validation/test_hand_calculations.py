@@ -15,7 +15,7 @@ import math
 import numpy as np
 import pytest
 
-from oilgap.model.effects import cross_region_ratios, effect_context
+from oilgap.model.effects import Precomputed, cross_region_ratios, effect_context
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import read_case_toml, seed_case
 from oilgap.model.regions import JointGeometry, Region, joint_regions, region_mean_power
@@ -160,7 +160,8 @@ def test_effect_context_by_hand():
 
 def test_effect_context_takes_given_powers():
     given = [np.array([1.0, 2.0, 3.0]), np.array([0.5, 0.5, 0.5])]
-    ctx = effect_context(GEOMETRY, OMEGA, 0.0, NU, RHO, FrictionLaw(), powers_W=given)
+    ctx = effect_context(GEOMETRY, OMEGA, 0.0, NU, RHO, FrictionLaw(),
+                         given=Precomputed(powers_W=given))
     np.testing.assert_allclose(ctx.power_W, [1.5, 2.5, 3.5])
 
 

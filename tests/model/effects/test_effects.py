@@ -141,12 +141,17 @@ def test_library_entries_are_complete():
 
 def _context(bearing=True):
     w = np.array([-300.0, 0.0, 150.0])
-    reg = fx.RegionState("rotor-stator", 0.0254, np.full(3, 1e-3), 0.01476, np.array(
-        [50.0, 0.0, 12.0]), np.array([30.0, 0.0, 15.0]), np.array([60.0, 0.0, 20.0]))
-    return fx.EffectContext(w, np.array([10.0, 98.0, -5.0]), np.full(3, 3e-4),
-                            np.full(3, 880.0), np.array([0.1, 0.0, 0.0]),
-                            np.array([2.0, 0.0, -1.0]), np.array([-3.0, -2.0, -1.0]), (reg,),
-                            (0.0254, 0.01), 0.049 if bearing else None)
+    reg = fx.RegionState(name="rotor-stator", radius_m=0.0254, gap_m=np.full(3, 1e-3),
+                         length_m=0.01476, power_W=np.array([50.0, 0.0, 12.0]),
+                         reynolds=np.array([30.0, 0.0, 15.0]),
+                         taylor=np.array([60.0, 0.0, 20.0]))
+    return fx.EffectContext(omega_rad_s=w, domega_dt_rad_s2=np.array([10.0, 98.0, -5.0]),
+                            nu_m2_s=np.full(3, 3e-4), density_kg_m3=np.full(3, 880.0),
+                            dtemp_dt_K_s=np.array([0.1, 0.0, 0.0]),
+                            dpower_dt_W_s=np.array([2.0, 0.0, -1.0]),
+                            dpower_dtemp_W_K=np.array([-3.0, -2.0, -1.0]), regions=(reg,),
+                            disc_radii_m=(0.0254, 0.01),
+                            bearing_pitch_diameter_m=0.049 if bearing else None)
 
 
 def test_features_are_the_laws_with_unit_coefficient():
@@ -169,7 +174,7 @@ def test_library_module_re_exports_the_laws():
                  "end_face_disc_power", "CRITICAL_TAYLOR_NUMBER"):
         assert getattr(fx, name) is getattr(effect_laws, name)
     assert set(effect_laws.__dict__) >= {n for n in fx.__all__ if n not in (
-        "RegionState", "EffectContext", "region_states", "effect_context",
+        "RegionState", "EffectContext", "Precomputed", "region_states", "effect_context",
         "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect",
         "film_temperature")  # the film's fixed point on a power callable: its own here
         and n not in effect_plausibility.__dict__}  # the plausible ranges: their own module

@@ -7,6 +7,7 @@ from oilgap.optim.calibration import (
     BaseSpec,
     ForwardModel,
     Refitter,
+    Thresholds,
     fit_model,
     heldout_gains,
     refit_selected,
@@ -60,7 +61,8 @@ def _search(rig, samples_factory, tau=0.05):
     base = fit_model(m, spec, spec.start({"C": 10.0, "gamma": 0.0}))
     cands = screen_candidates(m, spec, base, ["seal_coulomb_friction", "oil_inertia"])
     r0 = y - base.pred
-    sel = select_effects(base.jac_base, r0, m.samples.run_code, cands, 0.5, 0.1, 0.5, 3)
+    limits = Thresholds(noise_W=0.5, margin=0.1, min_explained=0.5, max_effects=3)
+    sel = select_effects(base.jac_base, r0, m.samples.run_code, cands, limits)
     return m, spec, base, cands, sel, Refitter(m, spec, cands.feature_scale())
 
 

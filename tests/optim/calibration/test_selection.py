@@ -2,6 +2,7 @@
 
 import itertools
 import math
+from dataclasses import replace
 
 import cvxpy as cp
 import numpy as np
@@ -12,10 +13,14 @@ from oilgap.optim.calibration import (
     Candidates,
     LeaveOneRunOutSelector,
     SignConstrainedLasso,
+    Thresholds,
     box_lstsq,
     select_effects,
     stepwise_selection,
 )
+
+LIMITS = Thresholds(noise_W=0.05, margin=0.1, min_explained=0.5, max_effects=3)
+"""Noise 0.05 W, margin 10 %, half the structure explained, at most 3 effects."""
 
 
 def _problem(seed=3, n=200):
@@ -126,7 +131,7 @@ def test_forward_selection_stops_at_the_margin():
     r = 2.0 * u + e
     c = _cands(F)
     sel = LeaveOneRunOutSelector(J, F, r, code, np.zeros(4, bool), np.arange(4))
-    out = stepwise_selection(sel, c, sel.cv(()), {}, 0.05, 0.1, 0.5, 3)
+    out = stepwise_selection(sel, c, sel.cv(()), {}, LIMITS)
     assert out.chosen == (1,)
     assert [s["accepted"] for s in out.log] == [True, False, True]
     assert out.log[1]["rejected_by"] == "margin"
@@ -142,7 +147,8 @@ def test_backward_pruning_drops_a_column_made_redundant():
     r = u + v + e
     c = _cands(F)
     sel = LeaveOneRunOutSelector(J, F, r, code, np.zeros(4, bool), np.arange(4))
-    out = stepwise_selection(sel, c, sel.cv(()), {}, 0.01, 0.01, 0.0, 3)
+    out = stepwise_selection(sel, c, sel.cv(()), {}, Thresholds(noise_W=0.01, margin=0.01,
+                                                                min_explained=0.0, max_effects=3))
     steps = [s["best"] for s in out.log if s["step"] in (1, 2, 3)]
     assert steps[0] == "mix" and set(steps[1:3]) == {"u", "v"}
     assert {"step": "prune", "dropped": "mix"} in out.log
@@ -153,7 +159,7 @@ def test_select_effects_records_the_path_and_the_scores_alone():
     code, J, F, u, v, w, e = _runs_data(seed=4)
     r = 2.0 * F[:, 3] + e
     c = _cands(F)
-    res = select_effects(J, r, code, c, 0.05, 0.1, 0.5, 3)
+    res = select_effects(J, r, code, c, LIMITS)
     assert [c.name[j] for j in res.chosen] == ["sine"]
     assert res.lasso_entry["sine"] == max(res.lasso_entry.values())  # enters first
     assert res.lasso_path[0]["lambda_rel"] == 1.0
@@ -180,10 +186,10 @@ def test_two_effects_that_only_show_together_are_taken_as_a_pair():
     # by hand: each alone gains less than the 10 % margin, the pair nearly all of it
     assert 1 - sel.cv((0,)) / e0 < 0.1 and 1 - sel.cv((1,)) / e0 < 0.1
     assert 1 - sel.cv((0, 1)) / e0 > 0.9
-    out = stepwise_selection(sel, c, e0, {}, 0.05, 0.1, 0.5, 3)
+    out = stepwise_selection(sel, c, e0, {}, LIMITS)
     assert sorted(out.chosen) == [0, 1]
     assert out.log[0]["best"] == "a + b" and out.log[0]["accepted"]
     assert out.log[1]["rejected_by"] == "margin"  # c adds nothing
     # with room for one effect only, no pair is tried: nothing is accepted
-    one = stepwise_selection(sel, c, e0, {}, 0.05, 0.1, 0.5, 1)
+    one = stepwise_selection(sel, c, e0, {}, replace(LIMITS, max_effects=1))
     assert one.chosen == () and one.log[0]["rejected_by"] == "margin"

@@ -36,8 +36,9 @@ def test_jackknife_by_hand():
 
 
 def _baseline(T, cov):
-    return BaselineFit(T, BASELINE_TERMS, np.zeros(6), 30.0, 0.5, 100, (25.0, 35.0), 3000.0,
-                       (), cov)
+    return BaselineFit(roughness_T=T, terms=BASELINE_TERMS, coef=np.zeros(6), temp_ref_C=30.0,
+                       rmse_W=0.5, n_samples=100, temp_range_C=(25.0, 35.0), speed_max_rpm=3000.0,
+                       notes=(), cov=cov)
 
 
 def _design(s, rows):

@@ -70,8 +70,10 @@ def test_mean_power_is_the_weighted_sum_with_T_of_eq9(prob):
     nu, rho = 3e-5, 860.0
     hand = sum(w * clearance_power(om, nu, rho, R, delta, L, prob.law, T)
                for om, w in zip(prob.nodes_rad_s, prob.weights, strict=True))
-    obj = DesignObjective(prob.nodes_rad_s, prob.weights, prob.law, prob.case.motor,
-                          prob.machined_rotor_groove_m, nu, rho)
+    obj = DesignObjective(nodes_rad_s=prob.nodes_rad_s, weights=prob.weights, law=prob.law,
+                          motor=prob.case.motor,
+                          machined_rotor_groove_m=prob.machined_rotor_groove_m, nu_m2_s=nu,
+                          rho_kg_m3=rho)
     assert float(obj.mean_power(np.array([R, delta, d_r, d_s, L]))) == pytest.approx(
         float(hand), rel=1e-12)
 

@@ -192,7 +192,7 @@ def test_duty_cycle_reduction_is_exact(prob, seed_opt):
     nu, _, rho = oil_state(c)
     samples = c.duty_cycle.omega_rad_s
     assert samples.size == 1500 and prob.nodes_rad_s.size == 25  # + the zero node
-    plain = float(np.mean(region1_mean_power(*x, nu, rho, samples, np.ones(1500) / 1500,
+    plain = float(np.mean(region1_mean_power(x, nu, rho, samples, np.ones(1500) / 1500,
                                              prob.law)))
-    reduced = float(region1_mean_power(*x, nu, rho, prob.nodes_rad_s, prob.weights, prob.law))
+    reduced = float(region1_mean_power(x, nu, rho, prob.nodes_rad_s, prob.weights, prob.law))
     assert abs(reduced - plain) <= 1e-12 * plain

@@ -151,7 +151,7 @@ def seed_thermal_toml() -> str:
 
 def produce(out: Path) -> None:
     """Run every golden command in ``out`` (in-process), writing stdout to files."""
-    from oilgap.studies.cli import main
+    from oilgap.cli import main
 
     out.mkdir(parents=True, exist_ok=True)
     (out / "grid.csv").write_text(GRID_EVAL)

@@ -9,11 +9,11 @@ import pandas as pd
 import pytest
 from scipy.optimize import brentq
 
+from oilgap.cli import main
 from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts, film_temperature
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.regions import joint_geometry
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.cli import main
 from oilgap.studies.outside_rig import (
     TEST_STRENGTH,
     OutsideConfig,

@@ -1,13 +1,13 @@
 """``oilgap loop``: calibrate on measured runs, find the missing effect, report before/after
-(arguments in :func:`oilgap.studies.cli.parsers.add_loop`); a thin layer over
-:class:`oilgap.studies.api_loop.Loop` (``og.Loop``)."""
+(arguments in :func:`oilgap.cli.parsers.add_loop`); a thin layer over
+:class:`oilgap._loop.Loop` (``og.Loop``)."""
 
 from __future__ import annotations
 
 import argparse
 
-from oilgap.studies.api_loop import Loop
-from oilgap.studies.cli.outputs import out_folder
+from oilgap._loop import Loop
+from oilgap.cli.outputs import out_folder
 from oilgap.studies.io.result_folder import ResultFolder
 
 

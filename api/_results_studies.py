@@ -1,6 +1,6 @@
 """The studies' results as façade views: :class:`Pareto`, :class:`OilGrade`,
 :class:`Smoothing` (``og.pareto``, ``og.oil_grade``, ``og.smoothing``; the sweep's view is
-in :mod:`oilgap.studies.results_sweep`).
+in :mod:`oilgap._results_sweep`).
 
 ``summary()`` is the text ``oilgap study ...`` prints (the command prints it and nothing
 else; with the ``wrote`` lines when the study wrote its files), ``to_json()`` what
@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from oilgap._results import ResultView, new_axes
 from oilgap.model.case import DesignCase
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
@@ -23,7 +24,6 @@ from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_json
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
-from oilgap.studies.results import ResultView, new_axes
 from oilgap.studies.smoothing_case import NO_TABLE4, draw_case, saving_lines
 from oilgap.studies.smoothing_evidence import evidence_dict, evidence_lines
 from oilgap.studies.smoothing_report import draw_loss_vs_T, thermal_line

@@ -1,6 +1,6 @@
 """The ``oilgap`` command line: a thin layer over the Python API.
 
-The argument tables live in :mod:`oilgap.studies.cli.parsers` (cheap to import);
+The argument tables live in :mod:`oilgap.cli.parsers` (cheap to import);
 each command's ``run(args)`` lives in its own module, named in
 :data:`COMMANDS` and imported only when that command runs (loading cvxpy,
 CasADi's NLP or matplotlib costs seconds that ``oilgap evaluate`` should not
@@ -36,9 +36,9 @@ import warnings
 from collections.abc import Sequence
 from pathlib import Path
 
+from oilgap.cli.parsers import build_parser, finite_float
 from oilgap.model.errors import InfeasibleError, InputError, OilgapWarning, SolverError
 from oilgap.optim.interrupts import catching_interrupts, interrupt_pending
-from oilgap.studies.cli.parsers import build_parser, finite_float
 from oilgap.studies.io.provenance import (
     PACKAGES,
     RunRecord,
@@ -56,15 +56,15 @@ INPUT_ARGUMENTS = ("case", "grid", "mission", "data", "oils", "model")
 """The options and arguments that name an input file (recorded in provenance.json)."""
 
 COMMANDS: dict[str, str] = {
-    "evaluate": "oilgap.studies.cli.evaluate",
-    "optimize": "oilgap.studies.cli.optimize",
-    "study smoothing": "oilgap.studies.cli.study_smoothing",
-    "study pareto": "oilgap.studies.cli.study_pareto",
-    "study oil-grade": "oilgap.studies.cli.study_oil_grade",
-    "study sweep": "oilgap.studies.cli.study_sweep",
-    "loop": "oilgap.studies.cli.loop",
-    "predict": "oilgap.studies.cli.predict",
-    "synth": "oilgap.studies.cli.synth",
+    "evaluate": "oilgap.cli.evaluate",
+    "optimize": "oilgap.cli.optimize",
+    "study smoothing": "oilgap.cli.study_smoothing",
+    "study pareto": "oilgap.cli.study_pareto",
+    "study oil-grade": "oilgap.cli.study_oil_grade",
+    "study sweep": "oilgap.cli.study_sweep",
+    "loop": "oilgap.cli.loop",
+    "predict": "oilgap.cli.predict",
+    "synth": "oilgap.cli.synth",
 }
 """The one dispatch table: command -> module whose ``run(args)`` returns the exit code."""
 

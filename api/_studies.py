@@ -2,7 +2,7 @@
 (``oilgap study pareto|oil-grade|smoothing|sweep``).
 
 Each runs the study's module-level ``run`` and wraps its result in a view
-(:mod:`oilgap.studies.results_studies`). With ``out`` the study writes its files into
+(:mod:`oilgap._results_studies`). With ``out`` the study writes its files into
 that folder as the command does: the folder is checked and locked before any computation
 (:class:`~oilgap.studies.io.result_folder.ResultFolder`), earlier outputs are refused unless
 ``force`` (a sweep continues with ``resume``); ``folder`` is a result folder the caller
@@ -17,20 +17,20 @@ from typing import Any
 
 import pandas as pd
 
+from oilgap._evaluate import as_case, oil_catalogue
+from oilgap._results_studies import OilGrade, Pareto, Smoothing
+from oilgap._results_sweep import Sweep, write_sweep_outputs
 from oilgap.model.case import DesignCase
 from oilgap.model.io.defaults import gamma_fields
 from oilgap.model.oils import Oil
 from oilgap.studies import oil_grade as oil_grade_study
 from oilgap.studies import pareto as pareto_study
 from oilgap.studies import smoothing as smoothing_study
-from oilgap.studies.api import as_case, oil_catalogue
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid
 from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.oil_grade import read_mission_csv
 from oilgap.studies.outputs import result_folder
-from oilgap.studies.results_studies import OilGrade, Pareto, Smoothing
-from oilgap.studies.results_sweep import Sweep, write_sweep_outputs
 from oilgap.studies.settings import (
     OilGradeSettings,
     ParetoSettings,

@@ -1,14 +1,14 @@
 """``oilgap evaluate``: the viscous loss of a joint, region by region, under a thermal mode
-(arguments in :func:`oilgap.studies.cli.parsers.add_evaluate`); a thin layer over
-:func:`oilgap.studies.api.evaluate` (``og.evaluate``): the text is the result's
+(arguments in :func:`oilgap.cli.parsers.add_evaluate`); a thin layer over
+:func:`oilgap._evaluate.evaluate` (``og.evaluate``): the text is the result's
 ``summary()``, ``--json`` its ``to_json()``."""
 
 from __future__ import annotations
 
 import argparse
 
-from oilgap.studies.api import evaluate
-from oilgap.studies.cli.common import load_case, thermal_case
+from oilgap._evaluate import evaluate
+from oilgap.cli.common import load_case, thermal_case
 
 
 def run(args: argparse.Namespace) -> int:

@@ -11,6 +11,8 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from oilgap._evaluate import as_case, oil_catalogue
+from oilgap._results import ResultView, case_defaults, lazy
 from oilgap.model.case import DesignCase
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError, OilgapWarning, SolverError
@@ -25,7 +27,6 @@ from oilgap.optim.calibration.model_io import (
     FittedModel,
     load_model,
 )
-from oilgap.studies.api import as_case, oil_catalogue
 from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.loop_figures import pages, plot_overview, plot_residuals, plot_windows
 from oilgap.studies.loop_report import (
@@ -36,7 +37,6 @@ from oilgap.studies.loop_report import (
     write_report,
 )
 from oilgap.studies.outputs import result_folder
-from oilgap.studies.results import ResultView, case_defaults, lazy
 from oilgap.studies.synth import SynthConfig, synthesize
 
 

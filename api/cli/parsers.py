@@ -3,7 +3,7 @@
 This module imports only :mod:`argparse` and the grid's column names
 (:mod:`oilgap.studies.grid.columns`): building the parser never loads pandas,
 matplotlib, SciPy, CasADi's NLP or cvxpy. Each command's parser sets ``command`` to
-its key in :data:`oilgap.studies.cli.COMMANDS`, the one dispatch table that
+its key in :data:`oilgap.cli.COMMANDS`, the one dispatch table that
 names the module whose ``run(args)`` executes it.
 """
 

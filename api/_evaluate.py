@@ -1,12 +1,12 @@
 """The façade's functions (``import oilgap as og``): one job each, the same as the command
 line's: coerce the case argument, apply the overrides, call the module-level API, wrap the
-result in a view (:mod:`oilgap.studies.results`).
+result in a view (:mod:`oilgap._results`).
 
 This module is light (``og.evaluate`` and ``oilgap evaluate`` load no pandas, matplotlib
 or :mod:`oilgap.optim`): the case, its overrides and :func:`evaluate`. The other
-functions are in :mod:`oilgap.studies.api_design` (``optimize``),
-:mod:`oilgap.studies.api_studies` (``pareto``, ``oil_grade``, ``smoothing``, ``sweep``)
-and :mod:`oilgap.studies.api_loop` (``Loop``, ``predict``, ``synth``); ``oilgap``
+functions are in :mod:`oilgap._optimize` (``optimize``),
+:mod:`oilgap._studies` (``pareto``, ``oil_grade``, ``smoothing``, ``sweep``)
+and :mod:`oilgap._loop` (``Loop``, ``predict``, ``synth``); ``oilgap``
 (``api/__init__.py``) re-exports them all.
 
 A ``case`` argument is a :class:`~oilgap.model.case.DesignCase`, a path to a case TOML
@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import replace
 from pathlib import Path
 
+from oilgap._results import Evaluation
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.errors import InputError, check_finite
 from oilgap.model.evaluation import evaluate_case
@@ -29,7 +30,6 @@ from oilgap.model.oils import Oil, get_oil, read_oils_csv
 from oilgap.model.skin_friction import LAMINAR_LAWS
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
-from oilgap.studies.results import Evaluation
 
 
 def read_case(path: str | Path) -> DesignCase:

@@ -1,15 +1,15 @@
 """``oilgap synth``: synthetic rig data in the measured-data format (arguments in
-:func:`oilgap.studies.cli.parsers.add_synth`); a thin layer over
-:func:`oilgap.studies.api_loop.synth` (``og.synth``)."""
+:func:`oilgap.cli.parsers.add_synth`); a thin layer over
+:func:`oilgap._loop.synth` (``og.synth``)."""
 
 from __future__ import annotations
 
 import argparse
 import sys
 
+from oilgap._loop import synth
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
-from oilgap.studies.api_loop import synth
 from oilgap.studies.io.files import check_out_file
 from oilgap.studies.reporting import write_data_csv
 from oilgap.studies.synth import DEFAULT_STRENGTH

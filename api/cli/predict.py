@@ -1,6 +1,6 @@
 """``oilgap predict``: the power of new rows with the model ``oilgap loop`` fitted
-(arguments in :func:`oilgap.studies.cli.parsers.add_predict`); a thin layer over
-:func:`oilgap.studies.api_loop.predict` (``og.predict``).
+(arguments in :func:`oilgap.cli.parsers.add_predict`); a thin layer over
+:func:`oilgap._loop.predict` (``og.predict``).
 
 The output is the input table with ``predicted_viscous_power_W`` (and
 ``predicted_power_W`` where a baseline was fitted) and ``prediction_note`` (why a
@@ -16,9 +16,9 @@ from pathlib import Path
 
 import pandas as pd
 
+from oilgap._loop import predict
 from oilgap.model.errors import InputError
 from oilgap.optim.calibration.model_io import REASON
-from oilgap.studies.api_loop import predict
 from oilgap.studies.io.files import atomic_to_csv, atomic_to_parquet, check_out_file
 
 OUT_SUFFIXES = (".csv", ".parquet", ".pq")

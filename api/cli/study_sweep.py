@@ -1,6 +1,6 @@
 """``oilgap study sweep GRID``: evaluate or optimize every row of a grid (arguments in
-:func:`oilgap.studies.cli.parsers.add_study`); a thin layer over
-:func:`oilgap.studies.api_studies.sweep` (``og.sweep``), printing its summary (or, with
+:func:`oilgap.cli.parsers.add_study`); a thin layer over
+:func:`oilgap._studies.sweep` (``og.sweep``), printing its summary (or, with
 ``--json``, its JSON document); resumable with the same ``--out``."""
 
 from __future__ import annotations
@@ -9,9 +9,9 @@ import argparse
 import logging
 import sys
 
-from oilgap.studies.api_studies import sweep
-from oilgap.studies.cli.common import show, study_out
-from oilgap.studies.cli.outputs import json_quiet, out_folder
+from oilgap._studies import sweep
+from oilgap.cli.common import show, study_out
+from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.studies.grid.runner import SweepInterrupted
 from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.settings import RunOptions, SweepSettings

@@ -12,7 +12,7 @@ This module holds the base class and the one light view, :class:`Evaluation`: ``
 evaluate`` loads neither pandas nor matplotlib (``tests/cli/test_dispatch.py``), so the
 base class loads them on first use (:func:`lazy`, the one import that is not at the top of
 a module here, like the command line's dispatch table). The other views are in
-:mod:`oilgap.studies.results_design` and :mod:`oilgap.studies.results_studies`.
+:mod:`oilgap._results_design` and :mod:`oilgap._results_studies`.
 """
 
 from __future__ import annotations
@@ -252,7 +252,7 @@ def _film_notes(ev: CaseEvaluation) -> list[str]:
 
 def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
     """Human-readable table of an evaluation (``gamma``: the header line naming the groove
-    exponent and its source, :func:`~oilgap.studies.cli.common.gamma_line`)."""
+    exponent and its source, :func:`~oilgap.cli.common.gamma_line`)."""
     lines = _header(ev) + ([gamma] if gamma else []) + [
         "",
         f"{'region':<14}{'R mm':>7}{'gap mm':>8}{'L mm':>7}{'T':>6}{'Re_peak':>10}"

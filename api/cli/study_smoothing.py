@@ -1,7 +1,7 @@
 """``oilgap study smoothing [CASE]``: fit, Table 4, loss vs T on the seed rig; on a case,
 what smoothing its grooves would save (arguments in
-:func:`oilgap.studies.cli.parsers.add_study`); a thin layer over
-:func:`oilgap.studies.api_studies.smoothing` (``og.smoothing``), printing its summary
+:func:`oilgap.cli.parsers.add_study`); a thin layer over
+:func:`oilgap._studies.smoothing` (``og.smoothing``), printing its summary
 (or, with ``--json``, its JSON document)."""
 
 from __future__ import annotations
@@ -10,11 +10,11 @@ import argparse
 
 import numpy as np
 
+from oilgap._evaluate import as_case
+from oilgap._studies import smoothing
+from oilgap.cli.common import show, study_out
+from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InputError
-from oilgap.studies.api import as_case
-from oilgap.studies.api_studies import smoothing
-from oilgap.studies.cli.common import show, study_out
-from oilgap.studies.cli.outputs import json_quiet, out_folder
 from oilgap.studies.settings import SmoothingSettings
 from oilgap.studies.user_case import is_seed_case
 

@@ -15,13 +15,13 @@ from typing import Any
 
 import pandas as pd
 
+from oilgap._results import ResultView, new_axes
+from oilgap._results_studies import records, wrote_lines
 from oilgap.model.case import DesignCase
 from oilgap.model.io.defaults import gamma_fields, gamma_line
 from oilgap.model.joint_loss import FilmBand, film_band, operating_temperature, uses_balance
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.reporting import markdown_table, write_text
-from oilgap.studies.results import ResultView, new_axes
-from oilgap.studies.results_studies import records, wrote_lines
 from oilgap.studies.sweep_figures import plot_sweep, write_sweep_figure
 
 

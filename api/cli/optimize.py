@@ -1,6 +1,6 @@
 """``oilgap optimize``: the region-1 clearance geometry of least mean viscous power.
 
-Thin layer over :func:`oilgap.studies.api_design.optimize` (``og.optimize``; the
+Thin layer over :func:`oilgap._optimize.optimize` (``og.optimize``; the
 design NLP of :class:`oilgap.optim.design.DesignProblem`, under ``film``/``full`` its
 thermal form): loads the case
 (or the seed joint), applies the oil/operating overrides, solves the design NLP
@@ -9,8 +9,8 @@ and what each constraint costs (its multiplier in physical units). Under a therm
 mode the optimum without heating (``none`` at the case's oil temperature) is solved
 too and shown beside it, with what heating changed and, under ``full``, what a kelvin
 of sea temperature costs. Exit codes: 2 bad input, 3 infeasible problem, 4 solver
-failure (from ``oilgap.studies.cli``). Arguments in
-:func:`oilgap.studies.cli.parsers.add_optimize`.
+failure (from ``oilgap.cli``). Arguments in
+:func:`oilgap.cli.parsers.add_optimize`.
 """
 
 from __future__ import annotations
@@ -19,14 +19,14 @@ import argparse
 import contextlib
 from pathlib import Path
 
+from oilgap._optimize import optimize
+from oilgap._results_design import Optimization
+from oilgap.cli.common import load_case, thermal_case
+from oilgap.cli.outputs import solver_log_to_stderr
 from oilgap.model.errors import InputError, check_finite, check_positive
 from oilgap.model.io.serialize import dumps
-from oilgap.studies.api_design import optimize
-from oilgap.studies.cli.common import load_case, thermal_case
-from oilgap.studies.cli.outputs import solver_log_to_stderr
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
-from oilgap.studies.results_design import Optimization
 from oilgap.studies.settings import DesignLimits
 
 

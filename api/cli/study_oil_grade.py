@@ -1,17 +1,17 @@
 """``oilgap study oil-grade``: the grade table and the recommendation (arguments in
-:func:`oilgap.studies.cli.parsers.add_study`); a thin layer over
-:func:`oilgap.studies.api_studies.oil_grade` (``og.oil_grade``), printing its summary
+:func:`oilgap.cli.parsers.add_study`); a thin layer over
+:func:`oilgap._studies.oil_grade` (``og.oil_grade``), printing its summary
 (or, with ``--json``, its JSON document). Exit 3 if no grade passes both limits."""
 
 from __future__ import annotations
 
 import argparse
 
+from oilgap._evaluate import as_case
+from oilgap._studies import oil_grade
+from oilgap.cli.common import show, study_out
+from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InfeasibleError
-from oilgap.studies.api import as_case
-from oilgap.studies.api_studies import oil_grade
-from oilgap.studies.cli.common import show, study_out
-from oilgap.studies.cli.outputs import json_quiet, out_folder
 from oilgap.studies.oil_grade import read_mission_csv
 from oilgap.studies.settings import DEFAULT_TEMP_RANGE_C, OilGradeSettings, RunOptions
 

@@ -1,16 +1,16 @@
 """``oilgap study pareto``: the gap-loss and loss-inertia fronts (arguments in
-:func:`oilgap.studies.cli.parsers.add_study`); a thin layer over
-:func:`oilgap.studies.api_studies.pareto` (``og.pareto``), printing its summary (or,
+:func:`oilgap.cli.parsers.add_study`); a thin layer over
+:func:`oilgap._studies.pareto` (``og.pareto``), printing its summary (or,
 with ``--json``, its JSON document)."""
 
 from __future__ import annotations
 
 import argparse
 
-from oilgap.studies.api import as_case
-from oilgap.studies.api_studies import pareto
-from oilgap.studies.cli.common import show, study_out
-from oilgap.studies.cli.outputs import json_quiet, out_folder
+from oilgap._evaluate import as_case
+from oilgap._studies import pareto
+from oilgap.cli.common import show, study_out
+from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.studies.settings import ParetoSettings, RunOptions
 
 

@@ -8,6 +8,7 @@ from typing import Any
 
 import pandas as pd
 
+from oilgap._results import ResultView, case_defaults, new_axes
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import oil_state
 from oilgap.model.io.defaults import gamma_fields, gamma_line
@@ -16,7 +17,6 @@ from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, THERMAL_MODE_TEXT, Ther
 from oilgap.model.units import m2_s_to_cst
 from oilgap.optim.design import DesignResult, HeatingComparison
 from oilgap.optim.design.results import POINT_MEANINGS
-from oilgap.studies.results import ResultView, case_defaults, new_axes
 
 MODE_TEXT = THERMAL_MODE_TEXT
 """What each thermal mode computes, for the header line (the model's words)."""

@@ -6,16 +6,16 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from oilgap._evaluate import thermal_case as api_thermal_case
+from oilgap._evaluate import with_operating
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError
 from oilgap.model.io.case_io import read_case_toml, seed_case
-from oilgap.studies.api import thermal_case as api_thermal_case
-from oilgap.studies.api import with_operating
 
 
 def load_case(args: argparse.Namespace) -> DesignCase:
     """The case named on the command line (or the seed), with --oil/--oils, --temp-c and
-    --depth-m applied (:func:`oilgap.studies.api.with_operating`). Shared by the
+    --depth-m applied (:func:`oilgap._evaluate.with_operating`). Shared by the
     subcommands that take a CASE."""
     case = read_case_toml(args.case) if args.case else seed_case(getattr(args, "smoothed",
                                                                          False))
@@ -37,7 +37,7 @@ def show(view, args: argparse.Namespace) -> None:
 def thermal_case(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase, str]:
     """The thermal mode of ``--thermal`` checked against the case and ``--temp-c``, and the
     case with ``--sea-temp-c`` applied (evaluate and optimize share these options): the
-    façade's :func:`oilgap.studies.api.thermal_case`, its messages naming the options."""
+    façade's :func:`oilgap._evaluate.thermal_case`, its messages naming the options."""
     raw = getattr(args, "sea_temp_c", None)
     try:
         sea = None if raw is None else float(raw)

@@ -7,14 +7,14 @@ import warnings
 from pathlib import Path
 from typing import Any
 
+from oilgap._evaluate import as_case, thermal_case, with_operating
+from oilgap._results_design import Optimization, thermal_line
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import OilgapWarning
 from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
 from oilgap.optim.design import DesignProblem, compare_heating
-from oilgap.studies.api import as_case, thermal_case, with_operating
-from oilgap.studies.results_design import Optimization, thermal_line
 from oilgap.studies.settings import DesignLimits
 
 
@@ -35,7 +35,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     case : DesignCase, path or None
         The joint (None: the seed joint).
     oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C
-        As :func:`oilgap.studies.api.evaluate` (oil temperature [degC], depth [m], sea
+        As :func:`oilgap._evaluate.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
     **keywords
         The fields of :class:`~oilgap.studies.settings.DesignLimits`, or ``limits=``,

@@ -1,0 +1,57 @@
+"""The façade is the top package: its modules are private, the engines never import it.
+
+``api/`` is installed as ``oilgap`` itself; ``og.*``, the result views and the command line
+live there in private modules (``_evaluate.py``, ``_results.py``, ...), re-exported lazily by
+``api/__init__.py``. Arrows point down: no module of ``model/``, ``optim/`` or ``studies/``
+imports the façade or the command line.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+import oilgap as og
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _facade_imports(path: Path) -> list[str]:
+    """The façade or CLI modules that ``path`` imports (``oilgap``, ``oilgap._x``, ``.cli``)."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            names = [node.module]
+        elif isinstance(node, ast.Import):
+            names = [a.name for a in node.names]
+        else:
+            continue
+        for name in names:
+            parts = name.split(".")
+            if parts[0] == "oilgap" and (len(parts) == 1 or parts[1].startswith("_")
+                                         or parts[1] == "cli"):
+                found.append(name)
+    return found
+
+
+def test_no_engine_imports_the_facade_or_the_cli():
+    offenders = {str(p.relative_to(ROOT)): _facade_imports(p)
+                 for pkg in ("model", "optim", "studies") for p in (ROOT / pkg).rglob("*.py")}
+    offenders = {k: v for k, v in offenders.items() if v}
+    assert offenders == {}
+
+
+def test_facade_modules_are_private():
+    public = [p.name for p in (ROOT / "api").glob("*.py")
+              if not p.name.startswith("_")]
+    assert public == []
+    assert not list((ROOT / "studies").glob("api*.py"))
+    assert not list((ROOT / "studies").glob("results*.py"))
+
+
+def test_dir_shows_only_the_public_names():
+    assert dir(og) == sorted(og.__all__)
+    assert all(not n.startswith("_") or n == "__version__" for n in dir(og))
+    for name in og.EXPORTS:
+        assert getattr(og, name).__name__ == name
+    assert dir(og) == sorted(og.__all__)  # loading names does not add to dir()

@@ -63,6 +63,18 @@ def case_defaults(case: DesignCase) -> list[dict]:
 # ----------------------------------------------------------------------------- base
 
 
+def raw_field(name: str, doc: str) -> property:
+    """A read-only property of a view: the field ``name`` of its module-level result
+    (``view.<name>`` is ``view.raw.<name>``), declared on the view so that IDEs, type
+    checkers and ``dir`` see it."""
+
+    def get(self: ResultView) -> Any:
+        return getattr(self.raw, name)
+
+    get.__name__ = name
+    return property(get, doc=doc)
+
+
 class ResultView:
     """The methods every result of the façade shares; subclasses give ``to_dict``,
     ``to_frame``, ``plot`` and ``summary``.
@@ -118,14 +130,6 @@ class ResultView:
         head = html.escape("\n".join(self.header()))
         table = self.to_frame().to_html(max_rows=60, float_format=lambda x: f"{x:.6g}")
         return f"<div><pre>{head}</pre>{table}</div>"
-
-    def __getattr__(self, name: str) -> Any:
-        """The module-level result's attributes read through the view
-        (``og.evaluate(case).total_mean_power_W`` is ``.raw.total_mean_power_W``)."""
-        raw = self.__dict__.get("raw")
-        if name.startswith("_") or raw is None:
-            raise AttributeError(f"{type(self).__name__!r} object has no attribute {name!r}")
-        return getattr(raw, name)
 
     def __str__(self) -> str:
         return self.summary()
@@ -331,6 +335,31 @@ class Evaluation(ResultView):
     def total_mean_power_W(self) -> float:
         """Mean power of the whole joint over the cycle [W]."""
         return self.raw.total_mean_power_W
+
+    case_name = raw_field("case_name", "The case's name.")
+    oil = raw_field("oil", "The oil's name.")
+    thermal_mode = raw_field("thermal_mode", "The thermal mode evaluated under.")
+    thermal_mode_default = raw_field("thermal_mode_default",
+                                     "Whether the mode is the default (not given).")
+    oil_temp_C = raw_field("oil_temp_C", "Oil temperature [degC] (the balance's under one).")
+    sea_temp_C = raw_field("sea_temp_C", "Sea temperature [degC] (None without a balance).")
+    resistance_K_per_W = raw_field("resistance_K_per_W", "Thermal resistance [K/W].")
+    other_heat_W = raw_field("other_heat_W", "Heat from other sources [W].")
+    depth_m = raw_field("depth_m", "Depth [m].")
+    nu_cSt = raw_field("nu_cSt", "Kinematic viscosity at the operating point [cSt].")
+    density_kg_m3 = raw_field("density_kg_m3", "Oil density [kg/m^3].")
+    laminar_law = raw_field("laminar_law", "The laminar law of the skin friction.")
+    form = raw_field("form", "The skin-friction form.")
+    peak_speed_rpm = raw_field("peak_speed_rpm", "Peak speed of the duty cycle [rpm].")
+    regions = raw_field("regions", "Per clearance region: its evaluation.")
+    isothermal_total_mean_power_W = raw_field(
+        "isothermal_total_mean_power_W", "Mean loss without heating [W].")
+    viscous_torque_peak_Nm = raw_field("viscous_torque_peak_Nm",
+                                       "Viscous torque at the peak speed [N m].")
+    cycle_energy_J = raw_field("cycle_energy_J", "Energy lost per duty cycle [J].")
+    bearings = raw_field("bearings", "Per rolling bearing: its evaluation.")
+    film_applied = raw_field("film_applied", "Whether film heating was applied.")
+    film_band = raw_field("film_band", "The film band beside the loss.")
 
     def to_dict(self) -> dict:
         """The ``oilgap evaluate --json`` document: the evaluation, gamma and its source,

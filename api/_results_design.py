@@ -235,6 +235,51 @@ class Optimization(ResultView):
         """``"none"``, ``"bulk"``, ``"film"`` or ``"full"``."""
         return self.raw.mode if isinstance(self.raw, HeatingComparison) else "none"
 
+    @property
+    def status(self) -> str:
+        """IPOPT's return status of the optimum."""
+        return self.result.status
+
+    @property
+    def success(self) -> bool:
+        """Whether the solve converged."""
+        return self.result.success
+
+    @property
+    def iterations(self) -> int:
+        """IPOPT iterations of the optimum's start."""
+        return self.result.iterations
+
+    @property
+    def solve_time_s(self) -> float:
+        """Solver wall time [s]."""
+        return self.result.solve_time_s
+
+    @property
+    def initial(self) -> Any:
+        """The case's own design (a DesignPoint)."""
+        return self.result.initial
+
+    @property
+    def optimal(self) -> Any:
+        """The optimal design (a DesignPoint)."""
+        return self.result.optimal
+
+    @property
+    def active_constraints(self) -> Any:
+        """The constraints active at the optimum."""
+        return self.result.active_constraints
+
+    @property
+    def multipliers(self) -> Any:
+        """What each active constraint costs (Multiplier records)."""
+        return self.result.multipliers
+
+    @property
+    def starts(self) -> Any:
+        """The multi-start's starts."""
+        return self.result.starts
+
     def to_case(self, name: str | None = None) -> DesignCase:
         """The optimal design as a case (:meth:`DesignResult.to_case`)."""
         return self.result.to_case(name)

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from oilgap._results import ResultView, new_axes
+from oilgap._results import ResultView, new_axes, raw_field
 from oilgap.model.case import DesignCase
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
@@ -77,6 +77,18 @@ class StudyView(ResultView):
 
 class Pareto(StudyView):
     """The gap-loss and loss-inertia fronts (:class:`oilgap.studies.pareto.ParetoResult`)."""
+
+    gap_front = raw_field("gap_front", "The gap front: delta against mean loss (DataFrame).")
+    inertia_front = raw_field("inertia_front", "The inertia front (DataFrame).")
+    seeds = raw_field("seeds", "The front's seed designs.")
+    reference_point = raw_field("reference_point", "The hypervolume's reference point.")
+    hypervolume = raw_field("hypervolume", "Hypervolume of the gap front [mm W].")
+    sweep_time_s = raw_field("sweep_time_s", "Wall time of the sweep [s].")
+    files = raw_field("files", "The files written (with ``out``).")
+    is_seed = raw_field("is_seed", "Whether the case is the seed joint.")
+    case_name = raw_field("case_name", "The case's name.")
+    thermal_mode = raw_field("thermal_mode", "The thermal mode the fronts were computed under.")
+    thermal_default = raw_field("thermal_default", "Whether the mode is the default.")
 
     def to_frame(self) -> pd.DataFrame:
         """Both fronts, one row per point, ``front`` = ``"gap"`` or ``"inertia"``
@@ -139,6 +151,24 @@ class Pareto(StudyView):
 
 class OilGrade(StudyView):
     """The grade table and recommendation (:class:`oilgap.studies.oil_grade.OilGradeResult`)."""
+
+    table = raw_field("table", "One row per grade: limits, mission energy, rank, verdict.")
+    envelope = raw_field("envelope", "The grid over depth x temperature for every grade.")
+    rated = raw_field("rated", "Loss against grade at the rated depth.")
+    runner_up = raw_field("runner_up", "The second grade (None if no grade passes).")
+    mission = raw_field("mission", "The mission profile used.")
+    mission_source = raw_field("mission_source", "Where the mission came from.")
+    settings = raw_field("settings", "The limits, ranges and thermal mode used.")
+    files = raw_field("files", "The files written (with ``out``).")
+    thermal_mode = raw_field("thermal_mode", "The thermal mode of the study.")
+    isothermal_table = raw_field("isothermal_table", "The table without heating (or None).")
+    recommended_isothermal = raw_field("recommended_isothermal",
+                                       "The recommendation without heating (or None).")
+    runner_up_isothermal = raw_field("runner_up_isothermal",
+                                     "The runner-up without heating (or None).")
+    comparison = raw_field("comparison", "With heating against without (or None).")
+    is_seed = raw_field("is_seed", "Whether the case is the seed joint.")
+    film_band = raw_field("film_band", "The rated point's film band.")
 
     @property
     def recommended(self) -> str | None:
@@ -216,6 +246,18 @@ class Smoothing(StudyView):
         Its plateau criterion [-].
     out : path, optional
     """
+
+    table = raw_field("table", "Table 4 with the model next to the paper (seed rig).")
+    fit = raw_field("fit", "The fit used (None off the seed rig).")
+    checks = raw_field("checks", "The paper's model against every fit.")
+    loss_vs_T = raw_field("loss_vs_T", "Mean loss against roughness T (DataFrame).")
+    plateau = raw_field("plateau", "Per curve, where the loss stops falling.")
+    files = raw_field("files", "The files written (with ``out``).")
+    run_temps = raw_field("run_temps", "Each fit's run temperatures and powers.")
+    thermal_default = raw_field("thermal_default", "Whether the mode is the default.")
+    seed_rig = raw_field("seed_rig", "Whether the case is the seed rig.")
+    case_name = raw_field("case_name", "The case's name.")
+    thermal_mode = raw_field("thermal_mode", "The thermal mode of the loss.")
 
     def __init__(self, raw: Any, case: DesignCase, plateau_tol: float,
                  out: str | Path | None = None):

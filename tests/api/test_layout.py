@@ -55,3 +55,35 @@ def test_dir_shows_only_the_public_names():
     for name in og.EXPORTS:
         assert getattr(og, name).__name__ == name
     assert dir(og) == sorted(og.__all__)  # loading names does not add to dir()
+
+
+def test_views_declare_their_fields_and_forward_nothing():
+    """No ``__getattr__`` forwarding: each field a view shows is declared on it and is a
+    field of the module-level result it reads (so a renamed field fails here)."""
+    import dataclasses
+
+    from oilgap._results import ResultView
+    from oilgap.model.evaluation import CaseEvaluation
+    from oilgap.optim.design.results import DesignResult
+    from oilgap.studies.oil_grade import OilGradeResult
+    from oilgap.studies.pareto import ParetoResult
+    from oilgap.studies.smoothing import SmoothingResult
+
+    assert "__getattr__" not in vars(ResultView)
+    raws = {og.Evaluation: CaseEvaluation, og.Optimization: DesignResult,
+            og.Pareto: ParetoResult, og.OilGrade: OilGradeResult,
+            og.Smoothing: SmoothingResult}
+    for view, raw in raws.items():
+        fields = {f.name for f in dataclasses.fields(raw)}
+        declared = {n for n, v in vars(view).items() if isinstance(v, property)}
+        own = {"defaults"} | ({"result", "thermal_mode"} if view is og.Optimization else set())
+        assert declared - own <= fields, view
+        assert len(declared) >= 5, view
+    ev = og.evaluate(None)
+    assert ev.thermal_mode == ev.raw.thermal_mode and ev.regions is ev.raw.regions
+    try:
+        ev.not_a_field  # noqa: B018
+    except AttributeError:
+        pass
+    else:
+        raise AssertionError("a view forwarded an unknown attribute")

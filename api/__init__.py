@@ -47,6 +47,7 @@ EXPORTS: dict[str, str] = {
     "InputError": "oilgap.model.errors",
     "InfeasibleError": "oilgap.model.errors",
     "SolverError": "oilgap.model.errors",
+    "NotFittedError": "oilgap.model.errors",
 }
 """The façade's names and the module each is loaded from on first use (the one table, as
 the command line's dispatch table)."""

@@ -19,7 +19,11 @@ from oilgap.model.errors import InputError, OilgapWarning, SolverError
 from oilgap.model.io.defaults import gamma_fields
 from oilgap.model.measured.data import MeasuredData, load_measured, read_table
 from oilgap.model.oils import Oil
-from oilgap.optim.calibration.estimator import DEFAULT_MARGIN, LoopEstimator
+from oilgap.optim.calibration.estimator import (
+    DEFAULT_MARGIN,
+    DEFAULT_MIN_EXPLAINED,
+    LoopEstimator,
+)
 from oilgap.optim.calibration.model_io import (
     PREDICTED_POWER,
     PREDICTED_VISCOUS,
@@ -153,19 +157,29 @@ class Loop(LoopEstimator, ResultView):
     base : {"eq6", "power-law", "branches"}
     cv_by : str
         Column whose values are the groups of leave-one-group-out validation.
-    **options
-        Other :class:`LoopEstimator` options (``min_explained``, ``max_effects``, ``cv``).
+    min_explained : float
+        Share of the residual an effect must explain [-].
+    max_effects : int
+        Most effects accepted together.
+    cv : {"one-step", "full"}
+        Cross-validation of the effect search.
+
+    Notes
+    -----
+    The constructor only stores its arguments (the scikit-learn convention); :meth:`fit`
+    reads the case and the oils, checks every option and runs the loop. A method that
+    needs the fit raises :class:`~oilgap.model.errors.NotFittedError` before it.
     """
 
     def __init__(self, case: DesignCase | str | Path | None = None, *,
-                 oils: dict[str, Oil] | str | Path | None = None, effects=None,
+                 oils: dict[str, Oil] | str | Path | None = None,
+                 effects: str | list[str] | tuple[str, ...] | None = None,
                  margin: float = DEFAULT_MARGIN, base: str = "eq6", cv_by: str = "run",
-                 **options: Any):
-        if isinstance(effects, str):
-            effects = [e.strip() for e in effects.split(",") if e.strip()] or None
-        super().__init__(case=None if case is None else as_case(case),
-                         oils=oil_catalogue(oils), margin=margin, effects=effects, base=base,
-                         cv_by=cv_by, **options)
+                 min_explained: float = DEFAULT_MIN_EXPLAINED, max_effects: int = 3,
+                 cv: str = "one-step"):
+        super().__init__(case=case, oils=oils, margin=margin, min_explained=min_explained,
+                         effects=effects, max_effects=max_effects, cv=cv, base=base,
+                         cv_by=cv_by)
 
     @property
     def raw(self) -> Loop:  # the estimator is its own result
@@ -179,6 +193,13 @@ class Loop(LoopEstimator, ResultView):
     def fit(self, data: Any) -> Loop:
         """Run the loop on measured data (path, DataFrame or MeasuredData); data in a wrong
         unit is refused naming the unit, not the solver. Returns ``self``."""
+        given = self.case, self.oils, self.effects
+        effects = self.effects
+        if isinstance(effects, str):
+            effects = [e.strip() for e in effects.split(",") if e.strip()] or None
+        # the estimator reads its case and oils resolved; the arguments stay as given
+        self.case = None if self.case is None else as_case(self.case)
+        self.oils, self.effects = oil_catalogue(self.oils), effects
         try:
             with np.errstate(all="ignore"):  # trial fits at extreme values: not user news
                 super().fit(data)
@@ -187,6 +208,8 @@ class Loop(LoopEstimator, ResultView):
             if refusal is None:
                 raise
             raise refusal from None
+        finally:
+            self.case, self.oils, self.effects = given
         warn_unit_hints(self)
         return self
 
@@ -194,25 +217,22 @@ class Loop(LoopEstimator, ResultView):
         """The input rows with the model's predictions (:func:`predict`)."""
         return predict(self, data, stage=stage)
 
-    def _check_fitted(self) -> None:
-        if not hasattr(self, "law_"):
-            raise InputError("loop", "unfitted", "call fit(data) first")
 
     def to_dict(self) -> dict:
         """The ``loop.json`` document (:func:`~oilgap.studies.loop_report.loop_json`,
         which builds on the estimator's own ``to_dict``)."""
-        self._check_fitted()
+        self._check_fitted("to_dict()")
         return loop_json(self)
 
     def summary(self) -> str:
         """What ``oilgap loop`` prints (without its ``wrote`` line)."""
-        self._check_fitted()
+        self._check_fitted("summary()")
         return format_summary(self)
 
     def to_frame(self) -> pd.DataFrame:
         """Per run: oil, roughness, samples, mean measured and model viscous power [W]
         (without T, with T = before, with the effects = after) and their RMSE [W]."""
-        self._check_fitted()
+        self._check_fitted("to_frame()")
         s, p = self.samples_, self.pred_
         rows = []
         for r in self.per_run_:
@@ -233,7 +253,7 @@ class Loop(LoopEstimator, ResultView):
         residual before and after against time, ``"residuals_speed"`` against speed
         [rpm]. At most :data:`~oilgap.studies.loop_figures.PER_PAGE` runs (the first).
         Returns the first panel's axes (every panel is in ``ax.figure.axes``)."""
-        self._check_fitted()
+        self._check_fitted("plot()")
         if kind not in LOOP_PLOTS:
             raise InputError("kind", kind, f"one of {', '.join(LOOP_PLOTS)}")
         target = ax if ax is not None else lazy("matplotlib.pyplot").figure(figsize=(11, 7))
@@ -252,7 +272,7 @@ class Loop(LoopEstimator, ResultView):
         """Write ``loop.json``, ``report.md`` and the figures into the folder ``out``
         (an earlier report refused unless ``force``; ``folder``: a result folder the
         caller already opened). Returns the paths (``json``, ``report``, ``figures``)."""
-        self._check_fitted()
+        self._check_fitted("report()")
         with result_folder("loop", out, force, folder=folder) as f:
             f.note(**gamma_fields(self.case_))  # the rig case as read, for provenance.json
             f.begin()

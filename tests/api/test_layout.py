@@ -87,3 +87,26 @@ def test_views_declare_their_fields_and_forward_nothing():
         pass
     else:
         raise AssertionError("a view forwarded an unknown attribute")
+
+
+def test_loop_init_only_stores_and_unfitted_methods_refuse(tmp_path):
+    """``og.Loop(...)`` reads nothing (a missing case file is only met in ``fit``), takes
+    no ``**options``, and a method that needs the fit names ``fit`` first."""
+    import inspect
+
+    import pytest
+
+    params = inspect.signature(og.Loop).parameters.values()
+    assert all(p.kind is not inspect.Parameter.VAR_KEYWORD for p in params)
+    missing = tmp_path / "missing.toml"
+    loop = og.Loop(missing, oils=tmp_path / "missing.csv", effects="a,b", max_effects=2)
+    assert (loop.case, loop.effects, loop.max_effects) == (missing, "a,b", 2)
+    for call in (loop.summary, loop.to_frame, loop.to_dict, loop.plot, loop.fitted_model,
+                 lambda: loop.report(tmp_path / "out")):
+        with pytest.raises(og.NotFittedError, match=r"call fit\(data\) before"):
+            call()
+    assert issubclass(og.NotFittedError, og.InputError)
+    with pytest.raises(og.InputError):
+        loop.fit(tmp_path / "runs.csv")
+    assert loop.case == missing  # fit leaves the arguments as given
+    assert not (tmp_path / "out").exists()

@@ -32,8 +32,8 @@ from oilgap.optim.calibration.model_io import (
     load_model,
 )
 from oilgap.studies.io.result_folder import ResultFolder
-from oilgap.studies.loop_figures import pages, plot_overview, plot_residuals, plot_windows
-from oilgap.studies.loop_report import (
+from oilgap.studies.loop.figures import pages, plot_overview, plot_residuals, plot_windows
+from oilgap.studies.loop.report import (
     format_summary,
     loop_json,
     unit_mistake,
@@ -41,7 +41,7 @@ from oilgap.studies.loop_report import (
     write_report,
 )
 from oilgap.studies.outputs import result_folder
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 
 def read_measured(path: str | Path, oils: dict[str, Oil] | str | Path | None = None
@@ -219,7 +219,7 @@ class Loop(LoopEstimator, ResultView):
 
 
     def to_dict(self) -> dict:
-        """The ``loop.json`` document (:func:`~oilgap.studies.loop_report.loop_json`,
+        """The ``loop.json`` document (:func:`~oilgap.studies.loop.report.loop_json`,
         which builds on the estimator's own ``to_dict``)."""
         self._check_fitted("to_dict()")
         return loop_json(self)
@@ -246,12 +246,12 @@ class Loop(LoopEstimator, ResultView):
         return pd.DataFrame(rows).set_index("run")
 
     def plot(self, ax: Any = None, kind: str = "windows") -> Any:
-        """The loop's figures (:mod:`oilgap.studies.loop_figures`, the ones ``report``
+        """The loop's figures (:mod:`oilgap.studies.loop.figures`, the ones ``report``
         writes), drawn on ``ax`` (its place subdivided into panels; default a new pyplot
         figure): ``kind="windows"`` measured and modelled viscous power [W] over the last
         few speed cycles of each run, ``"overview"`` each whole run, ``"residuals"`` the
         residual before and after against time, ``"residuals_speed"`` against speed
-        [rpm]. At most :data:`~oilgap.studies.loop_figures.PER_PAGE` runs (the first).
+        [rpm]. At most :data:`~oilgap.studies.loop.figures.PER_PAGE` runs (the first).
         Returns the first panel's axes (every panel is in ``ax.figure.axes``)."""
         self._check_fitted("plot()")
         if kind not in LOOP_PLOTS:

@@ -22,11 +22,11 @@ from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
-from oilgap.studies.oil_grade_report import draw_heatmap, draw_vs_grade, result_json
+from oilgap.studies.oil_grade.report import draw_heatmap, draw_vs_grade, result_json
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
-from oilgap.studies.smoothing_case import NO_TABLE4, draw_case, saving_lines
-from oilgap.studies.smoothing_evidence import evidence_dict, evidence_lines
-from oilgap.studies.smoothing_report import draw_loss_vs_T, thermal_line
+from oilgap.studies.smoothing.case import NO_TABLE4, draw_case, saving_lines
+from oilgap.studies.smoothing.evidence import evidence_dict, evidence_lines
+from oilgap.studies.smoothing.report import draw_loss_vs_T, thermal_line
 
 
 def records(df: pd.DataFrame | None) -> list[dict] | None:
@@ -290,7 +290,7 @@ class Smoothing(StudyView):
     @property
     def film_evidence(self) -> Any:
         """Table 4's evidence on the film strength
-        (:class:`oilgap.studies.smoothing_evidence.FilmEvidence`), or None when not asked
+        (:class:`oilgap.studies.smoothing.evidence.FilmEvidence`), or None when not asked
         (``film_evidence=True``)."""
         return self.raw.film_evidence
 

@@ -29,7 +29,7 @@ from oilgap.studies import smoothing as smoothing_study
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid
 from oilgap.studies.io.result_folder import ResultFolder
-from oilgap.studies.oil_grade import read_mission_csv
+from oilgap.studies.oil_grade.study import read_mission_csv
 from oilgap.studies.outputs import result_folder
 from oilgap.studies.settings import (
     OilGradeSettings,

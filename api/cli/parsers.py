@@ -62,7 +62,7 @@ def positive_int(text: str) -> int:
 
 SMOOTHING_THERMAL_MODES = ("none", "film", "full")
 """The modes of the smoothing study's Table 4 fit (its own methods: ``bulk`` there is the
-``shared`` method, :mod:`oilgap.studies.smoothing_fit`)."""
+``shared`` method, :mod:`oilgap.studies.smoothing.fit`)."""
 
 
 def add_force(p, what: str = "--out") -> None:

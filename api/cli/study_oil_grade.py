@@ -12,7 +12,7 @@ from oilgap._studies import oil_grade
 from oilgap.cli.common import show, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InfeasibleError
-from oilgap.studies.oil_grade import read_mission_csv
+from oilgap.studies.oil_grade.study import read_mission_csv
 from oilgap.studies.settings import DEFAULT_TEMP_RANGE_C, OilGradeSettings, RunOptions
 
 

@@ -12,7 +12,7 @@ from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
 from oilgap.studies.io.files import check_out_file
 from oilgap.studies.reporting import write_data_csv
-from oilgap.studies.synth import DEFAULT_STRENGTH
+from oilgap.studies.rigs.synth import DEFAULT_STRENGTH
 
 
 def run(args: argparse.Namespace) -> int:

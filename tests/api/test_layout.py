@@ -65,9 +65,9 @@ def test_views_declare_their_fields_and_forward_nothing():
     from oilgap._results import ResultView
     from oilgap.model.evaluation import CaseEvaluation
     from oilgap.optim.design.results import DesignResult
-    from oilgap.studies.oil_grade import OilGradeResult
+    from oilgap.studies.oil_grade.study import OilGradeResult
     from oilgap.studies.pareto import ParetoResult
-    from oilgap.studies.smoothing import SmoothingResult
+    from oilgap.studies.smoothing.study import SmoothingResult
 
     assert "__getattr__" not in vars(ResultView)
     raws = {og.Evaluation: CaseEvaluation, og.Optimization: DesignResult,

@@ -65,7 +65,7 @@ from campaign_table import (
 )
 
 from oilgap.cli import main
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 # --------------------------------------------------------------------------- inputs
 

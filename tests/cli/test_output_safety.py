@@ -29,7 +29,7 @@ from oilgap.studies.grid.schema import read_grid_csv
 from oilgap.studies.io.files import MARKER, atomic_write_text
 from oilgap.studies.io.result_folder import LOCK_NAME, FolderLock, ResultFolder
 from oilgap.studies.outputs import OUTPUTS
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 PY = sys.executable
 ENV = {**os.environ, "PYTHONWARNINGS": "ignore"}
@@ -361,7 +361,7 @@ def test_a_crash_while_drawing_leaves_no_report_linking_missing_figures(tmp_path
     def crash(*args, **kwargs):
         raise ValueError("a bug while drawing")
 
-    monkeypatch.setattr("oilgap.studies.loop_report._figure_residuals", crash)
+    monkeypatch.setattr("oilgap.studies.loop.report._figure_residuals", crash)
     out = tmp_path / "o"
     with pytest.raises(ValueError):  # a bug keeps its traceback; the folder is marked
         main(["loop", str(quick_loop), "--out", str(out)])
@@ -410,7 +410,7 @@ def test_force_puts_the_earlier_outputs_back_when_nothing_new_was_written(tmp_pa
 
 
 def test_outputs_list_every_file_the_loop_writes():
-    from oilgap.studies.loop_report import FIGURES
+    from oilgap.studies.loop.report import FIGURES
 
     assert set(OUTPUTS["loop"]) == {"loop.json", "report.md", "provenance.json", *FIGURES}
 

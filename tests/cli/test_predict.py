@@ -20,7 +20,7 @@ from oilgap.optim.calibration.model_io import (
     load_model,
 )
 from oilgap.studies.reporting import write_data_csv
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 CFG = SynthConfig(n_samples=200, effect="seal_coulomb_friction")
 """A small synthetic rig (2 oil-free + 8 oil runs of 200 samples) with a seal torque."""

@@ -16,7 +16,7 @@ from oilgap.model.joint_loss import joint_mean_power, operating_temperature
 from oilgap.model.oils import get_oil
 from oilgap.studies import oil_grade
 from oilgap.studies.io.case_write import write_case_toml
-from oilgap.studies.oil_grade import SEED_MISSION
+from oilgap.studies.oil_grade.study import SEED_MISSION
 from oilgap.studies.settings import OilGradeSettings, split_keywords
 
 

@@ -1,4 +1,4 @@
-"""The film-strength evidence fit (oilgap.studies.smoothing_evidence).
+"""The film-strength evidence fit (oilgap.studies.smoothing.evidence).
 
 Synthetic Table-4-like data are generated here with a known film strength s, room
 temperature T0, resistance R and gamma by another code path than the fit's: the case's
@@ -15,8 +15,8 @@ from scipy.optimize import brentq
 
 from oilgap.model.case import ThermalSpec
 from oilgap.model.joint_loss import joint_mean_power
-from oilgap.studies.smoothing_evidence import film_evidence, film_power_function
-from oilgap.studies.smoothing_fit import cases_power, load_table4, rig_case
+from oilgap.studies.smoothing.evidence import film_evidence, film_power_function
+from oilgap.studies.smoothing.fit import cases_power, load_table4, rig_case
 
 S_TRUE, T0_TRUE, R_TRUE, GAMMA_TRUE = 0.5, 22.0, 0.15, 0.6
 

@@ -50,7 +50,7 @@ grades; the grade table then also lists its share of the rated and mission power
 
 Under ``bulk``, ``film`` and ``full`` the isothermal study over the same temperatures runs as
 well: the result names both recommendations, whether the grade changes and why
-(:mod:`oilgap.studies.oil_grade_thermal`).
+(:mod:`oilgap.studies.oil_grade.thermal`).
 
 References
 ----------
@@ -82,8 +82,8 @@ from oilgap.model.joint_loss import resolve_thermal_mode as resolve_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
 from oilgap.model.thermal_modes import ThermalMode, uses_balance
 from oilgap.studies.grid.runner import run_grid
-from oilgap.studies.oil_grade_report import summary_markdown, write_outputs
-from oilgap.studies.oil_grade_thermal import compare_recommendations
+from oilgap.studies.oil_grade.report import summary_markdown, write_outputs
+from oilgap.studies.oil_grade.thermal import compare_recommendations
 from oilgap.studies.settings import (
     DEFAULT_DEPTH_RANGE_M,
     DEFAULT_ISO_TOLERANCE,
@@ -210,7 +210,7 @@ class OilGradeResult:
         temperatures (the same as ``table`` under ``none``)
     recommended_isothermal, runner_up_isothermal : its answer
     comparison : the two recommendations, whether the grade changes and why
-        (:func:`oilgap.studies.oil_grade_thermal.compare_recommendations`); None under
+        (:func:`oilgap.studies.oil_grade.thermal.compare_recommendations`); None under
         ``none``
     """
 

@@ -18,10 +18,10 @@ from oilgap.studies.reporting import (
     write_tables,
     write_text,
 )
-from oilgap.studies.smoothing_fit import T_GROOVED, T_SMOOTHED, SmoothingFit
+from oilgap.studies.smoothing.fit import T_GROOVED, T_SMOOTHED, SmoothingFit
 
 if TYPE_CHECKING:
-    from oilgap.studies.smoothing import SmoothingResult
+    from oilgap.studies.smoothing.study import SmoothingResult
 
 THERMAL_TEXT = {
     "none": "isothermal oil at the fitted run temperatures, the seed paper's model",

@@ -43,8 +43,8 @@ parameters are fitted by nonlinear least squares
 The physics is the model's: each run is a :class:`~oilgap.model.case.DesignCase`
 evaluated through the grid engine (Eq. 10 over the duty cycle through
 :func:`~oilgap.model.viscous_loss.clearance_power`). The fit lives in
-:mod:`oilgap.studies.smoothing_fit`, the tables, figures and summary in
-:mod:`oilgap.studies.smoothing_report`.
+:mod:`oilgap.studies.smoothing.fit`, the tables, figures and summary in
+:mod:`oilgap.studies.smoothing.report`.
 
 References
 ----------
@@ -65,10 +65,10 @@ from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import case_defaults
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.settings import INLINE, SmoothingSettings, SweepSettings, split_keywords
-from oilgap.studies.smoothing_case import NO_TABLE4, run_case
-from oilgap.studies.smoothing_evidence import FilmEvidence
-from oilgap.studies.smoothing_evidence import film_evidence as film_evidence_of
-from oilgap.studies.smoothing_fit import (
+from oilgap.studies.smoothing.case import NO_TABLE4, run_case
+from oilgap.studies.smoothing.evidence import FilmEvidence
+from oilgap.studies.smoothing.evidence import film_evidence as film_evidence_of
+from oilgap.studies.smoothing.fit import (
     PLATEAU_TOL,
     RIG_DEPTH_M,
     T_GROOVED,
@@ -82,7 +82,7 @@ from oilgap.studies.smoothing_fit import (
     run_base_temps,
     steady_temperatures,
 )
-from oilgap.studies.smoothing_report import write_outputs
+from oilgap.studies.smoothing.report import write_outputs
 from oilgap.studies.user_case import is_seed_case
 
 # --------------------------------------------------------------------------- the study
@@ -115,7 +115,7 @@ class SmoothingResult:
     seed_rig: bool = True
     """False on a case other than the seed joint: then ``table``, ``fit``, ``checks`` and
     ``run_temps`` are None (Table 4 is the seed rig's) and ``loss_vs_T``/``plateau`` are
-    the case's own (:mod:`oilgap.studies.smoothing_case`)."""
+    the case's own (:mod:`oilgap.studies.smoothing.case`)."""
     defaults: tuple = ()
     """What the tool filled in (:class:`oilgap.model.io.defaults.Default`)."""
     case_name: str = ""
@@ -123,7 +123,7 @@ class SmoothingResult:
     """The thermal mode of the loss (the fit's on the seed rig, the case's otherwise)."""
     film_evidence: FilmEvidence | None = None
     """Table 4's evidence on the film strength (``film_evidence=True`` on the seed rig;
-    :mod:`oilgap.studies.smoothing_evidence`)."""
+    :mod:`oilgap.studies.smoothing.evidence`)."""
 
 
 def _table(fit: SmoothingFit, base: DesignCase, table4: pd.DataFrame,
@@ -343,7 +343,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         Default: the seed joint, whose T = 4 and T = 2 are compared with Table 4. Any
         other case: what smoothing its grooves would save at its own operating point
         with its own gamma, T from its own value down to 1
-        (:func:`oilgap.studies.smoothing_case.run_case`); no fit, no Table 4 (the seed
+        (:func:`oilgap.studies.smoothing.case.run_case`); no fit, no Table 4 (the seed
         rig's measurement); ``method``, ``resistance_K_W`` and ``film_evidence`` are
         refused.
     settings : SmoothingSettings, optional
@@ -355,7 +355,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         ``R_th`` values [K/W] of the per-oil sensitivity fits (gamma against how much
         colder the smoothed runs were); ``film_evidence``: also fit the film strength
         with the rig's heat balance
-        (:func:`oilgap.studies.smoothing_evidence.film_evidence`; seed rig only; writes
+        (:func:`oilgap.studies.smoothing.evidence.film_evidence`; seed rig only; writes
         ``smoothing_film_evidence.csv``).
     """
     s = settings if settings is not None else SmoothingSettings()

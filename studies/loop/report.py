@@ -1,7 +1,7 @@
 """Report of the measured-data loop: terminal summary, ``loop.json``, ``report.md``, figures.
 
 Tables and figures follow :mod:`oilgap.studies.reporting`. Figures (drawn by
-:mod:`oilgap.studies.loop_figures` on the Agg canvas), written next to the report:
+:mod:`oilgap.studies.loop.figures` on the Agg canvas), written next to the report:
 
 * ``measured_vs_model.png``: per run, the whole record: measured viscous power with the
   model without T, with T (before) and with the accepted effects (after);
@@ -34,7 +34,7 @@ from oilgap.model.io.defaults import (
 from oilgap.model.io.serialize import Exact, dumps
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.ranges import effective_scale
-from oilgap.studies.loop_figures import (
+from oilgap.studies.loop.figures import (
     OVERVIEW,
     SPEED,
     TIME,
@@ -314,7 +314,7 @@ def _figure_residuals(curves: LoopCurves, path: Path, against: str) -> Path:
 
 
 def _figures(est: LoopEstimator, out: Path) -> list[Path]:
-    """The figures of :func:`oilgap.studies.loop_figures.figure_names`, written into
+    """The figures of :func:`oilgap.studies.loop.figures.figure_names`, written into
     ``out`` in that order (at most 12 runs a figure)."""
     c = LoopCurves.of(est)
     names = figure_names(len(c.run_names))

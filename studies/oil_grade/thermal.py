@@ -1,6 +1,6 @@
 """The oil grade with and without viscous heating: does the recommendation change, and why.
 
-The oil-grade study (:mod:`oilgap.studies.oil_grade`) under the thermal mode ``bulk``,
+The oil-grade study (:mod:`oilgap.studies.oil_grade.study`) under the thermal mode ``bulk``,
 ``film`` or ``full`` runs the isothermal study over the same temperatures as well; this
 module sets the two answers side by side, grade by grade, and says in words what moved:
 
@@ -25,7 +25,7 @@ from oilgap.model.thermal_modes import ThermalMode, uses_balance
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from oilgap.model.case import DesignCase
-    from oilgap.studies.oil_grade import OilGradeEnvelope
+    from oilgap.studies.oil_grade.study import OilGradeEnvelope
 
 _PER_GRADE = {  # comparison column -> (table column, from the isothermal table?)
     "verdict_isothermal": ("verdict", True), "verdict": ("verdict", False),

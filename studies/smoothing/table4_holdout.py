@@ -9,7 +9,7 @@ powers over the rig's sine cycle.
 
 Leave-one-oil-out: for each oil, the model is calibrated on the other three oils
 (gamma of Eq. 8 and the rig's steady heat balance ``T = T_base + R_th P(T)``, one
-``T_base`` and one ``R_th`` for all runs: :func:`~oilgap.studies.smoothing_fit.fit_smoothing`
+``T_base`` and one ``R_th`` for all runs: :func:`~oilgap.studies.smoothing.fit.fit_smoothing`
 with ``method="shared"``) and predicts the held-out oil's two runs. The
 uncalibrated model is the published law as the seed states it before its
 correction: Eq. 6 with gamma = 0, the oil at its nominal 40 degC. The held-out
@@ -25,7 +25,7 @@ import pandas as pd
 from oilgap.model.case import DesignCase
 from oilgap.model.io.case_io import seed_case
 
-from .smoothing_fit import (
+from .fit import (
     T_GROOVED,
     T_SMOOTHED,
     fit_smoothing,

@@ -13,7 +13,7 @@ Each takes a fitted :class:`~oilgap.optim.calibration.estimator.LoopEstimator` o
 :class:`LoopCurves` drawn from one, and optionally the axes to draw on (one axes is
 subdivided into panels), and returns the axes. At most :data:`PER_PAGE` runs go in one
 figure: :func:`pages` splits the runs, :func:`figure_names` names the files
-:mod:`oilgap.studies.loop_report` writes. :func:`panels` lays out small multiples (here and
+:mod:`oilgap.studies.loop.report` writes. :func:`panels` lays out small multiples (here and
 in :mod:`oilgap.studies.sweep_figures`).
 """
 

@@ -1,4 +1,4 @@
-"""The laws of the out-of-family rig (:mod:`oilgap.studies.outside_rig`), written apart.
+"""The laws of the out-of-family rig (:mod:`oilgap.studies.rigs.outside_rig`), written apart.
 
 Nothing here comes from oilgap's physics (only :mod:`oilgap.model.errors` and
 :mod:`oilgap.model.units` are imported): each law is written again, in a form

@@ -1,10 +1,10 @@
 """An out-of-family rig: viscous-power data built from laws the estimator does not use.
 
-The synthetic rig of :mod:`oilgap.studies.synth` is built from the estimator's
+The synthetic rig of :mod:`oilgap.studies.rigs.synth` is built from the estimator's
 own model. This one is written apart from it, to test the measured-data loop
 on data from outside its family (issue 9, "How to verify"). It imports no
 oilgap physics (only :mod:`oilgap.model.errors` and :mod:`oilgap.model.units`);
-its laws are in :mod:`oilgap.studies.outside_laws`:
+its laws are in :mod:`oilgap.studies.rigs.outside_laws`:
 
 * **Clearance loss**: Eq. 6 of Bilgen & Boulos *piecewise* (not a power law),
   by default bounded below by the exact Couette coefficient, times the groove

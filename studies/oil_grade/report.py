@@ -2,7 +2,7 @@
 
 Written by :func:`oilgap.studies.oil_grade.run` with an output folder; every file
 names the thermal mode (:mod:`oilgap.model.joint_loss`). Under ``bulk``, ``film`` and ``full``
-the isothermal answer and the comparison (:mod:`oilgap.studies.oil_grade_thermal`)
+the isothermal answer and the comparison (:mod:`oilgap.studies.oil_grade.thermal`)
 are written as well.
 """
 
@@ -29,7 +29,7 @@ from oilgap.studies.reporting import (
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from oilgap.model.case import DesignCase
-    from oilgap.studies.oil_grade import OilGradeResult
+    from oilgap.studies.oil_grade.study import OilGradeResult
 
 
 def _axis_words(result: OilGradeResult) -> tuple[str, str]:

@@ -49,7 +49,7 @@ from oilgap.model.regions import region_mean_power
 from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
 from oilgap.model.units import celsius_to_kelvin
 
-from .smoothing_fit import (
+from .fit import (
     MAX_RESISTANCE_K_W,
     _stacked,
     cases_power,
@@ -73,7 +73,7 @@ def film_power_function(cases: list[DesignCase], strength: float,
     """``power_at(temps)``: mean viscous power [W] of the cases at temperatures [degC] with
     the film factor at strength s (s = 0: the isothermal loss, mode ``none``).
 
-    :func:`~oilgap.studies.smoothing_fit.power_function` with each case's film settings
+    :func:`~oilgap.studies.smoothing.fit.power_function` with each case's film settings
     (:func:`~oilgap.model.joint_loss.case_film`) given ``strength`` (and ``walls``: a
     name or the wall parameter w; None keeps the case's).
     """

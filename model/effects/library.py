@@ -215,8 +215,7 @@ def region_states(geometry: JointGeometry, omega_rad_s, nu_m2_s, powers_W
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 3-4) [2].
+    Seed paper (Eqs. 3-4) [2].
     """
     ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
     out = []

@@ -23,12 +23,11 @@ from oilgap._results_sweep import Sweep, write_sweep_outputs
 from oilgap.model.case import DesignCase
 from oilgap.model.io.defaults import gamma_fields
 from oilgap.model.oils import Oil
-from oilgap.studies import oil_grade as oil_grade_study
 from oilgap.studies import pareto as pareto_study
-from oilgap.studies import smoothing as smoothing_study
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.grid.schema import read_grid
 from oilgap.studies.io.result_folder import ResultFolder
+from oilgap.studies.oil_grade import study as oil_grade_study
 from oilgap.studies.oil_grade.study import read_mission_csv
 from oilgap.studies.outputs import result_folder
 from oilgap.studies.settings import (
@@ -38,6 +37,7 @@ from oilgap.studies.settings import (
     SweepSettings,
     split_keywords,
 )
+from oilgap.studies.smoothing import study as smoothing_study
 
 
 def _begin(folder: ResultFolder | None, case: DesignCase) -> None:

@@ -12,8 +12,8 @@ from matplotlib.collections import QuadMesh
 from matplotlib.figure import Figure
 
 from oilgap.optim.calibration.estimator import LoopEstimator
-from oilgap.studies import loop_figures as lf
 from oilgap.studies.io.files import MARKER
+from oilgap.studies.loop import figures as lf
 from oilgap.studies.loop.report import write_report
 from oilgap.studies.rigs.synth import SynthConfig, synthesize
 from oilgap.studies.sweep_figures import choose_layout, plot_sweep, write_sweep_figure

@@ -14,8 +14,8 @@ from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power, operating_temperature
 from oilgap.model.oils import get_oil
-from oilgap.studies import oil_grade
 from oilgap.studies.io.case_write import write_case_toml
+from oilgap.studies.oil_grade import study as oil_grade
 from oilgap.studies.oil_grade.study import SEED_MISSION
 from oilgap.studies.settings import OilGradeSettings, split_keywords
 

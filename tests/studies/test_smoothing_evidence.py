@@ -76,8 +76,8 @@ def test_issue_numbers_on_the_seed_table4():
 def test_cli_flag_and_seed_only():
     from oilgap.cli import build_parser
     from oilgap.model.errors import InputError
-    from oilgap.studies import smoothing
     from oilgap.studies.settings import SmoothingSettings
+    from oilgap.studies.smoothing import study as smoothing
 
     args = build_parser().parse_args(["study", "smoothing", "--film-evidence"])
     assert args.film_evidence is True

@@ -32,8 +32,8 @@ from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.units import ZERO_CELSIUS_K
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.calibration.forward import ForwardModel
-from oilgap.studies import outside_rig, synth
 from oilgap.studies.loop.report import format_summary, report_markdown
+from oilgap.studies.rigs import outside_rig, synth
 from oilgap.studies.rigs.outside_laws import fluid_state, palmgren_churning_power
 
 STATE = ("thermal_lag", "film_heating")

@@ -25,28 +25,29 @@ except PackageNotFoundError:  # running from a source tree that was never instal
     __version__ = "0+unknown"
 
 EXPORTS: dict[str, str] = {
-    "read_case": "oilgap.studies.api",
-    "seed_case": "oilgap.studies.api",
-    "write_case": "oilgap.studies.api",
-    "evaluate": "oilgap.studies.api",
-    "optimize": "oilgap.studies.api_design",
-    "pareto": "oilgap.studies.api_studies",
-    "oil_grade": "oilgap.studies.api_studies",
-    "smoothing": "oilgap.studies.api_studies",
-    "sweep": "oilgap.studies.api_studies",
-    "Loop": "oilgap.studies.api_loop",
-    "predict": "oilgap.studies.api_loop",
-    "synth": "oilgap.studies.api_loop",
-    "read_measured": "oilgap.studies.api_loop",
-    "Evaluation": "oilgap.studies.results",
-    "Optimization": "oilgap.studies.results_design",
-    "Pareto": "oilgap.studies.results_studies",
-    "OilGrade": "oilgap.studies.results_studies",
-    "Smoothing": "oilgap.studies.results_studies",
-    "Sweep": "oilgap.studies.results_sweep",
+    "read_case": "oilgap._evaluate",
+    "seed_case": "oilgap._evaluate",
+    "write_case": "oilgap._evaluate",
+    "evaluate": "oilgap._evaluate",
+    "optimize": "oilgap._optimize",
+    "pareto": "oilgap._studies",
+    "oil_grade": "oilgap._studies",
+    "smoothing": "oilgap._studies",
+    "sweep": "oilgap._studies",
+    "Loop": "oilgap._loop",
+    "predict": "oilgap._loop",
+    "synth": "oilgap._loop",
+    "read_measured": "oilgap._loop",
+    "Evaluation": "oilgap._results",
+    "Optimization": "oilgap._results_design",
+    "Pareto": "oilgap._results_studies",
+    "OilGrade": "oilgap._results_studies",
+    "Smoothing": "oilgap._results_studies",
+    "Sweep": "oilgap._results_sweep",
     "InputError": "oilgap.model.errors",
     "InfeasibleError": "oilgap.model.errors",
     "SolverError": "oilgap.model.errors",
+    "NotFittedError": "oilgap.model.errors",
 }
 """The façade's names and the module each is loaded from on first use (the one table, as
 the command line's dispatch table)."""
@@ -64,4 +65,5 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(__all__))
+    """``dir(og)``: the public names only (:data:`__all__`), loaded or not."""
+    return sorted(__all__)

@@ -19,9 +19,9 @@ from pathlib import Path
 
 from oilgap.model.measured.data import load_measured
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.loop_report import write_report
+from oilgap.studies.loop.report import write_report
 from oilgap.studies.reporting import write_data_csv
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 TARGET_S = 15.0
 

@@ -55,7 +55,7 @@ def child(csv: str, out: str) -> None:
     t0 = time.perf_counter()
     from oilgap.model.measured.data import load_measured
     from oilgap.optim.calibration import LoopEstimator
-    from oilgap.studies.loop_report import write_report
+    from oilgap.studies.loop.report import write_report
     t1 = time.perf_counter()
     data = load_measured(csv)
     t2 = time.perf_counter()
@@ -73,7 +73,7 @@ def child(csv: str, out: str) -> None:
 def make_data(n: int, effect: str | None, path: Path) -> Path:
     """The synthetic rig's experiment with ``n`` samples in all, as CSV."""
     from oilgap.studies.reporting import write_data_csv
-    from oilgap.studies.synth import SynthConfig, synthesize
+    from oilgap.studies.rigs.synth import SynthConfig, synthesize
     per_run = n // RUNS
     cfg = SynthConfig(n_samples=per_run, sample_interval_s=RUN_S / per_run, effect=effect)
     return write_data_csv(synthesize(cfg, seed=0), path)

@@ -1,7 +1,7 @@
 """Weakest strength at which the measured-data loop names each library effect.
 
 Not a speed benchmark: for every effect of ``oilgap.model.effects.EFFECTS`` the
-synthetic rig (``oilgap.studies.synth``) injects it at its default strength,
+synthetic rig (``oilgap.studies.rigs.synth``) injects it at its default strength,
 then at strengths smaller by sqrt(2) each step, and the loop (not told which)
 must accept exactly that effect on seeds 0, 1 and 2. Prints the table that
 ``docs/benchmarks.md`` quotes and writes it to ``out/detect_loop.json``.
@@ -20,7 +20,7 @@ from pathlib import Path
 from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.effects import EFFECTS
 from oilgap.model.io.case_io import seed_case
-from oilgap.studies.synth import SynthConfig, weakest_strength
+from oilgap.studies.rigs.synth import SynthConfig, weakest_strength
 
 BEARING_RIG = SynthConfig(case=replace(seed_case(), bearing=bearing_spec_from(
     {"designation": "6809"})))

@@ -1,4 +1,4 @@
-"""The measured-data loop on the out-of-family rig (``oilgap.studies.outside_rig``).
+"""The measured-data loop on the out-of-family rig (``oilgap.studies.rigs.outside_rig``).
 
 Not a speed benchmark: the rig's truth is the piecewise Eq. 6 with a Couette
 floor, a gearbox loss outside the loop's baseline basis, AR(1) noise and each
@@ -32,8 +32,8 @@ from pathlib import Path
 
 from oilgap.model.io.case_io import case_from_dict
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.outside_laws import OPEN_GEOMETRY, SpeedProfile
-from oilgap.studies.outside_rig import (
+from oilgap.studies.rigs.outside_laws import OPEN_GEOMETRY, SpeedProfile
+from oilgap.studies.rigs.outside_rig import (
     EFFECT_LAWS,
     NEWTONIAN,
     STRENGTH_UNIT,

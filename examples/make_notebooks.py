@@ -319,7 +319,7 @@ measures the motor's own losses (the baseline). `power_W` is the electrical inpu
 
 **Where the data come from.** Not from oilgap's model: they were made once by
 `examples/make_rig_runs.py` with oilgap's *out-of-family rig*
-(`oilgap.studies.outside_rig`), an independent simulation with laws of its own (Eq. 6
+(`oilgap.studies.rigs.outside_rig`), an independent simulation with laws of its own (Eq. 6
 piecewise with a Couette floor, groove factor T^0.5, a gearbox loss ∝ |τω|^1.3, a lumped
 thermal node, 1 W of AR(1) noise on the power). The rig also carries **an effect the loop
 is not told of**: a shaft seal with Coulomb + Stribeck friction of 0.04 N m. A good loop

@@ -3,7 +3,7 @@
 Made ONCE and committed.
 
 The data do not come from oilgap's model. They come from the out-of-family rig
-:mod:`oilgap.studies.outside_rig`, an independent simulation with laws of its own
+:mod:`oilgap.studies.rigs.outside_rig`, an independent simulation with laws of its own
 (Eq. 6 of Bilgen & Boulos piecewise with a Couette floor, the groove factor T^0.5,
 Walther written again, a gearbox loss ``k |tau w|^1.3``, a lumped thermal node,
 AR(1) noise of 1 W on the power). Its geometry is the joint of
@@ -33,8 +33,8 @@ from pathlib import Path
 
 from oilgap.model.errors import InputError
 from oilgap.studies.io.files import atomic_to_csv, check_out_file
-from oilgap.studies.outside_laws import Annulus, RigGeometry
-from oilgap.studies.outside_rig import OutsideConfig, steady_points, synthesize
+from oilgap.studies.rigs.outside_laws import Annulus, RigGeometry
+from oilgap.studies.rigs.outside_rig import OutsideConfig, steady_points, synthesize
 
 HERE = Path(__file__).resolve().parent
 OUT = HERE / "rig_runs.csv"

@@ -45,6 +45,21 @@ class InputError(ValueError):
         super().__init__(f"{loc}{field} = {value!r} is not allowed; {allowed}")
 
 
+class NotFittedError(InputError):
+    """An estimator used before its ``fit``: names it and what to call first.
+
+    Parameters
+    ----------
+    estimator : str
+        The estimator's name (``"loop"``).
+    method : str
+        What was called (``"predict"``, ``"summary"``).
+    """
+
+    def __init__(self, estimator: str, method: str):
+        super().__init__(estimator, "unfitted", f"call fit(data) before {method}")
+
+
 class SolverError(RuntimeError):
     """A numerical solver did not deliver a trustworthy answer.
 

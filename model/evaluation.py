@@ -366,8 +366,7 @@ def mean_viscous_power(case: DesignCase, oil_temp_C: float | None = None,
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 5 and 10) [1].
+    Seed paper (Eqs. 5 and 10) [1].
     """
     nu, _, rho = oil_state(case, oil_temp_C, depth_m)
     nodes, weights = case.duty_cycle.speed_distribution()
@@ -612,8 +611,7 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 3-6 and 8-10) [1]; Nahme (1940), Gavis &
+    Seed paper (Eqs. 3-6 and 8-10) [1]; Nahme (1940), Gavis &
     Laurence (1968) (the heated film).
     """
     mode = resolve_thermal_mode(case, thermal)

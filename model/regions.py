@@ -96,8 +96,7 @@ def joint_regions(case: DesignCase) -> tuple[Region, ...]:
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 9, Table 1, Fig. 4) [1].
+    Seed paper (Eq. 9, Table 1, Fig. 4) [1].
     """
     r1 = case.region1
     out = [Region(REGION_NAMES[0], r1.radius, r1.gap, r1.length, r1.roughness)]
@@ -166,8 +165,7 @@ def region_power(region: Region, omega_rad_s, nu_m2_s, density_kg_m3, law: Frict
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 4-9) [1].
+    Seed paper (Eqs. 4-9) [1].
     """
     return clearance_power(omega_rad_s, nu_m2_s, density_kg_m3, region.radius_m,
                            region.gap_m, region.length_m, law, region.roughness_T)
@@ -210,8 +208,7 @@ def region_mean_power(region: Region, nodes_rad_s, weights, nu_m2_s, density_kg_
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 5 and 10) [1]: the
+    Seed paper (Eqs. 5 and 10) [1]: the
     mean over the cycle's 1500 samples, reduced exactly to its speed distribution.
     Film heating: Nahme (1940), Gavis & Laurence (1968) (:mod:`.film_cycle`).
     """
@@ -244,8 +241,7 @@ def rotor_stator_radii(R_m, delta_m, rotor_groove_m, stator_groove_m):
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 9, Fig. 5) [1].
+    Seed paper (Eq. 9, Fig. 5) [1].
     """
     T3 = R_m + delta_m
     return R_m - rotor_groove_m, R_m, T3, T3 + stator_groove_m
@@ -272,8 +268,7 @@ def rotor_stator_region(R_m, delta_m, rotor_groove_m, stator_groove_m, L_m) -> R
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 9) [1].
+    Seed paper (Eq. 9) [1].
     """
     T = groove_roughness(*rotor_stator_radii(R_m, delta_m, rotor_groove_m, stator_groove_m))
     return Region(REGION_NAMES[0], R_m, delta_m, L_m, T)

@@ -159,8 +159,7 @@ def power_law_cm(reynolds, gap_ratio, C, alpha, beta):
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 7) [3]; each branch of Bilgen & Boulos [1]
+    Seed paper (Eq. 7) [3]; each branch of Bilgen & Boulos [1]
     is one instance.
     """
     return C * gap_ratio**alpha * reynolds**beta
@@ -183,8 +182,7 @@ def groove_roughness_factor(roughness_T, gamma):
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 8) [3].
+    Seed paper (Eq. 8) [3].
     """
     return roughness_T**gamma
 
@@ -212,8 +210,7 @@ def groove_roughness(T1_m, T2_m, T3_m, T4_m):
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 9) [3]; the radii as read from its Fig. 5.
+    Seed paper (Eq. 9) [3]; the radii as read from its Fig. 5.
     """
     return (T4_m - T1_m) / (T3_m - T2_m)
 
@@ -242,8 +239,7 @@ def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     References
     ----------
     Bilgen & Boulos [1]; Pyrhönen et al. [2];
-    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 6) [3].
+    seed paper (Eq. 6) [3].
     """
     b = [power_law_cm(reynolds, gap_ratio, C, alpha, beta) for C, beta in BILGEN_BOULOS_BRANCHES]
     r1, r2, r3 = REGIME_BOUNDARIES_RE
@@ -278,8 +274,7 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH, alpha=BILGE
     References
     ----------
     Bilgen & Boulos [1];
-    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 6-7) [3].
+    seed paper (Eqs. 6-7) [3].
     """
     ln_re = m.log(reynolds)
     ln_x = m.log(gap_ratio)
@@ -315,8 +310,7 @@ def couette_law_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     ----------
     White, *Viscous Fluid Flow*, sec. 3-2.3 (circular Couette flow); Helmholtz and
     Korteweg [4]; Bilgen & Boulos [1];
-    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 6) [3].
+    seed paper (Eq. 6) [3].
     """
     return m.fmax(couette_moment_coefficient(reynolds, gap_ratio),
                   bilgen_boulos_cm(reynolds, gap_ratio, alpha))
@@ -350,8 +344,7 @@ def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
     References
     ----------
     As :func:`couette_law_cm` (Helmholtz and Korteweg [4], Bilgen & Boulos [1],
-    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 6) [3]).
+    seed paper (Eq. 6) [3]).
     """
     ln_cc = m.log(couette_moment_coefficient(reynolds, gap_ratio))
     ln_bb = m.log(bilgen_boulos_cm_smooth(reynolds, gap_ratio, width, alpha))
@@ -425,8 +418,7 @@ def branches_cm(reynolds, gap_ratio, C=BRANCH_C, alpha=BRANCH_ALPHA, beta=BRANCH
     References
     ----------
     Bilgen & Boulos [1] (the default branches);
-    seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 6-7) [3].
+    seed paper (Eqs. 6-7) [3].
     """
     ln_re = m.log(reynolds)
     ln_x = m.log(gap_ratio)
@@ -444,8 +436,7 @@ class FrictionLaw:
     ----------
     form : {"bilgen-boulos", "smooth", "power-law", "branches"}
         Eq. 6 exactly, its smooth form, one power law (Eq. 7) with C, alpha, beta
-        (equations of the seed paper, *Modeling and Optimization of Compensating Oil
-        Viscous Power for a Deep-Sea Electric Manipulator*), or the smooth maximum of
+        (equations of the seed paper [3]), or the smooth maximum of
         branches with their own C_k, alpha_k, beta_k (:func:`branches_cm`).
     laminar_law : {"couette", "bilgen-boulos"}
         ``"couette"``: Eq. 6 bounded below by the exact laminar Couette law;
@@ -577,8 +568,7 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 6-8) [3]; Bilgen & Boulos [1].
+    Seed paper (Eqs. 6-8) [3]; Bilgen & Boulos [1].
     """
     re = m.fmax(reynolds, RE_FLOOR)
     if law.form == FrictionForm.POWER_LAW:

@@ -54,8 +54,7 @@ def couette_reynolds(omega_rad_s, radius_m, gap_m, nu_m2_s):
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 4) [1].
+    Seed paper (Eq. 4) [1].
     """
     return m.fabs(omega_rad_s) * radius_m * gap_m / nu_m2_s
 
@@ -80,8 +79,7 @@ def taylor_number(reynolds, gap_m, radius_m):
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 3) [1]; Taylor [2].
+    Seed paper (Eq. 3) [1]; Taylor [2].
     """
     return reynolds * m.sqrt(gap_m / radius_m)
 
@@ -104,8 +102,7 @@ def flow_regime(reynolds) -> np.ndarray:
 
     References
     ----------
-    Bilgen & Boulos [4]; seed paper (Modeling and Optimization of Compensating Oil
-    Viscous Power for a Deep-Sea Electric Manipulator, Eq. 6) [1].
+    Bilgen & Boulos [4]; seed paper (Eq. 6) [1].
     """
     idx = np.searchsorted(np.asarray(REGIME_BOUNDARIES_RE), np.asarray(reynolds, dtype=float),
                           side="right")
@@ -138,8 +135,7 @@ def couette_torque(omega_rad_s, mu_Pa_s, inner_radius_m, outer_radius_m, length_
 
     References
     ----------
-    White [3], Eq. 3-49; seed paper (Modeling and Optimization of Compensating Oil
-    Viscous Power for a Deep-Sea Electric Manipulator, Eq. 2) [1].
+    White [3], Eq. 3-49; seed paper (Eq. 2) [1].
     """
     r1s = inner_radius_m * inner_radius_m
     r2s = outer_radius_m * outer_radius_m
@@ -169,8 +165,7 @@ def couette_moment_coefficient(reynolds, gap_ratio):
 
     References
     ----------
-    White [3]; seed paper (Modeling and Optimization of Compensating Oil Viscous
-    Power for a Deep-Sea Electric Manipulator, Eq. 5) [1] for the form.
+    White [3]; seed paper (Eq. 5) [1] for the form.
     """
     x = gap_ratio
     return 8.0 * (1.0 + x) ** 2 / ((2.0 + x) * reynolds)

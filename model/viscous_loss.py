@@ -47,8 +47,7 @@ def region_viscous_power(omega_rad_s, density_kg_m3, moment_coeff, radius_m, len
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 5) [1]; Pyrhönen et al. [2].
+    Seed paper (Eq. 5) [1]; Pyrhönen et al. [2].
     """
     w = m.fabs(omega_rad_s)
     return 0.5 * np.pi * moment_coeff * density_kg_m3 * w * w * w * radius_m**4 * length_m
@@ -84,8 +83,7 @@ def clearance_power(omega_rad_s, nu_m2_s, density_kg_m3, radius_m, gap_m, length
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 4-9) [1].
+    Seed paper (Eqs. 4-9) [1].
     """
     re = couette_reynolds(omega_rad_s, radius_m, gap_m, nu_m2_s)
     cm = moment_coefficient(re, gap_m / radius_m, law, roughness_T)
@@ -139,8 +137,7 @@ def joint_output_torque(motor_torque_Nm, viscous_torque_Nm, gear_ratio, gear_eff
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eq. 1) [1].
+    Seed paper (Eq. 1) [1].
     """
     return gear_ratio * gear_efficiency * (motor_torque_Nm - viscous_torque_Nm)
 

@@ -1,7 +1,7 @@
 """The files each folder command writes: the one list that ``--force`` / ``force=True``
 removes before a new run writes (never anything else in the folder), shared by the
-façade's studies (:mod:`oilgap.studies.api_studies`, :mod:`oilgap.studies.api_loop`)
-and the command line (:mod:`oilgap.studies.cli.outputs`)."""
+façade's studies (:mod:`oilgap._studies`, :mod:`oilgap._loop`)
+and the command line (:mod:`oilgap.cli.outputs`)."""
 
 from __future__ import annotations
 

@@ -99,8 +99,8 @@ def write_text(path: Path, text: str) -> Path:
 def write_data_csv(df: pd.DataFrame, path: str | Path) -> Path:
     """Write simulated rig data as CSV (7 significant digits, far below the noise).
 
-    The one writer of both synthetic rigs (:mod:`oilgap.studies.synth`,
-    :mod:`oilgap.studies.outside_rig`); refuses a folder that does not exist.
+    The one writer of both synthetic rigs (:mod:`oilgap.studies.rigs.synth`,
+    :mod:`oilgap.studies.rigs.outside_rig`); refuses a folder that does not exist.
     """
     path = Path(path)
     if not path.parent.is_dir():

@@ -15,7 +15,7 @@ Every figure has axis labels with units, a colour bar with units where colour ca
 the power, a legend where several lines are drawn and a title naming the grid, the
 mode and the thermal mode. :func:`plot_sweep` draws on a given figure or axes (a
 notebook's) or a new Agg figure; :func:`write_sweep_figure` writes the PNG.
-Small multiples are laid out by :func:`oilgap.studies.loop_figures.panels`.
+Small multiples are laid out by :func:`oilgap.studies.loop.figures.panels`.
 """
 
 from __future__ import annotations
@@ -36,7 +36,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import LogLocator, NullFormatter, StrMethodFormatter
 
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
-from oilgap.studies.loop_figures import panels
+from oilgap.studies.loop.figures import panels
 from oilgap.studies.reporting import save_figure
 
 POWER = "mean_power_W"

@@ -111,8 +111,8 @@ def test_modes_forms_and_laws_are_enums_equal_to_their_names():
     line gives, and JSON writes it as that string."""
     import json
 
+    from oilgap import _evaluate as api
     from oilgap.model import skin_friction, thermal_modes
-    from oilgap.studies import api
 
     assert thermal_modes.ThermalMode("bulk") == "bulk"
     assert json.dumps([thermal_modes.ThermalMode.FULL]) == '["full"]'

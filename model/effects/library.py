@@ -4,7 +4,7 @@ Each effect is a physically named term with a formula, a reference, a stable
 name and the sign its coefficient must have. The measured-data loop
 (:mod:`oilgap.optim.calibration`) uses them as regression features: the
 effect's power is ``coefficient * feature`` per sample; the synthetic rig
-(:mod:`oilgap.studies.synth`) injects them into simulated data.
+(:mod:`oilgap.studies.rigs.synth`) injects them into simulated data.
 
 The physical laws live in :mod:`oilgap.model.effects.laws` (end-face discs,
 bearing churning, seal friction, oil inertia, first-order lags, Taylor
@@ -216,8 +216,7 @@ def region_states(geometry: JointGeometry, omega_rad_s, nu_m2_s, powers_W
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Eqs. 3-4) [2].
+    Seed paper (Eqs. 3-4) [2].
     """
     ones = np.ones_like(np.asarray(omega_rad_s * nu_m2_s, dtype=float))
     out = []

@@ -433,8 +433,7 @@ def seed_case(smoothed: bool = False) -> DesignCase:
 
     References
     ----------
-    Seed paper (Modeling and Optimization of Compensating Oil Viscous Power for a
-    Deep-Sea Electric Manipulator, Table 1 and Eq. 9) [1].
+    Seed paper (Table 1 and Eq. 9) [1].
     """
     name = "seed_joint.toml"
     with resources.as_file(resources.files("oilgap.model") / "data" / name) as p:

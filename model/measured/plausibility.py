@@ -12,7 +12,7 @@ goes on.
 
 A speed in rad/s cannot be told from a slow rig by the speed alone; the loop
 compares the fitted level with the published law after the fit
-(:func:`oilgap.studies.loop_report.unit_hints`).
+(:func:`oilgap.studies.loop.report.unit_hints`).
 
 References
 ----------

@@ -61,7 +61,7 @@ import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.effects import CONFOUNDED_FORMS, EFFECTS, RigFacts
-from oilgap.model.errors import InputError
+from oilgap.model.errors import InputError, NotFittedError
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.measured.data import (
     MeasuredData,
@@ -386,9 +386,13 @@ class LoopEstimator:
         -------
         FittedModel
         """
-        if not hasattr(self, "law_"):
-            raise InputError("estimator", "unfitted", "call fit(data) before predict")
+        self._check_fitted("predict()")
         return FittedModel.from_estimator(self)
+
+    def _check_fitted(self, method: str) -> None:
+        """Refuse ``method`` before :meth:`fit` (:class:`~oilgap.model.errors.NotFittedError`)."""
+        if not hasattr(self, "law_"):
+            raise NotFittedError("loop", method)
 
     def predict(self, data, stage: str = "with_effect") -> pd.Series:
         """Model viscous power [W] of the rows of ``data``, aligned with the caller's rows.
@@ -423,6 +427,7 @@ class LoopEstimator:
             Errors [W], calibration, effects, candidates, selection, residuals,
             data, baselines and the three models' laws.
         """
+        self._check_fitted("to_dict()")
         d = self.data_
         return {
             "rmse_W": dict(self.rmse_),

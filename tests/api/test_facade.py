@@ -24,8 +24,8 @@ from oilgap.optim.calibration.model_io import PREDICTED_VISCOUS
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.multiobjective import hypervolume_2d
 from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 from oilgap.studies.settings import INLINE, SweepSettings
-from oilgap.studies.synth import SynthConfig, synthesize
 
 THERMAL_CASE = Path(__file__).parents[1] / "golden" / "data" / "seed_thermal.toml"
 

@@ -14,9 +14,9 @@ import pytest
 matplotlib.use("Agg")
 
 import oilgap as og  # noqa: E402
+from oilgap.cli import main  # noqa: E402
 from oilgap.model.errors import InputError  # noqa: E402
 from oilgap.model.io.serialize import round_sig  # noqa: E402
-from oilgap.studies.cli import main  # noqa: E402
 
 MY_JOINT = Path(__file__).parents[2] / "examples" / "my_joint.toml"
 GRID = "oil,oil_temp_C,gap_mm\nVG22,2,1.0\nVG32,10,0.8\n"

@@ -41,7 +41,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from oilgap.studies.cli import main as oilgap_main
+from oilgap.cli import main as oilgap_main
 
 # --------------------------------------------------------------------------- a row
 
@@ -375,7 +375,7 @@ def json_stdout(d: Path, out: str, written: list[str]) -> None:
 # ---- process rows (a real process: the pipe, the signal, the C-level log)
 
 def _oilgap(*argv: str) -> list[str]:
-    return [sys.executable, "-m", "oilgap.studies.cli", *argv]
+    return [sys.executable, "-m", "oilgap.cli", *argv]
 
 
 def proc_closed_pipe(d: Path) -> tuple[int, str, str]:

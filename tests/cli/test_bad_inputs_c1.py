@@ -7,8 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.io import inputs
-from oilgap.studies.cli import main
 
 CASE = """name = "t"
 [region1]

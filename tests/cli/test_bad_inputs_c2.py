@@ -9,11 +9,11 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.errors import SolverError
 from oilgap.model.io.case_io import seed_case
 from oilgap.optim.calibration.estimator import LoopEstimator
-from oilgap.studies.cli import main
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 SEED_TOML = """name = "seed without gamma"
 [region1]

@@ -2,7 +2,7 @@
 and a hostile one would try them.
 
 Each row writes its input files into a fresh folder, runs ``oilgap`` there (in-process
-through :func:`oilgap.studies.cli.main`; a real process only where the process is the
+through :func:`oilgap.cli.main`; a real process only where the process is the
 point: a closed pipe, Ctrl-C, IPOPT's C-level log) and classifies what happened:
 
 * **refused**: exit 2, exactly one line on stderr starting ``oilgap: error:`` (or
@@ -64,8 +64,8 @@ from campaign_table import (
     truncate_store,
 )
 
-from oilgap.studies.cli import main
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.cli import main
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 # --------------------------------------------------------------------------- inputs
 

@@ -8,10 +8,10 @@ import sys
 
 import pytest
 
+from oilgap.cli import COMMANDS, build_parser, parsers
+from oilgap.cli.parsers import EFFECT_NAMES
 from oilgap.model.effects import EFFECTS
 from oilgap.model.joint_loss import THERMAL_MODES
-from oilgap.studies.cli import COMMANDS, build_parser, parsers
-from oilgap.studies.cli.parsers import EFFECT_NAMES
 
 HEAVY = ("pandas", "matplotlib", "cvxpy", "scipy.signal", "oilgap.optim.design",
          "oilgap.optim.calibration")
@@ -48,7 +48,7 @@ def test_every_table_entry_is_reachable_from_the_parser():
 
 def test_evaluate_loads_no_heavy_library():
     code = ("import sys, json, io, contextlib\n"
-            "from oilgap.studies.cli import main\n"
+            "from oilgap.cli import main\n"
             "with contextlib.redirect_stdout(io.StringIO()):\n"
             "    assert main(['evaluate']) == 0\n"
             f"print(json.dumps([m for m in {HEAVY!r} if m in sys.modules]))\n")
@@ -58,7 +58,7 @@ def test_evaluate_loads_no_heavy_library():
 
 
 def test_python_m_runs_the_same_main():
-    r = subprocess.run([sys.executable, "-m", "oilgap.studies.cli", "study", "--help"],
+    r = subprocess.run([sys.executable, "-m", "oilgap.cli", "study", "--help"],
                        capture_output=True, text=True, timeout=120)
     assert r.returncode == 0
     for study in ("smoothing", "pareto", "oil-grade", "sweep"):

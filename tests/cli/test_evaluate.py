@@ -7,9 +7,9 @@ import sys
 
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
-from oilgap.studies.cli import main
 
 BAD_TOML = """
 name = "bad joint"
@@ -58,11 +58,11 @@ def test_cli_bad_input_exit_2(capsys, argv, needle):
 def test_cli_bad_input_subprocess_no_traceback(tmp_path):
     p = tmp_path / "case.toml"
     p.write_text(BAD_TOML)
-    r = subprocess.run([sys.executable, "-m", "oilgap.studies.cli", "evaluate", str(p)],
+    r = subprocess.run([sys.executable, "-m", "oilgap.cli", "evaluate", str(p)],
                        capture_output=True, text=True)
     assert r.returncode == 2
     assert "T4_mm = 26.0" in r.stderr and "Traceback" not in r.stderr
-    r = subprocess.run([sys.executable, "-m", "oilgap.studies.cli", "evaluate", "--temp-c",
+    r = subprocess.run([sys.executable, "-m", "oilgap.cli", "evaluate", "--temp-c",
                         "nan"], capture_output=True, text=True)
     assert r.returncode == 2 and "--temp-c" in r.stderr and "Traceback" not in r.stderr
 

@@ -11,10 +11,10 @@ from dataclasses import replace
 
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.bearing import bearing_mean_power, bearing_torque
 from oilgap.model.evaluation import oil_state
 from oilgap.model.io.case_io import read_case_toml
-from oilgap.studies.cli import main
 
 THERMAL = """
 [thermal]

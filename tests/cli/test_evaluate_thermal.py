@@ -7,7 +7,7 @@ import re
 
 import pytest
 
-from oilgap.studies.cli import main
+from oilgap.cli import main
 
 THERMAL = """
 [thermal]

@@ -12,9 +12,9 @@ from pathlib import Path
 import pytest
 
 import oilgap
+from oilgap.cli import LOG, build_parser, configure_logging, main
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.case_write import case_to_dict, dumps_toml
-from oilgap.studies.cli import LOG, build_parser, configure_logging, main
 from oilgap.studies.outputs import OUTPUTS
 
 NOMENCLATURE = Path(__file__).parents[2] / "docs" / "nomenclature.md"

@@ -7,12 +7,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.effects import TIME_DEPENDENT
 from oilgap.model.io.case_io import read_case_toml
 from oilgap.model.regions import joint_geometry, region_power
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.optim.calibration.candidates import STEADY_POINT_STATUS
-from oilgap.studies.cli import main
 
 ISSUE_KEYS = {"rmse_W": {"without_T", "with_T", "with_effect"},
               "heldout_rmse_W": {"before", "after"}}

@@ -7,9 +7,9 @@ import sys
 import pytest
 
 import oilgap.optim.design.variables as dv
+from oilgap.cli import main
 from oilgap.model.io.case_io import seed_case
 from oilgap.optim.design import DesignProblem
-from oilgap.studies.cli import main
 
 POINT_KEYS = {"mean_power_W", "T", "delta_mm", "R_mm", "L_mm", "T1_mm", "T2_mm", "T3_mm",
               "T4_mm", "torque_capability_Nm", "inertia_kgm2"}
@@ -138,7 +138,7 @@ def test_bad_case_bounds_exit_2(tmp_path, capsys):
 
 
 def test_subprocess_infeasible_no_traceback():
-    r = subprocess.run([sys.executable, "-m", "oilgap.studies.cli", "optimize",
+    r = subprocess.run([sys.executable, "-m", "oilgap.cli", "optimize",
                         "--torque-min-nm", "5"], capture_output=True, text=True, timeout=60)
     assert r.returncode == 3
     assert "Traceback" not in r.stderr and len(r.stderr.strip().splitlines()) == 1

@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.case import ThermalSpec
 from oilgap.model.io.case_io import seed_case
-from oilgap.studies.cli import main
 from oilgap.studies.io.case_write import write_case_toml
 
 GOLDEN = Path(__file__).resolve().parents[1] / "golden" / "data" / "optimize_none.json"

@@ -22,14 +22,14 @@ import pandas as pd
 import pytest
 from matplotlib.figure import Figure
 
+from oilgap.cli import COMMANDS, main
 from oilgap.model.measured.data import load_measured
 from oilgap.optim.calibration.estimator import LoopEstimator
-from oilgap.studies.cli import COMMANDS, main
 from oilgap.studies.grid.schema import read_grid_csv
 from oilgap.studies.io.files import MARKER, atomic_write_text
 from oilgap.studies.io.result_folder import LOCK_NAME, FolderLock, ResultFolder
 from oilgap.studies.outputs import OUTPUTS
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 PY = sys.executable
 ENV = {**os.environ, "PYTHONWARNINGS": "ignore"}
@@ -143,7 +143,7 @@ def test_a_bad_out_is_refused_before_any_computation(tmp_path, monkeypatch, caps
 
 
 def test_every_command_that_writes_has_force():
-    from oilgap.studies.cli import build_parser
+    from oilgap.cli import build_parser
 
     parser = build_parser()
     for argv in (["synth"], ["optimize"], ["loop", "d.csv"], ["study", "smoothing"],
@@ -231,7 +231,7 @@ KILL_MID_CHUNK = textwrap.dedent("""
         return real(df, path, **kw)
 
     store.atomic_to_csv = dying
-    from oilgap.studies.cli import main
+    from oilgap.cli import main
     sys.exit(main(sys.argv[1:]))
 """)
 
@@ -361,7 +361,7 @@ def test_a_crash_while_drawing_leaves_no_report_linking_missing_figures(tmp_path
     def crash(*args, **kwargs):
         raise ValueError("a bug while drawing")
 
-    monkeypatch.setattr("oilgap.studies.loop_report._figure_residuals", crash)
+    monkeypatch.setattr("oilgap.studies.loop.report._figure_residuals", crash)
     out = tmp_path / "o"
     with pytest.raises(ValueError):  # a bug keeps its traceback; the folder is marked
         main(["loop", str(quick_loop), "--out", str(out)])
@@ -410,7 +410,7 @@ def test_force_puts_the_earlier_outputs_back_when_nothing_new_was_written(tmp_pa
 
 
 def test_outputs_list_every_file_the_loop_writes():
-    from oilgap.studies.loop_report import FIGURES
+    from oilgap.studies.loop.report import FIGURES
 
     assert set(OUTPUTS["loop"]) == {"loop.json", "report.md", "provenance.json", *FIGURES}
 
@@ -428,7 +428,7 @@ def test_optimize_json_verbose_keeps_ipopt_off_stdout(capfd):
 
 
 def _cli(*argv: str) -> list[str]:
-    return [PY, "-m", "oilgap.studies.cli", *argv]
+    return [PY, "-m", "oilgap.cli", *argv]
 
 
 def test_a_closed_stdout_ends_quietly():
@@ -485,8 +485,8 @@ def test_an_interrupt_casadi_swallowed_is_raised_after_the_solve(monkeypatch):
 def test_casadis_own_interrupt_warning_is_not_printed(monkeypatch):
     import io
 
+    from oilgap.cli import _QuietSolverInterrupt
     from oilgap.optim import interrupts
-    from oilgap.studies.cli import _QuietSolverInterrupt
 
     buf = io.StringIO()
     err = _QuietSolverInterrupt(buf)

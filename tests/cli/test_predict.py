@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.fluid_table import TableFluid
 from oilgap.model.fluids import GasFluid
 from oilgap.model.oils import Oil
@@ -18,9 +19,8 @@ from oilgap.optim.calibration.model_io import (
     fluid_to_dict,
     load_model,
 )
-from oilgap.studies.cli import main
 from oilgap.studies.reporting import write_data_csv
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 CFG = SynthConfig(n_samples=200, effect="seal_coulomb_friction")
 """A small synthetic rig (2 oil-free + 8 oil runs of 200 samples) with a seal torque."""

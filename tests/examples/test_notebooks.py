@@ -29,7 +29,8 @@ from oilgap.model.io.case_io import read_case_toml
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.heating import compare_heating
-from oilgap.studies import oil_grade, pareto
+from oilgap.studies import pareto
+from oilgap.studies.oil_grade import study as oil_grade
 from oilgap.studies.settings import OilGradeSettings, ParetoSettings
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"

@@ -47,7 +47,7 @@ _TIMING_MD = re.compile(r"\d+(?:\.\d+)?\s?(?:s|ms)\b")
 
 LSQ_RTOL = 1e-6
 """Least-squares fits (loop, smoothing): scipy ``least_squares`` (trf) stops at
-``ftol = xtol = gtol = 1e-10`` (optim/calibration/least_squares.py, studies/smoothing_fit.py),
+``ftol = xtol = gtol = 1e-10`` (optim/calibration/least_squares.py, studies/smoothing/fit.py),
 a relative change of the cost; the parameters are then fixed to ~sqrt(1e-10) = 1e-5 in the
 flattest direction at worst, ~1e-8 in practice."""
 IPOPT_RTOL = 1e-6
@@ -151,7 +151,7 @@ def seed_thermal_toml() -> str:
 
 def produce(out: Path) -> None:
     """Run every golden command in ``out`` (in-process), writing stdout to files."""
-    from oilgap.studies.cli import main
+    from oilgap.cli import main
 
     out.mkdir(parents=True, exist_ok=True)
     (out / "grid.csv").write_text(GRID_EVAL)

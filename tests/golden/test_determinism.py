@@ -40,7 +40,7 @@ def _one_core() -> None:  # pragma: no cover - runs in the child
 
 def _oilgap(argv: list[str], cwd: Path, one_core: bool = False, **env: str) -> None:
     full = {**os.environ, **env}
-    r = subprocess.run([sys.executable, "-m", "oilgap.studies.cli", *argv], cwd=cwd, env=full,
+    r = subprocess.run([sys.executable, "-m", "oilgap.cli", *argv], cwd=cwd, env=full,
                        capture_output=True, text=True, timeout=300,
                        preexec_fn=_one_core if one_core else None)
     assert r.returncode == 0, r.stderr

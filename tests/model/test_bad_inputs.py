@@ -27,8 +27,8 @@ from oilgap.model.io.inputs import read_input_text
 from oilgap.model.motor import motor_torque
 from oilgap.model.oils import Oil, read_oils_csv
 from oilgap.model.skin_friction import FrictionLaw, check_friction_ranges
-from oilgap.studies.smoothing_fit import _refuse_unidentified, fit_smoothing
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
+from oilgap.studies.smoothing.fit import _refuse_unidentified, fit_smoothing
 
 SECRET = "root:x:0:0:hunter2-secret"
 
@@ -309,7 +309,7 @@ def test_synth_strength_sign_and_size():
 
 
 def test_synth_negative_seed_refused_before_simulating(monkeypatch):
-    monkeypatch.setattr("oilgap.studies.synth.simulate_truth",
+    monkeypatch.setattr("oilgap.studies.rigs.synth.simulate_truth",
                         lambda *a: pytest.fail("simulated before the seed was checked"))
     with pytest.raises(InputError) as e:
         synthesize(seed=-1)

@@ -11,6 +11,7 @@ import casadi as ca
 import numpy as np
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import evaluate_case, oil_state
 from oilgap.model.fluids import (
@@ -25,7 +26,6 @@ from oilgap.model.io.case_io import read_case_toml
 from oilgap.model.io.case_write import case_to_dict
 from oilgap.model.oils import builtin_fluids, get_oil, read_oils_csv
 from oilgap.model.regions import joint_regions, region_mean_power
-from oilgap.studies.cli import main
 from oilgap.studies.io.case_write import write_case_toml
 
 R_U = 8.314462618  # J/(mol K), CODATA 2018

@@ -6,13 +6,13 @@ from dataclasses import replace
 
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.io.case_io import case_from_dict, read_case_toml, seed_case
 from oilgap.model.io.case_write import case_to_dict
 from oilgap.model.io.defaults import case_defaults
 from oilgap.model.skin_friction import FrictionLaw
-from oilgap.studies.cli import main
 from oilgap.studies.io.case_write import write_case_toml
 
 BRANCHES = {"form": "branches", "branch_C": [10.0, 2.0, 1.03, 0.065],

@@ -17,7 +17,7 @@ from pathlib import Path
 import pytest
 
 import oilgap as og
-from oilgap.studies.cli import main
+from oilgap.cli import main
 
 ROOT = Path(__file__).resolve().parents[2]
 README_CASE = re.search(r"`my_joint.toml`:\n\n```toml\n(.*?)```",

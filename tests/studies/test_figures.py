@@ -12,11 +12,11 @@ from matplotlib.collections import QuadMesh
 from matplotlib.figure import Figure
 
 from oilgap.optim.calibration.estimator import LoopEstimator
-from oilgap.studies import loop_figures as lf
 from oilgap.studies.io.files import MARKER
-from oilgap.studies.loop_report import write_report
+from oilgap.studies.loop import figures as lf
+from oilgap.studies.loop.report import write_report
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 from oilgap.studies.sweep_figures import choose_layout, plot_sweep, write_sweep_figure
-from oilgap.studies.synth import SynthConfig, synthesize
 
 
 def _result(grid: pd.DataFrame) -> pd.DataFrame:
@@ -166,7 +166,7 @@ def test_loop_overview_and_windows_one_panel_per_run_with_legends(loop):
 
 
 def test_loop_report_writes_every_named_figure(loop, tmp_path, monkeypatch):
-    monkeypatch.setattr("oilgap.studies.loop_report.DPI", 20)  # small files, fast
+    monkeypatch.setattr("oilgap.studies.loop.report.DPI", 20)  # small files, fast
     paths = write_report(loop, tmp_path)
     names = lf.figure_names(len(loop.samples_.run_names))
     assert [p.name for p in paths["figures"]] == names

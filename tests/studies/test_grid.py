@@ -10,12 +10,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power, oil_state
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
-from oilgap.studies.cli import main
 from oilgap.studies.grid import runner
 from oilgap.studies.grid.evaluate import evaluate_cases
 from oilgap.studies.grid.runner import progress_bar

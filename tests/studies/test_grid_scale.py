@@ -12,12 +12,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.errors import InfeasibleError, InputError
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
-from oilgap.studies.cli import main
 from oilgap.studies.grid import backends, runner
 from oilgap.studies.grid.chunking import WARM_CHAIN, ChunkSizer
 from oilgap.studies.grid.columns import OPTIMIZE_RESULTS

@@ -10,6 +10,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.case import ThermalSpec
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case, mean_viscous_power
@@ -19,7 +20,6 @@ from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_regions, region_mean_power
 from oilgap.model.units import celsius_to_kelvin
-from oilgap.studies.cli import main
 from oilgap.studies.grid import runner
 from oilgap.studies.grid.evaluate import evaluate_cases
 from oilgap.studies.grid.schema import apply_params, read_grid_csv

@@ -6,14 +6,14 @@ from dataclasses import replace
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.case import MissionSegment, OperatingPoint
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
-from oilgap.studies import oil_grade
-from oilgap.studies.cli import main
-from oilgap.studies.oil_grade import SEED_MISSION, parse_mission
+from oilgap.studies.oil_grade import study as oil_grade
+from oilgap.studies.oil_grade.study import SEED_MISSION, parse_mission
 from oilgap.studies.settings import OilGradeSettings, split_keywords
 
 

@@ -38,8 +38,8 @@ from oilgap.model.bearing.catalogue import bearing_spec_from
 from oilgap.model.case import OperatingPoint, ThermalSpec
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import operating_temperature
-from oilgap.studies import oil_grade
 from oilgap.studies.grid.evaluate import evaluate_cases
+from oilgap.studies.oil_grade import study as oil_grade
 from oilgap.studies.settings import OilGradeSettings, split_keywords
 
 

@@ -7,16 +7,16 @@ from dataclasses import replace
 
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.case import ThermalSpec
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power, operating_temperature
 from oilgap.model.oils import get_oil
-from oilgap.studies import oil_grade
-from oilgap.studies.cli import main
 from oilgap.studies.io.case_write import write_case_toml
-from oilgap.studies.oil_grade import SEED_MISSION
+from oilgap.studies.oil_grade import study as oil_grade
+from oilgap.studies.oil_grade.study import SEED_MISSION
 from oilgap.studies.settings import OilGradeSettings, split_keywords
 
 

@@ -1,6 +1,6 @@
 """The out-of-family rig against hand calculations, published values and oilgap's own laws.
 
-The rig (``oilgap.studies.outside_rig``, laws in ``outside_laws``) must not share code
+The rig (``oilgap.studies.rigs.outside_rig``, laws in ``outside_laws``) must not share code
 with the estimator; where oilgap has the same law (Eq. 6, Walther, the first-order
 lag) the two implementations are compared here as a second method.
 """
@@ -19,8 +19,9 @@ from oilgap.model.errors import InputError
 from oilgap.model.measured.data import validate
 from oilgap.model.oils import builtin_oils
 from oilgap.model.skin_friction import bilgen_boulos_cm, couette_law_cm
-from oilgap.studies import outside_laws as laws
-from oilgap.studies.outside_rig import (
+from oilgap.studies.reporting import write_data_csv
+from oilgap.studies.rigs import outside_laws as laws
+from oilgap.studies.rigs.outside_rig import (
     NEWTONIAN,
     OutsideConfig,
     SpeedProfile,
@@ -30,7 +31,6 @@ from oilgap.studies.outside_rig import (
     steady_points,
     synthesize,
 )
-from oilgap.studies.reporting import write_data_csv
 
 ROOT = Path(__file__).resolve().parents[2]
 W0 = 3000 * 2 * math.pi / 60  # 314.159 rad/s
@@ -39,7 +39,7 @@ W0 = 3000 * 2 * math.pi / 60  # 314.159 rad/s
 def test_imports_no_oilgap_physics():
     allowed = {"oilgap.model.errors", "oilgap.model.units"}
     for name in ("outside_rig.py", "outside_laws.py"):
-        tree = ast.parse((ROOT / "studies" / name).read_text())
+        tree = ast.parse((ROOT / "studies" / "rigs" / name).read_text())
         mods = {n.module for n in ast.walk(tree) if isinstance(n, ast.ImportFrom) and n.level == 0}
         mods |= {a.name for n in ast.walk(tree) if isinstance(n, ast.Import) for a in n.names}
         assert {m for m in mods if m.startswith("oilgap")} <= allowed, name

@@ -9,12 +9,12 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.errors import InfeasibleError, InputError
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
-from oilgap.studies.cli import main
 from oilgap.studies.grid.runner import run_grid
 from oilgap.studies.pareto import (
     draw_gap_front,

@@ -4,8 +4,8 @@ the façade and the command line."""
 
 import pytest
 
+from oilgap.cli import build_parser
 from oilgap.model.errors import InputError
-from oilgap.studies.cli import build_parser
 from oilgap.studies.settings import (
     DEFAULT_STARTS,
     DesignLimits,

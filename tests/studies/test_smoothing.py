@@ -9,15 +9,14 @@ import pandas as pd
 import pytest
 from scipy.optimize import brentq
 
+from oilgap.cli import main
 from oilgap.model.case import OperatingPoint
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import mean_viscous_power
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.oils import get_oil
-from oilgap.studies.cli import main
 from oilgap.studies.settings import SmoothingSettings
-from oilgap.studies.smoothing import loss_vs_T, plateau_table, run
-from oilgap.studies.smoothing_fit import (
+from oilgap.studies.smoothing.fit import (
     T_GROOVED,
     T_SMOOTHED,
     fit_smoothing,
@@ -25,6 +24,7 @@ from oilgap.studies.smoothing_fit import (
     rig_case,
     steady_temperatures,
 )
+from oilgap.studies.smoothing.study import loss_vs_T, plateau_table, run
 
 
 def rig(oil, smoothed, gamma, temp_C):

@@ -1,4 +1,4 @@
-"""The film-strength evidence fit (oilgap.studies.smoothing_evidence).
+"""The film-strength evidence fit (oilgap.studies.smoothing.evidence).
 
 Synthetic Table-4-like data are generated here with a known film strength s, room
 temperature T0, resistance R and gamma by another code path than the fit's: the case's
@@ -15,8 +15,8 @@ from scipy.optimize import brentq
 
 from oilgap.model.case import ThermalSpec
 from oilgap.model.joint_loss import joint_mean_power
-from oilgap.studies.smoothing_evidence import film_evidence, film_power_function
-from oilgap.studies.smoothing_fit import cases_power, load_table4, rig_case
+from oilgap.studies.smoothing.evidence import film_evidence, film_power_function
+from oilgap.studies.smoothing.fit import cases_power, load_table4, rig_case
 
 S_TRUE, T0_TRUE, R_TRUE, GAMMA_TRUE = 0.5, 22.0, 0.15, 0.6
 
@@ -74,10 +74,10 @@ def test_issue_numbers_on_the_seed_table4():
 
 
 def test_cli_flag_and_seed_only():
+    from oilgap.cli import build_parser
     from oilgap.model.errors import InputError
-    from oilgap.studies import smoothing
-    from oilgap.studies.cli import build_parser
     from oilgap.studies.settings import SmoothingSettings
+    from oilgap.studies.smoothing import study as smoothing
 
     args = build_parser().parse_args(["study", "smoothing", "--film-evidence"])
     assert args.film_evidence is True

@@ -8,14 +8,14 @@ import numpy as np
 import pytest
 from scipy.optimize import brentq
 
+from oilgap.cli import main
 from oilgap.model.case import OperatingPoint
 from oilgap.model.errors import InputError
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import joint_mean_power
 from oilgap.model.oils import get_oil
-from oilgap.studies.cli import main
-from oilgap.studies.smoothing import _table, loss_vs_T, paper_row
-from oilgap.studies.smoothing_fit import fit_smoothing, load_table4, resolve_fit_mode
+from oilgap.studies.smoothing.fit import fit_smoothing, load_table4, resolve_fit_mode
+from oilgap.studies.smoothing.study import _table, loss_vs_T, paper_row
 
 OILS = ("VG150", "VG320", "VG680", "VG1000")
 

@@ -14,7 +14,7 @@ from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_geometry
 from oilgap.model.viscous_loss import clearance_power
 from oilgap.studies.reporting import write_data_csv
-from oilgap.studies.synth import (
+from oilgap.studies.rigs.synth import (
     BaselineTruth,
     SynthConfig,
     fluid_table,

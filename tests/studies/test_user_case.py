@@ -9,13 +9,15 @@ import json
 import matplotlib
 import pytest
 
+from oilgap.cli import main
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import read_case_toml, seed_case
 from oilgap.model.io.defaults import case_defaults, defaults_block, defaults_lines
 from oilgap.optim.design import DesignProblem
-from oilgap.studies import oil_grade, pareto, smoothing
-from oilgap.studies.cli import main
+from oilgap.studies import pareto
+from oilgap.studies.oil_grade import study as oil_grade
 from oilgap.studies.settings import OilGradeSettings, ParetoSettings, SmoothingSettings
+from oilgap.studies.smoothing import study as smoothing
 
 matplotlib.use("Agg")
 

@@ -1,6 +1,6 @@
 """The measured-data loop on data from outside its family (issue 9, "How to verify").
 
-The data come from the out-of-family rig (``oilgap.studies.outside_rig``): truth from
+The data come from the out-of-family rig (``oilgap.studies.rigs.outside_rig``): truth from
 the piecewise Eq. 6 with a Couette floor (not a power law), a gearbox loss
 ``k |tau w|^1.3`` and a constant-torque load outside the loop's baseline basis, AR(1)
 noise on power (phi = 0.8, 1 W), the trapezoid speed profile, and each effect by a law
@@ -39,7 +39,7 @@ import pytest
 from oilgap.model.io.case_io import case_from_dict
 from oilgap.model.oils import read_oils_csv
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.outside_rig import (
+from oilgap.studies.rigs.outside_rig import (
     EFFECT_LAWS,
     NEWTONIAN,
     TEST_STRENGTH,

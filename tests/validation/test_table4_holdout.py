@@ -10,7 +10,7 @@ import warnings
 
 import pytest
 
-from oilgap.studies.table4_holdout import heldout_errors, leave_one_oil_out
+from oilgap.studies.smoothing.table4_holdout import heldout_errors, leave_one_oil_out
 
 MEASURED = {("VG150", 4.0): 36.20, ("VG150", 2.0): 25.35, ("VG320", 4.0): 54.52,
             ("VG320", 2.0): 42.62, ("VG680", 4.0): 75.08, ("VG680", 2.0): 53.27,

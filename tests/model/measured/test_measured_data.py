@@ -5,6 +5,7 @@ import pandas as pd
 import pytest
 from scipy.signal import savgol_filter
 
+from oilgap.cli import main
 from oilgap.model.errors import InputError
 from oilgap.model.io import tables as table_io
 from oilgap.model.measured.data import (
@@ -15,7 +16,6 @@ from oilgap.model.measured.data import (
     validate,
 )
 from oilgap.model.oils import get_oil
-from oilgap.studies.cli import main
 
 
 def _run(name, oil, T, n=40, dt=0.2, power="power_W", **extra):

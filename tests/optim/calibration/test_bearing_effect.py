@@ -27,7 +27,7 @@ from oilgap.model.oils import get_oil
 from oilgap.model.regions import joint_geometry
 from oilgap.model.units import celsius_to_kelvin, rpm_to_rad_s
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 SKF_6809 = {"designation": "6809"}
 CHURNING = EFFECTS["bearing_ball_churning"]

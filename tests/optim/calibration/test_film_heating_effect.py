@@ -9,19 +9,19 @@ import pandas as pd
 import pytest
 from scipy.optimize import brentq
 
+from oilgap.cli import main
 from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts, film_temperature
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.regions import joint_geometry
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.cli import main
-from oilgap.studies.outside_rig import (
+from oilgap.studies.rigs.outside_rig import (
     TEST_STRENGTH,
     OutsideConfig,
     effect_size_W,
     inject,
     simulate,
 )
-from oilgap.studies.synth import DEFAULT_STRENGTH, SynthConfig, synthesize
+from oilgap.studies.rigs.synth import DEFAULT_STRENGTH, SynthConfig, synthesize
 
 
 def test_film_temperature_solves_the_fixed_point_like_a_bracketing_root_finder():

@@ -20,7 +20,7 @@ import pytest
 from oilgap.model.case import ThermalSpec
 from oilgap.model.io.case_io import seed_case
 from oilgap.optim.calibration import LoopEstimator, film_wall
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 # hand: the seed's clearance, delta 1 mm, R 25.4 mm, L 14.76 mm, k 0.13 W/(m K)
 THEORY_K_W = 1e-3 / (12 * 0.13 * 2 * math.pi * 0.0254 * 0.01476)  # 0.2721 K/W at w = 0

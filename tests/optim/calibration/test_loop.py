@@ -13,7 +13,7 @@ from oilgap.model.effects import EFFECTS
 from oilgap.model.io.case_io import read_case_toml, seed_case
 from oilgap.model.viscous_loss import clearance_power
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.synth import (
+from oilgap.studies.rigs.synth import (
     DEFAULT_STRENGTH,
     SynthConfig,
     fluid_table,

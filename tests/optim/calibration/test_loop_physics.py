@@ -13,8 +13,8 @@ from oilgap.model.errors import InputError
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.optim.calibration import LoopEstimator
-from oilgap.studies.loop_report import format_summary
-from oilgap.studies.synth import (
+from oilgap.studies.loop.report import format_summary
+from oilgap.studies.rigs.synth import (
     DEFAULT_STRENGTH,
     SynthConfig,
     fluid_table,

@@ -3,8 +3,8 @@ forward model reads the lagged or film-heated oil, and each pair of a state effe
 {thermal_lag, film_heating} with a term that reads the oil {bearing churning, end-face
 disc, seal, shear thinning} is named on both rigs with the held-out error near the noise.
 
-The rigs: the seed's experiment simulator (``oilgap.studies.synth``, the loop's own laws)
-and the out-of-family rig (``oilgap.studies.outside_rig``, laws of its own: Palmgren with
+The rigs: the seed's experiment simulator (``oilgap.studies.rigs.synth``, the loop's own laws)
+and the out-of-family rig (``oilgap.studies.rigs.outside_rig``, laws of its own: Palmgren with
 its low-speed floor, Daily & Nece discs, a Stribeck seal, Carreau thinning). Both inject
 the lagged / heated temperature into every term (a test below checks the rigs). The runs
 are kept short (300 samples at 0.2 s of 4 oils at T = 4 and 2 on both rigs) and the loss
@@ -32,9 +32,9 @@ from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.units import ZERO_CELSIUS_K
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.calibration.forward import ForwardModel
-from oilgap.studies import outside_rig, synth
-from oilgap.studies.loop_report import format_summary, report_markdown
-from oilgap.studies.outside_laws import fluid_state, palmgren_churning_power
+from oilgap.studies.loop.report import format_summary, report_markdown
+from oilgap.studies.rigs import outside_rig, synth
+from oilgap.studies.rigs.outside_laws import fluid_state, palmgren_churning_power
 
 STATE = ("thermal_lag", "film_heating")
 READERS = ("bearing_ball_churning", "end_face_disc", "seal_coulomb_friction", "shear_thinning")

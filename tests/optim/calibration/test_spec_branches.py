@@ -13,7 +13,7 @@ from oilgap.model.regions import joint_geometry
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.optim.calibration import LoopEstimator, decide_spec
 from oilgap.optim.calibration.spec import BRANCH_PARAMS
-from oilgap.studies.synth import SynthConfig, synthesize
+from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
 PUBLISHED = {"scale": 1.0, "C1": 10.0, "C2": 2.0, "C3": 1.03, "C4": 0.065,
              **{f"alpha{k}": 0.3 for k in range(1, 5)},

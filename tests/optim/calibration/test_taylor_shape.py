@@ -12,7 +12,7 @@ from oilgap.model.io.case_io import case_from_dict
 from oilgap.model.oils import read_oils_csv
 from oilgap.optim.calibration import LoopEstimator, exact_form_variants
 from oilgap.optim.calibration.model_io import FittedModel
-from oilgap.studies.outside_rig import (
+from oilgap.studies.rigs.outside_rig import (
     TEST_STRENGTH,
     OutsideConfig,
     inject,

@@ -1,0 +1,235 @@
+"""The façade's studies: ``og.pareto``, ``og.oil_grade``, ``og.smoothing``, ``og.sweep``
+(``oilgap study pareto|oil-grade|smoothing|sweep``).
+
+Each runs the study's module-level ``run`` and wraps its result in a view
+(:mod:`oilgap._results_studies`). With ``out`` the study writes its files into
+that folder as the command does: the folder is checked and locked before any computation
+(:class:`~oilgap.studies.io.result_folder.ResultFolder`), earlier outputs are refused unless
+``force`` (a sweep continues with ``resume``); ``folder`` is a result folder the caller
+(the command line) already opened.
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from oilgap._evaluate import as_case, oil_catalogue
+from oilgap._results_studies import OilGrade, Pareto, Smoothing
+from oilgap._results_sweep import Sweep, write_sweep_outputs
+from oilgap.model.case import DesignCase
+from oilgap.model.io.defaults import gamma_fields
+from oilgap.model.oils import Oil
+from oilgap.studies import pareto as pareto_study
+from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.grid.schema import read_grid
+from oilgap.studies.io.result_folder import ResultFolder
+from oilgap.studies.oil_grade import study as oil_grade_study
+from oilgap.studies.oil_grade.study import read_mission_csv
+from oilgap.studies.outputs import result_folder
+from oilgap.studies.settings import (
+    OilGradeSettings,
+    ParetoSettings,
+    SmoothingSettings,
+    SweepSettings,
+    split_keywords,
+)
+from oilgap.studies.smoothing import study as smoothing_study
+
+
+def _begin(folder: ResultFolder | None, case: DesignCase) -> None:
+    """Writing starts; the case's gamma (as read) into the folder's ``provenance.json``."""
+    if folder is not None:
+        folder.note(**gamma_fields(case))
+        folder.begin()
+
+
+def _out(out: str | Path | None) -> Path | None:
+    return None if out is None else Path(out)
+
+
+def _note(folder: ResultFolder | None, mode: str, default: bool) -> None:
+    """The study's thermal mode into its folder's ``provenance.json``."""
+    if folder is not None:
+        folder.note(thermal_mode=mode, thermal_mode_default=bool(default))
+
+
+def pareto(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
+           force: bool = False, folder: ResultFolder | None = None, **keywords: Any) -> Pareto:
+    """The gap-loss and loss-inertia Pareto fronts by epsilon-constraint sweeps
+    (``oilgap study pareto``; :func:`oilgap.studies.pareto.run`).
+
+    Parameters
+    ----------
+    case : DesignCase, path or None
+        The joint (None: the seed joint).
+    out : path, optional
+        Folder for the CSVs, figures and ``summary.md``.
+    force : bool
+        Replace earlier outputs in ``out``.
+    folder : ResultFolder, optional
+        A result folder the caller already opened.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.ParetoSettings` (``points``: per
+        front, >= 50; ``torque_min_Nm``: required torque capability [N m], default the
+        case's own; ``thermal``: ``"none"``, ``"bulk"``, ``"film"``, ``"full"``, default
+        ``bulk`` with ``[thermal]``, else ``none``) and of
+        :class:`~oilgap.studies.settings.RunOptions` (``workers``, ``scheduler``,
+        ``progress``), or ``settings=`` / ``options=``, the records whole.
+
+    Returns
+    -------
+    Pareto
+    """
+    base = as_case(case)
+    settings, options = split_keywords(keywords, ParetoSettings)
+    with result_folder("study pareto", out, force, folder=folder) as f:
+        _begin(f, base)
+        r = pareto_study.run(out, base, settings, options)
+        _note(f, r.thermal_mode, r.thermal_default)
+    return Pareto(r, base, _out(out))
+
+
+def _mission(mission: Any) -> Any:
+    """A mission as :func:`oilgap.studies.oil_grade.parse_mission` takes it: a CSV path
+    read, a list of dicts made a DataFrame."""
+    if isinstance(mission, (str, Path)):
+        return read_mission_csv(mission)
+    if isinstance(mission, list) and mission and isinstance(mission[0], dict):
+        return pd.DataFrame(mission)
+    return mission
+
+
+def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = None,
+              out: str | Path | None = None, force: bool = False,
+              folder: ResultFolder | None = None, **keywords: Any) -> OilGrade:
+    """The ISO VG grade for a joint over its envelope and mission (``oilgap study
+    oil-grade``; :func:`oilgap.studies.oil_grade.run`).
+
+    Parameters
+    ----------
+    case : DesignCase, path or None
+        The joint (None: the seed joint).
+    mission : list of dicts, DataFrame, CSV path or None
+        Rows ``depth_m`` [m], ``oil_temp_C`` [degC], ``fraction`` [-] (default: the
+        case's ``[[mission]]`` rows, else the study's default mission).
+    out, force, folder
+        As :func:`pareto`.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.OilGradeSettings` (``thermal``;
+        ``nu_min_cSt``, ``nu_max_cSt``: lubrication and cold-start limits [cSt];
+        ``depth_range_m``, ``temp_range_C``, ``sea_temp_range_C``: the envelope [m],
+        [degC], the oil's under none/film, the sea's under bulk/full; ``mission_hours``
+        [h]; ``grades``, ``iso_tolerance``, ``n_depth``, ``n_temp``, ``rated_temps_C``)
+        and of :class:`~oilgap.studies.settings.RunOptions` (``workers``, ``scheduler``,
+        ``progress``: the grid of grades and envelope runs on the scheduler), or
+        ``settings=`` / ``options=``, the records whole.
+
+    Returns
+    -------
+    OilGrade
+    """
+    base = as_case(case)
+    m = _mission(mission)
+    settings, options = split_keywords(keywords, OilGradeSettings)
+    with result_folder("study oil-grade", out, force, folder=folder) as f:
+        _begin(f, base)
+        r = oil_grade_study.run(out, base, m, settings, options)
+        _note(f, r.thermal_mode, r.settings.thermal_default)
+    return OilGrade(r, base, _out(out))
+
+
+def smoothing(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
+              force: bool = False, folder: ResultFolder | None = None,
+              **keywords: Any) -> Smoothing:
+    """What smoothing the grooves saves (``oilgap study smoothing``;
+    :func:`oilgap.studies.smoothing.run`): the fit on the seed's Table 4 and the loss
+    against the roughness T.
+
+    Parameters
+    ----------
+    case : DesignCase, path or None
+        Base joint (None: the seed joint).
+    out, force, folder
+        As :func:`pareto`.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.SmoothingSettings`, or
+        ``settings=``: ``method`` (``"per-oil"``, ``"shared"``, ``"heat-balance"``; how
+        the runs' temperatures are fitted, default per-oil), ``thermal`` (``"none"``,
+        ``"film"``, ``"full"``: the loss at the runs' temperatures, default none),
+        ``resistance_K_W`` (per-oil method: fixed R_th [K/W]), ``T_values`` (roughness
+        values of the loss-vs-T view [-], default 1 to 5 by 0.05), ``plateau_tol``
+        (where the loss counts as levelled off [-], fraction of P(T = 1)),
+        ``film_evidence`` (also fit the film strength s with the rig's heat balance,
+        seed rig only: ``result.film_evidence``, docs/thermal.md#evidence).
+
+    Returns
+    -------
+    Smoothing
+    """
+    base = as_case(case)
+    settings, _ = split_keywords(keywords, SmoothingSettings, run_options=False)
+    with result_folder("study smoothing", out, force, folder=folder) as f:
+        _begin(f, base)
+        r = smoothing_study.run(out, base, settings)
+        _note(f, r.thermal_mode, r.thermal_default)
+    return Smoothing(r, base, settings.plateau_tol, _out(out))
+
+
+def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None = None, *,
+          out: str | Path | None = None, resume: bool = False, force: bool = False,
+          oils: dict[str, Oil] | str | Path | None = None,
+          folder: ResultFolder | None = None, **keywords: Any) -> Sweep:
+    """Evaluate or optimize every row of a grid (``oilgap study sweep``;
+    :func:`oilgap.studies.grid.runner.run_grid`), resumable in ``out``.
+
+    Parameters
+    ----------
+    grid : DataFrame or path (CSV, Parquet)
+        One row per point (columns: :data:`oilgap.studies.grid.columns.PARAM_COLUMNS`).
+    case : DesignCase, path or None
+        Base case (None: the seed joint).
+    out : path, optional
+        Folder of the resumable store, ``results.csv``/``.parquet``, ``sweep.png`` and
+        ``summary.md``.
+    resume, force : bool
+        Continue the sweep stored in ``out``, or discard it.
+    oils : path or dict, optional
+        Oils to look ``oil`` names up in.
+    folder : ResultFolder, optional
+        A result folder the caller already opened.
+    **keywords
+        The fields of :class:`~oilgap.studies.settings.SweepSettings` (``mode``:
+        ``"evaluate"`` or ``"optimize"``; ``thermal``: default ``bulk`` with
+        ``[thermal]``, else ``none``; ``retry_failed``) and of
+        :class:`~oilgap.studies.settings.RunOptions` (``workers``, ``scheduler``,
+        ``progress``, ``chunk_size``, ``chunk_seconds``), as
+        :func:`~oilgap.studies.grid.runner.run_grid` takes them, or ``settings=`` /
+        ``options=``, the records whole.
+
+    Returns
+    -------
+    Sweep
+    """
+    settings, options = split_keywords(keywords, SweepSettings)
+    resume = resume or settings.retry_failed
+    name = Path(grid).name if isinstance(grid, (str, Path)) else "the grid"
+    with result_folder("study sweep", out, force, resume, folder) as f:  # before reading
+        g = read_grid(grid) if isinstance(grid, (str, Path)) else grid
+        base = as_case(case)
+        cat = oil_catalogue(oils)
+        _begin(f, base)
+        t0 = time.perf_counter()
+        res = run_grid(g, base, settings, options, out_dir=out, catalogue=cat)
+        view = Sweep(res, base, g, settings.mode, elapsed_s=time.perf_counter() - t0,
+                     out=_out(out), grid_name=name, scheduler=options.scheduler)
+        _note(f, view.thermal_mode, res.attrs.get("thermal_default", False))
+        if out is not None:
+            view.files = write_sweep_outputs(view, Path(out))
+    return view
+
+
+__all__ = ["oil_grade", "pareto", "result_folder", "smoothing", "sweep"]

@@ -1,0 +1,85 @@
+"""``oilgap optimize``: the region-1 clearance geometry of least mean viscous power.
+
+Thin layer over :func:`oilgap._optimize.optimize` (``og.optimize``; the
+design NLP of :class:`oilgap.optim.design.DesignProblem`, under ``film``/``full`` its
+thermal form): loads the case
+(or the seed joint), applies the oil/operating overrides, solves the design NLP
+and prints the initial and optimal designs side by side, the active constraints
+and what each constraint costs (its multiplier in physical units). Under a thermal
+mode the optimum without heating (``none`` at the case's oil temperature) is solved
+too and shown beside it, with what heating changed and, under ``full``, what a kelvin
+of sea temperature costs. Exit codes: 2 bad input, 3 infeasible problem, 4 solver
+failure (from ``oilgap.cli``). Arguments in
+:func:`oilgap.cli.parsers.add_optimize`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import contextlib
+from pathlib import Path
+
+from oilgap._optimize import optimize
+from oilgap._results_design import Optimization
+from oilgap.cli.common import load_case, thermal_case
+from oilgap.cli.outputs import solver_log_to_stderr
+from oilgap.model.errors import InputError, check_finite, check_positive
+from oilgap.model.io.serialize import dumps
+from oilgap.studies.io.case_write import write_case_toml
+from oilgap.studies.io.files import check_out_file
+from oilgap.studies.settings import DesignLimits
+
+
+def _number(args: argparse.Namespace, attr: str, field: str,
+            positive: bool = False) -> float | None:
+    raw = getattr(args, attr)
+    if raw is None:
+        return None
+    try:
+        value = float(raw)
+    except ValueError:
+        raise InputError(field, raw, "a finite number is required") from None
+    return check_positive(field, value) if positive else check_finite(field, value)
+
+
+def _starts(args: argparse.Namespace) -> int:
+    try:
+        starts = int(args.starts)
+    except ValueError:
+        raise InputError("--starts", args.starts, "an integer >= 1 is required") from None
+    if starts < 1:
+        raise InputError("--starts", args.starts, "an integer >= 1 is required")
+    return starts
+
+
+def _write(res: Optimization, args: argparse.Namespace):
+    if not args.out:
+        return None
+    try:
+        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None))
+    except OSError as e:
+        raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
+
+
+def run(args: argparse.Namespace) -> int:
+    """Solve the design NLP and print (or write) the result; returns the exit code."""
+    args.temp_c = _number(args, "temp_c", "--temp-c")
+    args.depth_m = _number(args, "depth_m", "--depth-m")
+    torque_min = _number(args, "torque_min_nm", "--torque-min-nm", positive=True)
+    inertia_ratio = _number(args, "inertia_max_ratio", "--inertia-max-ratio", positive=True)
+    limits = DesignLimits(torque_min_Nm=torque_min, inertia_max_ratio=inertia_ratio,
+                          starts=_starts(args))
+    if args.out:  # before any computation: folder writable, no earlier file unless --force
+        check_out_file(args.out, args.force)
+    case, _ = thermal_case(load_case(args), args)  # the options checked, named as given
+    log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
+    with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
+        res = optimize(case, thermal=args.thermal, limits=limits, verbose=args.verbose)
+    out_path = _write(res, args)
+    if args.json:
+        print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None}))
+    else:
+        print(res.summary())
+        if out_path:
+            print(f"\nwrote {Path(out_path)}")
+    return 0

@@ -1,0 +1,28 @@
+"""``oilgap study pareto``: the gap-loss and loss-inertia fronts (arguments in
+:func:`oilgap.cli.parsers.add_study`); a thin layer over
+:func:`oilgap._studies.pareto` (``og.pareto``), printing its summary (or,
+with ``--json``, its JSON document)."""
+
+from __future__ import annotations
+
+import argparse
+
+from oilgap._evaluate import as_case
+from oilgap._studies import pareto
+from oilgap.cli.common import show, study_out
+from oilgap.cli.outputs import json_quiet, out_folder
+from oilgap.studies.settings import ParetoSettings, RunOptions
+
+
+def run(args: argparse.Namespace) -> int:
+    """``oilgap study pareto``: the two fronts; returns the exit code."""
+    case = as_case(args.case)
+    out = study_out(args, "pareto")
+    with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
+        r = pareto(case, out=out, folder=folder,
+                   settings=ParetoSettings(points=args.points, torque_min_Nm=args.torque_min_nm,
+                                           thermal=args.thermal),
+                   options=RunOptions(workers=args.workers, scheduler=args.scheduler,
+                                      progress=args.progress))
+    show(r, args)
+    return 0

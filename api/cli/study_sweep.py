@@ -1,0 +1,53 @@
+"""``oilgap study sweep GRID``: evaluate or optimize every row of a grid (arguments in
+:func:`oilgap.cli.parsers.add_study`); a thin layer over
+:func:`oilgap._studies.sweep` (``og.sweep``), printing its summary (or, with
+``--json``, its JSON document); resumable with the same ``--out``."""
+
+from __future__ import annotations
+
+import argparse
+import logging
+import sys
+
+from oilgap._studies import sweep
+from oilgap.cli.common import show, study_out
+from oilgap.cli.outputs import json_quiet, out_folder
+from oilgap.studies.grid.runner import SweepInterrupted
+from oilgap.studies.io.result_folder import ResultFolder
+from oilgap.studies.settings import RunOptions, SweepSettings
+
+RESUME_HINT = "rerun the same command with --resume to continue"
+"""What Ctrl-C's line tells the user (the folder stays marked incomplete)."""
+
+
+def run(args: argparse.Namespace) -> int:
+    """``oilgap study sweep GRID``: run a grid (resumable with --resume); returns the exit
+    code. ``--out`` is checked and locked before anything is read or computed. Ctrl-C
+    says how many points are stored and how to continue (exit 130); an unfinished sweep
+    is never continued without ``--resume``."""
+    out = study_out(args, "sweep")
+    try:
+        with out_folder(args, out, resume=args.resume or args.retry_failed) as folder:
+            return _sweep(args, out, folder)
+    except SweepInterrupted as e:
+        print(f"oilgap: interrupted: {e.saved} of {e.total} points saved in {e.out_dir}; "
+              f"{RESUME_HINT}", file=sys.stderr)
+        return 130
+
+
+def _sweep(args: argparse.Namespace, out, folder: ResultFolder) -> int:
+    """The sweep inside its locked result folder."""
+    with json_quiet(args):
+        r = sweep(args.grid, args.case, out=out, oils=args.oils, folder=folder,
+                  settings=SweepSettings(mode=args.mode, thermal=args.thermal,
+                                         retry_failed=args.retry_failed),
+                  options=RunOptions(workers=args.workers, scheduler=args.scheduler,
+                                     progress=args.progress, chunk_size=args.chunk_size,
+                                     chunk_seconds=args.chunk_seconds))
+    folder.complete()
+    show(r, args)
+    bad = r.raw[r.raw["status"] != "ok"]
+    if len(bad):
+        logging.getLogger("oilgap").warning(  # a failed point changes the result: kept by -q
+            f"first failure (row {bad.index[0]}): {bad['error'].iloc[0]}")
+    return 0

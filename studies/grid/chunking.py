@@ -10,8 +10,13 @@ Ctrl-C loses at most one chunk per worker, whatever the grid.
 Optimize mode warm-starts each solve from the previous row; so that the rows and
 numbers do not depend on how the grid was cut (the timing, the workers, the backend),
 the warm-started chains are fixed runs of :data:`WARM_CHAIN` rows of the grid and
-every chunk holds whole chains. An explicit ``chunk_size`` keeps the old meaning:
-fixed chunks, each one chain.
+every chunk holds whole chains. Before a chunk is measured the optimize probe is one
+chain (the prior is the cost of the seed case without a heat balance; a film or full
+solve, a longer duty cycle cost many times more), and a measured chunk sizes the next
+ones in whole chains rounded down, never up: a chunk is about ``chunk_seconds`` of work,
+or one chain when one chain takes longer (the smallest unit whose rows do not depend on
+the timing). An explicit ``chunk_size`` keeps the old meaning: fixed chunks, each one
+chain.
 """
 
 from __future__ import annotations
@@ -90,13 +95,15 @@ class ChunkSizer:
             return min(self.fixed, remaining)
         target = self.chunk_seconds / self.cost_s
         if not self.points:
+            if self.chain:  # the probe: one chain, whatever the prior says
+                return min(self.chain, remaining)
             target *= PROBE_FRACTION
         share = math.ceil(remaining / self.workers)  # the tail spread over the workers
         size = max(1, min(int(target), share))
         if self.mode == "evaluate":
             size = min(size, MAX_EVAL_CHUNK)
         if self.chain:  # whole chains: the chains are fixed runs of the grid
-            size = self.chain * max(1, round(size / self.chain))
+            size = self.chain * max(1, size // self.chain)  # down: at most the target
         return min(size, remaining)
 
 

@@ -217,31 +217,35 @@ def test_the_table_holds_at_least_fifteen_stores():
 
 
 def test_optimize_chunks_follow_the_measured_time():
-    """Timing-independent: the sizer is told the times. 3 s of work at 20 ms a point is
-    3 / 0.02 = 150 rows = 3 chains of 50; at 0.5 s a point a chain (25 s) is the least
-    whole unit; the probe is one chain whatever the prior (the prior is the seed case's
-    cost, a film solve or a long duty cycle costs many times more)."""
+    """Timing-independent: the sizer is told the times. A chunk is 3 s of work in whole
+    chains, rounded down; one chain when a chain takes longer; the probe is one chain
+    whatever the prior (the prior is the seed case's cost; a film solve or a long duty
+    cycle costs many times more)."""
+    c = WARM_CHAIN
     s = ChunkSizer("optimize", workers=2, chunk_seconds=3.0)
-    assert s.next_size(600) == WARM_CHAIN  # the probe: one chain, not 150 rows
-    s.observe(WARM_CHAIN, 1.0)  # 20 ms a point
-    assert s.next_size(10_000) == 150
+    assert s.next_size(600) == c  # the probe: one chain
+    s.observe(c, c * 0.02)  # 20 ms a point: 3 / 0.02 = 150 rows
+    assert s.next_size(10_000) == (150 // c) * c
     slow = ChunkSizer("optimize", workers=2, chunk_seconds=3.0)
-    slow.observe(WARM_CHAIN, 25.0)  # 0.5 s a point: one chain is 25 s
-    assert slow.next_size(600) == WARM_CHAIN
+    slow.observe(c, c * 0.5)  # 0.5 s a point: 6 rows < one chain
+    assert slow.next_size(600) == c
     mid = ChunkSizer("optimize", workers=1, chunk_seconds=3.0)
-    mid.observe(WARM_CHAIN, 2.0)  # 40 ms: 75 rows would be 1.5 chains, rounded down
-    assert mid.next_size(600) == WARM_CHAIN
+    mid.observe(c, c * 0.04)  # 40 ms: 75 rows, whole chains rounded down
+    assert mid.next_size(600) == (75 // c) * c <= 75
     fast = ChunkSizer("optimize", workers=1, chunk_seconds=3.0)
-    fast.observe(WARM_CHAIN, 0.05)  # 1 ms: 3000 rows = 60 chains
-    assert fast.next_size(10_000) == 3000
-    # the old first chunk was a quarter of 3 s at the prior, rounded to whole chains
-    assert round(0.25 * 3.0 / PRIOR_S_PER_POINT["optimize"] / WARM_CHAIN) * WARM_CHAIN > 50
+    fast.observe(c, c * 0.001)  # 1 ms: 3000 rows
+    assert fast.next_size(10_000) == (3000 // c) * c
+    # one chain of the issue's costly case (0.5 s a solve) is about the target
+    assert c * 0.5 <= 2 * 3.0
+    # the old first chunk: a quarter of 3 s at the prior, in chains of 50: 150 rows (75 s
+    # at 0.5 s a solve, the 77 s of the report)
+    assert round(0.25 * 3.0 / PRIOR_S_PER_POINT["optimize"] / 50) * 50 == 150
 
 
 def test_interrupted_optimize_sweep_keeps_its_chunks(tmp_path):
-    """Ctrl-C after the first finished chunk of a 150-row optimize sweep (default chunk
-    sizing): that chunk (one chain, 50 rows) is stored, the folder stays, and a resumed
-    run computes only the other 100 rows."""
+    """Ctrl-C after the first finished chunk of a three-chain optimize sweep (default
+    chunk sizing): that chunk (one chain) is stored, the folder stays, and a resumed run
+    computes only the other two chains."""
     grid = pd.DataFrame({"oil_temp_C": np.linspace(2.0, 30.0, 3 * WARM_CHAIN)})
     calls = []
 
@@ -256,8 +260,8 @@ def test_interrupted_optimize_sweep_keeps_its_chunks(tmp_path):
 
     with pytest.raises(SweepInterrupted) as e:
         run(stop)
-    assert calls == [WARM_CHAIN] and (e.value.saved, e.value.total) == (WARM_CHAIN, 150)
+    assert calls == [WARM_CHAIN] and (e.value.saved, e.value.total) == (WARM_CHAIN, 3 * WARM_CHAIN)
     assert (tmp_path / "o" / "points_optimize.chunks").is_dir()
     again = run()
-    assert (again.attrs["computed"], again.attrs["reused"]) == (100, WARM_CHAIN)
+    assert (again.attrs["computed"], again.attrs["reused"]) == (2 * WARM_CHAIN, WARM_CHAIN)
     assert (again["status"] == "ok").all()

@@ -265,3 +265,34 @@ def test_interrupted_optimize_sweep_keeps_its_chunks(tmp_path):
     again = run()
     assert (again.attrs["computed"], again.attrs["reused"]) == (2 * WARM_CHAIN, WARM_CHAIN)
     assert (again["status"] == "ok").all()
+
+
+def test_interrupted_optimize_sweep_on_the_command_line(tmp_path, monkeypatch, capsys):
+    """The same through ``oilgap study sweep --mode optimize``: Ctrl-C after the first
+    chunk says one chain is saved (exit 130), the folder stays marked INCOMPLETE, and
+    ``--resume`` computes only the rest."""
+    grid = tmp_path / "g.csv"
+    pd.DataFrame({"oil_temp_C": np.linspace(2.0, 30.0, 3 * WARM_CHAIN)}).to_csv(grid,
+                                                                                index=False)
+    out = tmp_path / "c"
+    argv = ["study", "sweep", str(grid), "--out", str(out), "--mode", "optimize",
+            "--thermal", "none", "--workers", "1", "--no-progress"]
+    real = runner._finisher
+
+    def interrupting(*a):
+        finish = real(*a)
+
+        def f(ks, recs):
+            finish(ks, recs)
+            raise KeyboardInterrupt
+        return f
+
+    monkeypatch.setattr(runner, "_finisher", interrupting)
+    assert main(argv) == 130
+    err = capsys.readouterr().err
+    assert f"interrupted: {WARM_CHAIN} of {3 * WARM_CHAIN} points saved" in err
+    assert (out / "INCOMPLETE").is_file()
+    monkeypatch.setattr(runner, "_finisher", real)
+    assert main(argv + ["--resume"]) == 0
+    assert f"({2 * WARM_CHAIN} computed, {WARM_CHAIN} reused)" in capsys.readouterr().out
+    assert not (out / "INCOMPLETE").exists()

@@ -26,7 +26,7 @@ _POWER = (0.0, _INF, True)
 _POSITIVE = (0.0, _INF, False)
 _NON_NEGATIVE = (0.0, _INF, True)
 _TEMP_C = (-60.0, 300.0, True)
-_ROUGHNESS = (1.0, _INF, True)
+_ROUGHNESS = (1.0 - 1e-6, _INF, True)  # T >= 1; IPOPT may relax its bound by 1e-8
 RANGES: dict[str, tuple[float, float, bool]] = {
     "mean_power_W": _POWER, "mean_power_exact_W": _POWER, "initial_mean_power_W": _POWER,
     "region1_power_W": _POWER, "region2_power_W": _POWER, "isothermal_power_W": _POWER,

@@ -145,13 +145,27 @@ def _read_rows(path: Path, mode: str) -> _Rows:
                          "choose another --out", WHERE)
     rows = _Rows(header, [], 0)
     columns = result_columns(mode)
+    bad_header = _header_problem(header, columns)
     for no, line in enumerate(complete[1:], start=2):
-        if line.strip():
+        if line.strip() and bad_header:
+            rows.dropped += 1
+            rows.problems.append(f"{path}:{no}: {bad_header}")
+        elif line.strip():
             _check_line(rows, line, f"{path}:{no}", mode, columns)
     if tail.strip():
         rows.dropped += 1
         rows.problems.append(f"{path}:{len(complete) + 1}: the row is cut short")
     return rows
+
+
+def _header_problem(header: list[str], columns: tuple[str, ...]) -> str | None:
+    """Why no row under ``header`` can be read as a result (a column twice, or one of the
+    mode's result columns missing: a renamed column); None if they can."""
+    twice = sorted({h for h in header if header.count(h) > 1})
+    if twice:
+        return f"the header holds {', '.join(twice)} twice"
+    missing = [c for c in columns if c not in header]
+    return f"the header has no {', '.join(missing[:3])} column" if missing else None
 
 
 def _check_line(rows: _Rows, line: str, where: str, mode: str,

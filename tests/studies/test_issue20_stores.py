@@ -23,8 +23,8 @@ import pandas as pd
 import pytest
 
 import oilgap as og
+from oilgap.cli import main
 from oilgap.model.errors import OilgapWarning
-from oilgap.studies.cli import main
 from oilgap.studies.grid import runner
 from oilgap.studies.grid.chunking import PRIOR_S_PER_POINT, WARM_CHAIN, ChunkSizer
 from oilgap.studies.grid.runner import SweepInterrupted

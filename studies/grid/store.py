@@ -19,12 +19,11 @@ import io
 import itertools
 import json
 import os
-import re
 import time
 import warnings
 import weakref
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -36,11 +35,11 @@ from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.io.case_write import case_to_dict
 from oilgap.studies.grid.columns import ENGINE_VERSION, result_columns
 from oilgap.studies.grid.schema import WHERE, is_missing
+from oilgap.studies.grid.store_check import row_problem
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_write_text
 from oilgap.studies.io.result_folder import LOCK_NAME
 
 _FINGERPRINTS: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
-_KEY = re.compile(r"[0-9A-Za-z_-]+")
 _SEQ = itertools.count()
 _DTYPES = {"point_key": str, "status": str, "error": str, "warning": str, "thermal_mode": str}
 
@@ -111,18 +110,23 @@ def chunks_dir(path: Path) -> Path:
 @dataclass
 class _Rows:
     """The rows of one points file: header fields, the valid data lines (each ending in a
-    newline) and the number of partial or invalid rows left out."""
+    newline), their keys, the number of partial or invalid rows left out and why
+    (``file:line: reason``)."""
 
     header: list[str] | None
     lines: list[str]
     dropped: int
+    keys: list[str] = field(default_factory=list)
+    problems: list[str] = field(default_factory=list)
 
 
-def _read_rows(path: Path) -> _Rows:
+def _read_rows(path: Path, mode: str) -> _Rows:
     """The rows of a points file, checked line by line.
 
     A row is valid when it ends in a newline (a row cut short by a full disk or a kill
-    does not), has as many fields as the header, a key and a status ``ok``/``error``.
+    does not), has as many fields as the header and reads as a fresh row of ``mode``
+    would (:func:`oilgap.studies.grid.store_check.row_problem`: a key, a status
+    ``ok``/``error``, every number of an ``ok`` row finite and physical).
 
     Raises
     ------
@@ -133,27 +137,84 @@ def _read_rows(path: Path) -> _Rows:
     parts = text.split("\n")
     complete, tail = parts[:-1], parts[-1]
     if not complete:  # not even a whole header line: a file cut short at its start
-        return _Rows(None, [], 1 if tail.strip() else 0)
+        cut = [f"{path}:1: the file is cut short"] if tail.strip() else []
+        return _Rows(None, [], len(cut), problems=cut)
     header = next(csv.reader([complete[0]]))
     if "point_key" not in header:
         raise InputError("out_dir", str(path), "holds a points file oilgap did not write; "
                          "choose another --out", WHERE)
-    ik = header.index("point_key")
-    ist = header.index("status") if "status" in header else None
-    good, bad = [], 1 if tail.strip() else 0
-    for line in complete[1:]:
-        if not line.strip():
-            continue
-        try:
-            fields = next(csv.reader([line]))
-        except csv.Error:
-            fields = []
-        if (len(fields) == len(header) and _KEY.fullmatch(fields[ik])
-                and (ist is None or fields[ist] in ("ok", "error"))):
-            good.append(line + "\n")
-        else:
-            bad += 1
-    return _Rows(header, good, bad)
+    rows = _Rows(header, [], 0)
+    columns = result_columns(mode)
+    bad_header = _header_problem(header, columns)
+    for no, line in enumerate(complete[1:], start=2):
+        if line.strip() and bad_header:
+            rows.dropped += 1
+            rows.problems.append(f"{path}:{no}: {bad_header}")
+        elif line.strip():
+            _check_line(rows, line, f"{path}:{no}", mode, columns)
+    if tail.strip():
+        rows.dropped += 1
+        rows.problems.append(f"{path}:{len(complete) + 1}: the row is cut short")
+    return rows
+
+
+def _header_problem(header: list[str], columns: tuple[str, ...]) -> str | None:
+    """Why no row under ``header`` can be read as a result (a column twice, or one of the
+    mode's result columns missing: a renamed column); None if they can."""
+    twice = sorted({h for h in header if header.count(h) > 1})
+    if twice:
+        return f"the header holds {', '.join(twice)} twice"
+    missing = [c for c in columns if c not in header]
+    return f"the header has no {', '.join(missing[:3])} column" if missing else None
+
+
+def _check_line(rows: _Rows, line: str, where: str, mode: str,
+                columns: tuple[str, ...]) -> None:
+    """Keep ``line`` in ``rows`` if it is a valid row, else count it and say why."""
+    try:
+        fields = next(csv.reader([line]))
+    except csv.Error:
+        fields = []
+    if len(fields) != len(rows.header):
+        why = f"{len(fields)} fields for {len(rows.header)} columns"
+    else:
+        cells = dict(zip(rows.header, fields, strict=True))
+        why = row_problem(cells, mode, columns)
+    if why:
+        rows.dropped += 1
+        rows.problems.append(f"{where}: {why}")
+    else:
+        rows.lines.append(line + "\n")
+        rows.keys.append(fields[rows.header.index("point_key")])
+
+
+def _drop_conflicts(rows: list[_Rows]) -> None:
+    """Drop every row of a key stored twice with different contents (which one is the
+    result cannot be told); identical copies (a crash between folding and removing the
+    chunk files) are kept: they read the same."""
+    seen: dict[str, str] = {}
+    bad: set[str] = set()
+    for r in rows:
+        for k, line in zip(r.keys, r.lines, strict=True):
+            if seen.setdefault(k, line) != line:
+                bad.add(k)
+    if not bad:
+        return
+    for r in rows:
+        keep = [(k, x) for k, x in zip(r.keys, r.lines, strict=True) if k not in bad]
+        gone = len(r.lines) - len(keep)
+        if gone:
+            r.dropped += gone
+            r.problems.append(f"{gone} row(s) of key(s) {', '.join(sorted(bad)[:3])} "
+                              "stored twice with different numbers")
+        r.keys, r.lines = [k for k, _ in keep], [x for _, x in keep]
+
+
+def _read_all(files: list[Path], mode: str) -> list[_Rows]:
+    """The checked rows of each file, conflicting duplicates dropped."""
+    rows = [_read_rows(f, mode) for f in files]
+    _drop_conflicts(rows)
+    return rows
 
 
 def _chunk_files(path: Path) -> list[Path]:
@@ -186,8 +247,7 @@ def read_store(path: Path, mode: str) -> tuple[pd.DataFrame, int]:
         A file holds no ``point_key`` column (oilgap did not write it).
     """
     frames, dropped = [], 0
-    for f in ([path] if path.is_file() else []) + _chunk_files(path):
-        rows = _read_rows(f)
+    for rows in _read_all(([path] if path.is_file() else []) + _chunk_files(path), mode):
         dropped += rows.dropped
         if rows.header is not None and rows.lines:
             frames.append(_frame(rows.header, rows.lines, mode))
@@ -247,16 +307,22 @@ def append_points(path: Path, keys: list[str], recs: list[dict], mode: str) -> P
 
 def fold_chunks(path: Path, mode: str) -> int:
     """Fold the chunk files into ``path`` and drop partial or invalid rows; returns how
-    many rows were dropped.
+    many rows were dropped (:func:`fold_store` also says why).
 
     The new points file is written atomically (:func:`oilgap.studies.io.files.atomic_write`)
     before the chunk files are removed: a crash in between leaves rows twice, which
     reads the same (the last row of a key wins). A file written by an older engine
     (other columns) is rewritten with today's columns.
     """
+    return len(fold_store(path, mode))
+
+
+def fold_store(path: Path, mode: str) -> list[str]:
+    """:func:`fold_chunks`, returning why each dropped row was dropped
+    (``file:line: reason``, one entry a row but for conflicting duplicates)."""
     chunks = _chunk_files(path)
     files = ([path] if path.is_file() else []) + chunks
-    rows = [_read_rows(f) for f in files]
+    rows = _read_all(files, mode)
     dropped = sum(r.dropped for r in rows)
     cols = ["point_key", *result_columns(mode)]
     same = all(r.header in (None, cols) for r in rows)
@@ -274,19 +340,24 @@ def fold_chunks(path: Path, mode: str) -> int:
             f.unlink()
     with contextlib.suppress(OSError):
         d.rmdir()
-    return dropped
+    problems = [p for r in rows for p in r.problems]
+    return problems + [f"{path}: a dropped row"] * (dropped - len(problems))
 
 
 def repair_store(path: Path, mode: str) -> int:
     """Check a store before a run resumes it: chunk files of a run that was cut short
-    folded in, partial or invalid rows dropped (an OilgapWarning says how many: those
-    points are computed again); returns that number."""
+    folded in, partial or invalid rows dropped (an OilgapWarning says how many, and for
+    the first three the file, the line and why: those points are computed again);
+    returns that number."""
     if not path.is_file() and not chunks_dir(path).is_dir():
         return 0
-    dropped = fold_chunks(path, mode)
+    problems = fold_store(path, mode)
+    dropped = len(problems)
     if dropped:
+        shown = "; ".join(problems[:3]) + (f"; and {dropped - 3} more" if dropped > 3 else "")
         warnings.warn(OilgapWarning(
             f"{path}: {dropped} partial or invalid row{'s' if dropped > 1 else ''} "
-            "dropped (a run cut short by a full disk, a crash or a kill); "
-            f"{'they are' if dropped > 1 else 'it is'} computed again"), stacklevel=2)
+            "dropped (a run cut short by a full disk, a crash or a kill, or a file edited "
+            f"by hand): {shown}; {'they are' if dropped > 1 else 'it is'} computed again"),
+            stacklevel=2)
     return dropped

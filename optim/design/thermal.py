@@ -74,7 +74,7 @@ from oilgap.model.joint_loss import THERMAL_MODES, case_film, joint_mean_power, 
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.regions import joint_regions, region_mean_power, rotor_stator_region
-from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
+from oilgap.model.thermal import MAX_OIL_TEMP_C, require_balanced, steady_temperature
 from oilgap.model.units import MM_TO_M, celsius_to_kelvin
 
 from .parameters import DesignParameters
@@ -359,6 +359,7 @@ class ThermalDesignProblem:
         temps, _ = steady_temperature(
             power_at, spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W,
             spec.resistance_K_W, 1, tol_K=BALANCE_TOL_K)
+        require_balanced(temps, spec, self.case.oil.trusted_range_C, power_at(temps))
         return float(temps[0])
 
     # ----------------------------------------------------------------- solve

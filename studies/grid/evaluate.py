@@ -42,7 +42,7 @@ from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.oils import Oil
 from oilgap.model.regions import Region, joint_regions
 from oilgap.model.taylor_couette import couette_reynolds
-from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
+from oilgap.model.thermal import require_balanced, steady_temperature
 from oilgap.model.thermal_modes import (
     DEFAULT_MODE_WHY,
     THERMAL_MODE_TEXT,
@@ -121,11 +121,10 @@ def _balance(c0: DesignCase, cases: list[DesignCase], idx: list[int], depths: np
         return np.asarray(joint_mean_power(c0, ts, mode, np.tile(depths, k), regs[k],
                                            include_bearing=True), dtype=float)
 
-    temps, _ = steady_temperature(power_at, sea + th.resistance_K_W * th.other_heat_W,
-                                  th.resistance_K_W, n)
-    for j in np.flatnonzero(temps >= MAX_OIL_TEMP_C):
-        warn_col[idx[j]] = (f"heat balance held at its cap {MAX_OIL_TEMP_C:g} degC (no "
-                            "root below it)")
+    base = sea + th.resistance_K_W * th.other_heat_W
+    temps, p = steady_temperature(power_at, base, th.resistance_K_W, n)
+    # no root below the cap: the row fails (isolated by _records), never a result
+    require_balanced(temps, th, c0.oil.trusted_range_C, p)
     return temps, sea
 
 

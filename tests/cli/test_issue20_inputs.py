@@ -68,12 +68,12 @@ def _rig(sign: float, oils=("VG22", "VG46"), col="viscous_power_W", mixed=False)
 
 
 def R(promise, *, case=None, extra="", replace=(), files=None, argv=(), code=2,
-      words=(), facade="evaluate", fkw=None, measured=None, xfail=None):
+      words=(), facade="evaluate", fkw=None, measured=None, xfail=None, cmd="evaluate"):
     """One row: a promise, the input (case edits, extra files, CLI options) and what must
     happen (exit code, words of the one line)."""
     return dict(promise=promise, case=case, extra=extra, replace=replace, files=files or {},
                 argv=list(argv), code=code, words=words, facade=facade, fkw=fkw or {},
-                measured=measured, xfail=xfail)
+                measured=measured, xfail=xfail, cmd=cmd)
 
 
 EMPTY_OIL = ("studies/api.py with_operating looks up `oil or case.oil.name`, so '' falls back "
@@ -105,6 +105,14 @@ ROWS = {
         "5: T_sea + R Q = 304 degC under --thermal bulk: exit 4 naming other_heat_W",
         extra=THERMAL.format(r=1, q=300), argv=["--thermal", "bulk"], code=4,
         fkw={"thermal": "bulk"}, words=("other_heat_W = 300", "304")),
+    "optimize R 1000": R(
+        "5: optimize on a joint whose balance has no root fails (exit 4), not at 250 degC",
+        extra=THERMAL.format(r=1000, q=0), cmd="optimize", facade="optimize", code=4,
+        words=("below 250 degC", "resistance_K_per_W = 1000")),
+    "optimize Q 1e6": R(
+        "5: optimize with Q = 1e6 W: the base above the cap, exit 4 naming other_heat_W",
+        extra=THERMAL.format(r=0.05, q=1e6), cmd="optimize", facade="optimize", code=4,
+        words=("other_heat_W = 1e+06",)),
     # ------------------------------------------------------------------ class 6: joints
     "length m as mm": R(
         "6: length_mm = 0.035 (metres typed as mm) is refused with the hint",
@@ -223,7 +231,7 @@ def _write(tmp_path: Path, row: dict) -> tuple[list[str], str | None]:
         text = text.replace(old, new, 1)
     p = tmp_path / "case.toml"
     p.write_text(text + row["extra"])
-    return ["evaluate", str(p), *row["argv"]], str(p)
+    return [row["cmd"], str(p), *row["argv"]], str(p)
 
 
 @pytest.mark.parametrize("rid", PARAMS)
@@ -250,6 +258,8 @@ def test_facade(tmp_path, rid):
     with pytest.raises(err) as e:
         if row["facade"] == "read_measured":
             og.read_measured(path)
+        elif row["facade"] == "optimize":
+            og.optimize(path, **row["fkw"])
         elif row["facade"] == "read_case":
             og.read_case(path)
         else:

@@ -292,3 +292,20 @@ def _case_with(tmp_path: Path, oil: str) -> str:
     p = tmp_path / "t.toml"
     p.write_text(CASE.replace('name = "VG32"', oil, 1))
     return str(p)
+
+
+def test_sweep_row_without_balance_fails_alone(tmp_path, capsys):
+    """5: in a sweep, the row whose balance has no root (R = 1000 K/W) is an error row
+    naming the bound; its neighbours (R = 0.05, 0.1 K/W) keep their results."""
+    import pandas as pd
+
+    (tmp_path / "case.toml").write_text(CASE + THERMAL.format(r=0.05, q=0))
+    (tmp_path / "g.csv").write_text("resistance_K_per_W\n0.05\n1000\n0.1\n")
+    assert main(["study", "sweep", str(tmp_path / "g.csv"), "--case",
+                 str(tmp_path / "case.toml"), "--out", str(tmp_path / "o")]) == 0
+    res = pd.read_csv(tmp_path / "o" / "results.csv")
+    assert list(res["status"]) == ["ok", "error", "ok"]
+    assert "below 250 degC" in res["error"][1] and "resistance_K_per_W = 1000" in res["error"][1]
+    ok = res["mean_power_W"][[0, 2]]
+    assert ok.notna().all() and (ok > 0).all()
+    assert "first failure (row 1)" in capsys.readouterr().err

@@ -32,9 +32,12 @@ from .case_limits import (
     MIN_GAP_M,
     MOTOR_RANGES,
     SLOT_COUNT_REASON,
+    check_bearing_fits,
     check_gap,
     check_motor_fits,
+    check_proportions,
     check_size,
+    in_mm,
 )
 from .duty_cycle import DutyCycle
 from .errors import InputError, check_positive, check_range
@@ -83,35 +86,36 @@ class RotorStatorClearance:
     def __post_init__(self):
         where = "region1"
         for f in ("T1", "T2", "T3", "T4", "length"):
-            check_positive(_key(f), getattr(self, f), where)
+            check_positive(_key(f), in_mm(getattr(self, f)), where)
             check_size(_key(f), getattr(self, f), MAX_LENGTH_M if f == "length"
                         else MAX_RADIUS_M, where)
         if self.T1_unfilled is None:
             object.__setattr__(self, "T1_unfilled", self.T1)
         if self.T4_unfilled is None:
             object.__setattr__(self, "T4_unfilled", self.T4)
-        check_positive("T1_unfilled_mm", self.T1_unfilled / MM_TO_M, where)
-        check_positive("T4_unfilled_mm", self.T4_unfilled / MM_TO_M, where)
+        check_positive("T1_unfilled_mm", in_mm(self.T1_unfilled), where)
+        check_positive("T4_unfilled_mm", in_mm(self.T4_unfilled), where)
         check_size("T4_unfilled_mm", self.T4_unfilled, MAX_RADIUS_M, where)
-        mm = 1.0 / MM_TO_M
         if self.T3 <= self.T2:
-            raise InputError("T3_mm", self.T3 * mm, f"the gap T3 - T2 must be > 0 "
-                             f"(T2_mm = {self.T2 * mm:g})", where)
+            raise InputError("T3_mm", in_mm(self.T3), f"the gap T3 - T2 must be > 0 "
+                             f"(T2_mm = {in_mm(self.T2):g})", where)
         if self.T1 > self.T2:
-            raise InputError("T1_mm", self.T1 * mm, f"must be <= T2_mm = {self.T2 * mm:g} "
+            raise InputError("T1_mm", in_mm(self.T1), f"must be <= T2_mm = {in_mm(self.T2):g} "
                              "(groove bottoms lie inside the rotor surface)", where)
         if self.T4 < self.T3:
-            raise InputError("T4_mm", self.T4 * mm, f"must be >= T3_mm = {self.T3 * mm:g} "
+            raise InputError("T4_mm", in_mm(self.T4), f"must be >= T3_mm = {in_mm(self.T3):g} "
                              "(groove bottoms lie outside the stator bore)", where)
         if self.T1_unfilled > self.T1:
-            raise InputError("T1_unfilled_mm", self.T1_unfilled * mm,
-                             f"must be <= T1_mm = {self.T1 * mm:g} (fill only raises it)", where)
+            raise InputError("T1_unfilled_mm", in_mm(self.T1_unfilled),
+                             f"must be <= T1_mm = {in_mm(self.T1):g} (fill only raises it)", where)
         if self.T4_unfilled < self.T4:
-            raise InputError("T4_unfilled_mm", self.T4_unfilled * mm,
-                             f"must be >= T4_mm = {self.T4 * mm:g} (fill only lowers it)", where)
+            raise InputError("T4_unfilled_mm", in_mm(self.T4_unfilled),
+                             f"must be >= T4_mm = {in_mm(self.T4):g} (fill only lowers it)", where)
         if self.roughness < 1.0:
             raise InputError("T", self.roughness, "roughness (T4-T1)/(T3-T2) must be >= 1", where)
-        check_gap("T3_mm", self.T3 * mm, self.gap, self.T2, "T2_mm", where)
+        check_gap("T3_mm", in_mm(self.T3), self.gap, self.T2, "T2_mm", where)
+        check_proportions(self.length, self.gap, self.T2,
+                          ("length_mm", "the gap T3_mm - T2_mm", "T2_mm"), where)
 
     @property
     def gap(self) -> float:
@@ -149,10 +153,12 @@ class BearingClearance:
 
     def __post_init__(self):
         for f in ("radius", "length", "gap"):
-            check_positive(f + "_mm", getattr(self, f) / MM_TO_M, "region2")
+            check_positive(f + "_mm", in_mm(getattr(self, f)), "region2")
             check_size(f + "_mm", getattr(self, f), MAX_LENGTH_M if f == "length"
                         else MAX_RADIUS_M, "region2")
-        check_gap("gap_mm", self.gap / MM_TO_M, self.gap, self.radius, "radius_mm", "region2")
+        check_gap("gap_mm", in_mm(self.gap), self.gap, self.radius, "radius_mm", "region2")
+        check_proportions(self.length, self.gap, self.radius,
+                          ("length_mm", "gap_mm", "radius_mm"), "region2")
 
 
 @dataclass(frozen=True)
@@ -269,18 +275,17 @@ class DesignBounds:
 
     def __post_init__(self):
         where = "bounds"
-        mm = 1.0 / MM_TO_M
         for lo, hi in (("gap_min", "gap_max"), ("radius_min", "radius_max"),
                        ("length_min", "length_max")):
-            a = check_positive(lo + "_mm", getattr(self, lo) * mm, where)
-            b = check_positive(hi + "_mm", getattr(self, hi) * mm, where)
+            a = check_positive(lo + "_mm", in_mm(getattr(self, lo)), where)
+            b = check_positive(hi + "_mm", in_mm(getattr(self, hi)), where)
             if b < a:
                 raise InputError(hi + "_mm", b, f"must be >= {lo}_mm = {a:g}", where)
             check_size(hi + "_mm", getattr(self, hi), MAX_LENGTH_M if lo == "length_min"
                         else MAX_RADIUS_M, where)
-        check_gap("gap_min_mm", self.gap_min * mm, self.gap_min, self.radius_min,
+        check_gap("gap_min_mm", in_mm(self.gap_min), self.gap_min, self.radius_min,
                   "radius_min_mm", where)
-        check_gap("gap_max_mm", self.gap_max * mm, self.gap_max, self.radius_min,
+        check_gap("gap_max_mm", in_mm(self.gap_max), self.gap_max, self.radius_min,
                   "radius_min_mm", where)
         check_positive("inertia_max_ratio", self.inertia_max_ratio, where)
         if self.torque_min_Nm is not None:
@@ -468,6 +473,7 @@ class DesignCase:
         if self.bounds is None:
             object.__setattr__(self, "bounds", DesignBounds.around(self.region1))
         check_motor_fits(self)
+        check_bearing_fits(self)
         if self.mission:
             total = sum(s.fraction for s in self.mission)
             if abs(total - 1.0) > 1e-6:

@@ -74,6 +74,107 @@ between close cylinders; a gap wider than the rotor's radius is open fluid, not 
 clearance."""
 
 
+def in_mm(value_m: float) -> float:
+    """A length [m] in mm as the user wrote it: ``value_m / MM_TO_M`` rounded to 12
+    significant digits, so ``0.035`` mm read as 3.5e-5 m is quoted as ``0.035``, not
+    ``0.035000000000000003`` (messages quote the value in the user's units).
+
+    Parameters
+    ----------
+    value_m : float
+        The length [m].
+
+    Returns
+    -------
+    float
+        The length [mm].
+    """
+    return float(f"{float(value_m) / MM_TO_M:.12g}")
+
+
+PROPORTION_RANGES = {  # ratio -> (lowest, highest, why too low, why too high)
+    "length/gap": (1.0, 1.0e5, "an annulus shorter than its gap is no clearance: the "
+                   "clearance laws (Eq. 6, Couette) hold for L >> gap",
+                   "longer than 10^5 gaps is beyond any turned joint"),
+    "length/radius": (0.01, 100.0, "a clearance shorter than 1 % of its radius is a "
+                      "face, not an annulus", "a joint 100 radii long is a shaft, not a "
+                      "joint"),
+}
+"""Plausible proportions [-] of a clearance (region 1 and region 2), lowest and highest
+included, with the reason of each bound; outside them a length in m typed into a mm key
+(``length_mm = 0.035``) or the reverse is the likely cause."""
+
+
+def check_proportions(length_m: float, gap_m: float, radius_m: float, keys: tuple[str, str,
+                      str], where: str) -> None:
+    """Refuse a clearance whose L/gap or L/R lies outside :data:`PROPORTION_RANGES`.
+
+    Parameters
+    ----------
+    length_m, gap_m, radius_m : float
+        Length, gap and rotor radius of the clearance [m].
+    keys : tuple of str
+        TOML keys of the length, gap and radius (``"length_mm"``, ...) [-].
+    where : str
+        Table it came from [-].
+
+    Raises
+    ------
+    InputError
+        Naming the length as written [mm], the ratio, its range and the reason, with a
+        "mm written as m?" hint.
+
+    References
+    ----------
+    Bilgen & Boulos [2] (the clearance law of a long annulus).
+    """
+    lk, gk, rk = keys
+    for name, other, key in (("length/gap", gap_m, gk), ("length/radius", radius_m, rk)):
+        lo, hi, why_lo, why_hi = PROPORTION_RANGES[name]
+        ratio = length_m / other
+        if lo <= ratio <= hi:
+            continue
+        why, hint = ((why_lo, "a length in m written in a mm key?") if ratio < lo else
+                     (why_hi, f"{key} in m written in a mm key?"))
+        raise InputError(lk, in_mm(length_m), f"gives {name} = {ratio:.4g} with {key} = "
+                         f"{in_mm(other):g}; allowed {lo:g} to {hi:g} ({why}; {hint})", where)
+
+
+def check_bearing_fits(case: Any) -> None:
+    """Refuse a rolling bearing whose bore is wider than the joint around it.
+
+    The bearing carries the joint's shaft, so its bore radius ``d/2`` lies inside the
+    joint: below the largest radius the case knows (the stator groove bottoms ``T4`` or
+    the outer wall of region 2, radius + gap).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (its ``bearing``, ``region1`` and ``region2``) [m].
+
+    Raises
+    ------
+    InputError
+        Naming ``bore_mm`` as written, the joint's radius and the reason.
+
+    References
+    ----------
+    SKF, *Rolling bearings*, catalogue 10000 EN (2013) (the bore d of a bearing).
+    """
+    b = case.bearing
+    if b is None:
+        return
+    r2 = case.region2
+    outer, key = case.region1.T4, "T4_mm"
+    if r2 is not None and r2.radius + r2.gap > outer:
+        outer, key = r2.radius + r2.gap, "region2 radius_mm + gap_mm"
+    if b.bore_m / 2.0 > outer:
+        raise InputError("bore_mm", in_mm(b.bore_m), f"the bearing's bore radius "
+                         f"{in_mm(b.bore_m / 2.0):g} mm must lie inside the joint ({key} = "
+                         f"{in_mm(outer):g}): the bearing carries the joint's shaft; a bore "
+                         "wider than the joint is another machine", "bearing")
+
+
 def check_size(field: str, value_m: float, limit_m: float, where: str) -> None:
     """Refuse a radius, gap or length above ``limit_m``, naming it in mm.
 
@@ -94,7 +195,7 @@ def check_size(field: str, value_m: float, limit_m: float, where: str) -> None:
         ``value_m > limit_m``.
     """
     if value_m > limit_m:
-        raise InputError(field, value_m / MM_TO_M, f"at most {limit_m / MM_TO_M:g} mm: "
+        raise InputError(field, in_mm(value_m), f"at most {limit_m / MM_TO_M:g} mm: "
                          "larger than any manipulator or thruster motor (a unit slip, m "
                          "written as mm?)", where)
 
@@ -196,13 +297,12 @@ def check_motor_fits(case: Any) -> None:
     Gieras [1], Eqs. A.27-A.28 and ch. 2.
     """
     m, r1 = case.motor, case.region1
-    mm = 1.0 / MM_TO_M
     if m.shaft_bore_radius >= r1.T1_unfilled:
-        raise InputError("shaft_bore_radius_mm", m.shaft_bore_radius * mm, "must be less than "
-                         f"the rotor's groove bottoms (T1_unfilled_mm = {r1.T1_unfilled * mm:g})"
+        raise InputError("shaft_bore_radius_mm", in_mm(m.shaft_bore_radius), "must be less than "
+                         f"the rotor's groove bottoms (T1_unfilled_mm = {in_mm(r1.T1_unfilled):g})"
                          ": the rotor needs material", "motor")
-    check_slot_pitch(m, r1.T3, "slot_opening_mm", m.slot_opening * mm,
-                     f"the stator bore T3_mm = {r1.T3 * mm:g}", "motor")
+    check_slot_pitch(m, r1.T3, "slot_opening_mm", in_mm(m.slot_opening),
+                     f"the stator bore T3_mm = {in_mm(r1.T3):g}", "motor")
     _, bg, kc = motor_torque(m, r1.T2, r1.gap, r1.length)
     if not (math.isfinite(kc) and kc >= 1.0 and 0.0 < bg <= m.remanence_T):
         raise InputError("motor", f"k_C = {kc:.4g}, B_g = {bg:.4g} T", "a Carter coefficient "

@@ -47,6 +47,45 @@ TABLE_OPTIONAL_COLUMNS = ("pressure_MPa",)
 OUTSIDE_TABLE = ("refuse", "clamp")
 """What a table fluid does outside its table: refuse (InputError) or clamp (warning)."""
 
+def _check_monotone(t_K: np.ndarray, p_Pa: np.ndarray, nu: np.ndarray, where: str) -> None:
+    """Refuse a liquid table whose viscosity rises with temperature or falls with pressure.
+
+    A liquid's viscosity falls as it warms (Andrade: ``ln nu`` near-linear in 1/T) and
+    rises under pressure (Barus) [1]; a table that runs the other way is a typo (a column
+    shifted, a digit lost), and its interpolant would extrapolate the wrong way (a
+    100-fold rise over 20 K ends in NaN in the heat balance). Equal neighbours (a flat
+    table) are allowed.
+
+    Raises
+    ------
+    InputError
+        Naming ``nu_cSt``, the two values as written [cSt] and their temperatures [degC]
+        or pressures [MPa].
+
+    References
+    ----------
+    .. [1] E. N. da C. Andrade, Nature 125:309-310, 1930; C. Barus, Am. J. Sci.
+       45:87-96, 1893.
+    """
+    up_T = np.diff(nu, axis=1) > 0
+    if np.any(up_T):
+        i, j = (int(k[0]) for k in np.nonzero(up_T))
+        at = f" at {p_Pa[i] / MPA_TO_PA:g} MPa" if len(p_Pa) else ""
+        a, b = (float(f"{m2_s_to_cst(v):.12g}") for v in nu[i, j:j + 2])
+        raise InputError("nu_cSt", b, f"must not rise with temperature: {a:g} cSt at "
+                         f"{kelvin_to_celsius(t_K[j]):g} degC, {b:g} cSt at "
+                         f"{kelvin_to_celsius(t_K[j + 1]):g} degC{at} (a liquid thins as it "
+                         "warms: rows in the wrong column or order?)", where)
+    down_p = np.diff(nu, axis=0) < 0
+    if np.any(down_p):
+        i, j = (int(k[0]) for k in np.nonzero(down_p))
+        a, b = (float(f"{m2_s_to_cst(v):.12g}") for v in nu[i:i + 2, j])
+        raise InputError("nu_cSt", b, f"must not fall with pressure: {a:g} cSt at "
+                         f"{p_Pa[i] / MPA_TO_PA:g} MPa, {b:g} cSt at {p_Pa[i + 1] / MPA_TO_PA:g}"
+                         f" MPa ({kelvin_to_celsius(t_K[j]):g} degC; a liquid thickens under "
+                         "pressure, Barus)", where)
+
+
 @dataclass(frozen=True)
 class TableFluid:
     """A fluid given by a property table: nu and rho against temperature (and pressure).
@@ -111,6 +150,7 @@ class TableFluid:
             if not np.all(np.isfinite(a) & (a > 0)):
                 raise InputError(col, float(a[~(np.isfinite(a) & (a > 0))][0]), "must be > 0 "
                                  "and finite", where)
+        _check_monotone(t, p, np.asarray(self.nu_m2_s, dtype=float), where)
         if self.outside not in OUTSIDE_TABLE:
             raise InputError("outside_table", self.outside, f"allowed: {', '.join(OUTSIDE_TABLE)}",
                              where)

@@ -359,7 +359,8 @@ def _balance(case: DesignCase, mode: str, depth_m: float | None
             return p
         return np.concatenate([p, bearing_mean_power_at(case, ts, depth_m)[..., None]], -1)
 
-    temps, powers = joint_steady_temperature(power_at, case.thermal, 1)
+    temps, powers = joint_steady_temperature(power_at, case.thermal, 1,
+                                             case.oil.trusted_range_C)
     return float(temps[0]), powers[0]
 
 

@@ -306,7 +306,8 @@ def _lower_sign_change(power_at, tb, rth, t, suspect, tol_K, points=16):
 
 
 def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec: ThermalSpec,
-                             n: int = 1) -> tuple[np.ndarray, np.ndarray]:
+                             n: int = 1, trusted_range_C: tuple[float, float] | None = None
+                             ) -> tuple[np.ndarray, np.ndarray]:
     """Steady bulk oil temperature of a joint: ``T = T_sea + R (P(T) + Q)`` [1].
 
     The balance is :func:`steady_temperature` with the base temperature
@@ -327,6 +328,9 @@ def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec:
         Sea temperature [degC], resistance R [K/W] and other heat Q [W].
     n : int
         Number of cases.
+    trusted_range_C : tuple of float, optional
+        Temperatures [degC] over which the fluid's law is trusted, quoted in the
+        message of a balance without a root.
 
     Returns
     -------
@@ -338,15 +342,73 @@ def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec:
     Raises
     ------
     SolverError
-        The safeguarded Newton iteration did not converge, or the residual is not
-        monotone (``dP/dT >= 1/R`` at an iterate: the root may not be unique).
+        The safeguarded Newton iteration did not converge, the residual is not
+        monotone (``dP/dT >= 1/R`` at an iterate: the root may not be unique), or the
+        balance has no root below :data:`MAX_OIL_TEMP_C` (the solver's cap is never
+        returned as an operating temperature; :func:`require_balanced`).
 
     References
     ----------
     Bergman et al. [1], sec. 3.1 (thermal resistance).
     """
     base = spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W
-    return steady_temperature(power_at, base, spec.resistance_K_W, n)
+    if n == 1:
+        require_balanced(np.array([base]), spec, trusted_range_C)
+    temps, powers = steady_temperature(power_at, base, spec.resistance_K_W, n)
+    require_balanced(temps, spec, trusted_range_C, powers)
+    return temps, powers
+
+
+def require_balanced(temps_C, spec: ThermalSpec,
+                     trusted_range_C: tuple[float, float] | None = None,
+                     power_W=None, max_temp_C: float = MAX_OIL_TEMP_C) -> None:
+    """Refuse a steady balance ``T = T_sea + R (P(T) + Q)`` without a root below the cap.
+
+    :func:`steady_temperature` holds a case whose balance has no root below
+    ``max_temp_C`` at the cap; that is a failure, never an operating temperature [1].
+
+    Parameters
+    ----------
+    temps_C : array_like
+        Steady temperatures [degC] (or the base ``T_sea + R Q`` before solving).
+    spec : ThermalSpec
+        Sea temperature [degC], resistance R [K/W] and other heat Q [W].
+    trusted_range_C : tuple of float, optional
+        Temperatures [degC] over which the fluid's law is trusted.
+    power_W : array_like, optional
+        Viscous loss at ``temps_C`` [W] (one row per case; columns summed).
+    max_temp_C : float
+        The bound [degC] (:data:`MAX_OIL_TEMP_C`).
+
+    Raises
+    ------
+    SolverError
+        A temperature at or above ``max_temp_C``, or not finite: one line naming the
+        bound, the heat that overshoots it and the fluid's trusted range.
+
+    References
+    ----------
+    Bergman et al. [1], sec. 3.1 (thermal resistance).
+    """
+    t = np.atleast_1d(np.asarray(temps_C, dtype=float))
+    bad = ~(t < max_temp_C)
+    if not bad.any():
+        return
+    j = int(np.flatnonzero(bad)[0])
+    r, q, sea = spec.resistance_K_W, spec.other_heat_W, spec.sea_temp_C
+    if power_W is None:
+        why = (f"the sea {sea:g} degC + R {r:g} K/W x other heat {q:g} W alone is "
+               f"{sea + r * q:.4g} degC")
+    else:
+        p = float(_total(np.atleast_1d(np.asarray(power_W, dtype=float))
+                         .reshape(t.size, -1))[j])
+        why = (f"at {max_temp_C:g} degC the loss {p:.3g} W + other heat {q:g} W times "
+               f"R {r:g} K/W + sea {sea:g} degC = {sea + r * (p + q):.4g} degC")
+    trust = ("" if trusted_range_C is None else
+             f"; the fluid's law is trusted to {trusted_range_C[1]:g} degC")
+    raise SolverError(f"no oil temperature below {max_temp_C:g} degC balances the heat "
+                      f"(resistance_K_per_W = {r:g}, other_heat_W = {q:g}): {why} > "
+                      f"{max_temp_C:g}{trust}", "no_root")
 
 
 def joint_temperature_transient(power_at_time_temp: Callable[[float, float], float],

@@ -264,6 +264,9 @@ def _mineral_from(od: dict, base_dir: Path, flag: bool | None) -> tuple[Oil, str
         catalogue = read_oils_csv(p, "oil.oils_csv")
         oils_csv = str(p)
     oil_name = str(od.get("name", "VG22"))
+    if not oil_name.strip():
+        raise InputError("name", oil_name, "a non-empty oil name (an ISO VG grade such as "
+                         "VG22, a row of --oils, or a name for the fluid given here)", "oil")
     own = [k for k in ("nu40_cSt", "nu100_cSt", "density_kg_m3") if k in od]
     if own:
         missing = [k for k in ("nu40_cSt", "nu100_cSt", "density_kg_m3") if k not in od]

@@ -164,7 +164,8 @@ def check_power(power: np.ndarray, kind: str, speed_rpm: np.ndarray, oil_rows: n
     Raises
     ------
     InputError
-        Peak |power| above :data:`POWER_MAX_W`; a median electrical input below
+        Peak |power| above :data:`POWER_MAX_W`; a negative median power of the oil
+        rows while the shaft turns (a loss is dissipated heat); a median electrical input below
         :data:`ELECTRIC_POWER_MIN_W` while the shaft turns; (fitting) a viscous power of
         exactly 0 in every oil row.
     """
@@ -181,7 +182,13 @@ def check_power(power: np.ndarray, kind: str, speed_rpm: np.ndarray, oil_rows: n
     if purpose == "fit" and kind == "viscous_power_W" and oil_p.size and not oil_p.any():
         raise InputError(kind, 0.0, "no viscous signal: the measured loss is 0 in every oil "
                          "row, so there is nothing to calibrate", source)
-    turning = oil_rows & np.isfinite(speed_rpm) & (np.abs(speed_rpm) > 0)
+    turning = oil_rows & np.isfinite(speed_rpm) & (np.abs(speed_rpm) > 0) & np.isfinite(power)
+    if turning.any() and _median(power[turning]) < 0:
+        raise InputError(f"{kind} median", float(f"{_median(power[turning]):.6g}"),
+                         "must be > 0 over the oil rows while the shaft turns: a viscous loss "
+                         "(and a motor's input driving it) is heat dissipated, never negative "
+                         "(a sign convention of the rig, power fed back?) give the loss as a "
+                         "positive power in W", source)
     if kind == "power_W" and turning.any():
         p = _median(np.abs(power[turning]))
         if np.isfinite(p) and p < ELECTRIC_POWER_MIN_W:

@@ -74,7 +74,7 @@ from oilgap.model.joint_loss import THERMAL_MODES, case_film, joint_mean_power, 
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.regions import joint_regions, region_mean_power, rotor_stator_region
-from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
+from oilgap.model.thermal import MAX_OIL_TEMP_C, require_balanced, steady_temperature
 from oilgap.model.units import MM_TO_M, celsius_to_kelvin
 
 from .parameters import DesignParameters
@@ -275,6 +275,9 @@ class ThermalDesignProblem:
         ------
         InputError
             An override under ``film``, or out of range (ThermalSpec's checks).
+        SolverError
+            ``T_sea + R Q`` at or above :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`: no
+            design balances (:func:`~oilgap.model.thermal.require_balanced`).
         """
         given = {k: v for k, v in (("sea_temp_C", sea_temp_C),
                                    ("resistance_K_W", resistance_K_W),
@@ -286,9 +289,10 @@ class ThermalDesignProblem:
                                  "optimize")
             return None
         spec = replace(self.case.thermal, **{k: float(v) for k, v in given.items()})
-        if spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W >= MAX_OIL_TEMP_C:
-            raise InputError("other_heat_W", spec.other_heat_W, "sea_temp_C + R Q below "
-                             f"{MAX_OIL_TEMP_C:g} degC", "optimize")
+        # T_sea + R Q at or above the cap: no design balances (a solver failure, exit 4,
+        # as evaluate's; issue 20 class 5)
+        require_balanced(spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W, spec,
+                         self.case.oil.trusted_range_C)
         return spec
 
     def point(self, x_m: Sequence[float], oil_temp_C: float | None = None,
@@ -359,6 +363,7 @@ class ThermalDesignProblem:
         temps, _ = steady_temperature(
             power_at, spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W,
             spec.resistance_K_W, 1, tol_K=BALANCE_TOL_K)
+        require_balanced(temps, spec, self.case.oil.trusted_range_C, power_at(temps))
         return float(temps[0])
 
     # ----------------------------------------------------------------- solve

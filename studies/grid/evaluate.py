@@ -34,7 +34,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.errors import InputError, OilgapWarning
+from oilgap.model.errors import InputError, OilgapWarning, SolverError
 from oilgap.model.evaluation import oil_state
 from oilgap.model.fluids import warn_if_untrusted_state
 from oilgap.model.joint_loss import FilmBand, joint_mean_power
@@ -42,7 +42,7 @@ from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.oils import Oil
 from oilgap.model.regions import Region, joint_regions
 from oilgap.model.taylor_couette import couette_reynolds
-from oilgap.model.thermal import MAX_OIL_TEMP_C, steady_temperature
+from oilgap.model.thermal import MAX_OIL_TEMP_C, require_balanced, steady_temperature
 from oilgap.model.thermal_modes import (
     DEFAULT_MODE_WHY,
     THERMAL_MODE_TEXT,
@@ -121,12 +121,29 @@ def _balance(c0: DesignCase, cases: list[DesignCase], idx: list[int], depths: np
         return np.asarray(joint_mean_power(c0, ts, mode, np.tile(depths, k), regs[k],
                                            include_bearing=True), dtype=float)
 
-    temps, _ = steady_temperature(power_at, sea + th.resistance_K_W * th.other_heat_W,
-                                  th.resistance_K_W, n)
-    for j in np.flatnonzero(temps >= MAX_OIL_TEMP_C):
-        warn_col[idx[j]] = (f"heat balance held at its cap {MAX_OIL_TEMP_C:g} degC (no "
-                            "root below it)")
+    base = sea + th.resistance_K_W * th.other_heat_W
+    temps, p = steady_temperature(power_at, base, th.resistance_K_W, n)
+    # no root below the cap: the row fails with its own line, never a result
+    failed = {}
+    for j in np.flatnonzero(~(temps < MAX_OIL_TEMP_C)):
+        try:
+            require_balanced(temps[j:j + 1], cases[idx[j]].thermal, c0.oil.trusted_range_C,
+                             p[j:j + 1])
+        except SolverError as e:
+            failed[idx[j]] = f"SolverError: {e}"
+    if failed:
+        raise RowsFailed(failed)
     return temps, sea
+
+
+class RowsFailed(SolverError):
+    """Rows of :func:`evaluate_cases` without a result (a heat balance without a root below
+    the cap), each with its message: :func:`_records` gives them their error and evaluates
+    the others again, instead of halving the call until they are isolated."""
+
+    def __init__(self, messages: dict[int, str]):
+        self.messages = messages
+        super().__init__(next(iter(messages.values())), "no_root")
 
 
 def _group_temperatures(cases: list[DesignCase], idx: list[int], mode: str,
@@ -246,6 +263,11 @@ def _records(cases: list[DesignCase], thermal: str) -> list[dict]:
     halved until the failing row(s) are isolated (each carries its error)."""
     try:
         return evaluate_cases(cases, thermal).to_dict("records")
+    except RowsFailed as e:
+        rest = [i for i in range(len(cases)) if i not in e.messages]
+        recs = iter(_records([cases[i] for i in rest], thermal) if rest else [])
+        return [{"error": e.messages[i]} if i in e.messages else next(recs)
+                for i in range(len(cases))]
     except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
         if len(cases) == 1:
             return [{"error": f"{type(e).__name__}: {e}"}]

@@ -128,7 +128,7 @@ def with_operating(case: DesignCase, oil: str | None = None,
     """
     cat = oil_catalogue(oils)
     if oil is not None or cat is not None:
-        case = replace(case, oil=get_oil(oil or case.oil.name, cat))
+        case = replace(case, oil=get_oil(case.oil.name if oil is None else oil, cat))
     if oil_temp_C is not None or depth_m is not None:
         op = case.operating
         op = OperatingPoint(op.depth_m if depth_m is None else check_finite("depth_m", depth_m),

@@ -8,7 +8,7 @@
 7. Messages quote the value in the user's units, as written (``T1_mm = -1``, not -0.001).
 
 Each row of :data:`ROWS` states the promise it checks; every row runs through
-``oilgap.studies.cli.main`` (exit code, exactly one line on stderr, no traceback, the
+``oilgap.cli.main`` (exit code, exactly one line on stderr, no traceback, the
 words that name the field, the value as written and what is allowed) and through the
 façade (``import oilgap as og``: the project's own error class).
 """
@@ -20,8 +20,8 @@ from pathlib import Path
 import pytest
 
 import oilgap as og
+from oilgap.cli import main
 from oilgap.model.errors import InputError, SolverError
-from oilgap.studies.cli import main
 
 CASE = """name = "t"
 [region1]
@@ -75,10 +75,6 @@ def R(promise, *, case=None, extra="", replace=(), files=None, argv=(), code=2,
                 argv=list(argv), code=code, words=words, facade=facade, fkw=fkw or {},
                 measured=measured, xfail=xfail, cmd=cmd)
 
-
-EMPTY_OIL = ("studies/api.py with_operating looks up `oil or case.oil.name`, so '' falls back "
-             "to the case's oil; the fix (`case.oil.name if oil is None else oil`; get_oil "
-             "already refuses '') is in the façade lane's file (issue 20 class 6)")
 
 ROWS = {
     # ------------------------------------------------------------------ class 5
@@ -153,7 +149,7 @@ ROWS = {
         words=("name = '  '", "non-empty")),
     "empty --oil": R(
         "6: --oil '' is refused, not replaced by the case's oil",
-        argv=["--oil", ""], fkw={"oil": ""}, words=("oil = ''",), xfail=EMPTY_OIL),
+        argv=["--oil", ""], fkw={"oil": ""}, words=("oil = ''",)),
     # ------------------------------------------------------------------ class 6: tables
     "table nu rises 100x": R(
         "6: a table whose viscosity rises 100-fold over 20 K is refused (liquids thin)",

@@ -32,7 +32,7 @@ from .least_squares import (
     initial_guess,
     one_step_fold,
 )
-from .ranges import PARAM_RANGES, ParamRange, held_values, parameter_findings
+from .ranges import PARAM_RANGES, Finding, ParamRange, held_values, parameter_findings
 from .refit import FinalModel, HeldOut, Refitter, heldout_gains, refit_selected, rmse
 from .residuals import (
     autocorrelation,
@@ -75,7 +75,7 @@ from .uncertainty import baseline_variance, effect_ci, jackknife_ci, parameter_c
 
 __all__ = [
     "BASES", "EQ6_PARAMS", "LOG_PARAMS", "PARAM_LIMITS", "PARAM_RANGES", "ParamRange",
-    "EffectSearch", "SearchOptions", "check_alpha", "cv_groups", "evidence_trial",
+    "Finding", "EffectSearch", "SearchOptions", "check_alpha", "cv_groups", "evidence_trial",
     "fluid_facts", "fold_spec", "held_values", "parameter_findings", "search_effects",
     "BASE_PARAMS", "EXACT_FORMS", "BaseSpec", "BaselineFit", "Candidates", "EffectResult",
     "FinalModel", "ForwardModel", "HeldOut", "LeaveOneRunOutSelector", "LoopEstimator",

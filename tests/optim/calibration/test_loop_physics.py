@@ -53,10 +53,10 @@ def test_two_and_three_effects_injected_at_once_are_all_named(effects):
     assert est.unexplained_ is None
     # no single effect explains half the structure of three: the old per-step rule stopped
     # there; the set rule accepts them together
-    steps = [s for s in est.selection_log_ if s["step"] in (1, 2, 3) and s["accepted"]]
+    steps = [s for s in est.selection_log_ if s.step in (1, 2, 3) and s.accepted]
     assert len(steps) == len(effects)
     if len(effects) == 3:
-        assert steps[0]["explained_total"] < 0.9
+        assert steps[0].explained_total < 0.9
 
 
 def test_data_made_with_the_published_law_give_scale_1_and_no_finding():
@@ -110,7 +110,7 @@ def test_shear_thinning_on_a_newtonian_oil_is_implausible_not_accepted():
     assert st["shear_thinning"].startswith("implausible: lambda^2 = ")
     assert "the effect needs a polymer-thickened liquid: " in st["shear_thinning"]
     assert "VG150" in st["shear_thinning"] and "straight mineral oils" in st["shear_thinning"]
-    assert any(s.get("step") == "plausibility" for s in est.selection_log_)
+    assert any(s.step == "plausibility" for s in est.selection_log_)
     # the same rig with the oils marked polymer-thickened: named, lambda recovered
     est = _fit(SynthConfig(effect="shear_thinning", fluids=polymer_thickened()))
     (e,) = est.effects_
@@ -214,5 +214,5 @@ def test_an_implausible_partner_is_dropped_and_its_share_left_unexplained():
     assert st["shear_thinning"].startswith("implausible")
     assert est.unexplained_ is not None
     for s in est.selection_log_:
-        if s.get("step") == "nonlinear prune":
-            assert s["gain_pct"] < 10.0
+        if s.step == "nonlinear prune":
+            assert s.gain_pct < 10.0

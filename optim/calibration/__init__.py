@@ -12,6 +12,7 @@ Stages (each its own module, called in this order by :class:`LoopEstimator`):
 * :mod:`.candidates`: library effects as candidate regression columns.
 * :mod:`.selection`: sign-constrained lasso, box least squares, leave-one-group-out
   selector, forward selection with backward pruning.
+* :mod:`.steps`: the log of the effect search, one record per decision.
 * :mod:`.search`: screening, selection and refit, repeated without implausible
   fits; the evidence trial of a parameter outside its range.
 * :mod:`.refit`: nonlinear refit of the selected effects, held-out errors.
@@ -32,7 +33,7 @@ from .least_squares import (
     initial_guess,
     one_step_fold,
 )
-from .ranges import PARAM_RANGES, ParamRange, held_values, parameter_findings
+from .ranges import PARAM_RANGES, Finding, ParamRange, held_values, parameter_findings
 from .refit import FinalModel, HeldOut, Refitter, heldout_gains, refit_selected, rmse
 from .residuals import (
     autocorrelation,
@@ -71,15 +72,16 @@ from .spec import (
     decide_spec,
     fold_spec,
 )
+from .steps import SelectionStep
 from .uncertainty import baseline_variance, effect_ci, jackknife_ci, parameter_ci
 
 __all__ = [
     "BASES", "EQ6_PARAMS", "LOG_PARAMS", "PARAM_LIMITS", "PARAM_RANGES", "ParamRange",
-    "EffectSearch", "SearchOptions", "check_alpha", "cv_groups", "evidence_trial",
+    "Finding", "EffectSearch", "SearchOptions", "check_alpha", "cv_groups", "evidence_trial",
     "fluid_facts", "fold_spec", "held_values", "parameter_findings", "search_effects",
     "BASE_PARAMS", "EXACT_FORMS", "BaseSpec", "BaselineFit", "Candidates", "EffectResult",
     "FinalModel", "ForwardModel", "HeldOut", "LeaveOneRunOutSelector", "LoopEstimator",
-    "ModelFit", "Refitter", "Selection", "SignConstrainedLasso", "StepwiseResult",
+    "ModelFit", "Refitter", "Selection", "SelectionStep", "SignConstrainedLasso", "StepwiseResult",
     "Thresholds",
     "autocorrelation", "baseline_variance", "box_lstsq", "candidate_statuses", "decide_spec",
     "describe_structure", "effect_ci", "effect_results", "exact_form_variants", "fit_baselines",

@@ -81,6 +81,7 @@ from .least_squares import ModelFit, check_alpha, fit_model, identifiability, in
 from .model_io import FittedModel
 from .ranges import (
     PARAM_RANGES,
+    Finding,
     explained_findings,
     held_values,
     no_signal_finding,
@@ -154,6 +155,8 @@ class LoopEstimator:
     identifiability_ : dict
         Parameter -> statement.
     effects_ : list of EffectResult
+    findings_ : list of Finding
+        Parameters outside their range or on their box, effects on their bound, no signal.
     candidates_ : list of dict
         Every library effect considered, with its status.
     rmse_ : dict
@@ -237,8 +240,8 @@ class LoopEstimator:
         ci = effect_ci(search.spec, final.fit, final.after.folds, s, self.baselines_)
         # 8. results
         self.effects_ = effect_results(model, final, ci, heldout_gains(search.refitter, final))
-        self.findings_ += [{"kind": "at bound", "parameter": e.name, "value": e.coefficient,
-                            "message": e.shape["at_bound"], "held_at": None}
+        self.findings_ += [Finding(kind="at bound", parameter=e.name, value=e.coefficient,
+                                   message=e.shape["at_bound"])
                            for e in self.effects_ if (e.shape or {}).get("at_bound")]
         self.candidates_ = candidate_statuses(search.cands, search.selection, final, sigma,
                                               self.margin, self.min_explained,
@@ -256,19 +259,20 @@ class LoopEstimator:
         self.spec_, self.law_with_T_ = spec, base.law
         return spec, base, stmt
 
-    def _evidence(self, model: ForwardModel, free: EffectSearch, no_signal: dict | None,
+    def _evidence(self, model: ForwardModel, free: EffectSearch, no_signal: Finding | None,
                   names: list[str], facts: RigFacts, sigma: float, opts: SearchOptions
-                  ) -> tuple[EffectSearch, list[dict]]:
+                  ) -> tuple[EffectSearch, list[Finding]]:
         """Findings on the calibration, and the search adopted after the evidence trial."""
         fit = free.final.fit
         after = parameter_findings(free.spec, fit, model)
         if no_signal:  # a level pinned by the noise is no evidence of anything
-            return free, [f for f in after if f["kind"] != "out of range"] + [no_signal]
+            return free, [f for f in after if f.kind != "out of range"] + [no_signal]
         before = parameter_findings(free.spec, free.base, model) if free.final.accepted else []
         search, evidence = evidence_trial(model, free, held_values(after), names, facts, sigma,
                                           opts)
         held = held_values(after)
-        out = [{**f, "evidence": evidence} if f["parameter"] in held else f for f in after]
+        out = [replace(f, evidence=evidence, tried=True) if f.parameter in held else f
+               for f in after]
         return search, out + explained_findings(before, after, free.spec.values(fit.x),
                                                 free.final.accepted)
 
@@ -436,7 +440,7 @@ class LoopEstimator:
                                            "rmse_with_T_W", "rmse_with_effect_W")}
                         for r in self.per_run_],
             "base": self.base,
-            "findings": list(self.findings_),
+            "findings": [f.to_dict() for f in self.findings_],
             "parameter_ranges": {k: v.to_dict() for k, v in PARAM_RANGES.items()},
             "calibration": dict(self.calibration_),
             "effects": [e.to_dict() for e in self.effects_],
@@ -450,7 +454,8 @@ class LoopEstimator:
             "candidates": self.candidates_,
             "selection": {"margin": self.margin, "min_explained": self.min_explained,
                           "noise_W": self.noise_W_, "heldout_linearised_W": self.heldout_linear_,
-                          "steps": self.selection_log_, "lasso_path": self.lasso_path_},
+                          "steps": [s.to_dict() for s in self.selection_log_],
+                          "lasso_path": self.lasso_path_},
             "confounded_forms": self.confounded_forms_,
             "residual_before": strip_bins(self.residual_before_),
             "residual_after": strip_bins(self.residual_after_),

@@ -23,7 +23,7 @@ References
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 
@@ -56,6 +56,62 @@ class ParamRange:
     def to_dict(self) -> dict:
         """JSON form."""
         return {"range": [self.low, self.high], "basis": self.basis, "source": self.source}
+
+
+@dataclass(frozen=True, kw_only=True)
+class Finding:
+    """A finding on a calibration: a parameter outside its range or on its box, an effect on
+    its bound, or no viscous signal.
+
+    Attributes
+    ----------
+    kind : str
+        "out of range", "out of range without effects", "at numerical limit",
+        "at bound" or "no viscous signal".
+    message : str
+        What it means, one sentence.
+    parameter : str or None
+        The parameter or effect (None for "no viscous signal").
+    value : float or None
+        Its value [-] (the calibrated power [W] RMS for "no viscous signal").
+    range : tuple of float or None
+        Its physical range [-] (range violations only).
+    basis, source : str or None
+        Why that range, and where its numbers come from (range violations only).
+    held_at : float or None
+        The bound it is held at for the evidence trial [-], or None.
+    effective_scale : float or None
+        The power-law base's effective scale [-] (a violation judged through it only).
+    evidence : str or None
+        What the evidence trial gave (None if it gave nothing).
+    tried : bool
+        Whether the finding went through the evidence trial (only then is
+        ``evidence`` a key of :meth:`to_dict`).
+    """
+
+    kind: str
+    message: str
+    parameter: str | None = None
+    value: float | None = None
+    range: tuple[float, float] | None = None
+    basis: str | None = None
+    source: str | None = None
+    held_at: float | None = None
+    effective_scale: float | None = None
+    evidence: str | None = None
+    tried: bool = False
+
+    def to_dict(self) -> dict:
+        """JSON form: the keys a finding of its kind carries, in ``loop.json`` order."""
+        out = {"kind": self.kind, "parameter": self.parameter, "value": self.value}
+        if self.range is not None:
+            out.update(range=list(self.range), basis=self.basis, source=self.source)
+        out.update(message=self.message, held_at=self.held_at)
+        if self.effective_scale is not None:
+            out["effective_scale"] = self.effective_scale
+        if self.tried:
+            out["evidence"] = self.evidence
+        return out
 
 
 PARAM_RANGES = {
@@ -129,16 +185,16 @@ def effective_scale(model: ForwardModel, fit_law: FrictionLaw, laminar_law: str)
     return float(p_fit @ p_pub) / den if den > 0 else float("nan")
 
 
-def _finding(name: str, value: float, shown: str, rng: ParamRange, held: float | None) -> dict:
+def _finding(name: str, value: float, shown: str, rng: ParamRange,
+             held: float | None) -> Finding:
     side = "high" if value > rng.high else "low"
     txt = (f"{shown} outside its physical range {rng.low:g}..{rng.high:g} ({rng.basis}; "
            f"{rng.source}): {WHAT_IT_MEANS[(name, side)]}")
-    return {"kind": "out of range", "parameter": name, "value": value,
-            "range": [rng.low, rng.high], "basis": rng.basis, "source": rng.source,
-            "message": txt, "held_at": held}
+    return Finding(kind="out of range", parameter=name, value=value, range=(rng.low, rng.high),
+                   basis=rng.basis, source=rng.source, message=txt, held_at=held)
 
 
-def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> list[dict]:
+def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> list[Finding]:
     """Findings on a calibration: parameters outside their range or on their box.
 
     Parameters
@@ -151,19 +207,18 @@ def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> li
 
     Returns
     -------
-    list of dict
-        ``kind`` ("out of range", "at numerical limit"), ``parameter``, ``value``,
-        ``range`` [-], ``basis``, ``source``, ``message`` and ``held_at`` (the
-        bound it is held at for the evidence trial, or None).
+    list of Finding
+        Kind "out of range" (with ``range`` [-], ``basis``, ``source`` and
+        ``held_at``, the bound it is held at for the evidence trial) or "at
+        numerical limit".
     """
     vals = spec.values(fit.x)
     out = []
     limit = spec.at_limit(fit.x)
     for k in limit:
-        out.append({"kind": "at numerical limit", "parameter": k, "value": vals[k],
-                    "message": f"{k} = {vals[k]:.3g} ran to the edge of the solver's box: the "
-                               "data do not identify it (no interval is given)",
-                    "held_at": None})
+        out.append(Finding(kind="at numerical limit", parameter=k, value=vals[k],
+                           message=f"{k} = {vals[k]:.3g} ran to the edge of the solver's box: "
+                                   "the data do not identify it (no interval is given)"))
     for k in spec.free:
         if k in limit or (spec.base == "branches" and k.startswith("C")):
             continue  # a branch's C_k: its level is judged by the loss, not one number
@@ -175,7 +230,7 @@ def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> li
                 f = _finding("scale", eff, f"the fitted power law is {eff:.3g}x the published "
                              "law's power on these data (effective scale)", rng,
                              vals["C"] * bound / eff)
-                out.append({**f, "parameter": "C", "effective_scale": eff})
+                out.append(replace(f, parameter="C", effective_scale=eff))
             continue
         kind = k.rstrip("0123456789")  # alpha3 -> alpha: a branch's exponent, same range
         rng = PARAM_RANGES[kind]
@@ -184,11 +239,11 @@ def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> li
             shown = (f"the scale is {v:.3g}x the published law" if k == "scale"
                      else f"{k} = {v:.3g}")
             f = _finding(kind, v, shown, rng, rng.high if v > rng.high else rng.low)
-            out.append({**f, "parameter": k})
+            out.append(replace(f, parameter=k))
     return out
 
 
-def no_signal_finding(y: np.ndarray, pred: np.ndarray, noise_W: float) -> dict | None:
+def no_signal_finding(y: np.ndarray, pred: np.ndarray, noise_W: float) -> Finding | None:
     """A finding if the data show no viscous loss the base model can describe.
 
     The calibrated power is below a tenth of the noise (RMS), or the measured
@@ -206,26 +261,25 @@ def no_signal_finding(y: np.ndarray, pred: np.ndarray, noise_W: float) -> dict |
 
     Returns
     -------
-    dict or None
-        ``kind`` "no viscous signal", ``message``; None if there is a signal.
+    Finding or None
+        Kind "no viscous signal"; None if there is a signal.
     """
     p = float(np.sqrt(np.mean(pred * pred))) if len(pred) else 0.0
     m = float(np.mean(y)) if len(y) else 0.0
     if p >= 0.1 * noise_W and m > 0 and p > 0:
         return None
-    return {"kind": "no viscous signal", "parameter": None, "value": p,
-            "message": f"no viscous signal: the calibrated loss is {p:.3g} W RMS against a "
-                       f"noise of {noise_W:.3g} W (mean measured viscous power {m:.3g} W); "
-                       "the calibration is not identified and no interval is given",
-            "held_at": None}
+    return Finding(kind="no viscous signal", value=p,
+                   message=f"no viscous signal: the calibrated loss is {p:.3g} W RMS against a "
+                           f"noise of {noise_W:.3g} W (mean measured viscous power {m:.3g} W); "
+                           "the calibration is not identified and no interval is given")
 
 
-def held_values(findings: list[dict]) -> dict[str, float]:
+def held_values(findings: list[Finding]) -> dict[str, float]:
     """Parameters to hold at their range bound for the evidence trial.
 
     Parameters
     ----------
-    findings : list of dict
+    findings : list of Finding
         From :func:`parameter_findings`.
 
     Returns
@@ -235,22 +289,22 @@ def held_values(findings: list[dict]) -> dict[str, float]:
         the C whose effective scale is the bound) is held only if no exponent
         is: with an exponent held, the level is refitted.
     """
-    out = {f["parameter"]: float(f["held_at"]) for f in findings
-           if f.get("kind") == "out of range" and f.get("held_at") is not None}
+    out = {f.parameter: float(f.held_at) for f in findings
+           if f.kind == "out of range" and f.held_at is not None}
     if set(out) - {"C", "scale"}:
         out = {k: v for k, v in out.items() if k not in ("C", "scale")}
     return out
 
 
-def explained_findings(before: list[dict], after: list[dict], values_after: dict,
-                       accepted: list[str]) -> list[dict]:
+def explained_findings(before: list[Finding], after: list[Finding], values_after: dict,
+                       accepted: list[str]) -> list[Finding]:
     """Range violations of the calibration without effects that the accepted effects resolve.
 
     Parameters
     ----------
-    before : list of dict
+    before : list of Finding
         Findings on the calibration without effects.
-    after : list of dict
+    after : list of Finding
         Findings on the calibration with the accepted effects.
     values_after : dict
         Parameters with the effects [-].
@@ -259,21 +313,21 @@ def explained_findings(before: list[dict], after: list[dict], values_after: dict
 
     Returns
     -------
-    list of dict
+    list of Finding
         The ``before`` range violations whose parameter is in range after, kind
         "out of range without effects", with what the refit gives.
     """
     if not accepted:
         return []
-    still = {f["parameter"] for f in after}
+    still = {f.parameter for f in after}
     out = []
     for f in before:
-        k = f["parameter"]
-        if f["kind"] != "out of range" or k in still:
+        k = f.parameter
+        if f.kind != "out of range" or k in still:
             continue
         v = values_after.get(k)
         now = f"{v:.3g}" if v is not None else "within range"
-        out.append({**f, "kind": "out of range without effects", "held_at": None,
-                    "message": f"{f['message']}; refitted with {', '.join(accepted)} it is "
-                               f"{now}, within its range: the accepted effects explain it"})
+        out.append(replace(f, kind="out of range without effects", held_at=None,
+                           message=f"{f.message}; refitted with {', '.join(accepted)} it is "
+                                   f"{now}, within its range: the accepted effects explain it"))
     return out

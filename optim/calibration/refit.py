@@ -26,6 +26,7 @@ from .forward import ForwardModel
 from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold
 from .selection import Selection
 from .spec import cv_groups, fold_spec
+from .steps import SelectionStep
 
 CV_MODES = ("one-step", "full")
 """How each leave-one-run-out fold is refitted."""
@@ -205,8 +206,8 @@ class FinalModel:
         Leave-one-run-out predictions without effect and of the final model.
     nonlinear_check : dict or None
         Held-out RMSE before and after [W] and gain [%] of the nonlinear refit.
-    log : list of dict
-        The rejection by the nonlinear check, if any.
+    log : list of SelectionStep
+        The nonlinear check's rejection, prunes and additions, if any.
     taylor_exponent : float
         Shape exponent m of the Taylor-vortex excess of the final model [-].
     """
@@ -217,7 +218,7 @@ class FinalModel:
     before: HeldOut
     after: HeldOut
     nonlinear_check: dict | None
-    log: list[dict]
+    log: list[SelectionStep]
     taylor_exponent: float = 2.0
 
 
@@ -264,8 +265,8 @@ def refit_selected(refitter: Refitter, base: ModelFit, cands: Candidates,
     ha = rmse(y - after.pred)
     check = {"heldout_before_W": hb, "heldout_after_W": ha, "gain_pct": 100 * (1 - ha / hb)}
     if ha > hb * (1.0 - margin):  # the honest held-out check overrules
-        log = [{"step": "nonlinear check", "rejected": accepted,
-                "gain_pct": 100 * (1 - ha / hb)}]
+        log = [SelectionStep(step="nonlinear check", rejected=accepted,
+                             gain_pct=100 * (1 - ha / hb))]
         return FinalModel(
             fit=base, accepted=[], chosen=(), before=before, after=before, nonlinear_check=check,
             log=log)
@@ -321,8 +322,8 @@ def _prune_nonlinear(refitter: Refitter, final: FinalModel, margin: float) -> Fi
         weakest = min(gains, key=gains.get)
         if gains[weakest] >= 100.0 * margin:
             break
-        log.append({"step": "nonlinear prune", "dropped": weakest,
-                    "gain_pct": gains[weakest]})
+        log.append(SelectionStep(step="nonlinear prune", dropped=weakest,
+                                 gain_pct=gains[weakest]))
         keep = [i for i, n in enumerate(final.accepted) if n != weakest]
         names = [final.accepted[i] for i in keep]
         fit = refitter.fit(names, final.fit.x, final.fit.theta[keep])
@@ -426,8 +427,8 @@ def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, 
         e, n, fit, ho = best
         hb = rmse(y - final.before.pred)
         check = {"heldout_before_W": hb, "heldout_after_W": e, "gain_pct": 100 * (1 - e / hb)}
-        log = [*final.log, {"step": "nonlinear add", "added": n,
-                            "gain_pct": 100.0 * (1.0 - e / e_now)}]
+        log = [*final.log, SelectionStep(step="nonlinear add", added=n,
+                                         gain_pct=100.0 * (1.0 - e / e_now))]
         final = FinalModel(
             fit=fit, accepted=[*final.accepted, n], chosen=(*final.chosen, cands.columns_of(n)[0]),
             before=final.before, after=ho, nonlinear_check=check, log=log,

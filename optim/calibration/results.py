@@ -181,16 +181,16 @@ def _set_rejection(selection: Selection, final: FinalModel, margin: float,
                    min_explained: float) -> tuple[list[str], str] | None:
     """Effects a set-level rule rejected (structure check, nonlinear check) and the rule."""
     for rec in selection.log:
-        if rec.get("step") == "structure" and not rec["accepted"]:
-            return ([e.split(" (")[0] for e in rec["effects"]],
-                    f"the effects selected together ({', '.join(rec['effects'])}) explain only "
-                    f"{100 * rec['explained_total']:.0f} % of the held-out structure above the "
+        if rec.step == "structure" and not rec.accepted:
+            return ([e.split(" (")[0] for e in rec.effects],
+                    f"the effects selected together ({', '.join(rec.effects)}) explain only "
+                    f"{100 * rec.explained_total:.0f} % of the held-out structure above the "
                     f"noise (< {100 * min_explained:.0f} %)")
     for rec in final.log:
-        if rec.get("step") == "nonlinear check":
-            return (list(rec["rejected"]),
-                    f"the nonlinear refit of {', '.join(rec['rejected'])} lowers the held-out "
-                    f"RMSE by only {rec['gain_pct']:.1f} % (< margin {100 * margin:.0f} %)")
+        if rec.step == "nonlinear check":
+            return (list(rec.rejected),
+                    f"the nonlinear refit of {', '.join(rec.rejected)} lowers the held-out "
+                    f"RMSE by only {rec.gain_pct:.1f} % (< margin {100 * margin:.0f} %)")
     return None
 
 

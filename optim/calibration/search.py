@@ -31,6 +31,7 @@ from .least_squares import ModelFit, fit_model, rescale_level
 from .refit import FinalModel, Refitter, add_state_readers, refit_selected
 from .selection import Selection, Thresholds, select_effects
 from .spec import BaseSpec, cv_groups
+from .steps import SelectionStep
 
 
 def fluid_facts(s: Samples, fluids: dict) -> tuple[FluidFacts, ...]:
@@ -104,7 +105,7 @@ class EffectSearch:
     refitter : Refitter
     implausible : dict
         Effect -> why its fitted coefficient is implausible.
-    log : list of dict
+    log : list of SelectionStep
         Selection steps of every round, and each implausible fit.
     """
 
@@ -115,7 +116,7 @@ class EffectSearch:
     final: FinalModel
     refitter: Refitter
     implausible: dict[str, str]
-    log: list[dict]
+    log: list[SelectionStep]
 
     @property
     def heldout_after_W(self) -> float:
@@ -154,7 +155,7 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
     hold = {c: [spec.free.index(k) for k in h] for c, h in refitter.fold_holds().items()}
     r0 = s.viscous_W - base.pred
     implausible: dict[str, str] = {}
-    log: list[dict] = []
+    log: list[SelectionStep] = []
     selector = None
     limits = Thresholds(noise_W=noise_W, margin=opts.margin, min_explained=opts.min_explained,
                         max_effects=opts.max_effects)
@@ -174,7 +175,7 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
         if not bad:
             break
         for n, why in bad.items():
-            log.append({"step": "plausibility", "rejected": n, "reason": why})
+            log.append(SelectionStep(step="plausibility", rejected=n, reason=why))
         implausible.update(bad)
     return EffectSearch(spec=spec, base=base, cands=cands, selection=sel, final=final,
                         refitter=refitter, implausible=implausible, log=log)

@@ -38,6 +38,7 @@ from scipy.optimize import lsq_linear
 from oilgap.model.errors import SolverError
 
 from .candidates import Candidates
+from .steps import SelectionStep
 
 CLARABEL_SETTINGS = {"tol_gap_abs": 1e-8, "tol_gap_rel": 1e-8, "tol_feas": 1e-8,
                      "max_iter": 200, "direct_solve_method": "qdldl"}
@@ -331,18 +332,18 @@ class StepwiseResult:
     ----------
     chosen : tuple of int
         Candidate columns kept.
-    log : list of dict
+    log : list of SelectionStep
         One record per forward step (held-out RMSE [W], gain [%], share of the
         current and of the initial structure explained [-], accepted, and the
         rule that rejected it), per pruned column, and the structure check.
     """
 
     chosen: tuple[int, ...]
-    log: list[dict]
+    log: list[SelectionStep]
 
 
 def _prune(sel: LeaveOneRunOutSelector, cands: Candidates, chosen: tuple[int, ...],
-           margin: float, log: list[dict]) -> tuple[int, ...]:
+           margin: float, log: list[SelectionStep]) -> tuple[int, ...]:
     """Backward pruning: drop a column that no longer brings the margin in the set."""
     changed = True
     while changed and len(chosen) > 1:
@@ -352,7 +353,7 @@ def _prune(sel: LeaveOneRunOutSelector, cands: Candidates, chosen: tuple[int, ..
             if sel.cv(rest) * (1 - margin) < sel.cv(chosen):
                 chosen = rest
                 changed = True
-                log.append({"step": "prune", "dropped": cands.label(j)})
+                log.append(SelectionStep(step="prune", dropped=cands.label(j)))
                 break
     return chosen
 
@@ -425,7 +426,7 @@ def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float
     name = cands.name
     chosen: tuple[int, ...] = ()
     e_cur = e0
-    log = []
+    log: list[SelectionStep] = []
     n_max = min(max_effects, len(set(cands.usable) - set(exclude)))
     while len({name[j] for j in chosen}) < n_max:
         taken = {name[j] for j in chosen}
@@ -439,11 +440,12 @@ def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float
             if pair is not None:
                 add, e_new, ok = pair, sel.cv(chosen + pair), True
         gain = 1.0 - e_new / e_cur
-        rec = {"step": len(chosen) + 1, "best": " + ".join(cands.label(j) for j in add),
-               "heldout_rmse_W": e_new, "gain_pct": 100 * gain,
-               "explained_structure": _explained(e_cur, e_new, noise_W),
-               "explained_total": _explained(e0, e_new, noise_W), "accepted": bool(ok)}
-        log.append(rec if ok else {**rec, "rejected_by": "margin"})
+        log.append(SelectionStep(
+            step=len(chosen) + 1, best=" + ".join(cands.label(j) for j in add),
+            heldout_rmse_W=e_new, gain_pct=100 * gain,
+            explained_structure=_explained(e_cur, e_new, noise_W),
+            explained_total=_explained(e0, e_new, noise_W), accepted=bool(ok),
+            rejected_by=None if ok else "margin"))
         if not ok:
             break
         chosen = chosen + add
@@ -452,9 +454,9 @@ def stepwise_selection(sel: LeaveOneRunOutSelector, cands: Candidates, e0: float
     if chosen:
         total = _explained(e0, sel.cv(chosen), noise_W)
         ok = total >= min_explained
-        log.append({"step": "structure", "effects": [cands.label(j) for j in chosen],
-                    "explained_total": total, "accepted": bool(ok),
-                    **({} if ok else {"rejected_by": "structure"})})
+        log.append(SelectionStep(step="structure", effects=[cands.label(j) for j in chosen],
+                                 explained_total=total, accepted=bool(ok),
+                                 rejected_by=None if ok else "structure"))
         if not ok:
             chosen = ()
     return StepwiseResult(chosen, log)
@@ -513,7 +515,7 @@ class Selection:
         Screening records with the held-out scores alone.
     chosen : tuple of int
         Columns selected.
-    log : list of dict
+    log : list of SelectionStep
         Forward and pruning steps, and the structure check.
     exclude : frozenset of str
         Effects that were not selectable.
@@ -525,7 +527,7 @@ class Selection:
     lasso_path: list[dict]
     candidates: list[dict]
     chosen: tuple[int, ...]
-    log: list[dict]
+    log: list[SelectionStep]
     exclude: frozenset[str] = frozenset()
 
 

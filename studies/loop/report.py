@@ -109,7 +109,7 @@ def unit_hints(est: LoopEstimator) -> list[str]:
     law's, or the data show no viscous signal): a speed in rad/s makes the model's speeds
     9.55x too low and the level ~91x too high (laminar loss ~ omega^2); power in kW makes it
     1000x too low."""
-    if not hasattr(est, "law_with_T_") or any(f.get("kind") == "no viscous signal"
+    if not hasattr(est, "law_with_T_") or any(f.kind == "no viscous signal"
                                                for f in getattr(est, "findings_", [])):
         return []
     r = effective_scale(est.forward_model_, est.law_with_T_, est.spec_.laminar_law)
@@ -150,7 +150,7 @@ def identifiability(est: LoopEstimator) -> dict:
     """The estimator's statement per parameter, with each fitted parameter that has no
     interval called not identifiable (and why), never "identified"."""
     out = dict(est.identifiability_)
-    kinds = {(f.get("kind"), f.get("parameter")) for f in est.findings_}
+    kinds = {(f.kind, f.parameter) for f in est.findings_}
     for k in not_identifiable(est):
         if ("no viscous signal", None) in kinds:
             why = "no viscous signal: the level is pinned by the noise"
@@ -257,8 +257,8 @@ def format_summary(est: LoopEstimator) -> str:
               f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted", "",
               "error table (RMSE of the viscous power by oil and roughness)", error_table(est),
               ""]
-    lines += [f"finding     {f['message']}" + (f"\n            {f['evidence']}"
-                                               if f.get("evidence") else "")
+    lines += [f"finding     {f.message}" + (f"\n            {f.evidence}"
+                                             if f.evidence else "")
               for f in est.findings_]
     if est.findings_:
         lines.append("")
@@ -380,8 +380,8 @@ def _md_calibration(est: LoopEstimator) -> list[str]:
                   ""]
     if est.findings_:
         parts += ["### Findings", ""] + [
-            f"- {f['message']}." + (f" {f['evidence'][0].upper()}{f['evidence'][1:]}."
-                                    if f.get("evidence") else "") for f in est.findings_] + [""]
+            f"- {f.message}." + (f" {f.evidence[0].upper()}{f.evidence[1:]}."
+                                 if f.evidence else "") for f in est.findings_] + [""]
     parts += ["Physical ranges: " + "; ".join(
         f"{k}: {v['basis']} ({v['source']})" for k, v in ranges.items() if k in c) + ".", ""]
     if "correlations" in est.identifiability_:

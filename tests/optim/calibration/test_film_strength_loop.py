@@ -84,8 +84,8 @@ def test_a_film_stronger_than_the_theory_is_pinned_at_one_and_flagged():
     e = _film(est)
     assert 0.99 <= e.coefficient <= 1.0  # bounded: never above the smooth-film theory
     assert "at the smooth-film theory's bound" in e.shape["at_bound"]
-    flags = [f for f in est.findings_ if f["kind"] == "at bound"]
-    assert [f["parameter"] for f in flags] == ["film_heating"]
+    flags = [f for f in est.findings_ if f.kind == "at bound"]
+    assert [f.parameter for f in flags] == ["film_heating"]
 
 
 @dataclass(frozen=True)

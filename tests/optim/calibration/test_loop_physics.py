@@ -53,10 +53,10 @@ def test_two_and_three_effects_injected_at_once_are_all_named(effects):
     assert est.unexplained_ is None
     # no single effect explains half the structure of three: the old per-step rule stopped
     # there; the set rule accepts them together
-    steps = [s for s in est.selection_log_ if s["step"] in (1, 2, 3) and s["accepted"]]
+    steps = [s for s in est.selection_log_ if s.step in (1, 2, 3) and s.accepted]
     assert len(steps) == len(effects)
     if len(effects) == 3:
-        assert steps[0]["explained_total"] < 0.9
+        assert steps[0].explained_total < 0.9
 
 
 def test_data_made_with_the_published_law_give_scale_1_and_no_finding():
@@ -75,17 +75,20 @@ def test_a_scale_outside_its_range_is_a_finding_tried_as_evidence():
     est = _fit(SynthConfig(truth=FrictionLaw(form="smooth", scale=1.6, gamma=GAMMA)))
     assert est.calibration_["scale"] == pytest.approx(1.6, rel=0.01)
     (f,) = est.findings_
-    assert f["kind"] == "out of range" and f["parameter"] == "scale"
-    assert f["range"] == [0.7, 1.4] and f["held_at"] == 1.4
-    assert f["message"].startswith("the scale is 1.6x the published law outside its physical "
+    assert f.kind == "out of range" and f.parameter == "scale"
+    assert f.range == (0.7, 1.4) and f.held_at == 1.4
+    assert f.message.startswith("the scale is 1.6x the published law outside its physical "
                                    "range 0.7..1.4")
-    assert "an effect that scales like the laminar loss may be absorbed" in f["message"]
-    assert f["evidence"].startswith("evidence: with scale = 1.4 held at its range bound")
-    assert f["evidence"].endswith("the free calibration is kept")
+    assert "an effect that scales like the laminar loss may be absorbed" in f.message
+    assert f.evidence.startswith("evidence: with scale = 1.4 held at its range bound")
+    assert f.evidence.endswith("the free calibration is kept")
     assert est.effects_ == []
     out = format_summary(est)
     assert "finding     the scale is 1.6x the published law" in out
-    assert est.to_dict()["findings"][0]["parameter"] == "scale"
+    d = est.to_dict()["findings"][0]
+    assert list(d) == ["kind", "parameter", "value", "range", "basis", "source", "message",
+                       "held_at", "evidence"]
+    assert d["parameter"] == "scale" and d["range"] == [0.7, 1.4]
 
 
 def test_a_range_violation_the_effects_explain_is_reported_so():
@@ -96,8 +99,8 @@ def test_a_range_violation_the_effects_explain_is_reported_so():
     assert est.calibration_["scale"] > 1.4
     assert est.calibration_after_["scale"] == pytest.approx(1.0, abs=0.02)
     (f,) = est.findings_
-    assert f["kind"] == "out of range without effects"
-    assert "refitted with seal_coulomb_friction it is 1, within its range" in f["message"]
+    assert f.kind == "out of range without effects"
+    assert "refitted with seal_coulomb_friction it is 1, within its range" in f.message
 
 
 def test_shear_thinning_on_a_newtonian_oil_is_implausible_not_accepted():
@@ -107,7 +110,7 @@ def test_shear_thinning_on_a_newtonian_oil_is_implausible_not_accepted():
     assert st["shear_thinning"].startswith("implausible: lambda^2 = ")
     assert "the effect needs a polymer-thickened liquid: " in st["shear_thinning"]
     assert "VG150" in st["shear_thinning"] and "straight mineral oils" in st["shear_thinning"]
-    assert any(s.get("step") == "plausibility" for s in est.selection_log_)
+    assert any(s.step == "plausibility" for s in est.selection_log_)
     # the same rig with the oils marked polymer-thickened: named, lambda recovered
     est = _fit(SynthConfig(effect="shear_thinning", fluids=polymer_thickened()))
     (e,) = est.effects_
@@ -164,7 +167,7 @@ def test_data_without_a_viscous_signal_report_it_without_pinned_intervals():
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=300), 0)
     df["viscous_power_W"] = np.random.default_rng(3).normal(0.0, 1.0, len(df))  # noise only
     est = LoopEstimator().fit(df)
-    kinds = [f["kind"] for f in est.findings_]
+    kinds = [f.kind for f in est.findings_]
     assert "no viscous signal" in kinds and "out of range" not in kinds
     assert all(np.isnan(est.calibration_ci_[k]).all() for k in ("scale", "gamma"))
     assert est.effects_ == []
@@ -211,5 +214,5 @@ def test_an_implausible_partner_is_dropped_and_its_share_left_unexplained():
     assert st["shear_thinning"].startswith("implausible")
     assert est.unexplained_ is not None
     for s in est.selection_log_:
-        if s.get("step") == "nonlinear prune":
-            assert s["gain_pct"] < 10.0
+        if s.step == "nonlinear prune":
+            assert s.gain_pct < 10.0

@@ -12,6 +12,7 @@ from oilgap.optim.calibration import (
     HeldOut,
     ModelFit,
     Selection,
+    SelectionStep,
     candidate_statuses,
     effect_results,
     per_run_rows,
@@ -142,9 +143,9 @@ def test_the_status_names_the_rule_that_rejected():
               {"name": "b", "status": "candidate", "heldout_gain_alone_pct": 4.0,
                "explained_structure_alone": 0.05}]
     cv = {(): 10.0, (0,): 8.36}
-    log = [{"step": 1, "best": "a", "accepted": True},
-           {"step": "structure", "effects": ["a"], "explained_total": 0.3, "accepted": False,
-            "rejected_by": "structure"}]
+    log = [SelectionStep(step=1, best="a", accepted=True),
+           SelectionStep(step="structure", effects=["a"], explained_total=0.3, accepted=False,
+                         rejected_by="structure")]
     sel = Selection(_Selector(cv), 10.0, {}, [], scored, (), log)
     st = {d["name"]: d["status"] for d in candidate_statuses(c, sel, _final(2), 1.0, 0.1, 0.5)}
     assert st["a"] == ("rejected: held-out gain 16.4 % alone, but the effects selected together "
@@ -152,7 +153,7 @@ def test_the_status_names_the_rule_that_rejected():
     assert st["b"] == "rejected: held-out gain 4.0 % < margin 10 %"
     # the nonlinear refit's check
     fin = _final(2)
-    fin.log.append({"step": "nonlinear check", "rejected": ["a"], "gain_pct": 6.0})
+    fin.log.append(SelectionStep(step="nonlinear check", rejected=["a"], gain_pct=6.0))
     sel = Selection(_Selector(cv), 10.0, {}, [], scored, (), log[:1])
     st = {d["name"]: d["status"] for d in candidate_statuses(c, sel, fin, 1.0, 0.1, 0.5)}
     assert st["a"] == ("rejected: held-out gain 16.4 % alone, but the nonlinear refit of a "

@@ -42,11 +42,11 @@ def test_findings_by_hand(rig, samples_factory):
     spec = BaseSpec(("scale", "gamma"), {"alpha": 0.3}, "eq6")
     assert parameter_findings(spec, _fit(spec, {"scale": 1.1, "gamma": 0.5}), m) == []
     out = parameter_findings(spec, _fit(spec, {"scale": 1.6, "gamma": -0.3}), m)
-    by = {f["parameter"]: f for f in out}
-    assert by["scale"]["held_at"] == 1.4 and by["scale"]["value"] == pytest.approx(1.6)
-    assert by["scale"]["message"].startswith("the scale is 1.6x the published law")
-    assert by["gamma"]["held_at"] == 0.0
-    assert "the grooved build loses less than the smooth one" in by["gamma"]["message"]
+    by = {f.parameter: f for f in out}
+    assert by["scale"].held_at == 1.4 and by["scale"].value == pytest.approx(1.6)
+    assert by["scale"].message.startswith("the scale is 1.6x the published law")
+    assert by["gamma"].held_at == 0.0
+    assert "the grooved build loses less than the smooth one" in by["gamma"].message
     # with an exponent held, the level is refitted rather than held
     assert held_values(out) == {"gamma": 0.0}
     assert held_values([by["scale"]]) == {"scale": 1.4}
@@ -63,12 +63,12 @@ def test_power_law_level_is_judged_by_its_effective_scale(rig, samples_factory):
     eff = effective_scale(m, fit.law, "couette")
     p_fit, p_pub = m.base_power(fit.law), m.base_power(pub)
     assert eff == pytest.approx(float(p_fit @ p_pub / (p_pub @ p_pub)), rel=1e-12)
-    out = {f["parameter"]: f for f in parameter_findings(spec, fit, m)}
-    assert out["beta"]["held_at"] == -0.2
+    out = {f.parameter: f for f in parameter_findings(spec, fit, m)}
+    assert out["beta"].held_at == -0.2
     if not 0.7 <= eff <= 1.4:
-        assert out["C"]["effective_scale"] == pytest.approx(eff)
+        assert out["C"].effective_scale == pytest.approx(eff)
         bound = 1.4 if eff > 1.4 else 0.7
-        assert out["C"]["held_at"] == pytest.approx(10.0 * bound / eff)
+        assert out["C"].held_at == pytest.approx(10.0 * bound / eff)
 
 
 def test_a_parameter_on_its_box_is_reported_not_used():
@@ -77,15 +77,18 @@ def test_a_parameter_on_its_box_is_reported_not_used():
                    np.zeros((3, 1)))
     m = SimpleNamespace(base_power=lambda law: np.ones(3))
     (f,) = parameter_findings(spec, fit, m)
-    assert f["kind"] == "at numerical limit" and f["held_at"] is None
-    assert f["value"] == pytest.approx(math.exp(-50))
+    assert f.kind == "at numerical limit" and f.held_at is None
+    assert f.value == pytest.approx(math.exp(-50))
 
 
 def test_no_signal_finding():
     y = np.array([0.5, -0.5, 0.4, -0.6])
     assert no_signal_finding(y + 10.0, np.full(4, 10.0), 0.5) is None
     f = no_signal_finding(y, np.full(4, 1e-6), 0.5)
-    assert f["kind"] == "no viscous signal" and f["message"].startswith("no viscous signal")
+    assert f.kind == "no viscous signal" and f.message.startswith("no viscous signal")
+    # in loop.json: parameter and held_at as null, no range keys, no evidence key
+    assert list(f.to_dict()) == ["kind", "parameter", "value", "message", "held_at"]
+    assert f.to_dict()["parameter"] is None and f.to_dict()["held_at"] is None
 
 
 def test_fluid_facts_of_the_data():

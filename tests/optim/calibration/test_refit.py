@@ -81,8 +81,8 @@ def test_refit_names_the_effect_and_the_held_out_check_can_overrule(rig, samples
     # a margin no effect can reach: rejected, the calibration stays
     strict = refit_selected(refitter, base, cands, sel, 0.999)
     assert strict.accepted == [] and strict.fit is base and strict.chosen == ()
-    assert strict.log[0]["step"] == "nonlinear check"
-    assert strict.log[0]["rejected"] == ["seal_coulomb_friction"]
+    assert strict.log[0].step == "nonlinear check"
+    assert strict.log[0].rejected == ["seal_coulomb_friction"]
     assert np.array_equal(strict.after.pred, strict.before.pred)
 
 

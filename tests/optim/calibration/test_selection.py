@@ -12,6 +12,7 @@ from scipy.optimize import lsq_linear
 from oilgap.optim.calibration import (
     Candidates,
     LeaveOneRunOutSelector,
+    SelectionStep,
     SignConstrainedLasso,
     Thresholds,
     box_lstsq,
@@ -133,12 +134,17 @@ def test_forward_selection_stops_at_the_margin():
     sel = LeaveOneRunOutSelector(J, F, r, code, np.zeros(4, bool), np.arange(4))
     out = stepwise_selection(sel, c, sel.cv(()), {}, LIMITS)
     assert out.chosen == (1,)
-    assert [s["accepted"] for s in out.log] == [True, False, True]
-    assert out.log[1]["rejected_by"] == "margin"
+    assert [s.accepted for s in out.log] == [True, False, True]
+    assert out.log[1].rejected_by == "margin"
+    # in loop.json: the keys a forward step carries, unset ones left out
+    assert list(out.log[1].to_dict()) == ["step", "best", "heldout_rmse_W", "gain_pct",
+                                          "explained_structure", "explained_total", "accepted",
+                                          "rejected_by"]
+    assert list(out.log[0].to_dict())[-1] == "accepted"
     # the set kept explains the structure above the noise: the last record says so
-    assert out.log[2]["step"] == "structure" and out.log[2]["effects"] == ["u"]
-    assert out.log[0]["best"] == "u"
-    assert out.log[0]["gain_pct"] == pytest.approx(100 * (1 - sel.cv((1,)) / sel.cv(())))
+    assert out.log[2].step == "structure" and out.log[2].effects == ["u"]
+    assert out.log[0].best == "u"
+    assert out.log[0].gain_pct == pytest.approx(100 * (1 - sel.cv((1,)) / sel.cv(())))
 
 
 def test_backward_pruning_drops_a_column_made_redundant():
@@ -149,9 +155,9 @@ def test_backward_pruning_drops_a_column_made_redundant():
     sel = LeaveOneRunOutSelector(J, F, r, code, np.zeros(4, bool), np.arange(4))
     out = stepwise_selection(sel, c, sel.cv(()), {}, Thresholds(noise_W=0.01, margin=0.01,
                                                                 min_explained=0.0, max_effects=3))
-    steps = [s["best"] for s in out.log if s["step"] in (1, 2, 3)]
+    steps = [s.best for s in out.log if s.step in (1, 2, 3)]
     assert steps[0] == "mix" and set(steps[1:3]) == {"u", "v"}
-    assert {"step": "prune", "dropped": "mix"} in out.log
+    assert SelectionStep(step="prune", dropped="mix") in out.log
     assert sorted(out.chosen) == [1, 2]
 
 
@@ -188,8 +194,8 @@ def test_two_effects_that_only_show_together_are_taken_as_a_pair():
     assert 1 - sel.cv((0, 1)) / e0 > 0.9
     out = stepwise_selection(sel, c, e0, {}, LIMITS)
     assert sorted(out.chosen) == [0, 1]
-    assert out.log[0]["best"] == "a + b" and out.log[0]["accepted"]
-    assert out.log[1]["rejected_by"] == "margin"  # c adds nothing
+    assert out.log[0].best == "a + b" and out.log[0].accepted
+    assert out.log[1].rejected_by == "margin"  # c adds nothing
     # with room for one effect only, no pair is tried: nothing is accepted
     one = stepwise_selection(sel, c, e0, {}, replace(LIMITS, max_effects=1))
-    assert one.chosen == () and one.log[0]["rejected_by"] == "margin"
+    assert one.chosen == () and one.log[0].rejected_by == "margin"

@@ -128,7 +128,7 @@ class ScaledFluid:
     The grade tolerance of ISO 3448 [1]_ (a grade's nu at 40 degC within +-10 % of its
     nominal value) taken as one factor on the viscosity at every temperature and
     pressure: the Walther line shifted in ``ln nu``, its slope ``b = -d ln(mu)/dT`` and
-    the density unchanged. An uncertain input of :mod:`oilgap.model.scenario`.
+    the density unchanged. An uncertain input of :mod:`oilgap.model.uncertain`.
 
     Attributes
     ----------

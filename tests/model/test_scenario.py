@@ -1,4 +1,4 @@
-"""The uncertain inputs' scalar reference path (model/scenario.py) against hand numbers."""
+"""The uncertain inputs' scalar reference path (model/uncertain/inputs.py) against hand numbers."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.fluids import ScaledFluid
 from oilgap.model.io.case_io import seed_case
-from oilgap.model.scenario import INPUTS, apply_inputs, nominal_inputs
+from oilgap.model.uncertain.inputs import INPUTS, apply_inputs, nominal_inputs
 from oilgap.model.units import rpm_to_rad_s
 
 

@@ -38,12 +38,12 @@ from collections.abc import Mapping
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
-from .errors import InputError
-from .fluids import ScaledFluid
-from .units import rad_s_to_rpm
+from ..errors import InputError
+from ..fluids import ScaledFluid
+from ..units import rad_s_to_rpm
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
-    from .case import DesignCase
+    from ..case import DesignCase
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -347,8 +347,9 @@ def solve_lean(problem: DesignProblem, x0: LeanStart | None = None, *, constant:
     Returns
     -------
     record : LeanRecord
-        The sweep's columns of the optimum (``constant=False``: its constant powers
-        still None).
+        The sweep's columns of the optimum: powers [W] (smooth C_m), lengths [mm],
+        torque [N m], inertia [kg m^2] (``constant=False``: its constant powers still
+        None).
     start : LeanStart
         The next solve's warm start.
     params : DesignParameters

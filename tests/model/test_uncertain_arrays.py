@@ -202,3 +202,16 @@ def test_a_block_whose_balance_fails_is_evaluated_row_by_row(cases, monkeypatch)
     monkeypatch.setattr(arrays, "row_balance", fail)
     np.testing.assert_allclose(joint_loss_arrays(case, rows, "bulk", block_rows=4), want,
                                rtol=REL)
+
+
+def test_a_scaled_oil_and_threads(cases):
+    from oilgap.model.fluids import ScaledFluid
+
+    case = replace(cases["skf"], oil=ScaledFluid(cases["skf"].oil, 1.05))  # a case's own factor
+    rows = random_rows(case, 12, seed=5)
+    want = scalar(case, rows, "full")
+    got = joint_loss_arrays(case, rows, "full", block_rows=5, threads=2)
+    np.testing.assert_allclose(got, want, rtol=REL, atol=0)
+    plain = joint_loss_arrays(case, {"depth_m": [100.0, 200.0]}, "none")  # factor kept
+    np.testing.assert_allclose(plain, scalar(case, {"depth_m": np.array([100.0, 200.0])},
+                                             "none"), rtol=REL, atol=0)

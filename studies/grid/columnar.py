@@ -29,7 +29,6 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError
 from oilgap.model.oils import Oil
 from oilgap.model.uncertain.rows import RowValues
-from oilgap.model.units import rpm_to_rad_s
 from oilgap.studies.grid.columns import EVALUATE_NUMBERS
 from oilgap.studies.grid.schema import apply_params, is_missing
 
@@ -73,7 +72,7 @@ def _check(base: DesignCase, num: Mapping[str, np.ndarray],
 def _rows(case: DesignCase, base: DesignCase, num: Mapping[str, np.ndarray], sel: np.ndarray
           ) -> tuple[DesignCase, RowValues]:
     """The case (its law at gamma 0 and scale 1 when rows carry them) and the rows ``sel``."""
-    def col(name, default):
+    def col(name, default):  # a column at sel, the case's value where a cell is empty
         a = num.get(name)
         return None if a is None else np.where(np.isnan(a[sel]), default, a[sel])
 
@@ -92,8 +91,8 @@ def _rows(case: DesignCase, base: DesignCase, num: Mapping[str, np.ndarray], sel
         n=len(sel), oil_temp_C=np.full(len(sel), float(op.oil_temp_C)) if temp is None
         else temp, depth_m=float(op.depth_m) if "depth_m" not in num
         else col("depth_m", op.depth_m), gamma=gamma, friction_scale=scale,
-        speed_factor=None if peak is None else np.where(
-            np.isnan(peak), 1.0, rpm_to_rad_s(peak) / base.duty_cycle.peak_omega_rad_s),
+        speed_factor=None if peak is None else np.where(  # the sine's amplitude, as
+            np.isnan(peak), 1.0, peak / float(base.duty_cycle.spec["peak_speed_rpm"])),
         sea_temp_C=None if th is None else (col("sea_temp_C", th.sea_temp_C)
                                             if "sea_temp_C" in num
                                             else np.full(len(sel), float(th.sea_temp_C))))
@@ -148,7 +147,8 @@ def columnar_chunk(base: DesignCase, rows: list[dict], catalogue: Mapping[str, O
     """
     try:
         num, oils = _columns(rows)
-        if "peak_speed_rpm" in num and base.duty_cycle.spec.get("kind") != "sine":
+        if "peak_speed_rpm" in num and (base.duty_cycle.spec.get("kind") != "sine"
+                                        or "peak_speed_rpm" not in base.duty_cycle.spec):
             raise NotColumnar
         _check(base, num, catalogue)
         n = len(rows)

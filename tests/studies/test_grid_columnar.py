@@ -105,3 +105,13 @@ def test_an_unknown_oil_is_an_error_row_in_the_columnar_path():
 
 def test_geometry_columns_take_the_per_case_path():
     assert columnar_chunk(seed_case(), [{"gap_mm": 1.0}], None, "none") is None
+
+
+def test_peak_speed_is_the_sine_amplitude_when_samples_miss_the_crest():
+    from oilgap.model.duty_cycle import DutyCycle
+
+    base = replace(seed_case(), duty_cycle=DutyCycle.sine(3000.0, 0.05, 300.0, 0.4))
+    assert base.duty_cycle.peak_omega_rad_s < 0.999 * 3000.0 * np.pi / 30.0  # crest missed
+    rows = [{"peak_speed_rpm": 2000.0}, {"peak_speed_rpm": 4500.0}, {}]
+    got = columnar_chunk(base, rows, None, "none")
+    same_records(got, evaluate_chunk(base, rows, None, "none", columnar=False))

@@ -22,6 +22,7 @@ import importlib
 from pathlib import Path
 from typing import Any
 
+from oilgap._checks import FLAG, Arg, checked
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import CaseEvaluation
 from oilgap.model.io.defaults import case_defaults as model_case_defaults
@@ -111,6 +112,8 @@ class ResultView:
         """What the tool filled in: ``{field, value, unit, source}`` each."""
         return case_defaults(self.case) if self.case is not None else []
 
+    @checked(path=Arg((str, Path), "a file path (str or pathlib.Path) or None (the text "
+                      "only)", optional=True), force=FLAG)
     def to_json(self, path: str | Path | None = None, force: bool = False) -> str:
         """The JSON text of :meth:`to_dict` (floats to 6 significant digits, NaN as
         null); with ``path`` also written there atomically (an existing file only with

@@ -45,7 +45,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import default_thermal_mode, resolve_thermal_mode
-from oilgap.model.oils import Oil, get_oil, read_oils_csv
+from oilgap.model.oils import Oil, get_oil, read_oils_csv, with_builtin
 from oilgap.studies.grid.backends import InlineBackend, check_scheduler, make_backend
 from oilgap.studies.grid.chunking import ChunkSizer
 from oilgap.studies.grid.columns import THERMAL_COLUMNS, result_columns
@@ -152,7 +152,7 @@ def _catalogue(grid: pd.DataFrame, base: DesignCase,
     """The oils to look names up in; every ``oil`` of the grid must be there (an unknown
     oil name is a bad study parameter, not a failed point)."""
     if catalogue is None and base.oils_csv:
-        catalogue = read_oils_csv(base.oils_csv)
+        catalogue = with_builtin(read_oils_csv(base.oils_csv), "oil.oils_csv")
     if "oil" in grid.columns:
         for name in pd.unique(grid["oil"].dropna()):
             get_oil(str(name), catalogue)

@@ -1,7 +1,9 @@
 """Issue 20's rows of the bad-input campaign (:data:`ROWS20`, added to
 ``test_campaign.ROWS``): the Python façade's wrong arguments (class 1), conflicting
 options on the command line and in the façade (class 4), hand-edited sweep stores
-(class 2), each row stating the promise it checks.
+(class 2), and the rows of ``test_issue20_inputs.py`` (classes 5-7: a heat balance without
+a root, impossible joints and fluids, values quoted as written) through the command line
+and the façade; each row states the promise it checks.
 
 How to add a row (the list is :data:`ROWS20`; each section below is a marked block):
 
@@ -21,6 +23,8 @@ its type, what is allowed).
 from __future__ import annotations
 
 import json
+import re
+import shlex
 from collections.abc import Callable
 from pathlib import Path
 
@@ -28,6 +32,8 @@ import numpy as np
 import pandas as pd
 from campaign_table import Row
 from test_campaign import case, rig, run_cli, with_model
+from test_issue20_inputs import CASE as CASE20
+from test_issue20_inputs import ROWS as INPUT_ROWS
 
 import oilgap as og
 from oilgap.model.oils import builtin_oils
@@ -306,6 +312,44 @@ for _name, _value in (("text", "abc"), ("empty", ""), ("negative", "-1e9"), ("na
         f"2: a stored ok row with mean_power_W = {_value!r} is recomputed with a warning "
         "naming the file, never reused", files=GRID_CSV,
         setup=(run_cli(_SWEEP), _tamper(_value)), outputs=("sw",))
+
+# ==================================================================== classes 5, 6, 7
+# the rows of tests/cli/test_issue20_inputs.py (its ROWS: the balance without a root,
+# impossible joints and fluids, values quoted as written), each run through the command
+# line and the façade
+
+
+def _inputs_row(rid: str, r: dict) -> None:
+    """One row of ``test_issue20_inputs.ROWS`` as a CLI row and a façade row."""
+    expect = "refused" if r["code"] == 2 else "failed cleanly"
+    needle = tuple(re.escape(w) for w in r["words"])
+    files = dict(r["files"])
+    if r["measured"] is not None:
+        files["rig.csv"] = r["measured"]
+        argv, path = "loop rig.csv --out o --no-figures", "rig.csv"
+    else:
+        text = CASE20
+        for old, new in ([r["replace"]] if r["replace"] else []):
+            text = text.replace(old, new, 1)
+        files["case.toml"] = text + r["extra"]
+        argv = " ".join([r["cmd"], "case.toml", *map(shlex.quote, r["argv"])])
+        path = "case.toml"
+    slug = re.sub(r"[^a-z0-9]+", "-", rid.lower()).strip("-")
+    cli(f"i20-{slug}", argv, expect, needle, r["promise"], files=files, outputs=("o",))
+    facade(f"og-i20-{slug}", _inputs_call(r["facade"], path, r["fkw"]), expect, needle,
+           r["promise"] + " (façade)", files=files)
+
+
+def _inputs_call(kind: str, path: str, kw: dict) -> Callable[[Path], object]:
+    calls = {"read_measured": lambda d: og.read_measured(path),
+             "optimize": lambda d: og.optimize(path, **kw),
+             "read_case": lambda d: og.read_case(path)}
+    return calls.get(kind, lambda d: og.evaluate(path, **kw).summary())
+
+
+GROUP = "20.5-7 heat balance, impossible joints and fluids, values as written"
+for _rid, _r in INPUT_ROWS.items():
+    _inputs_row(_rid, _r)
 
 # ==================================================================== saved loop models
 # (class 3: lane model20 appends its loop.json rows here)

@@ -85,7 +85,8 @@ class Row:
         return f"`oilgap {self.argv}` is {' or '.join(self.expect)}{named}"
 
 
-CLASSES = ("refused", "warned", "accepted", "ended cleanly", "still failing")
+CLASSES = ("refused", "warned", "accepted", "ended cleanly", "failed cleanly",
+           "still failing")
 """The outcome classes, in the table's order."""
 
 
@@ -146,6 +147,9 @@ def classify(rc: int, err: str, ends: str = "") -> str:
         return "ended cleanly"
     if rc == 2 and len(lines) == 1 and lines[0].startswith("oilgap: error:"):
         return "refused"
+    if rc in (3, 4) and len(lines) == 1 and \
+            lines[0].startswith(("oilgap: solver failure:", "oilgap: infeasible:")):
+        return "failed cleanly"     # no solution is a failure, one line, never a result
     if rc == 2 and lines and lines[0].startswith("usage: oilgap") and \
             re.match(r"oilgap [\w -]+: error: ", lines[-1]):
         return "refused"            # argparse: its usage, then one error line
@@ -172,7 +176,7 @@ def why_failing(rc: int, err: str) -> str:
 
 def _message(cls: str, out: str, err: str) -> str:
     lines = err.splitlines()
-    if cls == "refused":
+    if cls in ("refused", "failed cleanly"):
         return lines[-1] if lines else ""
     if cls == "warned":
         return "\n".join(ln for ln in lines if ln.startswith("oilgap: warning:"))
@@ -476,7 +480,8 @@ def proc_verbose_json(d: Path) -> tuple[int, str, str]:
 
 
 LABELS = {"refused": "refused cleanly", "warned": "warned", "accepted": "accepted",
-          "ended cleanly": "ended cleanly", "still failing": "still failing"}
+          "ended cleanly": "ended cleanly", "failed cleanly": "failed cleanly (exit 3/4)",
+          "still failing": "still failing"}
 
 
 def table(outcomes) -> str:

@@ -169,7 +169,9 @@ NAMES = Arg((tuple, list), "a tuple of numbers, e.g. (4, 2)")
 """A sequence of values."""
 INT = Arg((int, "integer"), "an integer", optional=True)
 """A whole number (a seed, a count)."""
+AX = Arg(("Axes",), "a matplotlib Axes or None (a new figure)", optional=True)
+"""The axes a result draws on."""
 
 
-__all__ = ["CASE", "DATA", "EFFECT_NAMES", "FLAG", "GRID", "INT", "MISSION", "MODEL", "NAME",
+__all__ = ["AX", "CASE", "DATA", "EFFECT_NAMES", "FLAG", "GRID", "INT", "MISSION", "MODEL", "NAME",
            "NAMES", "NUMBER", "OILS", "OUT", "PATH", "Arg", "check_arg", "checked", "choice"]

@@ -273,6 +273,8 @@ class Loop(LoopEstimator, ResultView):
                          **{k: v for k, v in r.items() if k.endswith("_W")}})
         return pd.DataFrame(rows).set_index("run")
 
+    @checked(ax=Arg(("Axes", "Figure", "SubFigure"), "a matplotlib Axes or Figure, or None "
+                    "(a new figure)", optional=True))
     def plot(self, ax: Any = None, kind: str = "windows") -> Any:
         """The loop's figures (:mod:`oilgap.studies.loop.figures`, the ones ``report``
         writes), drawn on ``ax`` (its place subdivided into panels; default a new pyplot

@@ -22,7 +22,7 @@ import importlib
 from pathlib import Path
 from typing import Any
 
-from oilgap._checks import FLAG, Arg, checked
+from oilgap._checks import AX, FLAG, Arg, check_arg, checked
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import CaseEvaluation
 from oilgap.model.io.defaults import case_defaults as model_case_defaults
@@ -47,9 +47,10 @@ def lazy(module: str) -> Any:
 
 
 def new_axes(ax: Any = None) -> Any:
-    """``ax``, or the axes of a new pyplot figure (shown inline by Jupyter)."""
+    """``ax`` (checked: a matplotlib Axes), or the axes of a new pyplot figure (shown
+    inline by Jupyter)."""
     if ax is not None:
-        return ax
+        return check_arg("ax", ax, AX)
     _, ax = lazy("matplotlib.pyplot").subplots()
     return ax
 

@@ -194,6 +194,19 @@ facade("og-to-json-int", lambda d: og.evaluate().to_json(42), "refused", (r"path
        f"1: {_P} result.to_json(42)")
 facade("og-to-json-no-folder", lambda d: og.evaluate().to_json("nodir/x.json"), "refused",
        "nodir", "1: result.to_json into a folder that does not exist is refused naming it")
+facade("og-plot-ax-int", lambda d: og.evaluate().plot(ax=42), "refused",
+       (r"ax = 42 \(int\)", "Axes"), f"1: {_P} result.plot(ax=42)")
+facade("og-loop-fit-missing", lambda d: og.Loop().fit("missing.csv"), "refused",
+       "missing.csv", "1: Loop().fit on a file that does not exist is refused naming it")
+facade("og-predict-data-missing", lambda d: og.predict("loop.json", "none.csv"), "refused",
+       "none.csv", f"1: {_P} rows to predict from a missing file", setup=with_model)
+facade("og-sweep-oils-int", lambda d: og.sweep(_grid(), oils=42), "refused",
+       (r"oils = 42",), f"1: {_P} sweep(oils=42)")
+facade("og-evaluate-oil-empty", lambda d: og.evaluate(oil=""), "refused", "oil = ''",
+       f"1: {_P} an empty oil name")
+facade("og-read-measured-oils-missing", lambda d: og.read_measured("data.csv",
+                                                                   oils="none.csv"),
+       "refused", "none.csv", f"1: {_P} an oils table that does not exist", setup=rig())
 
 # ==================================================================== class 4: conflicts
 GROUP = "20.4 conflicting options"

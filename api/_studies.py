@@ -247,9 +247,6 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
     """
     settings, options = split_keywords(keywords, SweepSettings)
     resume_conflict(resume, force, settings.retry_failed)
-    if keywords.get("chunk_size") is not None and keywords.get("chunk_seconds") is not None:
-        raise InputError("chunk_size", keywords["chunk_size"], "not with chunk_seconds: a "
-                         "fixed number of rows per task, or chunks sized by time; choose one")
     resume = resume or settings.retry_failed
     name = Path(grid).name if isinstance(grid, (str, Path)) else "the grid"
     with result_folder("study sweep", out, force, resume, folder) as f:  # before reading

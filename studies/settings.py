@@ -135,15 +135,16 @@ class RunOptions(_Record):
         Progress line on stderr (None: when stderr is a terminal).
     chunk_size : int, optional
         Fixed rows per task of a sweep (None: chunks sized by time).
-    chunk_seconds : float
-        Target wall time of a sweep's chunk on its worker [s] (> 0).
+    chunk_seconds : float, optional
+        Target wall time of a sweep's chunk on its worker [s] (> 0; None:
+        :data:`DEFAULT_CHUNK_SECONDS`). Not with ``chunk_size`` (refused naming both).
     """
 
     workers: int | None = None
     scheduler: str | None = None
     progress: bool | None = None
     chunk_size: int | None = None
-    chunk_seconds: float = DEFAULT_CHUNK_SECONDS
+    chunk_seconds: float | None = None
 
     def __post_init__(self):
         where = "trade study"
@@ -151,7 +152,13 @@ class RunOptions(_Record):
             _set(self, workers=_integer("workers", self.workers, 1, where))
         if self.chunk_size is not None:
             _set(self, chunk_size=_integer("chunk_size", self.chunk_size, 1, where))
-        _set(self, chunk_seconds=check_positive("chunk_seconds", self.chunk_seconds, where))
+        if self.chunk_seconds is not None:
+            _set(self, chunk_seconds=check_positive("chunk_seconds", self.chunk_seconds,
+                                                    where))
+            if self.chunk_size is not None:
+                raise InputError("chunk_size", self.chunk_size, "not with chunk_seconds: a "
+                                 "fixed number of rows per task, or chunks sized by time; "
+                                 "choose one", where)
         if self.progress is not None:
             _set(self, progress=bool(self.progress))
 

@@ -15,7 +15,7 @@ from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InputError
 from oilgap.studies.grid.runner import SweepInterrupted
 from oilgap.studies.io.result_folder import ResultFolder
-from oilgap.studies.settings import DEFAULT_CHUNK_SECONDS, RunOptions, SweepSettings
+from oilgap.studies.settings import RunOptions, SweepSettings
 
 RESUME_HINT = "rerun the same command with --resume to continue"
 """What Ctrl-C's line tells the user (the folder stays marked incomplete)."""
@@ -59,8 +59,7 @@ def _sweep(args: argparse.Namespace, out, folder: ResultFolder) -> int:
                                          retry_failed=args.retry_failed),
                   options=RunOptions(workers=args.workers, scheduler=args.scheduler,
                                      progress=args.progress, chunk_size=args.chunk_size,
-                                     chunk_seconds=DEFAULT_CHUNK_SECONDS
-                                     if args.chunk_seconds is None else args.chunk_seconds))
+                                     chunk_seconds=args.chunk_seconds))
     folder.complete()
     show(r, args)
     bad = r.raw[r.raw["status"] != "ok"]

@@ -63,7 +63,7 @@ from oilgap.studies.grid.store import (
 )
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_to_parquet
 from oilgap.studies.io.result_folder import FolderLock
-from oilgap.studies.settings import RunOptions, SweepSettings
+from oilgap.studies.settings import DEFAULT_CHUNK_SECONDS, RunOptions, SweepSettings
 
 # --------------------------------------------------------------------------- progress
 
@@ -359,7 +359,8 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None,
     catalogue = _catalogue(grid, base, catalogue)
     workers = o.workers if o.workers is not None else (os.cpu_count() or 1)
     scheduler = check_scheduler(o.scheduler)
-    sizer = ChunkSizer(mode, workers, o.chunk_seconds, o.chunk_size)
+    sizer = ChunkSizer(mode, workers, DEFAULT_CHUNK_SECONDS if o.chunk_seconds is None
+                       else o.chunk_seconds, o.chunk_size)
     keys = point_keys(grid, base, mode, {"thermal": thermal})
     t0 = time.perf_counter()
     with contextlib.ExitStack() as stack:

@@ -121,3 +121,15 @@ def test_an_interrupted_sweep_that_saved_nothing_says_so(tmp_path):
     line = interrupted_line(SweepInterrupted(0, 600, tmp_path / "sw"))
     assert "nothing was saved" in line and "0 of" not in line and "rerun" in line
     assert "40 of 600 points saved" in interrupted_line(SweepInterrupted(40, 600, "sw"))
+
+
+def test_chunk_size_and_chunk_seconds_exclude_each_other():
+    """The run options' record refuses the pair (the façade and the command line build
+    it); either alone is taken, and neither means chunks of the default 3 s of work."""
+    from oilgap.studies.settings import DEFAULT_CHUNK_SECONDS, RunOptions
+
+    with pytest.raises(InputError, match="chunk_size = 2 .*not with chunk_seconds"):
+        RunOptions(chunk_size=2, chunk_seconds=1.0)
+    assert RunOptions(chunk_size=2).chunk_seconds is None
+    assert RunOptions(chunk_seconds=1.5).chunk_seconds == 1.5
+    assert RunOptions().chunk_seconds is None and DEFAULT_CHUNK_SECONDS == 3.0

@@ -29,6 +29,7 @@ from oilgap.model.io.case_io import seed_case as _seed_case
 from oilgap.model.joint_loss import resolve_thermal_mode, uses_balance
 from oilgap.model.oils import Oil, get_oil, oils_from_dict, read_oils_csv, with_builtin
 from oilgap.model.skin_friction import LAMINAR_LAWS
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
 
@@ -179,7 +180,7 @@ its own spellings: ``--thermal``, ``--temp-c``, ``--sea-temp-c``)."""
 
 def thermal_case(case: DesignCase, thermal: str | None = None,
                  oil_temp_C: float | None = None, sea_temp_C: float | None = None,
-                 names: dict[str, str] | None = None) -> tuple[DesignCase, str]:
+                 names: dict[str, str] | None = None) -> tuple[DesignCase, ThermalMode]:
     """The thermal mode checked against the case and a given oil temperature, and the case
     with the sea temperature [degC] applied (``bulk``/``full`` only).
 
@@ -200,8 +201,10 @@ def thermal_case(case: DesignCase, thermal: str | None = None,
     Returns
     -------
     case : DesignCase
-    mode : str
-        ``"none"``, ``"bulk"``, ``"film"`` or ``"full"``.
+    mode : ThermalMode
+        ``"none"``, ``"bulk"``, ``"film"`` or ``"full"``, resolved
+        (:func:`~oilgap.model.joint_loss.resolve_thermal_mode`: the one resolution of
+        a command, passed down).
 
     Raises
     ------
@@ -277,9 +280,35 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         raise InputError("laminar_law", laminar_law, f"one of {', '.join(LAMINAR_LAWS)} "
                          "(None: the case's)")
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
-    c, _ = thermal_case(c, thermal, oil_temp_C, sea_temp_C)
-    return Evaluation(evaluate_case(c, laminar_law=laminar_law, thermal=thermal), c)
+    c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
+    return evaluate_resolved(c, mode, thermal is None, laminar_law)
 
 
-__all__ = ["THERMAL", "OilTable", "as_case", "evaluate", "oil_catalogue", "read_case",
-           "read_oils", "seed_case", "thermal_case", "with_operating"]
+def evaluate_resolved(case: DesignCase, mode: ThermalMode, by_default: bool,
+                      laminar_law: str | None = None) -> Evaluation:
+    """:func:`evaluate` of a case whose thermal mode is resolved (:func:`thermal_case`;
+    ``oilgap evaluate`` resolves it with its options' names): the mode is passed down,
+    not resolved again.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The joint, its oil state and sea temperature applied.
+    mode : ThermalMode
+        The resolved mode.
+    by_default : bool
+        Whether it is the default (no mode asked for; the header says so).
+    laminar_law : {"couette", "bilgen-boulos"}, optional
+        Law below the critical Taylor number (default: the case's).
+
+    Returns
+    -------
+    Evaluation
+        As :func:`evaluate`.
+    """
+    return Evaluation(evaluate_case(case, laminar_law=laminar_law, thermal=mode,
+                                    thermal_default=by_default), case)
+
+
+__all__ = ["THERMAL", "OilTable", "as_case", "evaluate", "evaluate_resolved", "oil_catalogue",
+           "read_case", "read_oils", "seed_case", "thermal_case", "with_operating"]

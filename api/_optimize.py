@@ -71,24 +71,51 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     if lim is not None and kw:
         raise ArgumentError("limits", lim, f"give limits or {', '.join(sorted(kw))}, not both")
     lim = lim if lim is not None else DesignLimits(**kw)
-    starts, limits = lim.starts, lim.constraints()
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
-    c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)
-    header = thermal_line(mode, thermal is None)
+    c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
+    return optimize_resolved(c, mode, thermal is None, lim, verbose)
+
+
+def optimize_resolved(case: DesignCase, mode: ThermalMode, by_default: bool,
+                      limits: DesignLimits, verbose: bool = False) -> Optimization:
+    """:func:`optimize` of a case whose thermal mode is resolved
+    (:func:`oilgap._evaluate.thermal_case`; ``oilgap optimize`` resolves it with its
+    options' names): the mode is passed down, not resolved again.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The joint, its oil state and sea temperature applied.
+    mode : ThermalMode
+        The resolved mode.
+    by_default : bool
+        Whether it is the default (no mode asked for; the header says so).
+    limits : DesignLimits
+        Starts, torque and inertia limits.
+    verbose : bool
+        Print IPOPT's iterations.
+
+    Returns
+    -------
+    Optimization
+        As :func:`optimize`.
+    """
+    starts, lim = limits.starts, limits.constraints()
+    header = thermal_line(mode, by_default)
     if mode == ThermalMode.NONE:
-        res = DesignProblem(c, verbose=verbose).solve(starts=starts, **limits)
+        res = DesignProblem(case, verbose=verbose, thermal=mode).solve(starts=starts, **lim)
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)
             exact = res.evaluate()
-        return Optimization(res, c, exact, header, limits, tuple(e.film_band for e in exact))
-    cmp = compare_heating(DesignProblem(c, verbose=verbose, thermal=mode), starts=starts,
-                          **limits)
+        return Optimization(res, case, exact, header, lim, tuple(e.film_band for e in exact))
+    cmp = compare_heating(DesignProblem(case, verbose=verbose, thermal=mode), starts=starts,
+                          **lim)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         exact = (*cmp.heated.operating(), cmp.isothermal.evaluate()[1])
         bands = tuple(film_band(d, mode, mean_power_W=e.mean_power_W)
                       for d, e in zip(cmp.heated.design_cases(), exact[:2], strict=True))
-    return Optimization(cmp, c, exact, header, limits, bands)
+    return Optimization(cmp, case, exact, header, lim, bands)
 
 
-__all__ = ["optimize"]
+__all__ = ["optimize", "optimize_resolved"]

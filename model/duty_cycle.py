@@ -189,6 +189,27 @@ class DutyCycle:
         _refuse_at_rest(w, "speed_rpm", 0.0, where)
         return cls(t_arr, w, f"{path.name}, {len(t)} samples", {"kind": "csv", "csv": str(path)})
 
+    def with_peak_speed(self, peak_speed_rpm: float) -> DutyCycle:
+        """The same cycle with every speed scaled so that its peak is ``peak_speed_rpm``.
+
+        Parameters
+        ----------
+        peak_speed_rpm : float
+            New peak |speed| [rpm], in (0, :data:`MAX_SPEED_RPM`].
+
+        Returns
+        -------
+        DutyCycle
+            Times unchanged [s], speeds times ``peak / old peak`` [rad/s]; its ``spec``
+            records the new peak.
+        """
+        peak = check_physical("peak_speed_rpm", peak_speed_rpm, 0.0, MAX_SPEED_RPM,
+                              SPEED_REASON, "duty_cycle", lo_open=True)
+        factor = rpm_to_rad_s(peak) / self.peak_omega_rad_s
+        spec = dict(self.spec, peak_speed_rpm=peak)
+        return DutyCycle(self.time_s, self.omega_rad_s * factor,
+                         f"{self.description} (peak scaled to {peak:g} rpm)", spec)
+
     @property
     def peak_omega_rad_s(self) -> float:
         """Largest |omega| over the cycle [rad/s]."""

@@ -49,7 +49,7 @@ from .joint_loss import (
     mode_film,
     operating_temperature,
     region_mean_powers,
-    resolve_thermal_mode,
+    resolved_mode,
     uses_balance,
 )
 from .oil_properties import seawater_gauge_pressure
@@ -560,7 +560,8 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float) -> _Computed
 
 def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
                   depth_m: float | None = None, laminar_law: str | None = None,
-                  thermal: str | None = None) -> CaseEvaluation:
+                  thermal: str | None = None, *, thermal_default: bool | None = None
+                  ) -> CaseEvaluation:
     """Evaluate a case region by region over its duty cycle under a thermal mode.
 
     ``none``: the seed paper's isothermal model at the oil temperature. ``bulk``: the
@@ -589,7 +590,11 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     thermal : {"none", "bulk", "film", "full"}, optional
         Thermal mode (default: the model the evidence supports,
         :func:`~oilgap.model.joint_loss.default_thermal_mode`: ``bulk`` with
-        ``[thermal]``, else ``none``).
+        ``[thermal]``, else ``none``); a resolved mode
+        (:func:`~oilgap.model.joint_loss.resolve_thermal_mode`) is taken as it is.
+    thermal_default : bool, optional
+        Whether the mode is the default (reported so; default: ``thermal is None``), for
+        a caller that passes the mode it resolved.
 
     Returns
     -------
@@ -614,7 +619,8 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     Seed paper (Eqs. 3-6 and 8-10) [1]; Nahme (1940), Gavis &
     Laurence (1968) (the heated film).
     """
-    mode = resolve_thermal_mode(case, thermal)
+    mode = resolved_mode(case, thermal)
+    by_default = thermal is None if thermal_default is None else thermal_default
     if laminar_law is not None:
         case = replace(case, friction=replace(case.friction, laminar_law=laminar_law))
     t_case = case.operating.oil_temp_C if oil_temp_C is None else float(oil_temp_C)
@@ -627,4 +633,4 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
     c = _computed(case, mode, t_case, d)
     at = case if oil_temp_C is None else replace(
         case, operating=replace(case.operating, oil_temp_C=t_case))
-    return c.evaluation(case, mode, thermal is None, d, film_band(at, mode, d, c.total_W))
+    return c.evaluation(case, mode, by_default, d, film_band(at, mode, d, c.total_W))

@@ -56,8 +56,8 @@ from .units import (
     m2_s_to_cst,
 )
 
-__all__ = ["FLUID_KINDS", "Fluid", "GasFluid", "TableFluid", "builtin_gases", "gas_key",
-           "read_fluid_table", "read_gases_csv", "warn_if_untrusted_state"]
+__all__ = ["FLUID_KINDS", "Fluid", "GasFluid", "ScaledFluid", "TableFluid", "builtin_gases",
+           "gas_key", "read_fluid_table", "read_gases_csv", "warn_if_untrusted_state"]
 
 FLUID_KINDS = ("mineral", "table", "gas")
 """The kinds of fluid a case may hold."""
@@ -116,6 +116,117 @@ class Fluid(Protocol):
     def kinematic_viscosity_cSt(self, temp_C, depth_m=0.0) -> float: ...
 
     def temperature_slope(self, temp_K, pressure_gauge_Pa=0.0): ...
+
+
+# --------------------------------------------------------------------------- scaled
+
+
+@dataclass(frozen=True)
+class ScaledFluid:
+    """A fluid whose viscosity is a constant factor times another's, at every state.
+
+    The grade tolerance of ISO 3448 [1]_ (a grade's nu at 40 degC within +-10 % of its
+    nominal value) taken as one factor on the viscosity at every temperature and
+    pressure: the Walther line shifted in ``ln nu``, its slope ``b = -d ln(mu)/dT`` and
+    the density unchanged. An uncertain input of :mod:`oilgap.model.uncertain`.
+
+    Attributes
+    ----------
+    base : Fluid
+        The nominal fluid.
+    factor : float
+        Viscosity factor f > 0 [-] (1: the nominal fluid).
+
+    References
+    ----------
+    .. [1] ISO 3448:1992, *Industrial liquid lubricants - ISO viscosity classification*
+       (mid-point kinematic viscosity at 40 degC, limits +-10 %).
+    """
+
+    base: Fluid
+    factor: float
+
+    def __post_init__(self):
+        if isinstance(self.factor, bool) or not isinstance(self.factor, (int, float)) \
+                or not math.isfinite(self.factor) or self.factor <= 0:
+            raise InputError("nu40_factor", self.factor, "a finite number > 0", "oil")
+
+    @property
+    def name(self) -> str:
+        """The base fluid's name [-]."""
+        return self.base.name
+
+    @property
+    def kind(self) -> str:
+        """The base fluid's kind [-]."""
+        return self.base.kind
+
+    @property
+    def trusted_range_C(self) -> tuple[float, float]:
+        """The base fluid's trusted range [degC]."""
+        return self.base.trusted_range_C
+
+    @property
+    def polymer_thickened(self) -> bool:
+        """The base fluid's flag [-]."""
+        return self.base.polymer_thickened
+
+    @property
+    def newtonian(self) -> bool:
+        """The base fluid's flag [-]."""
+        return getattr(self.base, "newtonian", True)
+
+    def properties(self, temp_K, pressure_gauge_Pa=0.0):
+        """The base fluid's properties with both viscosities times the factor.
+
+        Parameters
+        ----------
+        temp_K : float, array or CasADi symbol
+            Temperature [K].
+        pressure_gauge_Pa : float, array or CasADi symbol
+            Pressure above atmospheric [Pa].
+
+        Returns
+        -------
+        nu_m2_s, mu_Pa_s, rho_kg_m3
+            [m^2/s], [Pa s], [kg/m^3].
+        """
+        nu, mu, rho = self.base.properties(temp_K, pressure_gauge_Pa)
+        return self.factor * nu, self.factor * mu, rho
+
+    def kinematic_viscosity_cSt(self, temp_C, depth_m=0.0) -> float:
+        """Kinematic viscosity [cSt] at oil temperature [degC] and sea depth [m].
+
+        Parameters
+        ----------
+        temp_C : float
+            Temperature [degC].
+        depth_m : float
+            Sea depth [m].
+
+        Returns
+        -------
+        float
+            The base fluid's value times the factor [cSt].
+        """
+        return self.factor * self.base.kinematic_viscosity_cSt(temp_C, depth_m)
+
+    def temperature_slope(self, temp_K, pressure_gauge_Pa=0.0):
+        """``b = -d ln(mu)/dT`` [1/K]: the base fluid's (a constant factor drops out).
+
+        Parameters
+        ----------
+        temp_K : float, array or CasADi symbol
+            Temperature [K].
+        pressure_gauge_Pa : float, array or CasADi symbol
+            Pressure above atmospheric [Pa].
+
+        Returns
+        -------
+        float, array or CasADi expression
+            b [1/K].
+        """
+        return self.base.temperature_slope(temp_K, pressure_gauge_Pa)
 
 
 # --------------------------------------------------------------------------- gas

@@ -58,6 +58,7 @@ from .thermal_modes import (  # noqa: F401  (re-exported: the modes' one list)
     FILM_MODES,
     THERMAL_MODE_TEXT,
     THERMAL_MODES,
+    ThermalMode,
     applies_film,
     film_counterpart,
     uses_balance,
@@ -116,8 +117,12 @@ def default_thermal_mode(case: DesignCase) -> str:
     return "bulk" if case.thermal is not None else "none"
 
 
-def resolve_thermal_mode(case: DesignCase, mode: str | None) -> str:
+def resolve_thermal_mode(case: DesignCase, mode: str | None) -> ThermalMode:
     """Check a requested mode against the case (None: :func:`default_thermal_mode`).
+
+    The one resolution of a command: the façade and the command line call it once and
+    pass the result down; the functions below take a resolved mode as it is
+    (:func:`resolved_mode`).
 
     Parameters
     ----------
@@ -128,8 +133,8 @@ def resolve_thermal_mode(case: DesignCase, mode: str | None) -> str:
 
     Returns
     -------
-    str
-        The mode to use.
+    ThermalMode
+        The mode to use (equal to its name, ``"none"``, ``"bulk"``, ...).
 
     Raises
     ------
@@ -138,13 +143,42 @@ def resolve_thermal_mode(case: DesignCase, mode: str | None) -> str:
         table.
     """
     if mode is None:
-        return default_thermal_mode(case)
+        return ThermalMode(default_thermal_mode(case))
     if mode not in THERMAL_MODES:
         raise InputError("thermal", mode, f"one of {', '.join(THERMAL_MODES)}")
     if uses_balance(mode) and case.thermal is None:
         raise InputError("thermal", mode, "'none' or 'film': the case has no [thermal] "
                          "table (sea_temp_C, resistance_K_per_W, heat_capacity_J_per_K)")
-    return mode
+    return ThermalMode(mode)
+
+
+def resolved_mode(case: DesignCase, mode: str | None) -> ThermalMode:
+    """A mode already resolved (:func:`resolve_thermal_mode` returns a
+    :class:`~oilgap.model.thermal_modes.ThermalMode`) as it is, else resolved here.
+
+    A resolved mode that does not fit the case (``bulk``/``full`` without ``[thermal]``,
+    another case than the one it was resolved for) is resolved again, and so refused.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case.
+    mode : ThermalMode, str or None
+        A resolved mode, or a requested one (None: :func:`default_thermal_mode`).
+
+    Returns
+    -------
+    ThermalMode
+        The mode to use.
+
+    Raises
+    ------
+    InputError
+        As :func:`resolve_thermal_mode`.
+    """
+    if isinstance(mode, ThermalMode) and (case.thermal is not None or not uses_balance(mode)):
+        return mode
+    return resolve_thermal_mode(case, mode)
 
 
 def case_film(case: DesignCase) -> FilmHeating:
@@ -399,7 +433,7 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
     ----------
     Bergman et al. [3]_, sec. 3.1.
     """
-    mode = resolve_thermal_mode(case, mode)
+    mode = resolved_mode(case, mode)
     nreg = len(joint_regions(case))
     if not uses_balance(mode):
         t = float(case.operating.oil_temp_C)
@@ -513,7 +547,7 @@ def film_band(case: DesignCase, mode: str | None = None, depth_m: float | None =
     Seed paper [1]_ (the isothermal loss); Nahme, Gavis & Laurence [2]_ (the film);
     Bergman et al. [3]_ (the balance).
     """
-    mode = resolve_thermal_mode(case, mode)
+    mode = resolved_mode(case, mode)
     if mean_power_W is None:
         mean_power_W = operating_temperature(case, mode, depth_m).mean_power_W
     at = case

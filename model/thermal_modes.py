@@ -102,7 +102,7 @@ def uses_balance(mode: str) -> bool:
     return mode in BALANCE_MODES
 
 
-def film_counterpart(mode: str) -> str:
+def film_counterpart(mode: str) -> ThermalMode:
     """The mode with the same bulk temperature and the opposite film choice.
 
     Parameters
@@ -112,11 +112,16 @@ def film_counterpart(mode: str) -> str:
 
     Returns
     -------
-    str
+    ThermalMode
         ``none`` <-> ``film``, ``bulk`` <-> ``full``: the other side of the film band
-        [-].
+        [-] (as resolved as ``mode``: it needs ``[thermal]`` exactly when ``mode`` does).
     """
-    return {"none": "film", "film": "none", "bulk": "full", "full": "bulk"}[mode]
+    return _COUNTERPART[mode]
+
+
+_COUNTERPART = {ThermalMode.NONE: ThermalMode.FILM, ThermalMode.FILM: ThermalMode.NONE,
+                ThermalMode.BULK: ThermalMode.FULL, ThermalMode.FULL: ThermalMode.BULK}
+"""The other side of each mode's film band."""
 
 
 __all__ = ["BALANCE_MODES", "DEFAULT_MODE_WHY", "FILM_EVIDENCE", "FILM_MODES",

@@ -11,6 +11,7 @@ from oilgap._evaluate import with_operating
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError
 from oilgap.model.io.case_io import read_case_toml, seed_case
+from oilgap.model.thermal_modes import ThermalMode
 
 
 def load_case(args: argparse.Namespace) -> DesignCase:
@@ -38,7 +39,8 @@ def show(view, args: argparse.Namespace) -> None:
     print(view.to_json() if getattr(args, "json", False) else view.summary())
 
 
-def thermal_case(case: DesignCase, args: argparse.Namespace) -> tuple[DesignCase, str]:
+def thermal_case(case: DesignCase, args: argparse.Namespace
+                 ) -> tuple[DesignCase, ThermalMode]:
     """The thermal mode of ``--thermal`` checked against the case and ``--temp-c``, and the
     case with ``--sea-temp-c`` applied (evaluate and optimize share these options): the
     façade's :func:`oilgap._evaluate.thermal_case`, its messages naming the options."""

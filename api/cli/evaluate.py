@@ -1,19 +1,19 @@
 """``oilgap evaluate``: the viscous loss of a joint, region by region, under a thermal mode
 (arguments in :func:`oilgap.cli.parsers.add_evaluate`); a thin layer over
-:func:`oilgap._evaluate.evaluate` (``og.evaluate``): the text is the result's
-``summary()``, ``--json`` its ``to_json()``."""
+:func:`oilgap._evaluate.evaluate` (``og.evaluate``; the thermal mode resolved once,
+here): the text is the result's ``summary()``, ``--json`` its ``to_json()``."""
 
 from __future__ import annotations
 
 import argparse
 
-from oilgap._evaluate import evaluate
+from oilgap._evaluate import evaluate_resolved
 from oilgap.cli.common import load_case, thermal_case
 
 
 def run(args: argparse.Namespace) -> int:
     """Evaluate the case and print the table (or JSON); returns the exit code."""
-    case, _ = thermal_case(load_case(args), args)  # the options checked, named as given
-    res = evaluate(case, thermal=args.thermal, laminar_law=args.laminar_law)
+    case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
+    res = evaluate_resolved(case, mode, args.thermal is None, args.laminar_law)
     print(res.to_json() if args.json else res.summary())
     return 0

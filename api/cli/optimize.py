@@ -1,6 +1,7 @@
 """``oilgap optimize``: the region-1 clearance geometry of least mean viscous power.
 
-Thin layer over :func:`oilgap._optimize.optimize` (``og.optimize``; the
+Thin layer over :func:`oilgap._optimize.optimize` (``og.optimize``, the thermal mode
+resolved once, here; the
 design NLP of :class:`oilgap.optim.design.DesignProblem`, under ``film``/``full`` its
 thermal form): loads the case
 (or the seed joint), applies the oil/operating overrides, solves the design NLP
@@ -19,7 +20,7 @@ import argparse
 import contextlib
 from pathlib import Path
 
-from oilgap._optimize import optimize
+from oilgap._optimize import optimize_resolved
 from oilgap._results_design import Optimization
 from oilgap.cli.common import load_case, thermal_case
 from oilgap.cli.outputs import solver_log_to_stderr
@@ -71,10 +72,10 @@ def run(args: argparse.Namespace) -> int:
                           starts=_starts(args))
     if args.out:  # before any computation: folder writable, no earlier file unless --force
         check_out_file(args.out, args.force)
-    case, _ = thermal_case(load_case(args), args)  # the options checked, named as given
+    case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
     log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
     with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
-        res = optimize(case, thermal=args.thermal, limits=limits, verbose=args.verbose)
+        res = optimize_resolved(case, mode, args.thermal is None, limits, args.verbose)
     out_path = _write(res, args)
     if args.json:
         print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None}))

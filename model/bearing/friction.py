@@ -136,6 +136,10 @@ class BearingSpec:
         Replenishment constant K_rs [-]; 0 = flooded; None: 0 submerged, 3e-8 otherwise.
     designation : str or None
         Catalogue designation the spec was built from (``"61809"``) [-].
+    drag_scale : float
+        Factor on SKF's drag terms [-] (>= 0; 1: SKF's; the loop's
+        ``bearing_ball_drag`` calibrates such a factor, and an ``[uncertainty]`` input
+        draws it); Palmgren's model has no separate drag term, so it has no effect there.
     defaults_used : tuple of str
         TOML keys the tool filled in [-] (shown in outputs).
     """
@@ -160,6 +164,7 @@ class BearingSpec:
     mu_bl: float = MU_BL_DEFAULT
     k_rs: float | None = None
     designation: str | None = None
+    drag_scale: float = 1.0
     defaults_used: tuple[str, ...] = ()
 
     def __post_init__(self):
@@ -187,7 +192,7 @@ class BearingSpec:
             _positive("width_mm", m_to_mm(self.width_m), where)
         if isinstance(self.balls, bool) or not isinstance(self.balls, int) or self.balls < 1:
             raise InputError("balls", self.balls, "a whole number >= 1", where)
-        for key in ("radial_load_N", "axial_load_N", "mu_ehl", "mu_bl"):
+        for key in ("radial_load_N", "axial_load_N", "mu_ehl", "mu_bl", "drag_scale"):
             _non_negative(key, getattr(self, key), where)
         if self.static_load_rating_N is not None:
             _positive("static_load_rating_N", self.static_load_rating_N, where)
@@ -285,6 +290,8 @@ def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
           if spec.drag == "skf-full" else 0.0 * speed_rpm)
     vm = (drag_vm_moment(speed_rpm, dm, k_ball, drag_loss_factor(level))
           if spec.drag != "none" else 0.0 * speed_rpm)
+    if spec.drag_scale != 1.0:  # a scenario's factor (1: SKF's terms, bit for bit)
+        rs, vm = spec.drag_scale * rs, spec.drag_scale * vm
     return {
         "rolling": reduction * g_rr * nu_cSt**0.6 * speed_rpm**0.6,
         "sliding": g_sl * sliding_friction_coefficient(speed_rpm, nu_cSt, dm, spec.mu_bl,

@@ -223,8 +223,9 @@ class LoopEstimator:
         no_signal = no_signal_finding(s.viscous_W, base.pred, sigma)
         # 5-6. effect search with plausibility, refit; the evidence trial of a range violation
         facts = RigFacts.of(model.geometry, fluid_facts(s, data.oils))
-        opts = SearchOptions(self.margin, self.min_explained, self.max_effects, self.cv,
-                             bool(getattr(s, "has_time", True)))
+        opts = SearchOptions(margin=self.margin, min_explained=self.min_explained,
+                             max_effects=self.max_effects, cv=self.cv,
+                             has_time=bool(getattr(s, "has_time", True)))
         free = search_effects(model, spec, base, names, facts, sigma, opts)
         search, self.findings_ = self._evidence(model, free, no_signal, names, facts, sigma,
                                                 opts)

@@ -63,9 +63,10 @@ def fluid_facts(s: Samples, fluids: dict) -> tuple[FluidFacts, ...]:
     return tuple(out)
 
 
-@dataclass
+@dataclass(frozen=True, kw_only=True)
 class SearchOptions:
-    """Thresholds of the effect search.
+    """Thresholds of the effect search (with the noise level, the selection's
+    :class:`~oilgap.optim.calibration.selection.Thresholds`: :meth:`thresholds`).
 
     Attributes
     ----------
@@ -86,6 +87,22 @@ class SearchOptions:
     max_effects: int
     cv: str = "one-step"
     has_time: bool = True
+
+    def thresholds(self, noise_W: float) -> Thresholds:
+        """The selection's acceptance thresholds at a noise level.
+
+        Parameters
+        ----------
+        noise_W : float
+            Noise level of the power reading [W].
+
+        Returns
+        -------
+        Thresholds
+            ``margin``, ``min_explained`` and ``max_effects`` of these options.
+        """
+        return Thresholds(noise_W=noise_W, margin=self.margin,
+                          min_explained=self.min_explained, max_effects=self.max_effects)
 
 
 @dataclass(kw_only=True)
@@ -157,8 +174,7 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
     implausible: dict[str, str] = {}
     log: list[SelectionStep] = []
     selector = None
-    limits = Thresholds(noise_W=noise_W, margin=opts.margin, min_explained=opts.min_explained,
-                        max_effects=opts.max_effects)
+    limits = opts.thresholds(noise_W)
     for _ in range(len(cands.usable) + 1):
         sel = select_effects(base.jac_base, r0, cv_groups(s), cands, limits,
                              frozenset(implausible), hold, selector)

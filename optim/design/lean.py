@@ -67,6 +67,85 @@ class LeanStart:
         return (self.x_m / MM_TO_M) * MM_TO_M
 
 
+@dataclass(frozen=True, kw_only=True, slots=True)
+class LeanRecord:
+    """What a sweep writes of one lean solve (:func:`solve_lean`): the optimum's columns
+    of :data:`oilgap.studies.grid.columns.OPTIMIZE_RESULTS` the solve gives.
+
+    Attributes
+    ----------
+    region1_power_W : float
+        Region 1's mean power at the optimum (smooth C_m, IPOPT's f) [W].
+    T : float
+        Groove roughness of the optimum [-].
+    delta_mm, R_mm, L_mm : float
+        Gap, rotor radius and length of the optimum [mm].
+    T1_mm, T2_mm, T3_mm, T4_mm : float
+        The optimum's rotor and stator radii [mm].
+    torque_capability_Nm : float
+        The optimum's torque capability [N m].
+    inertia_kgm2 : float
+        The rotor's inertia [kg m^2].
+    inertia_ratio : float
+        Over the case's design's inertia [-].
+    torque_min_Nm_used : float
+        The solve's torque floor [N m].
+    inertia_max_kgm2_used : float
+        The solve's inertia ceiling [kg m^2].
+    active_constraints : str
+        The active constraints' names, space-separated.
+    iterations : int
+        IPOPT's iterations (-1: unknown).
+    initial_region1_power_W : float
+        Region 1's power at the solve's start [W].
+    mean_power_W, region2_power_W, initial_mean_power_W : float or None
+        The optimum's mean power, region 2's, the start's mean power [W] (smooth C_m,
+        bearing included); None until :func:`add_constant_powers`.
+    """
+
+    region1_power_W: float
+    T: float
+    delta_mm: float
+    R_mm: float
+    L_mm: float
+    T1_mm: float
+    T2_mm: float
+    T3_mm: float
+    T4_mm: float
+    torque_capability_Nm: float
+    inertia_kgm2: float
+    inertia_ratio: float
+    torque_min_Nm_used: float
+    inertia_max_kgm2_used: float
+    active_constraints: str
+    iterations: int
+    initial_region1_power_W: float
+    mean_power_W: float | None = None
+    region2_power_W: float | None = None
+    initial_mean_power_W: float | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """The sweep's columns, in the order a sweep's row holds them (the start's
+        region-1 power, an intermediate, left out).
+
+        Returns
+        -------
+        dict
+            Column name to value (powers [W], lengths [mm]).
+        """
+        return {"mean_power_W": self.mean_power_W, "region1_power_W": self.region1_power_W,
+                "region2_power_W": self.region2_power_W, "T": self.T,
+                "delta_mm": self.delta_mm, "R_mm": self.R_mm, "L_mm": self.L_mm,
+                "T1_mm": self.T1_mm, "T2_mm": self.T2_mm, "T3_mm": self.T3_mm,
+                "T4_mm": self.T4_mm, "torque_capability_Nm": self.torque_capability_Nm,
+                "inertia_kgm2": self.inertia_kgm2, "inertia_ratio": self.inertia_ratio,
+                "initial_mean_power_W": self.initial_mean_power_W,
+                "torque_min_Nm_used": self.torque_min_Nm_used,
+                "inertia_max_kgm2_used": self.inertia_max_kgm2_used,
+                "active_constraints": self.active_constraints,
+                "iterations": self.iterations}
+
+
 def _total(p1: float, p2: float, pb: float | None) -> float:
     """Mean power [W]: region 1, region 2 and the rolling bearing (if any), summed in
     :func:`~oilgap.optim.design.results.design_point`'s order."""
@@ -244,7 +323,7 @@ _LEAN: weakref.WeakKeyDictionary = weakref.WeakKeyDictionary()
 
 
 def solve_lean(problem: DesignProblem, x0: LeanStart | None = None, *, constant: bool = True,
-               **overrides: Any) -> tuple[dict[str, Any], LeanStart, DesignParameters]:
+               **overrides: Any) -> tuple[LeanRecord, LeanStart, DesignParameters]:
     """Solve the isothermal design NLP of ``problem``; return only what a sweep writes.
 
     The same IPOPT call as :meth:`DesignProblem.solve_isothermal` with ``starts=1``
@@ -267,12 +346,10 @@ def solve_lean(problem: DesignProblem, x0: LeanStart | None = None, *, constant:
 
     Returns
     -------
-    record : dict
-        ``mean_power_W``, ``region1_power_W``, ``region2_power_W`` [W] (smooth C_m),
-        ``initial_mean_power_W`` [W], ``T`` [-], ``delta_mm``, ``R_mm``, ``L_mm``,
-        ``T1_mm``..``T4_mm`` [mm], ``torque_capability_Nm`` [N m], ``inertia_kgm2``
-        [kg m^2], ``inertia_ratio`` [-], ``torque_min_Nm_used`` [N m],
-        ``inertia_max_kgm2_used`` [kg m^2], ``active_constraints``, ``iterations``.
+    record : LeanRecord
+        The sweep's columns of the optimum: powers [W] (smooth C_m), lengths [mm],
+        torque [N m], inertia [kg m^2] (``constant=False``: its constant powers still
+        None).
     start : LeanStart
         The next solve's warm start.
     params : DesignParameters
@@ -300,24 +377,19 @@ def solve_lean(problem: DesignProblem, x0: LeanStart | None = None, *, constant:
     R, delta, d_r, d_s, L = x_m.tolist()
     T1, T2, T3, T4 = rotor_stator_radii(R, delta, d_r, d_s)
     mm = 1.0 / MM_TO_M
-    rec = {"mean_power_W": None, "region1_power_W": p1, "region2_power_W": None,
-           "T": float(groove_roughness(T1, T2, T3, T4)), "delta_mm": delta * mm,
-           "R_mm": R * mm, "L_mm": L * mm, "T1_mm": T1 * mm, "T2_mm": T2 * mm,
-           "T3_mm": T3 * mm, "T4_mm": T4 * mm, "torque_capability_Nm": tau,
-           "inertia_kgm2": J, "inertia_ratio": J / problem.inertia_ref_kgm2,
-           "initial_mean_power_W": None,
-           "torque_min_Nm_used": params.torque_min_Nm,
-           "inertia_max_kgm2_used": params.inertia_max_kgm2,
-           "active_constraints": " ".join(active_constraints(params, x_m, tau, J)),
-           "iterations": int(stats.get("iter_count", -1)),
-           _INITIAL_P1: ls.report(x_start, nu, rho)[0]}
+    rec = LeanRecord(region1_power_W=p1, T=float(groove_roughness(T1, T2, T3, T4)),
+                     delta_mm=delta * mm, R_mm=R * mm, L_mm=L * mm, T1_mm=T1 * mm,
+                     T2_mm=T2 * mm, T3_mm=T3 * mm, T4_mm=T4 * mm,
+                     torque_capability_Nm=tau, inertia_kgm2=J,
+                     inertia_ratio=J / problem.inertia_ref_kgm2,
+                     torque_min_Nm_used=params.torque_min_Nm,
+                     inertia_max_kgm2_used=params.inertia_max_kgm2,
+                     active_constraints=" ".join(active_constraints(params, x_m, tau, J)),
+                     iterations=int(stats.get("iter_count", -1)),
+                     initial_region1_power_W=ls.report(x_start, nu, rho)[0])
     if constant:
-        add_constant_powers(problem, [rec], [params])
+        rec = add_constant_powers(problem, [rec], [params])[0]
     return rec, start, params
-
-
-_INITIAL_P1 = "_initial_region1_power_W"
-"""Key of the start's region-1 power [W] in a record :func:`add_constant_powers` finishes."""
 
 
 def region2_powers(problem: DesignProblem, nu_m2_s: np.ndarray, rho_kg_m3: np.ndarray
@@ -344,8 +416,8 @@ def region2_powers(problem: DesignProblem, nu_m2_s: np.ndarray, rho_kg_m3: np.nd
                       dtype=float).reshape(-1)
 
 
-def add_constant_powers(problem: DesignProblem, records: list[dict],
-                        params: list[DesignParameters]) -> None:
+def add_constant_powers(problem: DesignProblem, records: list[LeanRecord],
+                        params: list[DesignParameters]) -> list[LeanRecord]:
     """Complete records of :func:`solve_lean` (``constant=False``) of one problem: region 2
     (:func:`region2_powers`, all at once) and the bearing added to the optimum's and the
     start's power.
@@ -353,26 +425,35 @@ def add_constant_powers(problem: DesignProblem, records: list[dict],
     Parameters
     ----------
     problem : DesignProblem
-    records : list of dict
-        Completed in place: ``mean_power_W``, ``region2_power_W``,
-        ``initial_mean_power_W`` [W].
+    records : list of LeanRecord
+        Records of ``problem`` whose ``mean_power_W``, ``region2_power_W`` and
+        ``initial_mean_power_W`` are still None.
     params : list of DesignParameters
         The solve of each record.
+
+    Returns
+    -------
+    list of LeanRecord
+        The records completed: ``mean_power_W``, ``region2_power_W``,
+        ``initial_mean_power_W`` [W].
 
     Raises
     ------
     SolverError
-        A power that is not finite (no record is changed).
+        A power that is not finite.
     """
     if not records:
-        return
+        return []
     p2 = region2_powers(problem, [q.nu_m2_s for q in params], [q.rho_kg_m3 for q in params])
     if not np.all(np.isfinite(p2)):
         raise SolverError("non-finite region-2 power")
+    out = []
     for rec, q, v in zip(records, params, p2.tolist(), strict=True):
         pb = problem.bearing_power(q.nu_m2_s)
-        rec.update(mean_power_W=_total(rec["region1_power_W"], v, pb), region2_power_W=v,
-                   initial_mean_power_W=_total(rec.pop(_INITIAL_P1), v, pb))
+        out.append(replace(rec, mean_power_W=_total(rec.region1_power_W, v, pb),
+                           region2_power_W=v,
+                           initial_mean_power_W=_total(rec.initial_region1_power_W, v, pb)))
+    return out
 
 
 def optimal_case(problem: DesignProblem, params: DesignParameters, x_m: np.ndarray
@@ -406,5 +487,5 @@ def optimal_case(problem: DesignProblem, params: DesignParameters, x_m: np.ndarr
     return replace(c, **changes)
 
 
-__all__ = ["LeanSolver", "LeanStart", "active_constraints", "add_constant_powers",
+__all__ = ["LeanRecord", "LeanSolver", "LeanStart", "active_constraints", "add_constant_powers",
            "lean_solver", "optimal_case", "region2_powers", "solve_lean"]

@@ -66,7 +66,7 @@ from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.case_limits import check_slot_pitch
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import oil_state
-from oilgap.model.joint_loss import resolve_thermal_mode
+from oilgap.model.joint_loss import resolved_mode
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import joint_regions, region_mean_power
 from oilgap.model.units import MM_TO_M
@@ -151,7 +151,7 @@ class DesignProblem:
 
     def __init__(self, case: DesignCase, verbose: bool = False, thermal: str | None = "none"):
         t0 = time.perf_counter()
-        self.thermal_mode = resolve_thermal_mode(case, thermal)
+        self.thermal_mode = resolved_mode(case, thermal)
         self.case = case
         self.verbose = bool(verbose)
         self.law = case.friction.smooth()

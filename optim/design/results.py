@@ -28,6 +28,7 @@ from oilgap.model.joint_loss import OperatingTemperature, operating_temperature
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import rotor_stator_radii
 from oilgap.model.skin_friction import groove_roughness
+from oilgap.model.thermal_modes import ThermalMode
 from oilgap.model.units import MM_TO_M
 
 from .parameters import DesignParameters
@@ -452,7 +453,8 @@ class DesignResult:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", OilgapWarning)
             opt = self.to_case()
-        return evaluate_case(start, thermal="none"), evaluate_case(opt, thermal="none")
+        none = ThermalMode.NONE  # resolved: valid for every case
+        return evaluate_case(start, thermal=none), evaluate_case(opt, thermal=none)
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)

@@ -22,7 +22,13 @@ from oilgap.model.joint_loss import THERMAL_MODES
 from oilgap.model.oils import Oil, get_oil
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
-from oilgap.optim.design.lean import LeanStart, add_constant_powers, optimal_case, solve_lean
+from oilgap.optim.design.lean import (
+    LeanRecord,
+    LeanStart,
+    add_constant_powers,
+    optimal_case,
+    solve_lean,
+)
 from oilgap.studies.grid.columns import OPERATING_COLUMNS, OPTIMIZE_COLUMNS
 from oilgap.studies.grid.evaluate import evaluate_arrays
 from oilgap.studies.grid.schema import apply_params, is_missing
@@ -81,8 +87,8 @@ def _kwargs(overrides: Mapping[str, float], operating: Mapping[str, Any] | None
 def _solve(case: DesignCase, overrides: Mapping[str, float], x0, problems: dict | None,
            operating: Mapping[str, Any] | None, thermal: str, constant: bool = True
            ) -> tuple[dict, Any, DesignCase, tuple | None]:
-    """(record without the exact columns, warm start, the optimum's case to evaluate,
-    (problem, parameters) of a record whose constant powers are still to add).
+    """(row without the exact columns, warm start, the optimum's case to evaluate,
+    (problem, parameters, lean record) of a row whose constant powers are still to add).
 
     Isothermal: the lean solve (:func:`oilgap.optim.design.lean.solve_lean`, only the
     sweep's columns; ``constant=False``: region 2 and the bearing left to
@@ -95,10 +101,11 @@ def _solve(case: DesignCase, overrides: Mapping[str, float], x0, problems: dict 
         start = x0[1] if x0 is not None and isinstance(x0[1], LeanStart) else None
         if start is not None and x0[0] != key:  # another problem's multipliers: primal only
             start = LeanStart(start.x_m, None, None)
-        rec, nxt, params = solve_lean(prob, start, constant=constant, **kw)
+        lean, nxt, params = solve_lean(prob, start, constant=constant, **kw)
+        rec = lean.to_dict()
         rec.update(solve_time_s=time.perf_counter() - t0, thermal_mode=thermal)
         return (rec, (key, nxt), optimal_case(prob, params, nxt.x_m),
-                None if constant else (prob, params))
+                None if constant else (prob, params, lean))
     start = None
     if x0 is not None:
         k0, r0 = x0
@@ -146,22 +153,33 @@ def _error_row(e: Exception) -> dict:
 
 
 def _constant(recs: list[dict], pending: list[tuple]) -> None:
-    """Region 2 and the bearing of the lean records (``pending``: (problem, parameters)
-    of each), one call per problem (:func:`add_constant_powers`); should that fail, one
-    by one, a failing point becoming an error row."""
+    """Region 2 and the bearing of the lean rows (``pending``: (problem, parameters, lean
+    record) of each), one call per problem (:func:`add_constant_powers`), written into
+    the rows; should that fail, one by one, a failing point becoming an error row."""
     groups: dict[int, list[int]] = {}
-    for i, (prob, _) in enumerate(pending):
+    for i, (prob, _, _) in enumerate(pending):
         groups.setdefault(id(prob), []).append(i)
     for idx in groups.values():
         prob = pending[idx[0]][0]
         try:
-            add_constant_powers(prob, [recs[i] for i in idx], [pending[i][1] for i in idx])
+            done = add_constant_powers(prob, [pending[i][2] for i in idx],
+                                       [pending[i][1] for i in idx])
         except Exception:  # noqa: BLE001 - find the point that fails
             for i in idx:
                 try:
-                    add_constant_powers(prob, [recs[i]], [pending[i][1]])
+                    _complete(recs[i], add_constant_powers(prob, [pending[i][2]],
+                                                           [pending[i][1]])[0])
                 except Exception as e:  # noqa: BLE001 - a failed point is a row
                     recs[i] = _error_row(e)
+            continue
+        for i, lean in zip(idx, done, strict=True):
+            _complete(recs[i], lean)
+
+
+def _complete(rec: dict, lean: LeanRecord) -> None:
+    """Write a completed lean record's constant powers into its row."""
+    rec.update(mean_power_W=lean.mean_power_W, region2_power_W=lean.region2_power_W,
+               initial_mean_power_W=lean.initial_mean_power_W)
 
 
 def solve_design_point(case: DesignCase, overrides: Mapping[str, float], x0=None,

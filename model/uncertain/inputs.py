@@ -1,0 +1,182 @@
+"""The uncertain inputs of a joint's loss and how one set of their values makes a case.
+
+One source of truth for what an uncertain input *is* (the ``[uncertainty]`` table, the
+uncertainty study, the robust design NLP and the vectorised loss all use these names):
+
+==================== ======= ================================================================
+input                unit    acts on
+==================== ======= ================================================================
+``nu40_factor``      [-]     factor on the oil's viscosity at every state (ISO 3448 grade
+                             tolerance, :class:`~oilgap.model.fluids.ScaledFluid`); nominal 1
+``oil_temp_C``       [degC]  the case's oil temperature; with a ``[thermal]`` table the sea
+                             temperature of the balance moves by the same amount
+``depth_m``          [m]     the sea depth (the oil's gauge pressure)
+``gamma``            [-]     groove exponent gamma of Eq. 8 (``[friction] gamma``)
+``friction_scale``   [-]     factor on C_m (the law's ``scale``; its ``C`` for the power-law
+                             form); nominal 1
+``film_strength``    [-]     film strength s on the Nahme number (``[thermal]``; acts under
+                             the ``film``/``full`` thermal modes only)
+``bearing_drag_scale`` [-]   factor on the bearing's SKF drag terms; nominal 1
+``peak_speed_rpm``   [rpm]   the duty cycle's peak speed (every speed scaled alike)
+==================== ======= ================================================================
+
+:func:`apply_inputs` is the scalar reference path: a copy of the case with the given
+values, to be evaluated by :func:`oilgap.model.joint_loss.joint_mean_power` or
+:func:`oilgap.model.evaluation.evaluate_case` like any case. Vectorised evaluations over
+arrays of these inputs must equal it.
+
+References
+----------
+.. [1] ISO 3448:1992, industrial liquid lubricants, ISO viscosity classification.
+.. [2] Seed paper, Eqs. 6, 8 and 10 (gamma, C_m, the cycle mean).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
+
+from ..errors import InputError
+from ..fluids import ScaledFluid
+from ..units import rad_s_to_rpm
+
+if TYPE_CHECKING:  # pragma: no cover - typing only
+    from ..case import DesignCase
+
+
+@dataclass(frozen=True, kw_only=True)
+class InputInfo:
+    """What one uncertain input is.
+
+    Attributes
+    ----------
+    name : str
+        Key of the input [-].
+    unit : str
+        Its unit ("-" for factors and exponents).
+    title : str
+        One line for tables and figures.
+    factor : bool
+        True for a factor on the case's value (nominal 1) [-].
+    """
+
+    name: str
+    unit: str
+    title: str
+    factor: bool = False
+
+
+INPUTS: dict[str, InputInfo] = {i.name: i for i in (
+    InputInfo(name="nu40_factor", unit="-", title="oil viscosity factor (ISO 3448 grade)",
+              factor=True),
+    InputInfo(name="oil_temp_C", unit="degC", title="oil temperature"),
+    InputInfo(name="depth_m", unit="m", title="sea depth"),
+    InputInfo(name="gamma", unit="-", title="groove exponent gamma"),
+    InputInfo(name="friction_scale", unit="-", title="skin-friction factor on C_m", factor=True),
+    InputInfo(name="film_strength", unit="-", title="film heating strength s"),
+    InputInfo(name="bearing_drag_scale", unit="-", title="bearing drag factor", factor=True),
+    InputInfo(name="peak_speed_rpm", unit="rpm", title="duty cycle's peak speed"),
+)}
+"""The uncertain inputs, in their order of tables [-]."""
+
+
+def nominal_inputs(case: DesignCase) -> dict[str, float]:
+    """The case's own value of every uncertain input (factors are 1).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case.
+
+    Returns
+    -------
+    dict
+        Input name -> value in the input's unit ([-], [degC], [m], [rpm]: :data:`INPUTS`).
+    """
+    th = case.thermal
+    return {
+        "nu40_factor": 1.0,
+        "oil_temp_C": float(case.operating.oil_temp_C),
+        "depth_m": float(case.operating.depth_m),
+        "gamma": float(case.friction.gamma),
+        "friction_scale": 1.0,
+        "film_strength": 1.0 if th is None or th.film_strength is None else th.film_strength,
+        "bearing_drag_scale": 1.0,
+        "peak_speed_rpm": float(rad_s_to_rpm(case.duty_cycle.peak_omega_rad_s)),
+    }
+
+
+def _value(name: str, value) -> float:
+    if name not in INPUTS:
+        raise InputError("uncertainty input", name, f"one of {', '.join(INPUTS)}")
+    if isinstance(value, bool) or not isinstance(value, (int, float)) \
+            or not math.isfinite(float(value)):
+        raise InputError(name, value, "a finite number", "scenario")
+    return float(value)
+
+
+def apply_inputs(case: DesignCase, values: Mapping[str, float]) -> DesignCase:
+    """A copy of the case with the given uncertain inputs set (the scalar reference path).
+
+    Inputs not given keep the case's value. Each value is checked as the case's own
+    field would be (a depth outside [0, 11000] m, a negative factor... raise).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The nominal case.
+    values : mapping
+        Input name (:data:`INPUTS`) -> value in its unit (factors relative to the
+        case's own value, nominal 1).
+
+    Returns
+    -------
+    DesignCase
+        The scenario's case.
+
+    Raises
+    ------
+    InputError
+        An unknown input, a non-finite or out-of-range value, ``film_strength``
+        on a case without ``[thermal]`` (the film's settings live there).
+    """
+    v = {k: _value(k, x) for k, x in values.items()}
+    changes: dict = {}
+    if "nu40_factor" in v:
+        base = case.oil.base if isinstance(case.oil, ScaledFluid) else case.oil
+        f = v["nu40_factor"] * (case.oil.factor if isinstance(case.oil, ScaledFluid) else 1.0)
+        changes["oil"] = base if f == 1.0 else ScaledFluid(base, f)
+    op = case.operating
+    if "oil_temp_C" in v or "depth_m" in v:
+        changes["operating"] = replace(op, oil_temp_C=v.get("oil_temp_C", op.oil_temp_C),
+                                       depth_m=v.get("depth_m", op.depth_m))
+    th = case.thermal
+    if th is not None and "oil_temp_C" in v:
+        th = replace(th, sea_temp_C=th.sea_temp_C + (v["oil_temp_C"] - op.oil_temp_C))
+    if "film_strength" in v:
+        if th is None:
+            raise InputError("film_strength", v["film_strength"], "an input of a case with "
+                             "a [thermal] table (the film's walls and strength live there)",
+                             "uncertainty")
+        th = replace(th, film_strength=v["film_strength"])
+    if th is not case.thermal:
+        changes["thermal"] = th
+    law = case.friction
+    if "gamma" in v:
+        law = replace(law, gamma=v["gamma"])
+    if "friction_scale" in v:
+        law = (replace(law, C=law.C * v["friction_scale"]) if law.form == "power-law"
+               else replace(law, scale=law.scale * v["friction_scale"]))
+    if law is not case.friction:
+        changes["friction"] = law
+    if "bearing_drag_scale" in v and case.bearing is not None:
+        changes["bearing"] = replace(case.bearing,
+                                     drag_scale=case.bearing.drag_scale * v["bearing_drag_scale"])
+    if "peak_speed_rpm" in v:
+        changes["duty_cycle"] = case.duty_cycle.with_peak_speed(v["peak_speed_rpm"])
+    return replace(case, **changes) if changes else case
+
+
+__all__ = ["INPUTS", "InputInfo", "apply_inputs", "nominal_inputs"]

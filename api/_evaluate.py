@@ -113,8 +113,9 @@ class OilTable(dict):
 
 
 @checked(table=Arg((str, Path, dict), "a path to an oils CSV or a dict {name: Oil or "
-                   "{nu40_cSt, nu100_cSt, density_kg_m3}}"), only=FLAG)
-def read_oils(table: dict | str | Path, only: bool = False) -> dict[str, Oil]:
+                   "{nu40_cSt, nu100_cSt, density_kg_m3}}"), only=FLAG, field=NAME)
+def read_oils(table: dict | str | Path, only: bool = False, field: str = "oils"
+              ) -> dict[str, Oil]:
     """The oils to look names up in: a user's table (a CSV, or a dict of Oil or of the
     CSV's columns) added to the built-in ISO VG catalogue, the user's row winning a name
     clash with a warning, or with ``only`` the user's oils alone (``--oils-only``).
@@ -127,6 +128,8 @@ def read_oils(table: dict | str | Path, only: bool = False) -> dict[str, Oil]:
         "density_kg_m3": ...}}``: nu [cSt], density [kg/m^3], Barus [1/GPa].
     only : bool
         The user's oils alone, not added to the catalogue.
+    field : str
+        How the messages name the table (``"--oils"`` on the command line).
 
     Returns
     -------
@@ -135,8 +138,9 @@ def read_oils(table: dict | str | Path, only: bool = False) -> dict[str, Oil]:
     """
     if isinstance(table, OilTable):
         return table
-    user = oils_from_dict(table) if isinstance(table, dict) else read_oils_csv(table, "oils")
-    return OilTable(user if only else with_builtin(user))
+    user = oils_from_dict(table, field) if isinstance(table, dict) \
+        else read_oils_csv(table, field)
+    return OilTable(user if only else with_builtin(user, field))
 
 
 def oil_catalogue(oils: dict[str, Oil] | str | Path | None) -> dict[str, Oil] | None:

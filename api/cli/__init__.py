@@ -250,11 +250,7 @@ def _resolve_oils(args: argparse.Namespace) -> None:
         raise InputError("--oils-only", True, "needs --oils FILE (the table to use alone)")
     if getattr(args, "oils", None):
         from oilgap._evaluate import read_oils
-        try:
-            args.oils = read_oils(args.oils, only=args.oils_only)
-        except InputError as e:
-            raise InputError("--oils" if e.field == "oils" else e.field, e.value, e.allowed,
-                             e.where) from None
+        args.oils = read_oils(args.oils, only=args.oils_only, field="--oils")
 
 
 def _from_interrupt(e: BaseException) -> bool:

@@ -32,6 +32,7 @@ from oilgap.optim.calibration.model_io import (
 )
 from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.loop.figures import pages, plot_overview, plot_residuals, plot_windows
+from oilgap.studies.loop.model_file import read_model
 from oilgap.studies.loop.report import (
     format_summary,
     loop_json,
@@ -39,7 +40,6 @@ from oilgap.studies.loop.report import (
     warn_unit_hints,
     write_report,
 )
-from oilgap.studies.loop.model_file import read_model
 from oilgap.studies.outputs import result_folder
 from oilgap.studies.rigs.synth import SynthConfig, synthesize
 

@@ -64,6 +64,7 @@ from .model_schema import (
     encode,
     nested,
     parse_model_json,
+    refuse_literals,
 )
 
 MODEL_FORMAT = "oilgap-loop-model"
@@ -557,6 +558,10 @@ def load_model(path: str | Path) -> FittedModel:
     if not isinstance(doc, dict):
         raise InputError("--model", str(p), f"holds a JSON {type(doc).__name__}, not the "
                          "object oilgap loop writes (run oilgap loop again)")
+    try:
+        refuse_literals(doc, "" if "model" in doc else "model")
+    except InputError as e:
+        raise InputError(e.field, e.value, e.allowed, str(p)) from None
     if "model" in doc and doc.get("format") != MODEL_FORMAT:
         doc = doc["model"]
     elif doc.get("format") != MODEL_FORMAT:

@@ -221,18 +221,34 @@ def nested(path: str, build, doc: Any) -> Any:
                          f"({AGAIN})") from None
 
 
-def _walk_literals(x: Any, path: str) -> None:
-    """Refuse NaN/Infinity literals and duplicate keys anywhere in the document."""
+def refuse_literals(x: Any, path: str = "model") -> None:
+    """Refuse ``NaN``/``Infinity`` literals and keys given twice anywhere in a document
+    parsed by :func:`parse_model_json`.
+
+    Parameters
+    ----------
+    x : Any
+        The document (or a part of it).
+    path : str
+        JSON path of ``x`` (``""`` for a whole loop.json).
+
+    Raises
+    ------
+    InputError
+        The first such field, by its JSON path [-].
+    """
+    def sub(k: object) -> str:
+        return f"{path}.{k}" if path else str(k)
     if isinstance(x, _Duplicate):
-        raise _bad(f"{path}.{x.duplicate}", "given twice", "each key once in an object")
+        raise _bad(sub(x.duplicate), "given twice", "each key once in an object")
     if isinstance(x, _Literal):
         raise _bad(path, str(x), "a finite number (NaN and Infinity are not JSON)")
     if isinstance(x, dict):
         for k, v in x.items():
-            _walk_literals(v, f"{path}.{k}")
+            refuse_literals(v, sub(k))
     elif isinstance(x, list):
         for i, v in enumerate(x):
-            _walk_literals(v, f"{path}[{i}]")
+            refuse_literals(v, f"{path}[{i}]")
 
 
 def _typed(path: str, value: Any, kind: type) -> Any:
@@ -396,7 +412,7 @@ def check_model_doc(doc: Any) -> None:
         The first field that fails, by its JSON path, with its value and what is allowed
         [-].
     """
-    _walk_literals(doc, "model")
+    refuse_literals(doc, "model")
     if not isinstance(doc, dict):
         raise InputError("model", type(doc).__name__, "a JSON object (the 'model' block of "
                          "loop.json) is required")
@@ -424,7 +440,8 @@ def check_model_doc(doc: Any) -> None:
     Ts = [_check_baseline(f"model.baselines[{i}]", b)
           for i, b in enumerate(doc.get("baselines", []))]
     if len(set(Ts)) != len(Ts):
-        raise _bad("model.baselines", sorted(Ts), "one baseline per roughness T")
+        raise _bad("model.baselines", ", ".join(f"{t:g}" for t in Ts),
+                   "one baseline per roughness T")
     for k, v in doc.get("fitted_range", {}).items():
         if k not in RANGE_KEYS:
             raise _bad(f"model.fitted_range.{k}", k, f"one of {', '.join(RANGE_KEYS)}")
@@ -459,4 +476,4 @@ def check_model_ranges(doc: dict, facts: RigFacts | None) -> None:
 
 __all__ = ["KINDS", "LOOP_THERMAL_MODES", "RANGE_KEYS", "STAGES", "check_model_doc",
            "check_model_ranges", "decode", "encode", "nested",
-           "parse_model_json"]
+           "parse_model_json", "refuse_literals"]

@@ -40,7 +40,8 @@ def incomplete_marker(path: str | Path) -> Path | None:
 
 
 def read_model(path: str | Path, allow_incomplete: bool = False,
-               option: str = "--allow-incomplete (og.predict: allow_incomplete=True)") -> FittedModel:
+               option: str = "--allow-incomplete (og.predict: allow_incomplete=True)"
+               ) -> FittedModel:
     """The model saved at ``path``: refused from a folder marked incomplete unless
     ``allow_incomplete`` (then a warning), then checked against its schema and ranges.
 

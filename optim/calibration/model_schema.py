@@ -81,7 +81,8 @@ BASELINE_KEYS = {"roughness_T": float, "terms": list, "coef": list, "temp_ref_C"
 REL_TOL = 1e-9
 """Relative slack on a range's ends (a coefficient fitted at its bound reads back there)."""
 
-AGAIN = "run oilgap loop again to write a new model"
+AGAIN = ("a model as oilgap loop writes it; a fit outside a range is a finding of the "
+         "loop's report, not a model to predict with")
 """What to do about a saved model that fails its schema."""
 
 _TYPE_TEXT = {str: "a string", int: "an integer", float: "a finite number", dict: "an object",

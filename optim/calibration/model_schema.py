@@ -469,8 +469,8 @@ def check_model_ranges(doc: dict, facts: RigFacts | None) -> None:
     Raises
     ------
     InputError
-        A coefficient of the wrong sign or outside its plausible range [unit of the
-        effect], named ``model.effects.<name>``.
+        A coefficient of the wrong sign or outside its plausible range, named
+        ``model.effects.<name>`` [unit of the effect].
     """
     _check_effects(doc, facts)
 

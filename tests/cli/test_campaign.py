@@ -566,12 +566,16 @@ BASELINE_5_COEFS = {"roughness_T": 4.0, "terms": ["1", "|w|", "w^2", "w dw/dt",
 PREDICT = "predict new.csv --model loop.json --out p.csv"
 WITH_EFFECT = r"model\.laws\.with_effect\."
 
+GROUP = "already fine (kept as regression)"
+row("predict-model-truncated", PREDICT, "refused", "--model.*not JSON",
+    setup=tampered(lambda t: t[: len(t) // 2]))
+
+# a traceback, or a refusal quoting a raw Python error (KeyError, AttributeError) as the
+# value instead of naming the field
 GROUP = "tracebacks (exit 1) where one line and exit 2 are promised"
 row("predict-model-baseline-coef-short", PREDICT, "refused",
     r"model\.baselines\[0\]\.coef = '5 numbers'", setup=model_edit("baselines",
                                                                     [BASELINE_5_COEFS]))
-row("predict-model-truncated", PREDICT, "refused", "--model.*not JSON",
-    setup=tampered(lambda t: t[: len(t) // 2]))
 row("predict-model-top-level-list", PREDICT, "refused", "JSON list",
     setup=tampered(lambda t: "[1, 2, 3]"))
 row("predict-model-missing-laws", PREDICT, "refused", r"model\.laws = 'missing'",

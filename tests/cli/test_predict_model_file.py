@@ -251,6 +251,11 @@ ROWS = [
          _set(f"laws.{STAGE}.gamma", 3.0), accepted=True),
     Case("film-strength-1", "a film strength at its bound s = 1 is accepted",
          _add_effect("film_heating", 1.0, FILM), accepted=True),
+    Case("branches-law", "a branches law with one number per branch is accepted",
+         _branches(4), accepted=True),
+    Case("taylor-exponent-half", "a Taylor-vortex exponent the loop fits (0.5) is accepted",
+         _add_effect("taylor_vortex_onset", 0.5, {"taylor_vortex_onset": {"exponent": 0.5}}),
+         accepted=True),
 ]
 
 

@@ -257,9 +257,14 @@ def _typed(path: str, value: Any, kind: type) -> Any:
     if kind is float:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             raise _bad(path, value, "a finite number")
-        if not math.isfinite(value):
+        try:
+            number = float(value)
+        except OverflowError:  # an integer of hundreds of digits
+            raise _bad(path, f"an integer of {len(str(value))} digits", "a finite number") \
+                from None
+        if not math.isfinite(number):
             raise _bad(path, value, "a finite number")
-        return float(value)
+        return number
     if kind is int:
         if isinstance(value, bool) or not isinstance(value, int):
             raise _bad(path, value, "an integer")

@@ -395,6 +395,9 @@ def add_predict(sub) -> None:
     p.add_argument("--oils", metavar="OILS.csv", help="oils table for fluids the model does "
                    "not hold")
     p.add_argument("--force", action="store_true", help="overwrite an existing --out")
+    p.add_argument("--allow-incomplete", action="store_true", help="use a loop.json whose "
+                   "folder is still marked INCOMPLETE (a loop that failed or was killed), "
+                   "with a warning; refused otherwise")
     p.set_defaults(command="predict")
 
 

@@ -44,10 +44,10 @@ from oilgap.optim.calibration.model_io import (
     PREDICTED_VISCOUS,
     REASON,
     FittedModel,
-    load_model,
 )
 from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.loop.figures import pages, plot_overview, plot_residuals, plot_windows
+from oilgap.studies.loop.model_file import read_model
 from oilgap.studies.loop.report import (
     format_summary,
     loop_json,
@@ -92,8 +92,8 @@ def _source(data: Any) -> str:
 
 @checked(model=MODEL, data=DATA, stage=STAGE, oils=OILS)
 def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
-            stage: str = "with_effect", oils: dict[str, Oil] | str | Path | None = None
-            ) -> pd.DataFrame:
+            stage: str = "with_effect", oils: dict[str, Oil] | str | Path | None = None,
+            allow_incomplete: bool = False) -> pd.DataFrame:
     """The power of new rows with a model the loop fitted (``oilgap predict``).
 
     Parameters
@@ -107,6 +107,9 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
         Which model.
     oils : path or dict, optional
         Oils for fluids the model does not hold.
+    allow_incomplete : bool
+        Use a loop.json from a folder still marked incomplete (a loop that failed or was
+        killed), with a warning; refused otherwise.
 
     Returns
     -------
@@ -121,13 +124,15 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
     Raises
     ------
     InputError
-        No row can be predicted (the reasons counted); bad data.
+        No row can be predicted (the reasons counted); bad data; a loop.json that fails
+        its schema (the field named by its JSON path) or from a folder marked incomplete.
     """
     if isinstance(model, LoopEstimator):
         cat = model.data_.oils if hasattr(model, "data_") else None
         m = model.fitted_model()
     else:
-        m, cat = (load_model(model) if isinstance(model, (str, Path)) else model), None
+        m, cat = (read_model(model, allow_incomplete) if isinstance(model, (str, Path))
+                  else model), None
     cat = oil_catalogue(oils) or cat
     raw = data.frame if isinstance(data, MeasuredData) else (
         read_table(data) if isinstance(data, (str, Path)) else data)

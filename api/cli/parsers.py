@@ -411,6 +411,9 @@ def add_predict(sub) -> None:
                    "(default: its oils are added to the built-in ISO VG catalogue, its row "
                    "winning a name clash with a warning)")
     p.add_argument("--force", action="store_true", help="overwrite an existing --out")
+    p.add_argument("--allow-incomplete", action="store_true", help="use a loop.json whose "
+                   "folder is still marked INCOMPLETE (a loop that failed or was killed), "
+                   "with a warning; refused otherwise")
     p.set_defaults(command="predict")
 
 

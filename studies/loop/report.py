@@ -17,6 +17,7 @@ More than 12 runs: ``measured_vs_model_2.png``... and ``measured_vs_model_window
 from __future__ import annotations
 
 import inspect
+import json
 import math
 import warnings
 from pathlib import Path
@@ -33,6 +34,7 @@ from oilgap.model.io.defaults import (
 )
 from oilgap.model.io.serialize import Exact, dumps
 from oilgap.optim.calibration.estimator import LoopEstimator
+from oilgap.optim.calibration.model_io import FittedModel
 from oilgap.optim.calibration.ranges import effective_scale
 from oilgap.studies.loop.figures import (
     OVERVIEW,
@@ -525,4 +527,15 @@ def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) 
     doc = dumps(loop_json(est))  # 6 significant digits; the model block in full
     write_text(paths["report"], text)
     write_text(paths["json"], doc)
+    _warn_unpredictable(est, paths["json"])
     return paths
+
+
+def _warn_unpredictable(est: LoopEstimator, path: Path) -> None:
+    """A warning line when the saved model fails the schema ``oilgap predict`` checks
+    (a fitted law outside the ranges a friction law may have): never silent."""
+    try:
+        FittedModel.from_dict(json.loads(json.dumps(est.fitted_model().to_dict())))
+    except InputError as e:
+        warnings.warn(OilgapWarning(f"{path}: oilgap predict will refuse this model ({e})"),
+                      stacklevel=3)

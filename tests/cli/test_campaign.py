@@ -519,7 +519,8 @@ row("optimize-json-verbose", "optimize --json --verbose --starts 1", "accepted",
 
 
 
-# ---- issue 20's rows (the façade, conflicting options, stores): tests/cli/campaign_rows20.py
+# ---- issue 20's rows (the façade, conflicting options, stores, saved loop models):
+# tests/cli/campaign_rows20.py
 from campaign_rows20 import ROWS20  # noqa: E402  (it builds on the helpers above)
 
 ROWS += ROWS20

@@ -28,7 +28,6 @@ import contextlib
 import io
 import json
 import math
-import re
 import shlex
 import shutil
 import tempfile
@@ -518,104 +517,13 @@ row("predict-out-exists", "predict new.csv --model loop.json --out p.csv", "refu
 row("optimize-json-verbose", "optimize --json --verbose --starts 1", "accepted",
     check=json_stdout, proc=proc_verbose_json)
 
-# ---- issue 20 class 3 (lane model20): loop.json files edited by hand, cut short or left
-# by an unfinished loop. predict checks the saved model once on load against its schema
-# and ranges (oilgap.optim.calibration.model_schema) and refuses naming the field by its
-# JSON path; a folder marked INCOMPLETE is refused unless --allow-incomplete. The façade
-# variants are in tests/cli/test_predict_model_file.py.
 
 
-def tampered(edit: Callable[[str], str]) -> tuple:
-    """Setup: the fitted model and rows to predict, then loop.json's text edited."""
-    def setup(d: Path) -> None:
-        p = d / "loop.json"
-        p.write_text(edit(p.read_text()))
-    return (with_model, setup)
+# ---- issue 20's rows (the façade, conflicting options, stores, saved loop models):
+# tests/cli/campaign_rows20.py
+from campaign_rows20 import ROWS20  # noqa: E402  (it builds on the helpers above)
 
-
-def model_edit(path: str, value=DROP) -> tuple:
-    """Setup: ``model.<path>`` of the fitted loop.json set to ``value`` (DROP: removed)."""
-    keys = [int(k) if k.isdigit() else k for k in path.split(".")]
-
-    def edit(text: str) -> str:
-        doc = json.loads(text)
-        m = doc["model"]
-        for k in keys[:-1]:
-            m = m[k]
-        if value is DROP:
-            del m[keys[-1]]
-        else:
-            m[keys[-1]] = value
-        return json.dumps(doc)
-    return tampered(edit)
-
-
-def predicted_finite(d: Path, out: str, written: list[str]) -> None:
-    """Every row of p.csv has a finite predicted power."""
-    p = pd.read_csv(d / "p.csv")
-    assert np.isfinite(p["predicted_viscous_power_W"].to_numpy(float)).all(), \
-        "a non-finite prediction"
-
-
-BASELINE_5_COEFS = {"roughness_T": 4.0, "terms": ["1", "|w|", "w^2", "w dw/dt",
-                                                   "sign(w) dw/dt", "(dw/dt)^2"],
-                    "coef": [1.0, 0.1, 1e-4, 0.0, 0.0], "temp_ref_C": 25.0, "rmse_W": 1.0,
-                    "n_samples": 30, "temp_range_C": [24.0, 26.0], "speed_max_rpm": 3000.0}
-"""A hand-written oil-free baseline with five coefficients for six basis functions."""
-
-PREDICT = "predict new.csv --model loop.json --out p.csv"
-WITH_EFFECT = r"model\.laws\.with_effect\."
-
-GROUP = "already fine (kept as regression)"
-row("predict-model-truncated", PREDICT, "refused", "--model.*not JSON",
-    setup=tampered(lambda t: t[: len(t) // 2]))
-
-# a traceback, or a refusal quoting a raw Python error (KeyError, AttributeError) as the
-# value instead of naming the field
-GROUP = "tracebacks (exit 1) where one line and exit 2 are promised"
-row("predict-model-baseline-coef-short", PREDICT, "refused",
-    r"model\.baselines\[0\]\.coef = '5 numbers'", setup=model_edit("baselines",
-                                                                    [BASELINE_5_COEFS]))
-row("predict-model-top-level-list", PREDICT, "refused", "JSON list",
-    setup=tampered(lambda t: "[1, 2, 3]"))
-row("predict-model-missing-laws", PREDICT, "refused", r"model\.laws = 'missing'",
-    setup=model_edit("laws"))
-row("predict-model-gamma-text", PREDICT, "refused", WITH_EFFECT + "gamma = 'high'",
-    setup=model_edit("laws.with_effect.gamma", "high"))
-row("predict-model-effects-list", PREDICT, "refused", r"model\.effects = 'list'",
-    setup=model_edit("effects", []))
-
-GROUP = "garbage accepted with exit 0"
-row("predict-model-gamma-5", PREDICT, "refused", WITH_EFFECT + r"gamma = 5\.0.*\[0, 3\]",
-    setup=model_edit("laws.with_effect.gamma", 5.0))
-row("predict-model-gamma-1e300", PREDICT, "refused", WITH_EFFECT + r"gamma = 1e\+300",
-    setup=model_edit("laws.with_effect.gamma", 1e300))
-row("predict-model-gamma-negative", PREDICT, "refused", r"model\.laws\.with_T\.gamma",
-    setup=model_edit("laws.with_T.gamma", -0.5))
-row("predict-model-gamma-nan-literal", PREDICT, "refused", WITH_EFFECT + "gamma = 'NaN'",
-    setup=tampered(lambda t: t[:t.index('"model": {')] + re.sub(
-        r'("with_effect": \{[^}]*?"gamma": )[-0-9.e+]+', r"\1NaN",
-        t[t.index('"model": {'):], count=1)))
-row("predict-model-scale-negative", PREDICT, "refused", r"model\.laws\.with_T\.scale = -1",
-    setup=model_edit("laws.with_T.scale", -1.0))
-row("predict-model-effect-unknown", PREDICT, "refused", r"model\.effects\.magic_drag",
-    setup=model_edit("effects", {"magic_drag": 1.0}))
-row("predict-model-effect-implausible", PREDICT, "refused",
-    r"model\.effects\.sensor_delay = 10\.0", setup=model_edit("effects", {"sensor_delay": 10.0}))
-row("predict-model-thermal-mode-unknown", PREDICT, "refused", r"model\.thermal_mode = 'hot'",
-    setup=model_edit("thermal_mode", "hot"))
-row("predict-model-fitted-range-reversed", PREDICT, "refused",
-    r"model\.fitted_range\.temp_C", setup=model_edit("fitted_range.temp_C", [40.0, 20.0]))
-row("predict-model-key-twice", PREDICT, "refused", r"model\.thermal_mode = 'given twice'",
-    setup=tampered(lambda t: t.replace('"thermal_mode": "none"',
-                                       '"thermal_mode": "none", "thermal_mode": "film"', 1)))
-row("predict-model-incomplete", PREDICT, "refused", "INCOMPLETE.*--allow-incomplete",
-    setup=with_model, files={"INCOMPLETE": "oilgap loop started writing here\n"})
-row("predict-model-incomplete-allowed", PREDICT + " --allow-incomplete", "warned",
-    "marked incomplete", setup=with_model, files={"INCOMPLETE": "started\n"},
-    outputs=("p.csv",), check=predicted_finite)
-# ---- end of issue 20 class 3 (lane model20)
-
+ROWS += ROWS20
 
 
 @pytest.mark.parametrize("r", ROWS, ids=[r.id for r in ROWS])
@@ -625,8 +533,13 @@ def test_campaign_row(r: Row, tmp_path: Path):
 
 
 def test_campaign_covers_the_issue():
-    """Every section of the issue has rows, ids are unique (the table names them) and every
-    row expects a known class."""
-    assert len({r.id for r in ROWS}) == len(ROWS) and 60 <= len(ROWS) <= 250
-    assert len({r.group for r in ROWS}) == 4
+    """Every section of issues 12 and 20 has rows, ids are unique (the table names them),
+    every row expects a known class and states its promise; issue 20's table holds at
+    least 150 rows, façade rows among them."""
+    assert len({r.id for r in ROWS}) == len(ROWS) and len(ROWS) >= 150
+    groups = {r.group for r in ROWS}
+    assert len(groups) >= 7 and {"20.1 façade: wrong argument types",
+                                 "20.4 conflicting options"} <= groups
     assert all(set(r.expect) <= set(CLASSES[:-1]) for r in ROWS)
+    assert all(r.states() for r in ROWS) and all(r.promise for r in ROWS20)
+    assert sum(r.kind == "façade" for r in ROWS) >= 40

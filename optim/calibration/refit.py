@@ -25,7 +25,8 @@ from .candidates import Candidates
 from .forward import ForwardModel
 from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold
 from .selection import Selection
-from .spec import cv_groups, fold_spec
+from .folds import cv_folds
+from .spec import fold_spec
 from .steps import SelectionStep
 
 CV_MODES = ("one-step", "full")
@@ -125,7 +126,7 @@ class Refitter:
         """
         if self._holds is None:
             s = self.model.samples
-            groups = cv_groups(s)
+            groups = cv_folds(s)
             r1 = self.model.geometry.regions[0].radius_m
             self._holds = {int(c): fold_spec(self.spec, s.subset(groups != c), r1)
                            for c in np.unique(groups)}
@@ -171,7 +172,7 @@ class Refitter:
         HeldOut
         """
         s = self.model.samples
-        groups = cv_groups(s)
+        groups = cv_folds(s)
         holds = self.fold_holds()
         pred = np.empty(s.n)
         folds, held = [], []

@@ -30,7 +30,8 @@ from .forward import ForwardModel
 from .least_squares import ModelFit, fit_model, rescale_level
 from .refit import FinalModel, Refitter, add_state_readers, refit_selected
 from .selection import Selection, Thresholds, select_effects
-from .spec import BaseSpec, cv_groups
+from .folds import cv_folds
+from .spec import BaseSpec
 from .steps import SelectionStep
 
 
@@ -160,7 +161,7 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
     limits = Thresholds(noise_W=noise_W, margin=opts.margin, min_explained=opts.min_explained,
                         max_effects=opts.max_effects)
     for _ in range(len(cands.usable) + 1):
-        sel = select_effects(base.jac_base, r0, cv_groups(s), cands, limits,
+        sel = select_effects(base.jac_base, r0, cv_folds(s), cands, limits,
                              frozenset(implausible), hold, selector)
         selector = sel.selector
         final = refit_selected(refitter, base, cands, sel, opts.margin)

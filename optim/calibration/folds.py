@@ -110,7 +110,7 @@ def cv_scheme(s: Samples, k: int = MAX_FOLDS) -> dict:
     unit = "oil runs" if by == "run" else f"groups of {by}"
     if n_groups <= k:
         scheme, folds = "leave-one-group-out", n_groups
-        name = "leave-one-run-out" if by == "run" else f"leave-one-group-out (by {by})"
+        name = "leave-one-run-out" if by == "run" else "leave-one-group-out"
         text = f"held-out error by {name} over {n_groups} {unit}"
         rule = f"one fold per group ({n_groups} <= {k} groups)"
     else:

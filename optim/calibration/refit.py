@@ -22,10 +22,10 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .candidates import Candidates
+from .folds import cv_folds
 from .forward import ForwardModel
 from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold
 from .selection import Selection
-from .folds import cv_folds
 from .spec import fold_spec
 from .steps import SelectionStep
 

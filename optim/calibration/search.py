@@ -26,11 +26,11 @@ from oilgap.model.measured.data import Samples
 from oilgap.model.oils import normalize_oil_name
 
 from .candidates import Candidates, screen_candidates
+from .folds import cv_folds
 from .forward import ForwardModel
 from .least_squares import ModelFit, fit_model, rescale_level
 from .refit import FinalModel, Refitter, add_state_readers, refit_selected
 from .selection import Selection, Thresholds, select_effects
-from .folds import cv_folds
 from .spec import BaseSpec
 from .steps import SelectionStep
 

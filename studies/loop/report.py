@@ -263,8 +263,11 @@ def format_summary(est: LoopEstimator) -> str:
     if est.findings_:
         lines.append("")
     if est.effects_:
-        lines.append("effects found (accepted by cross-validation, one "
-                     f"{getattr(est, 'cv_by', 'run')} left out at a time)")
+        cv = getattr(est, "cv_scheme_", None) or {"scheme": "leave-one-group-out"}
+        how = (f"grouped {cv['folds']}-fold over {cv['groups']} groups"
+               if cv["scheme"] == "grouped k-fold" else
+               f"one {getattr(est, 'cv_by', 'run')} left out at a time")
+        lines.append(f"effects found (accepted by cross-validation, {how})")
         for e in est.effects_:
             lines.append(f"  {e.name}: {e.formula}")
             unit = "" if e.unit == "-" else f" {e.unit}"

@@ -2,7 +2,8 @@
 
 The effects the linearised selection accepts are refitted with the law by
 nonlinear least squares (their exact forms where the library has them). Held-out
-errors come from leave-one-run-out folds: one Gauss-Newton step from the
+errors come from the cross-validation folds (:mod:`.folds`: whole runs, one fold
+per run up to 10 runs, grouped 10-fold above): one Gauss-Newton step from the
 all-runs fit (default) or a full nonlinear refit per fold. The nonlinear
 held-out error overrules the linearised one: if the accepted effects do not
 lower it by the margin, they are rejected.
@@ -152,10 +153,11 @@ class Refitter:
                           at: ModelFit | None = None) -> HeldOut:
         """Held-out predictions and per-fold fits of the model ``names`` [1].
 
-        One fold per cross-validation group (:func:`.spec.cv_groups`: the run
-        unless the data say otherwise). A fold that cannot identify a base
-        parameter holds it at its all-data value; a one-step fold that would
-        move a parameter too far is refitted in full.
+        One fold per fold code of :func:`.folds.cv_folds` (whole groups, the runs
+        unless the data say otherwise; one per group up to
+        :data:`.folds.MAX_FOLDS` groups, grouped k-fold above). A fold that
+        cannot identify a base parameter holds it at its all-data value; a
+        one-step fold that would move a parameter too far is refitted in full.
 
         Parameters
         ----------

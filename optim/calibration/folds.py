@@ -112,7 +112,7 @@ def cv_scheme(s: Samples, k: int = MAX_FOLDS) -> dict:
         scheme, folds = "leave-one-group-out", n_groups
         name = "leave-one-run-out" if by == "run" else "leave-one-group-out"
         text = f"held-out error by {name} over {n_groups} {unit}"
-        rule = f"one fold per group ({n_groups} <= {k} groups)"
+        rule = f"one fold per group, {n_groups} groups <= {k}"
     else:
         scheme, folds = "grouped k-fold", k
         text = f"held-out error by grouped {k}-fold cross-validation over {n_groups} {unit}"

@@ -100,7 +100,8 @@ def cv_scheme(s: Samples, k: int = MAX_FOLDS) -> dict:
     -------
     dict
         ``scheme`` ("leave-one-group-out" or "grouped k-fold"), ``by`` (the group
-        column), ``groups``, ``folds``, ``max_folds``, ``rule`` and ``text`` (one
+        column), ``groups`` and ``folds`` (counts [-]), ``max_folds``, ``rule``,
+        ``jackknife`` and ``text`` (one
         sentence, e.g. "held-out error by grouped 10-fold cross-validation over 80
         oil runs").
     """

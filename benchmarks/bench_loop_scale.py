@@ -15,7 +15,8 @@ itself). Each shape is written to CSV (not timed) and run in a fresh Python
 process of its own, so its peak resident memory (``VmHWM``) is its own: imports,
 ``load_measured`` (pyarrow), ``LoopEstimator().fit``, ``loop.json`` +
 ``report.md``. Printed side by side: wall time of the whole process (imports
-included) and of the loop alone, peak RSS, the folds used, what the loop found,
+included) and of the loop alone, the process's CPU time (user + system: what a
+loaded, shared machine inflates least), peak RSS, the folds used, what the loop found,
 its held-out RMSE before and after, and PASS/FAIL against the targets (10^6
 samples only); the load average before and after (the machine may be shared).
 
@@ -107,14 +108,17 @@ def make_data(runs: int, per_run: int, effect: str | None, path: Path) -> Path:
 def run_shape(runs: int, per_run: int, effect: str | None, tmp: Path) -> dict:
     """Write the data, run the loop in a child process, return its record."""
     csv = make_data(runs, per_run, effect, tmp / f"data_{runs}x{per_run}.csv")
+    ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     r = subprocess.run([sys.executable, __file__, "--child", str(csv),
                         str(tmp / f"out_{runs}x{per_run}")],
                        capture_output=True, text=True, check=True)
     wall = time.perf_counter() - t0
+    ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (ru1.ru_utime - ru0.ru_utime) + (ru1.ru_stime - ru0.ru_stime)
     res = json.loads(r.stdout.strip().splitlines()[-1])
     csv.unlink()
-    return {**res, "wall_s": wall}
+    return {**res, "wall_s": wall, "cpu_s": cpu}
 
 
 def parse_shapes(shapes: str | None, sizes: str | None) -> list[tuple[int, int]]:
@@ -158,7 +162,7 @@ def main() -> None:
           f"{os.cpu_count()} CPUs visible; target {TARGET_S:g} s and {TARGET_MB:g} MB at 10^6 "
           f"samples; one process per shape; load average before {load_average()}")
     print(f"{'data':<12}{'runs':>5}{'x samples':>10}{'total':>9}{'folds':>6}{'wall s':>8}"
-          f"{'loop s':>8}{'read s':>7}{'fit s':>7}{'peak MB':>8}  "
+          f"{'cpu s':>7}{'loop s':>8}{'read s':>7}{'fit s':>7}{'peak MB':>8}  "
           f"{'held-out W before -> after':<27}{'found':<14}verdict")
     verdicts = []
     with tempfile.TemporaryDirectory() as d:
@@ -168,7 +172,8 @@ def main() -> None:
                 h, v = r["heldout"], verdict(r)
                 folds = f"{r['folds']}" + ("" if r["scheme"] == "grouped k-fold" else "*")
                 print(f"{effect or 'clean':<12}{runs:>5}{per_run:>10}{r['rows']:>9}{folds:>6}"
-                      f"{r['wall_s']:>8.2f}{r['loop_s']:>8.2f}{r['read_s']:>7.2f}"
+                      f"{r['wall_s']:>8.2f}{r['cpu_s']:>7.1f}{r['loop_s']:>8.2f}"
+                      f"{r['read_s']:>7.2f}"
                       f"{r['fit_s']:>7.2f}{r['peak_mb']:>8.0f}  "
                       f"{h['before']:>8.3f} -> {h['after']:<15.3f}"
                       f"{','.join(r['effects']):<14}{v}", flush=True)

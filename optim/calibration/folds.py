@@ -101,9 +101,8 @@ def cv_scheme(s: Samples, k: int = MAX_FOLDS) -> dict:
     dict
         ``scheme`` ("leave-one-group-out" or "grouped k-fold"), ``by`` (the group
         column), ``groups`` and ``folds`` (counts [-]), ``max_folds``, ``rule``,
-        ``jackknife`` and ``text`` (one
-        sentence, e.g. "held-out error by grouped 10-fold cross-validation over 80
-        oil runs").
+        ``jackknife`` and ``text`` (one sentence, e.g. "held-out error by grouped
+        10-fold cross-validation over 80 oil runs").
     """
     g = getattr(s, "cv_group", None)
     n_groups = len(np.unique(s.run_code if g is None else g))

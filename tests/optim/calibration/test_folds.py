@@ -13,6 +13,7 @@ import pandas as pd
 import pytest
 
 from oilgap.model.errors import InputError
+from oilgap.model.skin_friction import FrictionLaw
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.calibration.folds import MAX_FOLDS, cv_folds, cv_scheme, grouped_folds
 from oilgap.studies.loop.report import cv_sentence, report_markdown
@@ -112,3 +113,19 @@ def test_loop_on_sixteen_oil_runs_uses_ten_folds_and_says_so():
     assert text in cv_sentence(est)
     assert text in report_markdown(est, figures=False)
     assert "delete-a-group jackknife over the 10 folds" in report_markdown(est, figures=False)
+
+
+def test_film_state_at_a_moved_lag_warm_started_equals_a_cold_solve(rig):
+    # each fold and fit iteration moves the thermal lag; the film-heated state there starts
+    # from the nearest lag's film rise: it must be the root a fresh model finds from scratch
+    from oilgap.optim.calibration.forward import ForwardModel
+
+    s, law = rig.samples, FrictionLaw(form="smooth", gamma=0.5)
+    warm = ForwardModel(s, rig.case, rig.oils)
+    for tau in (4.0, 4.3, 3.7, 5.0, 4.1, 2.5):  # more lags than the start cache holds
+        got = warm.oil_state(law, {"thermal_lag": tau, "film_heating": 2.0}).temp_film_K
+        cold = ForwardModel(s, rig.case, rig.oils).oil_state(
+            law, {"thermal_lag": tau, "film_heating": 2.0})
+        assert np.all(got > cold.temp_lagged_K)  # the film is heated above its base
+        assert np.allclose(got, cold.temp_film_K, rtol=0.0, atol=1e-9)
+    assert len(warm._film_start) <= 4 and len(warm._film_rise) <= 4

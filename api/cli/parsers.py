@@ -356,7 +356,8 @@ def add_loop(sub) -> None:
         description="Close the loop with measured data: validate DATA (CSV or Parquet), take "
         "away the oil-free baseline, fit the seed's model without and with T (Table 3), "
         "search the residual for a missing effect from the library (sparse regression, "
-        "leave-one-run-out cross-validation), refit and report the errors before and after. "
+        "cross-validation over whole runs: leave-one-run-out up to 10 oil runs, grouped "
+        "10-fold above), refit and report the errors before and after. "
         "Writes DIR/loop.json, DIR/report.md and figures.")
     p.add_argument("data", metavar="DATA.csv", help="measured runs (CSV, or .parquet)")
     p.add_argument("--oils", metavar="OILS.csv", help="oils table oil,nu40_cSt,nu100_cSt,"
@@ -378,8 +379,9 @@ def add_loop(sub) -> None:
                    "branches = Eq. 6's branches, each C_k (delta/R)^alpha_k Re^beta_k freed "
                    "where the data identify it")
     p.add_argument("--cv-by", metavar="COLUMN", default="run",
-                   help="leave-one-group-out validation over the values of this column of "
-                   "DATA (default: run; e.g. gap_mm, oil)")
+                   help="cross-validation groups: the values of this column of DATA, each "
+                   "held out whole (default: run; e.g. gap_mm, oil; more than 10 groups: "
+                   "grouped 10-fold)")
     p.add_argument("--no-figures", action="store_true", help="skip the figures")
     p.set_defaults(command="loop")
 

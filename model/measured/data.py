@@ -303,7 +303,7 @@ def cv_groups(o: pd.DataFrame, gap1_m: np.ndarray, cv_by: str, source: str = "da
                          "least 2", source)
     if k > MAX_CV_GROUPS:
         raise InputError("cv_by", cv_by, f"has {k} groups among the oil rows; at most "
-                         f"{MAX_CV_GROUPS} (one fold each): round or bin the column", source)
+                         f"{MAX_CV_GROUPS}: round or bin the column", source)
     return np.asarray(codes, dtype=np.int64).ravel(), names
 
 

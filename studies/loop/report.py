@@ -265,8 +265,11 @@ def format_summary(est: LoopEstimator) -> str:
     if est.findings_:
         lines.append("")
     if est.effects_:
-        lines.append("effects found (accepted by cross-validation, one "
-                     f"{getattr(est, 'cv_by', 'run')} left out at a time)")
+        cv = getattr(est, "cv_scheme_", None) or {"scheme": "leave-one-group-out"}
+        how = (f"grouped {cv['folds']}-fold over {cv['groups']} groups"
+               if cv["scheme"] == "grouped k-fold" else
+               f"one {getattr(est, 'cv_by', 'run')} left out at a time")
+        lines.append(f"effects found (accepted by cross-validation, {how})")
         for e in est.effects_:
             lines.append(f"  {e.name}: {e.formula}")
             unit = "" if e.unit == "-" else f" {e.unit}"
@@ -463,9 +466,31 @@ def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
                                 f"{x['rmse_with_effect_W']:.3f}",
                                 f"{x['heldout_rmse_before_W']:.3f}",
                                 f"{x['heldout_rmse_after_W']:.3f}"] for x in est.per_run_]), "",
+            cv_sentence(est), "",
             "## Figures", "", *((f"![{f}]({f})" for f in
                                  figure_names(len(est.samples_.run_names))) if figures
                                 else ["Not drawn (`--no-figures`)."])]
+
+
+def cv_sentence(est: LoopEstimator) -> str:
+    """How the held-out errors and the intervals were obtained, in one sentence.
+
+    Parameters
+    ----------
+    est : LoopEstimator
+        A fitted estimator (its ``cv_scheme_``, :func:`oilgap.optim.calibration.folds.cv_scheme`).
+
+    Returns
+    -------
+    str
+        E.g. "Held-out error by grouped 10-fold cross-validation over 80 oil runs (...);
+        intervals by the delete-a-group jackknife over the 10 folds."
+    """
+    cv = getattr(est, "cv_scheme_", None)
+    if not cv:
+        return ""
+    text = cv["text"][0].upper() + cv["text"][1:]
+    return f"{text} ({cv['rule']}); 95 % intervals by the {cv['jackknife']}."
 
 
 def report_markdown(est: LoopEstimator, figures: bool = True) -> str:

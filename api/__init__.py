@@ -27,6 +27,7 @@ except PackageNotFoundError:  # running from a source tree that was never instal
 EXPORTS: dict[str, str] = {
     "read_case": "oilgap._evaluate",
     "seed_case": "oilgap._evaluate",
+    "read_oils": "oilgap._evaluate",
     "write_case": "oilgap._evaluate",
     "evaluate": "oilgap._evaluate",
     "optimize": "oilgap._optimize",
@@ -45,6 +46,7 @@ EXPORTS: dict[str, str] = {
     "Smoothing": "oilgap._results_studies",
     "Sweep": "oilgap._results_sweep",
     "InputError": "oilgap.model.errors",
+    "ArgumentError": "oilgap.model.errors",
     "InfeasibleError": "oilgap.model.errors",
     "SolverError": "oilgap.model.errors",
     "NotFittedError": "oilgap.model.errors",

@@ -19,6 +19,7 @@ from __future__ import annotations
 from dataclasses import replace
 from pathlib import Path
 
+from oilgap._checks import CASE, FLAG, NAME, NUMBER, OILS, PATH, Arg, check_arg, checked, choice
 from oilgap._results import Evaluation
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.errors import InputError, check_finite
@@ -26,13 +27,14 @@ from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import read_case_toml
 from oilgap.model.io.case_io import seed_case as _seed_case
 from oilgap.model.joint_loss import resolve_thermal_mode, uses_balance
-from oilgap.model.oils import Oil, get_oil, read_oils_csv
+from oilgap.model.oils import Oil, get_oil, oils_from_dict, read_oils_csv, with_builtin
 from oilgap.model.skin_friction import LAMINAR_LAWS
 from oilgap.model.thermal_modes import ThermalMode
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
 
 
+@checked(path=PATH)
 def read_case(path: str | Path) -> DesignCase:
     """The case TOML at ``path`` (:func:`oilgap.model.io.case_io.read_case_toml`).
 
@@ -48,6 +50,8 @@ def read_case(path: str | Path) -> DesignCase:
     return read_case_toml(path)
 
 
+@checked(case=Arg(("DesignCase",), "a DesignCase (og.read_case(...), "
+                   "og.optimize(...).to_case())"), path=PATH, force=FLAG)
 def write_case(case: DesignCase, path: str | Path, force: bool = False) -> Path:
     """Write ``case`` as a case TOML that :func:`read_case` reads back (floats to 6
     significant digits; :func:`oilgap.studies.io.case_write.write_case_toml`), atomically; an
@@ -70,6 +74,7 @@ def write_case(case: DesignCase, path: str | Path, force: bool = False) -> Path:
     return write_case_toml(case, check_out_file(path, force, field="path", option="force=True"))
 
 
+@checked(smoothed=FLAG)
 def seed_case(smoothed: bool = False) -> DesignCase:
     """The seed joint (Table 1 of the seed paper): grooved (T = 4) or smoothed (T = 2).
 
@@ -98,20 +103,52 @@ def as_case(case: DesignCase | str | Path | None = None) -> DesignCase:
         return _seed_case()
     if isinstance(case, DesignCase):
         return case
-    if isinstance(case, (str, Path)):
-        return read_case_toml(case)
-    raise InputError("case", type(case).__name__, "a DesignCase, a path to a case TOML or "
-                     "None (the seed joint) is required")
+    check_arg("case", case, CASE)
+    return read_case_toml(case)
+
+
+class OilTable(dict):
+    """Oils resolved for a look-up (:func:`read_oils`): taken as they are, never added to
+    the built-in catalogue again."""
+
+
+@checked(table=Arg((str, Path, dict), "a path to an oils CSV or a dict {name: Oil or "
+                   "{nu40_cSt, nu100_cSt, density_kg_m3}}"), only=FLAG, field=NAME)
+def read_oils(table: dict | str | Path, only: bool = False, field: str = "oils"
+              ) -> dict[str, Oil]:
+    """The oils to look names up in: a user's table (a CSV, or a dict of Oil or of the
+    CSV's columns) added to the built-in ISO VG catalogue, the user's row winning a name
+    clash with a warning, or with ``only`` the user's oils alone (``--oils-only``).
+
+    Parameters
+    ----------
+    table : str, Path or dict
+        ``oil,nu40_cSt,nu100_cSt,density_kg_m3[,barus_1_GPa][,polymer_thickened]`` as a
+        CSV, or ``{name: Oil}`` / ``{name: {"nu40_cSt": ..., "nu100_cSt": ...,
+        "density_kg_m3": ...}}``: nu [cSt], density [kg/m^3], Barus [1/GPa].
+    only : bool
+        The user's oils alone, not added to the catalogue.
+    field : str
+        How the messages name the table (``"--oils"`` on the command line).
+
+    Returns
+    -------
+    dict
+        Name (normalized) -> Oil; pass it as ``oils=`` to any façade function.
+    """
+    if isinstance(table, OilTable):
+        return table
+    user = oils_from_dict(table, field) if isinstance(table, dict) \
+        else read_oils_csv(table, field)
+    return OilTable(user if only else with_builtin(user, field))
 
 
 def oil_catalogue(oils: dict[str, Oil] | str | Path | None) -> dict[str, Oil] | None:
-    """An oils table: a path to its CSV is read, a dict passed on, None kept."""
-    if oils is None or isinstance(oils, dict):
-        return oils
-    if isinstance(oils, (str, Path)):
-        return read_oils_csv(oils)
-    raise InputError("oils", type(oils).__name__, "a path to an oils CSV or a dict of Oil "
-                     "is required")
+    """An oils argument resolved (:func:`read_oils`: added to the catalogue); None kept."""
+    if oils is None:
+        return None
+    check_arg("oils", oils, OILS)
+    return read_oils(oils)
 
 
 def with_operating(case: DesignCase, oil: str | None = None,
@@ -204,6 +241,12 @@ def thermal_case(case: DesignCase, thermal: str | None = None,
         raise InputError(n["sea_temp_C"], sea, e.allowed) from None
 
 
+THERMAL = choice("none", "bulk", "film", "full")
+"""The ``thermal`` argument of evaluate and optimize."""
+
+
+@checked(case=CASE, oil=NAME, oils=OILS, oil_temp_C=NUMBER, depth_m=NUMBER, thermal=THERMAL,
+         sea_temp_C=NUMBER, laminar_law=choice(*LAMINAR_LAWS))
 def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
@@ -218,7 +261,8 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     oil : str, optional
         Oil name replacing the case's (e.g. ``"VG22"``).
     oils : path or dict, optional
-        Oils table to look ``oil`` up in.
+        Oils table to look ``oil`` up in, added to the built-in catalogue
+        (:func:`read_oils`; ``read_oils(..., only=True)``: alone).
     oil_temp_C : float, optional
         Oil temperature [degC] (refused under ``bulk``/``full``).
     depth_m : float, optional
@@ -270,5 +314,5 @@ def evaluate_resolved(case: DesignCase, mode: ThermalMode, by_default: bool,
                                     thermal_default=by_default), case)
 
 
-__all__ = ["as_case", "evaluate", "evaluate_resolved", "oil_catalogue", "read_case", "seed_case",
-           "thermal_case", "with_operating"]
+__all__ = ["THERMAL", "OilTable", "as_case", "evaluate", "evaluate_resolved", "oil_catalogue",
+           "read_case", "read_oils", "seed_case", "thermal_case", "with_operating"]

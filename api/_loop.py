@@ -11,13 +11,28 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from oilgap._checks import (
+    CASE,
+    DATA,
+    EFFECT_NAMES,
+    FLAG,
+    MODEL,
+    NAMES,
+    NUMBER,
+    OILS,
+    OUT,
+    Arg,
+    check_arg,
+    checked,
+    choice,
+)
 from oilgap._evaluate import as_case, oil_catalogue
 from oilgap._results import ResultView, case_defaults, lazy
 from oilgap.model.case import DesignCase
 from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError, OilgapWarning, SolverError
 from oilgap.model.io.defaults import gamma_fields
-from oilgap.model.measured.data import MeasuredData, load_measured, read_table
+from oilgap.model.measured.data import MeasuredData, load_measured, read_table, validate
 from oilgap.model.oils import Oil
 from oilgap.optim.calibration.estimator import (
     DEFAULT_MARGIN,
@@ -29,10 +44,10 @@ from oilgap.optim.calibration.model_io import (
     PREDICTED_VISCOUS,
     REASON,
     FittedModel,
-    load_model,
 )
 from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.loop.figures import pages, plot_overview, plot_residuals, plot_windows
+from oilgap.studies.loop.model_file import read_model
 from oilgap.studies.loop.report import (
     format_summary,
     loop_json,
@@ -43,7 +58,11 @@ from oilgap.studies.loop.report import (
 from oilgap.studies.outputs import result_folder
 from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
+STAGE = choice("without_T", "with_T", "with_effect", optional=False)
+"""The ``stage`` of a prediction."""
 
+
+@checked(path=DATA, oils=OILS)
 def read_measured(path: str | Path, oils: dict[str, Oil] | str | Path | None = None
                   ) -> MeasuredData:
     """Rig data (CSV or Parquet) read and validated, every dropped row counted
@@ -51,15 +70,19 @@ def read_measured(path: str | Path, oils: dict[str, Oil] | str | Path | None = N
 
     Parameters
     ----------
-    path : str or Path
-        The measured runs.
+    path : str, Path, DataFrame or MeasuredData
+        The measured runs (a MeasuredData is returned as it is).
     oils : path or dict, optional
-        Oils table (default: the built-in catalogue).
+        Oils table, added to the built-in catalogue (:func:`oilgap._evaluate.read_oils`).
 
     Returns
     -------
     MeasuredData
     """
+    if isinstance(path, MeasuredData):
+        return path
+    if not isinstance(path, (str, Path)):
+        return validate(path, oil_catalogue(oils), _source(path))
     return load_measured(path, oil_catalogue(oils))
 
 
@@ -67,9 +90,10 @@ def _source(data: Any) -> str:
     return str(data) if isinstance(data, (str, Path)) else "data frame"
 
 
+@checked(model=MODEL, data=DATA, stage=STAGE, oils=OILS)
 def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
-            stage: str = "with_effect", oils: dict[str, Oil] | str | Path | None = None
-            ) -> pd.DataFrame:
+            stage: str = "with_effect", oils: dict[str, Oil] | str | Path | None = None,
+            allow_incomplete: bool = False) -> pd.DataFrame:
     """The power of new rows with a model the loop fitted (``oilgap predict``).
 
     Parameters
@@ -83,6 +107,9 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
         Which model.
     oils : path or dict, optional
         Oils for fluids the model does not hold.
+    allow_incomplete : bool
+        Use a loop.json from a folder still marked incomplete (a loop that failed or was
+        killed), with a warning; refused otherwise.
 
     Returns
     -------
@@ -97,13 +124,15 @@ def predict(model: FittedModel | LoopEstimator | str | Path, data: Any, *,
     Raises
     ------
     InputError
-        No row can be predicted (the reasons counted); bad data.
+        No row can be predicted (the reasons counted); bad data; a loop.json that fails
+        its schema (the field named by its JSON path) or from a folder marked incomplete.
     """
     if isinstance(model, LoopEstimator):
         cat = model.data_.oils if hasattr(model, "data_") else None
         m = model.fitted_model()
     else:
-        m, cat = (load_model(model) if isinstance(model, (str, Path)) else model), None
+        m, cat = (read_model(model, allow_incomplete) if isinstance(model, (str, Path))
+                  else model), None
     cat = oil_catalogue(oils) or cat
     raw = data.frame if isinstance(data, MeasuredData) else (
         read_table(data) if isinstance(data, (str, Path)) else data)
@@ -190,10 +219,13 @@ class Loop(LoopEstimator, ResultView):
         """What the tool filled in for the rig case (after :meth:`fit`)."""
         return case_defaults(self.case_) if hasattr(self, "case_") else []
 
+    @checked(data=DATA)
     def fit(self, data: Any) -> Loop:
         """Run the loop on measured data (path, DataFrame or MeasuredData); data in a wrong
         unit is refused naming the unit, not the solver. Returns ``self``."""
         given = self.case, self.oils, self.effects
+        for name, spec in (("case", CASE), ("oils", OILS), ("effects", EFFECT_NAMES)):
+            check_arg(name, getattr(self, name), spec)
         effects = self.effects
         if isinstance(effects, str):
             effects = [e.strip() for e in effects.split(",") if e.strip()] or None
@@ -213,6 +245,7 @@ class Loop(LoopEstimator, ResultView):
         warn_unit_hints(self)
         return self
 
+    @checked(data=DATA, stage=STAGE)
     def predict(self, data: Any, stage: str = "with_effect") -> pd.DataFrame:
         """The input rows with the model's predictions (:func:`predict`)."""
         return predict(self, data, stage=stage)
@@ -245,6 +278,8 @@ class Loop(LoopEstimator, ResultView):
                          **{k: v for k, v in r.items() if k.endswith("_W")}})
         return pd.DataFrame(rows).set_index("run")
 
+    @checked(ax=Arg(("Axes", "Figure", "SubFigure"), "a matplotlib Axes or Figure, or None "
+                    "(a new figure)", optional=True))
     def plot(self, ax: Any = None, kind: str = "windows") -> Any:
         """The loop's figures (:mod:`oilgap.studies.loop.figures`, the ones ``report``
         writes), drawn on ``ax`` (its place subdivided into panels; default a new pyplot
@@ -267,6 +302,8 @@ class Loop(LoopEstimator, ResultView):
                                  axes=target)
         return axs[0]
 
+    @checked(out=Arg(OUT.kinds, "a folder path (str or pathlib.Path)", check=OUT.check),
+             figures=FLAG, force=FLAG)
     def report(self, out: str | Path, figures: bool = True, force: bool = False,
                folder: ResultFolder | None = None) -> dict:
         """Write ``loop.json``, ``report.md`` and the figures into the folder ``out``
@@ -281,6 +318,9 @@ class Loop(LoopEstimator, ResultView):
         return paths
 
 
+@checked(case=CASE, roughness=NAMES, effect=Arg((str,), "a library effect's name",
+                                              optional=True),
+         strength=NUMBER, viscous=FLAG)
 def synth(case: DesignCase | str | Path | None = None, *,
           roughness: tuple[float, ...] = (4.0, 2.0), effect: str | None = None,
           strength: float | None = None, seed: int = 0, viscous: bool = False

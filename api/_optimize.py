@@ -7,10 +7,11 @@ import warnings
 from pathlib import Path
 from typing import Any
 
-from oilgap._evaluate import as_case, thermal_case, with_operating
+from oilgap._checks import CASE, NAME, NUMBER, OILS, checked
+from oilgap._evaluate import THERMAL, as_case, thermal_case, with_operating
 from oilgap._results_design import Optimization, thermal_line
 from oilgap.model.case import DesignCase
-from oilgap.model.errors import OilgapWarning
+from oilgap.model.errors import ArgumentError, OilgapWarning
 from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
@@ -18,6 +19,8 @@ from oilgap.optim.design import DesignProblem, compare_heating
 from oilgap.studies.settings import DesignLimits
 
 
+@checked(case=CASE, oil=NAME, oils=OILS, oil_temp_C=NUMBER, depth_m=NUMBER, thermal=THERMAL,
+         sea_temp_C=NUMBER)
 def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
@@ -62,9 +65,11 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     lim = kw.pop("limits", None)
     unknown = set(kw) - DesignLimits.names()
     if unknown:
-        raise TypeError(f"unexpected keyword(s): {', '.join(sorted(unknown))}")
+        raise ArgumentError(", ".join(sorted(unknown)), keywords[min(unknown)],
+                            f"optimize's keywords are {', '.join(sorted(DesignLimits.names()))}"
+                            ", limits and verbose")
     if lim is not None and kw:
-        raise TypeError(f"give limits or {', '.join(sorted(kw))}, not both")
+        raise ArgumentError("limits", lim, f"give limits or {', '.join(sorted(kw))}, not both")
     lim = lim if lim is not None else DesignLimits(**kw)
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution

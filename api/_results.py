@@ -22,6 +22,7 @@ import importlib
 from pathlib import Path
 from typing import Any
 
+from oilgap._checks import AX, FLAG, Arg, check_arg, checked
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import CaseEvaluation
 from oilgap.model.io.defaults import case_defaults as model_case_defaults
@@ -46,9 +47,10 @@ def lazy(module: str) -> Any:
 
 
 def new_axes(ax: Any = None) -> Any:
-    """``ax``, or the axes of a new pyplot figure (shown inline by Jupyter)."""
+    """``ax`` (checked: a matplotlib Axes), or the axes of a new pyplot figure (shown
+    inline by Jupyter)."""
     if ax is not None:
-        return ax
+        return check_arg("ax", ax, AX)
     _, ax = lazy("matplotlib.pyplot").subplots()
     return ax
 
@@ -111,6 +113,8 @@ class ResultView:
         """What the tool filled in: ``{field, value, unit, source}`` each."""
         return case_defaults(self.case) if self.case is not None else []
 
+    @checked(path=Arg((str, Path), "a file path (str or pathlib.Path) or None (the text "
+                      "only)", optional=True), force=FLAG)
     def to_json(self, path: str | Path | None = None, force: bool = False) -> str:
         """The JSON text of :meth:`to_dict` (floats to 6 significant digits, NaN as
         null); with ``path`` also written there atomically (an existing file only with

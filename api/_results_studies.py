@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
+from oilgap._checks import checked, choice
 from oilgap._results import ResultView, new_axes, raw_field
 from oilgap.model.case import DesignCase
 from oilgap.model.io.case_io import seed_case
@@ -140,6 +141,7 @@ class Pareto(StudyView):
         wrote = self.wrote()
         return "\n".join(lines + ([""] + wrote if wrote else []))
 
+    @checked(front=choice("gap", "inertia", optional=False))
     def plot(self, ax: Any = None, front: str = "gap") -> Any:
         """The study's figure of one front (``pareto_gap.png`` for ``front="gap"``:
         loss [W] against delta [mm]; ``pareto_inertia.png`` for ``"inertia"``: loss
@@ -224,6 +226,7 @@ class OilGrade(StudyView):
                       f"({'changed' if c['changed'] else 'unchanged'})", f"why: {c['why']}"]
         return "\n".join(lines + self.wrote())
 
+    @checked(kind=choice("grade", "envelope", optional=False))
     def plot(self, ax: Any = None, kind: str = "grade") -> Any:
         """The study's figure: ``kind="grade"`` the loss [W] against grade at the rated
         depth (``oil_grade_loss_vs_grade.png``), ``"envelope"`` the chosen grade's loss

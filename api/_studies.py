@@ -17,10 +17,12 @@ from typing import Any
 
 import pandas as pd
 
+from oilgap._checks import CASE, FLAG, GRID, MISSION, OILS, OUT, Arg, checked
 from oilgap._evaluate import as_case, oil_catalogue
 from oilgap._results_studies import OilGrade, Pareto, Smoothing
 from oilgap._results_sweep import Sweep, write_sweep_outputs
 from oilgap.model.case import DesignCase
+from oilgap.model.errors import InputError
 from oilgap.model.io.defaults import gamma_fields
 from oilgap.model.oils import Oil
 from oilgap.studies import pareto as pareto_study
@@ -57,6 +59,30 @@ def _note(folder: ResultFolder | None, mode: str, default: bool) -> None:
         folder.note(thermal_mode=mode, thermal_mode_default=bool(default))
 
 
+FOLDER = Arg(("ResultFolder",), "a ResultFolder the caller opened, or None", optional=True)
+"""The ``folder`` argument (the command line's)."""
+STUDY = dict(case=CASE, out=OUT, force=FLAG, folder=FOLDER)
+"""The arguments every study takes."""
+
+
+def resume_conflict(resume: bool, force: bool, retry_failed: bool = False,
+                    names: tuple[str, str, str] = ("resume", "force", "retry_failed")) -> None:
+    """Refuse continuing a stored sweep (``resume``, or ``retry_failed`` which implies it)
+    together with discarding it (``force``), naming both (the façade's and the command
+    line's spellings, ``names``).
+
+    Raises
+    ------
+    InputError
+        Both given.
+    """
+    if force and (resume or retry_failed):
+        other = names[0] if resume else names[2]
+        raise InputError(names[1], True, f"not with {other}: {other} continues the sweep "
+                         f"stored in the folder, {names[1]} discards it; choose one")
+
+
+@checked(**STUDY)
 def pareto(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
            force: bool = False, folder: ResultFolder | None = None, **keywords: Any) -> Pareto:
     """The gap-loss and loss-inertia Pareto fronts by epsilon-constraint sweeps
@@ -103,6 +129,7 @@ def _mission(mission: Any) -> Any:
     return mission
 
 
+@checked(**STUDY, mission=MISSION)
 def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = None,
               out: str | Path | None = None, force: bool = False,
               folder: ResultFolder | None = None, **keywords: Any) -> OilGrade:
@@ -142,6 +169,7 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     return OilGrade(r, base, _out(out))
 
 
+@checked(**STUDY)
 def smoothing(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
               force: bool = False, folder: ResultFolder | None = None,
               **keywords: Any) -> Smoothing:
@@ -179,6 +207,7 @@ def smoothing(case: DesignCase | str | Path | None = None, *, out: str | Path | 
     return Smoothing(r, base, settings.plateau_tol, _out(out))
 
 
+@checked(grid=GRID, **STUDY, resume=FLAG, oils=OILS, retry_failed=FLAG)
 def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None = None, *,
           out: str | Path | None = None, resume: bool = False, force: bool = False,
           oils: dict[str, Oil] | str | Path | None = None,
@@ -196,9 +225,11 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
         Folder of the resumable store, ``results.csv``/``.parquet``, ``sweep.png`` and
         ``summary.md``.
     resume, force : bool
-        Continue the sweep stored in ``out``, or discard it.
+        Continue the sweep stored in ``out``, or discard it (not both: refused naming
+        both, as ``--resume``/``--retry-failed`` with ``--force``).
     oils : path or dict, optional
-        Oils to look ``oil`` names up in.
+        Oils to look ``oil`` names up in, added to the built-in catalogue
+        (:func:`oilgap._evaluate.read_oils`).
     folder : ResultFolder, optional
         A result folder the caller already opened.
     **keywords
@@ -215,6 +246,7 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
     Sweep
     """
     settings, options = split_keywords(keywords, SweepSettings)
+    resume_conflict(resume, force, settings.retry_failed)
     resume = resume or settings.retry_failed
     name = Path(grid).name if isinstance(grid, (str, Path)) else "the grid"
     with result_folder("study sweep", out, force, resume, folder) as f:  # before reading
@@ -232,4 +264,4 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
     return view
 
 
-__all__ = ["oil_grade", "pareto", "result_folder", "smoothing", "sweep"]
+__all__ = ["oil_grade", "pareto", "result_folder", "resume_conflict", "smoothing", "sweep"]

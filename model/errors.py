@@ -45,6 +45,70 @@ class InputError(ValueError):
         super().__init__(f"{loc}{field} = {value!r} is not allowed; {allowed}")
 
 
+class ArgumentError(InputError, TypeError):
+    """A façade argument of a type the function does not take (``og.read_case(None)``):
+    an :class:`InputError` (exit 2 on the command line) that is also a ``TypeError``.
+
+    The message reads ``"{field} = {value} is not allowed; {allowed}"`` with the value
+    shown as its type, or its value when short (``a list of 2 int [1, 2]``).
+
+    Parameters
+    ----------
+    field : str
+        The argument's name (``"mission"``, ``"model"``).
+    value : Any
+        The value given (shown by :func:`describe`).
+    allowed : str
+        What the argument takes.
+    """
+
+    def __init__(self, field: str, value: Any, allowed: str):
+        super().__init__(field, _Shown(describe(value)), allowed)
+        self.value = value
+
+
+class _Shown(str):
+    """A value's description, quoted as is in a message."""
+
+    def __repr__(self) -> str:
+        return str(self)
+
+
+def describe(value: Any) -> str:
+    """A value in a few words for a message: short scalars as they are (``None``,
+    ``42``, ``'abc'``), containers and arrays by type and size.
+
+    Parameters
+    ----------
+    value : Any
+        Anything [-].
+
+    Returns
+    -------
+    str
+        E.g. ``"None"``, ``"42 (int)"``, ``"a list of 2 int [1, 2]"``,
+        ``"a numpy array of shape (2, 2)"``, ``"a dict with keys ['a']"``.
+    """
+    kind = type(value).__name__
+    if value is None:
+        return "None"
+    if isinstance(value, (bool, int, float, complex, str, bytes)):
+        text = repr(value)
+        return f"{text[:60]}{'...' if len(text) > 60 else ''} ({kind})"
+    shape = getattr(value, "shape", None)
+    if isinstance(shape, tuple):
+        return f"a {type(value).__module__.split('.')[0]} {kind} of shape {shape}"
+    if isinstance(value, dict):
+        keys = list(value)[:4]
+        return f"a dict with keys {keys!r}{'...' if len(value) > 4 else ''}"
+    if isinstance(value, (list, tuple, set, frozenset)):
+        kinds = sorted({type(v).__name__ for v in value})
+        text = repr(value)
+        return (f"a {kind} of {len(value)} {'/'.join(kinds) or 'items'} "
+                f"{text[:40]}{'...' if len(text) > 40 else ''}")
+    return f"a {kind}"
+
+
 class NotFittedError(InputError):
     """An estimator used before its ``fit``: names it and what to call first.
 

@@ -30,12 +30,13 @@ from __future__ import annotations
 import csv
 import io
 import math
-from dataclasses import dataclass
+import warnings
+from dataclasses import dataclass, replace
 from importlib import resources
 from pathlib import Path
 
 from . import oil_properties as op
-from .errors import InputError, check_positive, check_range
+from .errors import InputError, OilgapWarning, check_positive, check_range
 from .fluids import Fluid, builtin_gases, gas_key
 from .io.inputs import cell_for_message, check_physical, header_error, read_input_text
 from .units import ZERO_CELSIUS_K, celsius_to_kelvin, m2_s_to_cst, per_gpa_to_per_pa
@@ -260,30 +261,111 @@ def read_oils_csv(path: str | Path, field: str = "oils file") -> dict[str, Oil]:
     for i, row in enumerate(reader, start=2):
         rwhere = f"{where} line {i}"
         name = (row["oil"] or "").strip()
-        if not name:
-            raise InputError("oil", name, "a non-empty name is required", rwhere)
-        vals = {}
-        for c in OIL_COLUMNS[1:] + OPTIONAL_OIL_COLUMNS:
-            if c not in cols:
-                continue
-            raw = row[c]
-            if c in OPTIONAL_OIL_COLUMNS and (raw is None or raw.strip() == ""):
-                continue
-            if c == "polymer_thickened":
-                vals[c] = _flag(c, raw, rwhere)
-                continue
-            vals[c] = check_positive(c, _num(raw), rwhere) if c != "barus_1_GPa" else \
-                _nonneg(c, raw, rwhere)
         key = normalize_oil_name(name)
-        if key in oils:
+        if name and key in oils:
             raise InputError("oil", name, "names must be unique", rwhere)
-        barus = per_gpa_to_per_pa(vals["barus_1_GPa"]) if "barus_1_GPa" in vals \
-            else op.BARUS_MINERAL_OIL_1_PA
-        oils[key] = Oil(name, vals["nu40_cSt"], vals["nu100_cSt"], vals["density_kg_m3"],
-                        barus, vals.get("polymer_thickened", False))
+        oils[key] = _oil_row(name, {c: row[c] for c in cols if c != "oil"}, rwhere)
     if not oils:
         raise InputError(field, str(path), "must hold at least one oil")
     return oils
+
+
+def _oil_row(name: str, row: dict, where: str) -> Oil:
+    """One oil from a row of its properties (CSV cells or numbers); keys as the CSV's."""
+    if not name:
+        raise InputError("oil", name, "a non-empty name is required", where)
+    missing = [c for c in OIL_COLUMNS[1:] if c not in row]
+    if missing:
+        raise InputError(missing[0], None, f"required for each oil ({', '.join(OIL_COLUMNS[1:])}"
+                         f"; optional {', '.join(OPTIONAL_OIL_COLUMNS)})", where)
+    vals = {}
+    for c in OIL_COLUMNS[1:] + OPTIONAL_OIL_COLUMNS:
+        raw = row.get(c)
+        if c in OPTIONAL_OIL_COLUMNS and (raw is None or str(raw).strip() == ""):
+            continue
+        if c == "polymer_thickened":
+            vals[c] = raw if isinstance(raw, bool) else _flag(c, raw, where)
+            continue
+        vals[c] = check_positive(c, _num(raw), where) if c != "barus_1_GPa" else \
+            _nonneg(c, raw, where)
+    barus = per_gpa_to_per_pa(vals["barus_1_GPa"]) if "barus_1_GPa" in vals \
+        else op.BARUS_MINERAL_OIL_1_PA
+    return Oil(name, vals["nu40_cSt"], vals["nu100_cSt"], vals["density_kg_m3"],
+               barus, vals.get("polymer_thickened", False))
+
+
+def oils_from_dict(table: dict, field: str = "oils") -> dict[str, Oil]:
+    """Oils given as a dict: ``{name: Oil}`` or ``{name: {nu40_cSt, nu100_cSt,
+    density_kg_m3[, barus_1_GPa][, polymer_thickened]}}`` (the columns of an oils CSV,
+    checked as :func:`read_oils_csv` checks its rows).
+
+    Parameters
+    ----------
+    table : dict
+        Oil name -> Oil, or its properties: nu [cSt], density at 15 degC [kg/m^3],
+        Barus coefficient [1/GPa].
+    field : str
+        The argument that gave the table, for messages [-].
+
+    Returns
+    -------
+    dict of str to Oil
+        Keyed by :func:`normalize_oil_name`.
+
+    Raises
+    ------
+    InputError
+        A name that is not a non-empty string, an entry neither an Oil nor a dict, an
+        unknown or missing key, a bad value, two names that are the same oil.
+    """
+    oils: dict[str, Oil] = {}
+    for name, entry in table.items():
+        where = f"{field}[{name!r}]"
+        if not isinstance(name, str) or not name.strip():
+            raise InputError(f"{field} key", name, "an oil name (a non-empty str)")
+        if isinstance(entry, Oil):
+            oil = entry
+        elif isinstance(entry, dict):
+            unknown = sorted(set(entry) - set(OIL_COLUMNS[1:] + OPTIONAL_OIL_COLUMNS))
+            if unknown:
+                raise InputError(str(unknown[0]), entry[unknown[0]], "an oil's keys are "
+                                 f"{', '.join(OIL_COLUMNS[1:] + OPTIONAL_OIL_COLUMNS)}", where)
+            oil = _oil_row(name.strip(), entry, where)
+        else:
+            raise InputError(where, type(entry).__name__, "an Oil or a dict of its "
+                             "properties {nu40_cSt, nu100_cSt, density_kg_m3}")
+        key = normalize_oil_name(name)
+        if key in oils:
+            raise InputError(field, name, "names must be unique (case, spaces and ISO ignored)")
+        oils[key] = oil
+    if not oils:
+        raise InputError(field, {}, "must hold at least one oil")
+    return oils
+
+
+def with_builtin(user: dict[str, Oil], field: str = "oils") -> dict[str, Oil]:
+    """A user's oils added to the built-in ISO VG catalogue: the user's row wins on a
+    name clash, with an OilgapWarning when its properties differ from the built-in's.
+
+    Parameters
+    ----------
+    user : dict of str to Oil
+        The user's oils, keyed by :func:`normalize_oil_name`.
+    field : str
+        The option or argument that gave them, for the warning [-].
+
+    Returns
+    -------
+    dict of str to Oil
+        The built-in oils, then the user's.
+    """
+    cat = builtin_oils()
+    clash = [o.name for k, o in user.items() if k in cat and replace(o, name=cat[k].name) != cat[k]]
+    if clash:
+        warnings.warn(OilgapWarning(
+            f"{field}: {', '.join(clash)} replace{'s' if len(clash) == 1 else ''} the "
+            "built-in oil(s) of the same name (the table's values are used)"), stacklevel=3)
+    return {**cat, **user}
 
 
 def _num(raw):

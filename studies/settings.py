@@ -21,7 +21,13 @@ from collections.abc import Sequence
 from dataclasses import dataclass, fields
 from typing import Any
 
-from oilgap.model.errors import InputError, check_finite, check_positive, check_range
+from oilgap.model.errors import (
+    ArgumentError,
+    InputError,
+    check_finite,
+    check_positive,
+    check_range,
+)
 from oilgap.model.thermal_modes import THERMAL_MODES
 
 # ------------------------------------------------------------------------- the defaults
@@ -129,15 +135,16 @@ class RunOptions(_Record):
         Progress line on stderr (None: when stderr is a terminal).
     chunk_size : int, optional
         Fixed rows per task of a sweep (None: chunks sized by time).
-    chunk_seconds : float
-        Target wall time of a sweep's chunk on its worker [s] (> 0).
+    chunk_seconds : float, optional
+        Target wall time of a sweep's chunk on its worker [s] (> 0; None:
+        :data:`DEFAULT_CHUNK_SECONDS`). Not with ``chunk_size`` (refused naming both).
     """
 
     workers: int | None = None
     scheduler: str | None = None
     progress: bool | None = None
     chunk_size: int | None = None
-    chunk_seconds: float = DEFAULT_CHUNK_SECONDS
+    chunk_seconds: float | None = None
 
     def __post_init__(self):
         where = "trade study"
@@ -145,7 +152,13 @@ class RunOptions(_Record):
             _set(self, workers=_integer("workers", self.workers, 1, where))
         if self.chunk_size is not None:
             _set(self, chunk_size=_integer("chunk_size", self.chunk_size, 1, where))
-        _set(self, chunk_seconds=check_positive("chunk_seconds", self.chunk_seconds, where))
+        if self.chunk_seconds is not None:
+            _set(self, chunk_seconds=check_positive("chunk_seconds", self.chunk_seconds,
+                                                    where))
+            if self.chunk_size is not None:
+                raise InputError("chunk_size", self.chunk_size, "not with chunk_seconds: a "
+                                 "fixed number of rows per task, or chunks sized by time; "
+                                 "choose one", where)
         if self.progress is not None:
             _set(self, progress=bool(self.progress))
 
@@ -321,7 +334,13 @@ class SmoothingSettings(_Record):
         if not (isinstance(tol, (int, float)) and 0.0 < tol < 1.0):
             raise InputError("plateau_tol", tol, "must lie in (0, 1)", where)
         T = self.T_values
-        _set(self, T_values=None if T is None else tuple(float(t) for t in T))
+        try:
+            T = None if T is None else tuple(check_finite("T_values", t, where) for t in T)
+        except (TypeError, ValueError) as e:  # not a sequence, or an item not a number
+            if isinstance(e, InputError):
+                raise
+            raise InputError("T_values", T, "a sequence of numbers >= 1", where) from None
+        _set(self, T_values=T)
         _set(self, thermal=_thermal(self.thermal, FIT_THERMAL_MODES, where),
              plateau_tol=float(tol),
              resistance_K_W=check_finite("resistance_K_W", self.resistance_K_W, where),
@@ -366,8 +385,9 @@ def split_keywords(keywords: dict[str, Any], settings_type: type,
 
     Raises
     ------
-    TypeError
-        A keyword neither record has, or one given beside its record.
+    ArgumentError
+        A keyword neither record has, one given beside its record, a record of another
+        type (an InputError that is also a TypeError).
     """
     kw = dict(keywords)
     settings, options = kw.pop("settings", None), kw.pop("options", None)
@@ -375,13 +395,22 @@ def split_keywords(keywords: dict[str, Any], settings_type: type,
     run = RunOptions.names() if run_options else frozenset()
     unknown = set(kw) - own - run
     if unknown or (options is not None and not run_options):
-        raise TypeError(f"unexpected keyword(s): {', '.join(sorted(unknown) or ['options'])}")
+        names = sorted(unknown) or ["options"]
+        raise ArgumentError(", ".join(names), kw.get(names[0], options), "the keywords are "
+                            f"{', '.join(sorted(own | run))}, settings"
+                            + (", options" if run_options else ""))
     s_kw = {k: v for k, v in kw.items() if k in own}
     r_kw = {k: v for k, v in kw.items() if k in run}
     if settings is not None and s_kw:
-        raise TypeError(f"give settings or {', '.join(sorted(s_kw))}, not both")
+        raise ArgumentError("settings", settings, f"give settings or "
+                            f"{', '.join(sorted(s_kw))}, not both")
     if options is not None and r_kw:
-        raise TypeError(f"give options or {', '.join(sorted(r_kw))}, not both")
+        raise ArgumentError("options", options, f"give options or {', '.join(sorted(r_kw))}, "
+                            "not both")
+    if settings is not None and not isinstance(settings, settings_type):
+        raise ArgumentError("settings", settings, f"a {settings_type.__name__}")
+    if options is not None and not isinstance(options, RunOptions):
+        raise ArgumentError("options", options, "a RunOptions")
     s = settings if settings is not None else settings_type(**s_kw)
     o = options if options is not None else (RunOptions(**r_kw) if run_options else None)
     return s, o

@@ -213,6 +213,7 @@ def _dispatch(args) -> int:
     """Run the command; every failure is one line on stderr and an exit code."""
     try:
         command = importlib.import_module(COMMANDS[args.command])
+        _resolve_oils(args)
         code = int(command.run(args) or 0)
         sys.stdout.flush()  # a closed pipe is found here, not at the interpreter's exit
         return code
@@ -240,6 +241,16 @@ def _dispatch(args) -> int:
         # "SystemError: ... returned a result with an exception set")
         print("oilgap: interrupted", file=sys.stderr)
         return 130
+
+
+def _resolve_oils(args: argparse.Namespace) -> None:
+    """``--oils FILE`` read once, added to the built-in catalogue (or alone with
+    ``--oils-only``), for the command to pass on as its ``oils``."""
+    if getattr(args, "oils_only", False) and not args.oils:
+        raise InputError("--oils-only", True, "needs --oils FILE (the table to use alone)")
+    if getattr(args, "oils", None):
+        from oilgap._evaluate import read_oils
+        args.oils = read_oils(args.oils, only=args.oils_only, field="--oils")
 
 
 def _from_interrupt(e: BaseException) -> bool:

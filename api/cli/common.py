@@ -18,6 +18,10 @@ def load_case(args: argparse.Namespace) -> DesignCase:
     """The case named on the command line (or the seed), with --oil/--oils, --temp-c and
     --depth-m applied (:func:`oilgap._evaluate.with_operating`). Shared by the
     subcommands that take a CASE."""
+    if args.case and getattr(args, "smoothed", False):
+        raise InputError("--smoothed", True, f"not with CASE {args.case!r}: --smoothed picks "
+                         "the seed joint smoothed with epoxy (T = 2) when no CASE is given; "
+                         "drop one (a case's roughness is its [region1] T1_mm..T4_mm)")
     case = read_case_toml(args.case) if args.case else seed_case(getattr(args, "smoothed",
                                                                          False))
     return with_operating(case, getattr(args, "oil", None), getattr(args, "oils", None),

@@ -133,6 +133,9 @@ def add_evaluate(sub) -> None:
     p.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
     p.add_argument("--oil", help="oil name (overrides the case), e.g. VG22")
     p.add_argument("--oils", metavar="OILS.csv", help="oils table to look --oil up in")
+    p.add_argument("--oils-only", action="store_true", help="the --oils table alone "
+                   "(default: its oils are added to the built-in ISO VG catalogue, its row "
+                   "winning a name clash with a warning)")
     p.add_argument("--temp-c", type=finite_float, help="oil temperature [degC]")
     p.add_argument("--depth-m", type=finite_float, help="sea depth [m]")
     p.add_argument("--laminar-law", choices=("couette", "bilgen-boulos"),
@@ -160,6 +163,9 @@ def add_optimize(sub) -> None:
     p.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
     p.add_argument("--oil", help="oil name (overrides the case), e.g. VG22")
     p.add_argument("--oils", metavar="OILS.csv", help="oils table to look --oil up in")
+    p.add_argument("--oils-only", action="store_true", help="the --oils table alone "
+                   "(default: its oils are added to the built-in ISO VG catalogue, its row "
+                   "winning a name clash with a warning)")
     p.add_argument("--temp-c", metavar="X", help="oil temperature [degC]")
     p.add_argument("--depth-m", metavar="X", help="sea depth [m]")
     p.add_argument("--torque-min-nm", metavar="X",
@@ -313,6 +319,9 @@ def _add_sweep(ss) -> None:
     s.add_argument("grid", metavar="GRID.csv", help="the grid: CSV, or Parquet (.parquet)")
     s.add_argument("--case", metavar="CASE.toml", help="base case (default: seed)")
     s.add_argument("--oils", metavar="OILS.csv", help="oils table to look oil names up in")
+    s.add_argument("--oils-only", action="store_true", help="the --oils table alone "
+                   "(default: its oils are added to the built-in ISO VG catalogue, its row "
+                   "winning a name clash with a warning)")
     s.add_argument("--mode", choices=("evaluate", "optimize"), default="evaluate")
     s.add_argument("--out", metavar="DIR", help="output folder (default out/sweep/)")
     again = s.add_mutually_exclusive_group()
@@ -324,13 +333,14 @@ def _add_sweep(ss) -> None:
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
     s.add_argument("--chunk-size", type=positive_int, help="fixed rows per task (default: "
                    "chunks sized by time, --chunk-seconds)")
-    s.add_argument("--chunk-seconds", type=finite_float, default=DEFAULT_CHUNK_SECONDS,
+    s.add_argument("--chunk-seconds", type=finite_float, default=None,
                    metavar="S", help="target time of a chunk on a worker [s] (default "
                    f"{DEFAULT_CHUNK_SECONDS:g}): smooth "
                    "progress, and Ctrl-C loses at most one chunk per worker")
     _scheduler(s)
     s.add_argument("--retry-failed", action="store_true",
-                   help="recompute points stored as failed (implies --resume)")
+                   help="recompute points stored as failed (implies --resume; not with "
+                   "--force)")
     add_thermal_argument(s)
     _progress(s)
     s.set_defaults(command="study sweep")
@@ -346,11 +356,15 @@ def add_loop(sub) -> None:
         description="Close the loop with measured data: validate DATA (CSV or Parquet), take "
         "away the oil-free baseline, fit the seed's model without and with T (Table 3), "
         "search the residual for a missing effect from the library (sparse regression, "
-        "leave-one-run-out cross-validation), refit and report the errors before and after. "
+        "cross-validation over whole runs: leave-one-run-out up to 10 oil runs, grouped "
+        "10-fold above), refit and report the errors before and after. "
         "Writes DIR/loop.json, DIR/report.md and figures.")
     p.add_argument("data", metavar="DATA.csv", help="measured runs (CSV, or .parquet)")
     p.add_argument("--oils", metavar="OILS.csv", help="oils table oil,nu40_cSt,nu100_cSt,"
                    "density_kg_m3 (default: the built-in ISO VG catalogue)")
+    p.add_argument("--oils-only", action="store_true", help="the --oils table alone "
+                   "(default: its oils are added to the built-in ISO VG catalogue, its row "
+                   "winning a name clash with a warning)")
     p.add_argument("--case", metavar="RIG.toml", help="rig geometry (default: the seed joint)")
     p.add_argument("--out", metavar="DIR", default="loop_out",
                    help="output directory (default: loop_out)")
@@ -365,8 +379,9 @@ def add_loop(sub) -> None:
                    "branches = Eq. 6's branches, each C_k (delta/R)^alpha_k Re^beta_k freed "
                    "where the data identify it")
     p.add_argument("--cv-by", metavar="COLUMN", default="run",
-                   help="leave-one-group-out validation over the values of this column of "
-                   "DATA (default: run; e.g. gap_mm, oil)")
+                   help="cross-validation groups: the values of this column of DATA, each "
+                   "held out whole (default: run; e.g. gap_mm, oil; more than 10 groups: "
+                   "grouped 10-fold)")
     p.add_argument("--no-figures", action="store_true", help="skip the figures")
     p.set_defaults(command="loop")
 
@@ -394,7 +409,13 @@ def add_predict(sub) -> None:
                    "effects)")
     p.add_argument("--oils", metavar="OILS.csv", help="oils table for fluids the model does "
                    "not hold")
+    p.add_argument("--oils-only", action="store_true", help="the --oils table alone "
+                   "(default: its oils are added to the built-in ISO VG catalogue, its row "
+                   "winning a name clash with a warning)")
     p.add_argument("--force", action="store_true", help="overwrite an existing --out")
+    p.add_argument("--allow-incomplete", action="store_true", help="use a loop.json whose "
+                   "folder is still marked INCOMPLETE (a loop that failed or was killed), "
+                   "with a warning; refused otherwise")
     p.set_defaults(command="predict")
 
 

@@ -50,7 +50,8 @@ def _summary(table: pd.DataFrame) -> list[str]:
 def run(args: argparse.Namespace) -> int:
     """Predict the rows of DATA and write them with the predictions; returns the exit code."""
     out = check_out_file(args.out, args.force, suffixes=OUT_SUFFIXES)
-    res = predict(args.model, args.data, stage=args.stage, oils=args.oils)
+    res = predict(args.model, args.data, stage=args.stage, oils=args.oils,
+                  allow_incomplete=args.allow_incomplete)
     write_table(res, out)
     print(f"predicted {res.attrs['predicted']} of {len(res)} rows ({args.stage}: "
           f"{', '.join(res.attrs['columns'])}); wrote {out}")

@@ -16,6 +16,7 @@ from oilgap.cli.common import show, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InputError
 from oilgap.studies.settings import SmoothingSettings
+from oilgap.studies.smoothing.fit import check_fixed_resistance
 from oilgap.studies.user_case import is_seed_case
 
 
@@ -48,6 +49,9 @@ def run(args: argparse.Namespace) -> int:
     seed = is_seed_case(case)
     T = (_t_values(args) if seed else None if args.t_max is None and args.t_min == 1.0
          and args.t_step == 0.05 else _t_values(args, float(case.region1.roughness)))
+    if seed:
+        check_fixed_resistance(args.method, args.thermal, args.r_th_k_per_w,
+                               ("--r-th-k-per-w", "--method"))
     out = study_out(args, "smoothing")
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
         settings = SmoothingSettings(method=args.method, thermal=args.thermal,

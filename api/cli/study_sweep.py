@@ -9,9 +9,10 @@ import argparse
 import logging
 import sys
 
-from oilgap._studies import sweep
+from oilgap._studies import resume_conflict, sweep
 from oilgap.cli.common import show, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
+from oilgap.model.errors import InputError
 from oilgap.studies.grid.runner import SweepInterrupted
 from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.settings import RunOptions, SweepSettings
@@ -26,13 +27,28 @@ def run(args: argparse.Namespace) -> int:
     says how many points are stored and how to continue (exit 130); an unfinished sweep
     is never continued without ``--resume``."""
     out = study_out(args, "sweep")
+    resume_conflict(args.resume, args.force, args.retry_failed,
+                    ("--resume", "--force", "--retry-failed"))
+    if args.chunk_size is not None and args.chunk_seconds is not None:
+        raise InputError("--chunk-size", args.chunk_size, "not with --chunk-seconds: a fixed "
+                         "number of rows per task, or chunks sized by time; choose one")
     try:
         with out_folder(args, out, resume=args.resume or args.retry_failed) as folder:
             return _sweep(args, out, folder)
     except SweepInterrupted as e:
-        print(f"oilgap: interrupted: {e.saved} of {e.total} points saved in {e.out_dir}; "
-              f"{RESUME_HINT}", file=sys.stderr)
+        print(interrupted_line(e), file=sys.stderr)
         return 130
+
+
+def interrupted_line(e: SweepInterrupted) -> str:
+    """Ctrl-C's one line: how many points are stored and how to continue; plainly
+    "nothing was saved" when no point had finished."""
+    if e.saved == 0:
+        return (f"oilgap: interrupted: nothing was saved (none of the {e.total} points had "
+                f"finished); {e.out_dir} is as it was before the run: rerun the same command "
+                "to start again")
+    return f"oilgap: interrupted: {e.saved} of {e.total} points saved in {e.out_dir}; " \
+        f"{RESUME_HINT}"
 
 
 def _sweep(args: argparse.Namespace, out, folder: ResultFolder) -> int:

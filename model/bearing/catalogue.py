@@ -293,6 +293,23 @@ def _geometry(table: dict, where: str, used: list) -> dict:
             "ball_diameter_m": dw * MM_TO_M, "static_load_rating_N": c0}
 
 
+MODEL_KEYS = {"palmgren": ("f0",), "skf": ("drag", "mu_ehl", "mu_bl", "k_rs")}
+"""The ``[bearing]`` keys only one friction model reads [-]: Palmgren's f_0; SKF's drag
+terms, sliding coefficients and replenishment constant."""
+
+
+def _model_keys(table: dict, model: str, where: str) -> None:
+    """A key the chosen model does not read is refused naming the key and the model."""
+    for owner, keys in MODEL_KEYS.items():
+        if model == owner or model not in MODEL_KEYS:
+            continue
+        for key in keys:
+            if key in table:
+                raise InputError(key, table[key], f"only with model = '{owner}'; the model is "
+                                 f"{model!r}, which has no {key} (remove the key, or set "
+                                 f"model = '{owner}')", where)
+
+
 def _choice_key(table, key, default, used):
     if key not in table:
         used.append(key)
@@ -343,6 +360,7 @@ def bearing_spec_from(table: dict, where: str = "[bearing]") -> BearingSpec:
     used: list[str] = []
     geo = _geometry(table, where, used)
     model = _choice_key(table, "model", "skf", used)
+    _model_keys(table, model, where)
     kind = _choice_key(table, "type", KINDS[0], used)
     level = _number(table, "oil_level_mm", where, None, [], True)
     submerged = _choice_key(table, "submerged", level is None, used)

@@ -39,7 +39,7 @@ from ..case import (
 from ..duty_cycle import DutyCycle
 from ..errors import InputError, OilgapWarning, check_finite, check_range
 from ..fluids import FLUID_KINDS, Fluid, GasFluid, builtin_gases, gas_key, read_fluid_table
-from ..oils import Oil, get_oil, read_oils_csv
+from ..oils import Oil, get_oil, read_oils_csv, with_builtin
 from ..skin_friction import BRANCH_KEYS, FrictionLaw, check_friction_ranges
 from ..units import MM_TO_M, celsius_to_kelvin
 from .case_bearing import BEARING_TABLE, bearing_from_doc
@@ -261,7 +261,7 @@ def _mineral_from(od: dict, base_dir: Path, flag: bool | None) -> tuple[Oil, str
     if "oils_csv" in od:
         p = Path(str(od["oils_csv"]))
         p = p if p.is_absolute() else base_dir / p
-        catalogue = read_oils_csv(p, "oil.oils_csv")
+        catalogue = with_builtin(read_oils_csv(p, "oil.oils_csv"), "oil.oils_csv")
         oils_csv = str(p)
     oil_name = str(od.get("name", "VG22"))
     if not oil_name.strip():

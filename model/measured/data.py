@@ -47,7 +47,7 @@ import pandas as pd
 from ..errors import InputError
 from ..fluids import warn_if_untrusted_state
 from ..io.tables import read_table, text_codes
-from ..oils import Oil, normalize_oil_name, read_oils_csv
+from ..oils import Oil, normalize_oil_name, read_oils_csv, with_builtin
 from ..units import ZERO_CELSIUS_K, cst_to_m2_s, m_to_mm, mm_to_m
 from .kinematics import (
     SPEED_DERIVATIVE_WINDOW_S,
@@ -100,7 +100,7 @@ def load_measured(path: str | Path, oils: str | Path | dict[str, Oil] | None = N
     MeasuredData
         As :func:`validate`.
     """
-    cat = read_oils_csv(oils) if isinstance(oils, (str, Path)) else oils
+    cat = with_builtin(read_oils_csv(oils), "oils") if isinstance(oils, (str, Path)) else oils
     return validate(read_table(path), cat, str(path), purpose)
 
 
@@ -303,7 +303,7 @@ def cv_groups(o: pd.DataFrame, gap1_m: np.ndarray, cv_by: str, source: str = "da
                          "least 2", source)
     if k > MAX_CV_GROUPS:
         raise InputError("cv_by", cv_by, f"has {k} groups among the oil rows; at most "
-                         f"{MAX_CV_GROUPS} (one fold each): round or bin the column", source)
+                         f"{MAX_CV_GROUPS}: round or bin the column", source)
     return np.asarray(codes, dtype=np.int64).ravel(), names
 
 

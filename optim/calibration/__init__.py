@@ -10,7 +10,9 @@ Stages (each its own module, called in this order by :class:`LoopEstimator`):
 * :mod:`.ranges`: the physical range of each calibrated parameter; findings.
 * :mod:`.residuals`: noise level and structure of a residual.
 * :mod:`.candidates`: library effects as candidate regression columns.
-* :mod:`.selection`: sign-constrained lasso, box least squares, leave-one-group-out
+* :mod:`.folds`: the cross-validation folds (whole groups; one per group up to 10,
+  grouped 10-fold above) and the scheme stated in the report.
+* :mod:`.selection`: sign-constrained lasso, box least squares, cross-validation
   selector, forward selection with backward pruning.
 * :mod:`.steps`: the log of the effect search, one record per decision.
 * :mod:`.search`: screening, selection and refit, repeated without implausible
@@ -24,6 +26,7 @@ Stages (each its own module, called in this order by :class:`LoopEstimator`):
 from .baseline import BaselineFit, fit_baselines
 from .candidates import Candidates, exact_form_variants, screen_candidates
 from .estimator import LoopEstimator
+from .folds import MAX_FOLDS, cv_folds, cv_scheme, grouped_folds
 from .forward import EXACT_FORMS, ForwardModel, sample_geometry
 from .least_squares import (
     ModelFit,
@@ -76,6 +79,7 @@ from .steps import SelectionStep
 from .uncertainty import baseline_variance, effect_ci, jackknife_ci, parameter_ci
 
 __all__ = [
+    "MAX_FOLDS", "cv_folds", "cv_scheme", "grouped_folds",
     "BASES", "EQ6_PARAMS", "LOG_PARAMS", "PARAM_LIMITS", "PARAM_RANGES", "ParamRange",
     "Finding", "EffectSearch", "SearchOptions", "check_alpha", "cv_groups", "evidence_trial",
     "fluid_facts", "fold_spec", "held_values", "parameter_findings", "search_effects",

@@ -21,7 +21,8 @@ stages of this package in order:
    the noise level from successive differences (:mod:`.residuals`).
 5. Effect search over the library of :mod:`oilgap.model.effects` (:mod:`.search`):
    candidate columns (:mod:`.candidates`), the sign-constrained lasso path and
-   leave-one-group-out forward selection (:mod:`.selection`): each effect must
+   cross-validated forward selection (:mod:`.selection`; folds of whole runs,
+   leave-one-run-out up to 10 runs, grouped 10-fold above: :mod:`.folds`): each effect must
    lower the held-out RMSE by the margin (default 10 %), and the effects kept
    must together explain at least half of the held-out structure above the
    noise; otherwise the answer is "no missing effect found", and structure
@@ -32,7 +33,7 @@ stages of this package in order:
 6. Refit with the accepted effects (nonlinear, all parameters), errors before
    and after in-sample and on held-out groups (:mod:`.refit`); a fold that
    cannot identify a parameter holds it at its all-data value.
-7. Each parameter and coefficient with a jackknife-over-groups 95 % confidence
+7. Each parameter and coefficient with a jackknife-over-folds 95 % confidence
    interval (C and the scale in log space), widened by the baseline's error
    (:mod:`.uncertainty`).
 8. Tables and records (:mod:`.results`).
@@ -76,6 +77,7 @@ from oilgap.model.regions import joint_geometry
 
 from .baseline import BaselineFit, fit_baselines
 from .film_wall import case_film_wall, wall_identifiability
+from .folds import cv_scheme
 from .forward import ForwardModel, oil_state_record
 from .least_squares import ModelFit, check_alpha, fit_model, identifiability, initial_guess
 from .model_io import FittedModel
@@ -128,9 +130,12 @@ class LoopEstimator:
     max_effects : int
         Most effects accepted together (default 3).
     cv : {"one-step", "full"}
-        How each leave-one-run-out fold is refitted for the reported held-out
+        How each cross-validation fold is refitted for the reported held-out
         errors and the jackknife: one Gauss-Newton step from the all-runs fit
-        (default, fast) or a complete nonlinear refit.
+        (default, fast) or a complete nonlinear refit. The folds hold whole
+        groups: one per group up to :data:`.folds.MAX_FOLDS` groups
+        (leave-one-run-out), grouped 10-fold cross-validation above
+        (:mod:`.folds`).
     base : {"eq6", "power-law", "branches"}
         Base model: the design tool's Eq. 6 regime structure (smooth form, the
         case's laminar law) times one scale and T^gamma (default), a free
@@ -138,8 +143,8 @@ class LoopEstimator:
         its own C_k, alpha_k, beta_k, freed only where the data identify them
         (:func:`.spec.branch_identifiability`).
     cv_by : str
-        Column of the data whose values are the groups of leave-one-group-out
-        validation (default ``"run"``; e.g. ``"gap_mm"``, ``"oil"``).
+        Column of the data whose values are the groups of the cross-validation
+        (default ``"run"``; e.g. ``"gap_mm"``, ``"oil"``).
 
     Attributes
     ----------
@@ -152,6 +157,10 @@ class LoopEstimator:
         Published law (gamma = 0), calibrated Eq. 8, final law.
     calibration_, calibration_after_ : dict
         Eq. 8 parameters without and with the effects [-]; ``*_ci_`` their 95 % intervals.
+    cv_scheme_ : dict
+        The cross-validation folds (:func:`.folds.cv_scheme`): leave-one-group-out
+        or grouped k-fold, groups, folds, the rule; ``cross_validation`` in
+        ``loop.json``.
     identifiability_ : dict
         Parameter -> statement.
     effects_ : list of EffectResult
@@ -212,6 +221,7 @@ class LoopEstimator:
         # 1. oil-free baseline; oil-run samples with nu and rho
         self.baselines_, s = self._load_samples(data)
         self.samples_ = s
+        self.cv_scheme_ = cv_scheme(s)  # whole groups per fold, at most MAX_FOLDS folds
         # 2. forward model; 3. Table 3: without T (published law, gamma = 0), with T (base)
         model = self.forward_model_ = ForwardModel(s, case, data.oils,
                                                    film_wall=case_film_wall(case))
@@ -453,6 +463,7 @@ class LoopEstimator:
             "table3": self.table3_,
             "per_run_detail": self.per_run_,
             "candidates": self.candidates_,
+            "cross_validation": dict(self.cv_scheme_),
             "selection": {"margin": self.margin, "min_explained": self.min_explained,
                           "noise_W": self.noise_W_, "heldout_linearised_W": self.heldout_linear_,
                           "steps": [s.to_dict() for s in self.selection_log_],

@@ -185,6 +185,7 @@ class ForwardModel:
         self._lags: dict[float, OilState] = {}  # thermal-lag tau -> the lagged oil state
         self._features: dict[tuple, np.ndarray] = {}  # (effect, lag state key) -> feature
         self._film_start: dict[float, np.ndarray] = {}  # lag -> last film temperature [K]
+        self._film_rise: dict[float, np.ndarray] = {}  # lag -> its rise over the base [K]
 
     @property
     def film_theory_K_W(self) -> float:
@@ -219,6 +220,7 @@ class ForwardModel:
         sub.measured = measured_oil_state(celsius_to_kelvin(s.temp_C), s.nu_m2_s,
                                           s.density_kg_m3)
         sub._shapes, sub._lags, sub._features, sub._film_start = {}, {}, {}, {}
+        sub._film_rise = {}
         return sub
 
     def region_powers(self, law: FrictionLaw, omega=None, nu=None, rho=None
@@ -301,11 +303,26 @@ class ForwardModel:
             return sum(region_power(r, s.omega, nu * q, rho, law)
                        for r, q in zip(self.geometry.regions, ratios, strict=True))
 
-        start = self._film_start.get(tau)
         film = film_heated_oil_state(state, c, power_at, self.oil_properties,
-                                     None if start is None else start)
+                                     self._film_warm_start(tau, state))
         self._film_start[tau] = film.temp_film_K  # warm start of the next iteration's film
+        self._film_rise[tau] = film.temp_film_K - state.temp_lagged_K
+        for d in (self._film_start, self._film_rise):  # the last few lags only
+            while len(d) > SHAPE_CACHE:
+                d.pop(next(iter(d)))
         return film
+
+    def _film_warm_start(self, tau: float, state: OilState) -> np.ndarray | None:
+        """A film temperature near the root at lag ``tau`` [K]: the last solution at this
+        lag, else the base plus the film rise of the nearest lag solved (each fit iteration
+        and each cross-validation fold moves the lag; the rise hardly moves with it). The
+        film solver keeps a warm start only if its Newton steps converge to 1e-11 K."""
+        if tau in self._film_start:
+            return self._film_start[tau]
+        if not self._film_rise:
+            return None
+        near = min(self._film_rise, key=lambda t: abs(t - tau))
+        return state.temp_lagged_K + self._film_rise[near]
 
     def _bare_context(self, state: OilState, powers=None) -> EffectContext:
         """Effect context at an oil state, law-independent features only (no region power

@@ -28,16 +28,14 @@ References
 from __future__ import annotations
 
 import json
-import math
 from dataclasses import dataclass, field, fields, replace
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
-from oilgap.model.effects import EFFECTS
+from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts
 from oilgap.model.errors import InputError
 from oilgap.model.fluid_table import TableFluid
 from oilgap.model.fluids import GasFluid
@@ -58,53 +56,28 @@ from oilgap.model.units import m2_s_to_cst, m_to_mm
 from .baseline import BASELINE_TERMS, BaselineFit
 from .film_wall import film_wall_of_doc, model_shapes
 from .forward import ForwardModel
+from .model_schema import (
+    STAGES,
+    check_model_doc,
+    check_model_ranges,
+    decode,
+    encode,
+    nested,
+    parse_model_json,
+    refuse_literals,
+)
 
 MODEL_FORMAT = "oilgap-loop-model"
 MODEL_VERSION = 1
-STAGES = ("without_T", "with_T", "with_effect")
-"""The models of the report, each with its friction law."""
 PREDICTED_VISCOUS = "predicted_viscous_power_W"
 PREDICTED_POWER = "predicted_power_W"
 REASON = "prediction_note"
 """Column of :meth:`FittedModel.predict_table` saying why a prediction is missing."""
 FLUID_CLASSES = {"mineral": Oil, "gas": GasFluid, "table": TableFluid}
 """Fluid kind -> dataclass (the fluid's fields are written out in full)."""
-RANGE_KEYS = ("abs_speed_rpm", "temp_C", "nu_cSt", "gap_mm", "roughness_T")
-"""Operating variables whose fitted range is recorded (prediction outside it is flagged)."""
 
 RANGE_SLACK = 0.01
 """Share of a variable's fitted span a row may lie beyond it before it counts as extrapolated."""
-
-_TEXT_KEYS = ("name", "source", "outside", "kind", "form", "laminar_law")
-
-
-def _enc(x: Any) -> Any:
-    """JSON-safe value: non-finite floats as strings, tuples and arrays as lists [2]."""
-    if isinstance(x, dict):
-        return {str(k): _enc(v) for k, v in x.items()}
-    if isinstance(x, (list, tuple, np.ndarray)):
-        return [_enc(v) for v in x]
-    if isinstance(x, (bool, np.bool_)):
-        return bool(x)
-    if isinstance(x, (int, np.integer)):
-        return int(x)
-    if isinstance(x, (float, np.floating)):
-        v = float(x)
-        return v if math.isfinite(v) else ("nan" if math.isnan(v) else
-                                           ("inf" if v > 0 else "-inf"))
-    return x
-
-
-def _dec(x: Any, key: str = "") -> Any:
-    """Inverse of :func:`_enc` (lists become tuples)."""
-    if isinstance(x, dict):
-        return {k: _dec(v, k) for k, v in x.items()}
-    if isinstance(x, list):
-        return tuple(_dec(v, key) for v in x)
-    if isinstance(x, str) and key not in _TEXT_KEYS and x in ("inf", "-inf", "nan"):
-        return float(x)
-    return x
-
 
 def fluid_to_dict(fluid) -> dict:
     """A fluid's kind and every field of its dataclass (JSON-safe).
@@ -119,7 +92,7 @@ def fluid_to_dict(fluid) -> dict:
     dict
         ``kind`` and the fields by name.
     """
-    return {"kind": fluid.kind, **_enc({f.name: getattr(fluid, f.name) for f in fields(fluid)})}
+    return {"kind": fluid.kind, **encode({f.name: getattr(fluid, f.name) for f in fields(fluid)})}
 
 
 def fluid_from_dict(doc: dict):
@@ -144,7 +117,7 @@ def fluid_from_dict(doc: dict):
     if kind not in FLUID_CLASSES:
         raise InputError("model.fluids.kind", kind, f"allowed: {', '.join(FLUID_CLASSES)}")
     cls = FLUID_CLASSES[kind]
-    kw = {k: v for k, v in _dec(doc).items() if k != "kind"}
+    kw = {k: v for k, v in decode(doc).items() if k != "kind"}
     try:
         return cls(**kw)
     except TypeError as e:
@@ -153,18 +126,18 @@ def fluid_from_dict(doc: dict):
 
 
 def _law_to_dict(law: FrictionLaw) -> dict:
-    return _enc({f.name: getattr(law, f.name) for f in fields(law)
+    return encode({f.name: getattr(law, f.name) for f in fields(law)
                  if law.form == "branches" or f.name not in BRANCH_KEYS})
 
 
 def _baseline_to_dict(b: BaselineFit) -> dict:
-    return _enc({"roughness_T": b.roughness_T, "terms": list(b.terms), "coef": b.coef,
+    return encode({"roughness_T": b.roughness_T, "terms": list(b.terms), "coef": b.coef,
                  "temp_ref_C": b.temp_ref_C, "rmse_W": b.rmse_W, "n_samples": b.n_samples,
                  "temp_range_C": b.temp_range_C, "speed_max_rpm": b.speed_max_rpm})
 
 
 def _baseline_from_dict(d: dict) -> BaselineFit:
-    d = _dec(d)
+    d = decode(d)
     return BaselineFit(roughness_T=float(d["roughness_T"]), terms=tuple(d["terms"]),
                        coef=np.array(d["coef"], float),
                        temp_ref_C=float(d["temp_ref_C"]), rmse_W=float(d["rmse_W"]),
@@ -330,21 +303,22 @@ class FittedModel:
             condition w [-]) when those effects are in the model.
         """
         return {"format": MODEL_FORMAT, "version": MODEL_VERSION,
-                "case": _enc(_case_doc(self.case)),
+                "case": encode(_case_doc(self.case)),
                 "laws": {k: _law_to_dict(v) for k, v in self.laws.items()},
-                "effects": _enc(self.effects),
+                "effects": encode(self.effects),
                 **model_shapes(self.effects, self.taylor_exponent, self.film_wall),
                 "baselines": [_baseline_to_dict(b) for b in self.baselines.values()],
                 "fluids": {k: fluid_to_dict(f) for k, f in self.fluids.items()},
-                "region1_gap_m": _enc(self.region1_gap_m),
+                "region1_gap_m": encode(self.region1_gap_m),
                 "pressure_gauge_Pa": self.pressure_gauge_Pa, "kind": self.kind,
                 "has_time": self.has_time, "cv_by": self.cv_by,
                 "thermal_mode": self.thermal_mode,
-                "fitted_range": _enc(self.ranges)}
+                "fitted_range": encode(self.ranges)}
 
     @classmethod
     def from_dict(cls, doc: dict) -> FittedModel:
-        """Rebuild a model from :meth:`to_dict`'s document.
+        """Rebuild a model from :meth:`to_dict`'s document, checked against its schema and
+        ranges first (:mod:`~oilgap.optim.calibration.model_schema`).
 
         Parameters
         ----------
@@ -358,7 +332,9 @@ class FittedModel:
         Raises
         ------
         InputError
-            Not a model document, a version this code does not read, bad contents.
+            Not a model document, a version this code does not read, a field that fails
+            the schema or its range (named by its JSON path, e.g.
+            ``model.laws.with_effect.gamma``) [-].
         """
         if not isinstance(doc, dict) or doc.get("format") != MODEL_FORMAT:
             raise InputError("model", type(doc).__name__, f"a {MODEL_FORMAT!r} document (the "
@@ -366,34 +342,32 @@ class FittedModel:
         if doc.get("version") != MODEL_VERSION:
             raise InputError("model.version", doc.get("version"), f"this oilgap reads version "
                              f"{MODEL_VERSION}")
-        try:
-            case = case_from_dict(dict(doc["case"]))
-            laws = {k: FrictionLaw(**_dec(v)) for k, v in doc["laws"].items()}
-            effects = {str(k): float(v) for k, v in doc["effects"].items()}
-            unknown = [k for k in effects if k not in EFFECTS]
-            if unknown or set(laws) != set(STAGES):
-                raise InputError("model.effects", unknown or sorted(laws), "library effects and "
-                                 f"the laws of {', '.join(STAGES)} are required")
-            base = [_baseline_from_dict(b) for b in doc.get("baselines", [])]
-            fluids = {k: fluid_from_dict(v) for k, v in doc.get("fluids", {}).items()}
-            gap = float(_dec(doc["region1_gap_m"]))
-            ranges = {k: [float(x) for x in v] for k, v in _dec(doc.get("fitted_range", {}))
-                      .items()}
-            m = float(doc.get("shapes", {}).get("taylor_vortex_onset", {}).get("exponent", 2.0))
-            if not m > 0:
-                raise InputError("model.shapes.taylor_vortex_onset.exponent", m, "> 0")
-            model = cls(case=case, laws=laws, effects=effects,
-                        baselines={b.roughness_T: b for b in base}, fluids=fluids,
-                        region1_gap_m=gap,
-                        pressure_gauge_Pa=float(doc.get("pressure_gauge_Pa", 0.0)),
-                        kind=str(doc.get("kind", "")),
-                        has_time=bool(doc.get("has_time", True)),
-                        cv_by=str(doc.get("cv_by", "run")),
-                        ranges=ranges,
-                        taylor_exponent=m, film_wall=film_wall_of_doc(doc, effects))
-        except (KeyError, TypeError, ValueError, AttributeError) as e:
-            raise InputError("model", f"{type(e).__name__}: {e}", "a complete model block "
-                             "written by oilgap loop is required") from None
+        check_model_doc(doc)
+        case = nested("model.case", case_from_dict, dict(doc["case"]))
+        fluids = {k: nested(f"model.fluids.{k}", fluid_from_dict, v)
+                  for k, v in doc.get("fluids", {}).items()}
+        geometry = joint_geometry(case)
+        check_model_ranges(doc, RigFacts.of(geometry, [FluidFacts(
+            k, str(getattr(f, "kind", "mineral")), bool(getattr(f, "polymer_thickened",
+                                                                  False)))
+            for k, f in fluids.items()]))
+        gap, r1 = float(doc["region1_gap_m"]), geometry.regions[0].radius_m
+        if gap >= r1:
+            raise InputError("model.region1_gap_m", gap, f"< the rotor radius {r1:g} m of "
+                             "model.case (a clearance)")
+        effects = {str(k): float(v) for k, v in doc["effects"].items()}
+        m = float(doc.get("shapes", {}).get("taylor_vortex_onset", {}).get("exponent", 2.0))
+        model = cls(case=case, laws={k: FrictionLaw(**decode(v)) for k, v in doc["laws"].items()},
+                    effects=effects,
+                    baselines={b.roughness_T: b for b in map(_baseline_from_dict,
+                                                             doc.get("baselines", []))},
+                    fluids=fluids, region1_gap_m=gap,
+                    pressure_gauge_Pa=float(doc.get("pressure_gauge_Pa", 0.0)),
+                    kind=doc["kind"], has_time=doc.get("has_time", True),
+                    cv_by=doc.get("cv_by", "run"),
+                    ranges={k: [float(x) for x in v]
+                            for k, v in doc.get("fitted_range", {}).items()},
+                    taylor_exponent=m, film_wall=film_wall_of_doc(doc, effects))
         recorded = doc.get("thermal_mode", model.thermal_mode)
         if recorded != model.thermal_mode:
             raise InputError("model.thermal_mode", recorded, f"{model.thermal_mode!r}, the "
@@ -551,7 +525,8 @@ class FittedModel:
 
 
 def load_model(path: str | Path) -> FittedModel:
-    """Read a model from ``loop.json`` (its ``model`` block) or a bare model document.
+    """Read a model from ``loop.json`` (its ``model`` block) or a bare model document,
+    checked against its schema and ranges (:meth:`FittedModel.from_dict`).
 
     Parameters
     ----------
@@ -566,22 +541,36 @@ def load_model(path: str | Path) -> FittedModel:
     Raises
     ------
     InputError
-        Missing or unreadable file, no model block, bad contents.
+        Missing or unreadable file, not JSON (cut short), no model block, a field that
+        fails the schema (named by its JSON path; ``where`` is the file).
     """
     p = Path(path)
     if not p.is_file():
         raise InputError("--model", str(p), "must be an existing loop.json (written by "
                          "oilgap loop)")
     try:
-        doc = json.loads(p.read_text(encoding="utf-8"))
+        doc = parse_model_json(p.read_text(encoding="utf-8"))
     except (UnicodeDecodeError, json.JSONDecodeError) as e:
-        raise InputError("--model", str(p), f"is not JSON ({e})") from None
-    if isinstance(doc, dict) and "model" in doc and doc.get("format") != MODEL_FORMAT:
+        raise InputError("--model", str(p), f"is not JSON ({e}; cut short or edited? run "
+                         "oilgap loop again)") from None
+    except (OSError, RecursionError) as e:
+        raise InputError("--model", str(p), f"cannot be read ({type(e).__name__})") from None
+    if not isinstance(doc, dict):
+        raise InputError("--model", str(p), f"holds a JSON {type(doc).__name__}, not the "
+                         "object oilgap loop writes (run oilgap loop again)")
+    try:
+        refuse_literals(doc, "" if "model" in doc else "model")
+    except InputError as e:
+        raise InputError(e.field, e.value, e.allowed, str(p)) from None
+    if "model" in doc and doc.get("format") != MODEL_FORMAT:
         doc = doc["model"]
-    elif isinstance(doc, dict) and doc.get("format") != MODEL_FORMAT:
+    elif doc.get("format") != MODEL_FORMAT:
         raise InputError("--model", str(p), "holds no 'model' block (written by oilgap loop "
                          "since issue 9; run the loop again)")
-    return FittedModel.from_dict(doc)
+    try:
+        return FittedModel.from_dict(doc)
+    except InputError as e:
+        raise InputError(e.field, e.value, e.allowed, str(p)) from None
 
 
 __all__ = ["FittedModel", "baseline_extrapolated", "fluid_from_dict", "fluid_to_dict",

@@ -2,7 +2,8 @@
 
 The effects the linearised selection accepts are refitted with the law by
 nonlinear least squares (their exact forms where the library has them). Held-out
-errors come from leave-one-run-out folds: one Gauss-Newton step from the
+errors come from the cross-validation folds (:mod:`.folds`: whole runs, one fold
+per run up to 10 runs, grouped 10-fold above): one Gauss-Newton step from the
 all-runs fit (default) or a full nonlinear refit per fold. The nonlinear
 held-out error overrules the linearised one: if the accepted effects do not
 lower it by the margin, they are rejected.
@@ -22,10 +23,11 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .candidates import Candidates
+from .folds import cv_folds
 from .forward import ForwardModel
 from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold
 from .selection import Selection
-from .spec import cv_groups, fold_spec
+from .spec import fold_spec
 from .steps import SelectionStep
 
 CV_MODES = ("one-step", "full")
@@ -125,7 +127,7 @@ class Refitter:
         """
         if self._holds is None:
             s = self.model.samples
-            groups = cv_groups(s)
+            groups = cv_folds(s)
             r1 = self.model.geometry.regions[0].radius_m
             self._holds = {int(c): fold_spec(self.spec, s.subset(groups != c), r1)
                            for c in np.unique(groups)}
@@ -151,10 +153,11 @@ class Refitter:
                           at: ModelFit | None = None) -> HeldOut:
         """Held-out predictions and per-fold fits of the model ``names`` [1].
 
-        One fold per cross-validation group (:func:`.spec.cv_groups`: the run
-        unless the data say otherwise). A fold that cannot identify a base
-        parameter holds it at its all-data value; a one-step fold that would
-        move a parameter too far is refitted in full.
+        One fold per fold code of :func:`.folds.cv_folds` (whole groups, the runs
+        unless the data say otherwise; one per group up to
+        :data:`.folds.MAX_FOLDS` groups, grouped k-fold above). A fold that
+        cannot identify a base parameter holds it at its all-data value; a
+        one-step fold that would move a parameter too far is refitted in full.
 
         Parameters
         ----------
@@ -171,7 +174,7 @@ class Refitter:
         HeldOut
         """
         s = self.model.samples
-        groups = cv_groups(s)
+        groups = cv_folds(s)
         holds = self.fold_holds()
         pred = np.empty(s.n)
         folds, held = [], []

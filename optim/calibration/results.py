@@ -309,16 +309,24 @@ def per_run_rows(s: Samples, pred: dict[str, np.ndarray], final: FinalModel,
         run, oil, roughness_T [-], n_samples and RMSE in-sample and held out [W].
     """
     y = s.viscous_W
+    res = {k: y - p for k, p in (("without_T", pred["without_T"]), ("with_T", pred["with_T"]),
+                                 ("with_effect", pred["with_effect"]),
+                                 ("before", final.before.pred), ("after", final.after.pred))}
+    code = np.asarray(s.run_code)
+    order = np.argsort(code, kind="stable")  # each run's samples in their order, one pass
+    bounds = np.searchsorted(code[order], np.arange(len(s.run_names) + 1))
     rows = []
     for c, name in enumerate(s.run_names):
-        m = s.run_code == c
+        m = order[bounds[c]:bounds[c + 1]]
+        if not len(m):
+            continue
         rows.append({
-            "run": name, "oil": str(s.oil[m][0]), "roughness_T": float(s.roughness_T[m][0]),
-            "n_samples": int(m.sum()), "rmse_without_T_W": rmse((y - pred["without_T"])[m]),
-            "rmse_with_T_W": rmse((y - pred["with_T"])[m]),
-            "rmse_with_effect_W": rmse((y - pred["with_effect"])[m]),
-            "heldout_rmse_before_W": rmse((y - final.before.pred)[m]),
-            "heldout_rmse_after_W": rmse((y - final.after.pred)[m])})
+            "run": name, "oil": str(s.oil[m[0]]), "roughness_T": float(s.roughness_T[m[0]]),
+            "n_samples": len(m), "rmse_without_T_W": rmse(res["without_T"][m]),
+            "rmse_with_T_W": rmse(res["with_T"][m]),
+            "rmse_with_effect_W": rmse(res["with_effect"][m]),
+            "heldout_rmse_before_W": rmse(res["before"][m]),
+            "heldout_rmse_after_W": rmse(res["after"][m])})
     rank = {(r["oil"], r["roughness_T"]): i for i, r in enumerate(table3)}
     rows.sort(key=lambda r: (rank[(r["oil"], r["roughness_T"])], r["run"]))
     return rows

@@ -26,11 +26,12 @@ from oilgap.model.measured.data import Samples
 from oilgap.model.oils import normalize_oil_name
 
 from .candidates import Candidates, screen_candidates
+from .folds import cv_folds
 from .forward import ForwardModel
 from .least_squares import ModelFit, fit_model, rescale_level
 from .refit import FinalModel, Refitter, add_state_readers, refit_selected
 from .selection import Selection, Thresholds, select_effects
-from .spec import BaseSpec, cv_groups
+from .spec import BaseSpec
 from .steps import SelectionStep
 
 
@@ -176,7 +177,7 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
     selector = None
     limits = opts.thresholds(noise_W)
     for _ in range(len(cands.usable) + 1):
-        sel = select_effects(base.jac_base, r0, cv_groups(s), cands, limits,
+        sel = select_effects(base.jac_base, r0, cv_folds(s), cands, limits,
                              frozenset(implausible), hold, selector)
         selector = sel.selector
         final = refit_selected(refitter, base, cands, sel, opts.margin)

@@ -3,8 +3,9 @@
 The problem is linearised at the calibration: the residual ``r`` is regressed
 on the calibration's Jacobian (free, unpenalised) and the candidate columns
 (:mod:`.candidates`), each scaled to unit RMS. The sign-constrained lasso path
-[1] ranks the effects; leave-one-run-out cross-validation on per-run Gram
-matrices judges supports exactly and fast (:class:`LeaveOneRunOutSelector`,
+[1] ranks the effects; cross-validation on per-fold Gram matrices (folds of
+whole runs, :mod:`.folds`: one per run up to 10 runs, grouped 10-fold above)
+judges supports exactly and fast (:class:`LeaveOneRunOutSelector`,
 inner problems by :func:`box_lstsq` [3]). Forward selection adds the effect
 that lowers the held-out RMSE most while each addition lowers it by the margin;
 backward pruning then drops any effect that no longer brings the margin in the
@@ -212,7 +213,7 @@ class LeaveOneRunOutSelector:
         return lo, hi
 
     def cv(self, support) -> float:
-        """Pooled held-out RMSE [W] of calibration + support, leaving one run out at a time.
+        """Pooled held-out RMSE [W] of calibration + support, leaving one fold out at a time.
 
         Parameters
         ----------
@@ -222,7 +223,7 @@ class LeaveOneRunOutSelector:
         Returns
         -------
         float
-            ``sqrt(sum over runs of the held-out squared error / n)`` [W] (cached).
+            ``sqrt(sum over folds of the held-out squared error / n)`` [W] (cached).
         """
         key = frozenset(support)
         if key not in self._cache:

@@ -1,9 +1,10 @@
 """Stage 7 of the calibration: confidence intervals of the fitted parameters.
 
-A delete-one-run jackknife [1] over the leave-one-run-out folds gives each
-parameter's variance; the oil-free baseline's own error, shared by every oil
-run of its T and so invisible to the jackknife, is propagated linearly and
-added [2]; the interval uses Student's t with (folds - 1) degrees of freedom.
+A delete-a-group jackknife [1] over the cross-validation folds (one per run up to
+10 runs, grouped 10-fold above: :mod:`.folds`) gives each parameter's variance;
+the oil-free baseline's own error, shared by every oil run of its T and so
+invisible to the jackknife, is propagated linearly and added [2]; the interval
+uses Student's t with (folds - 1) degrees of freedom.
 Parameters that must be positive (C, the scale) get their interval in log space
 (jackknife of ln C, then exponentiated: the interval never includes zero or
 negative values). A parameter some folds could not identify (held at its

@@ -45,7 +45,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.joint_loss import default_thermal_mode, resolve_thermal_mode
-from oilgap.model.oils import Oil, get_oil, read_oils_csv
+from oilgap.model.oils import Oil, get_oil, read_oils_csv, with_builtin
 from oilgap.studies.grid.backends import InlineBackend, check_scheduler, make_backend
 from oilgap.studies.grid.chunking import ChunkSizer
 from oilgap.studies.grid.columns import THERMAL_COLUMNS, result_columns
@@ -63,7 +63,7 @@ from oilgap.studies.grid.store import (
 )
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_to_parquet
 from oilgap.studies.io.result_folder import FolderLock
-from oilgap.studies.settings import RunOptions, SweepSettings
+from oilgap.studies.settings import DEFAULT_CHUNK_SECONDS, RunOptions, SweepSettings
 
 # --------------------------------------------------------------------------- progress
 
@@ -152,7 +152,7 @@ def _catalogue(grid: pd.DataFrame, base: DesignCase,
     """The oils to look names up in; every ``oil`` of the grid must be there (an unknown
     oil name is a bad study parameter, not a failed point)."""
     if catalogue is None and base.oils_csv:
-        catalogue = read_oils_csv(base.oils_csv)
+        catalogue = with_builtin(read_oils_csv(base.oils_csv), "oil.oils_csv")
     if "oil" in grid.columns:
         for name in pd.unique(grid["oil"].dropna()):
             get_oil(str(name), catalogue)
@@ -359,7 +359,8 @@ def run_grid(grid: pd.DataFrame, case: DesignCase | None = None,
     catalogue = _catalogue(grid, base, catalogue)
     workers = o.workers if o.workers is not None else (os.cpu_count() or 1)
     scheduler = check_scheduler(o.scheduler)
-    sizer = ChunkSizer(mode, workers, o.chunk_seconds, o.chunk_size)
+    sizer = ChunkSizer(mode, workers, DEFAULT_CHUNK_SECONDS if o.chunk_seconds is None
+                       else o.chunk_seconds, o.chunk_size)
     keys = point_keys(grid, base, mode, {"thermal": thermal})
     t0 = time.perf_counter()
     with contextlib.ExitStack() as stack:

@@ -17,6 +17,7 @@ More than 12 runs: ``measured_vs_model_2.png``... and ``measured_vs_model_window
 from __future__ import annotations
 
 import inspect
+import json
 import math
 import warnings
 from pathlib import Path
@@ -33,6 +34,7 @@ from oilgap.model.io.defaults import (
 )
 from oilgap.model.io.serialize import Exact, dumps
 from oilgap.optim.calibration.estimator import LoopEstimator
+from oilgap.optim.calibration.model_io import FittedModel
 from oilgap.optim.calibration.ranges import effective_scale
 from oilgap.studies.loop.figures import (
     OVERVIEW,
@@ -263,8 +265,11 @@ def format_summary(est: LoopEstimator) -> str:
     if est.findings_:
         lines.append("")
     if est.effects_:
-        lines.append("effects found (accepted by cross-validation, one "
-                     f"{getattr(est, 'cv_by', 'run')} left out at a time)")
+        cv = getattr(est, "cv_scheme_", None) or {"scheme": "leave-one-group-out"}
+        how = (f"grouped {cv['folds']}-fold over {cv['groups']} groups"
+               if cv["scheme"] == "grouped k-fold" else
+               f"one {getattr(est, 'cv_by', 'run')} left out at a time")
+        lines.append(f"effects found (accepted by cross-validation, {how})")
         for e in est.effects_:
             lines.append(f"  {e.name}: {e.formula}")
             unit = "" if e.unit == "-" else f" {e.unit}"
@@ -461,9 +466,31 @@ def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
                                 f"{x['rmse_with_effect_W']:.3f}",
                                 f"{x['heldout_rmse_before_W']:.3f}",
                                 f"{x['heldout_rmse_after_W']:.3f}"] for x in est.per_run_]), "",
+            cv_sentence(est), "",
             "## Figures", "", *((f"![{f}]({f})" for f in
                                  figure_names(len(est.samples_.run_names))) if figures
                                 else ["Not drawn (`--no-figures`)."])]
+
+
+def cv_sentence(est: LoopEstimator) -> str:
+    """How the held-out errors and the intervals were obtained, in one sentence.
+
+    Parameters
+    ----------
+    est : LoopEstimator
+        A fitted estimator (its ``cv_scheme_``, :func:`oilgap.optim.calibration.folds.cv_scheme`).
+
+    Returns
+    -------
+    str
+        E.g. "Held-out error by grouped 10-fold cross-validation over 80 oil runs (...);
+        intervals by the delete-a-group jackknife over the 10 folds."
+    """
+    cv = getattr(est, "cv_scheme_", None)
+    if not cv:
+        return ""
+    text = cv["text"][0].upper() + cv["text"][1:]
+    return f"{text} ({cv['rule']}); 95 % intervals by the {cv['jackknife']}."
 
 
 def report_markdown(est: LoopEstimator, figures: bool = True) -> str:
@@ -525,4 +552,15 @@ def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) 
     doc = dumps(loop_json(est))  # 6 significant digits; the model block in full
     write_text(paths["report"], text)
     write_text(paths["json"], doc)
+    _warn_unpredictable(est, paths["json"])
     return paths
+
+
+def _warn_unpredictable(est: LoopEstimator, path: Path) -> None:
+    """A warning line when the saved model fails the schema ``oilgap predict`` checks
+    (a fitted law outside the ranges a friction law may have): never silent."""
+    try:
+        FittedModel.from_dict(json.loads(json.dumps(est.fitted_model().to_dict())))
+    except InputError as e:
+        warnings.warn(OilgapWarning(f"{path}: oilgap predict will refuse this model ({e})"),
+                      stacklevel=3)

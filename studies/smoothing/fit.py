@@ -140,6 +140,26 @@ def resolve_fit_mode(method: str | None, thermal: str | None) -> tuple[str, str,
     return method, thermal or "none", default
 
 
+def check_fixed_resistance(method: str | None, thermal: str | None, resistance_K_W: float,
+                           names: tuple[str, str] = ("resistance_K_W", "method")) -> None:
+    """A fixed R_th [K/W] is an input of the per-oil method only: with a method that fits
+    R_th itself (``shared``, ``heat-balance``, chosen or implied by ``thermal="full"``)
+    it would have no effect, and is refused naming both (``names``: the spellings of R_th
+    and of the method in the message).
+
+    Raises
+    ------
+    InputError
+        ``resistance_K_W`` != 0 with a method other than per-oil.
+    """
+    resolved, _, _ = resolve_fit_mode(method, thermal)
+    if resistance_K_W and resolved != "per-oil":
+        how = f"{names[1]} {method!r}" if method else f"thermal {thermal!r} (method {resolved!r})"
+        raise InputError(names[0], resistance_K_W, f"only with {names[1]} 'per-oil': under "
+                         f"{how} R_th is fitted, the value would have no effect",
+                         "smoothing study")
+
+
 def loss_mode(thermal: str) -> str:
     """The mode of :func:`~oilgap.model.joint_loss.joint_mean_power` for a fit's thermal
     mode: ``none`` stays, ``film`` and ``full`` use the film factor at the run temperature."""

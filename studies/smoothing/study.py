@@ -74,6 +74,7 @@ from oilgap.studies.smoothing.fit import (
     T_GROOVED,
     T_SMOOTHED,
     SmoothingFit,
+    check_fixed_resistance,
     fit_smoothing,
     load_table4,
     measured_runs,
@@ -367,6 +368,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
                              "measurement)", "smoothing study")
         return _run_case(out_dir, base, s, T_values)
     method, thermal, default = resolve_fit_mode(s.method, s.thermal)
+    check_fixed_resistance(s.method, s.thermal, s.resistance_K_W)
     table4 = load_table4()
     fit = fit_smoothing(method, s.resistance_K_W, base, table4, thermal)
     out = Path(out_dir) if out_dir is not None else None

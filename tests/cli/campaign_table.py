@@ -1,7 +1,13 @@
 """The bad-input campaign's harness and table.
 
-The rows are in ``tests/cli/test_campaign.py`` (what each input is and what must happen);
-this module runs a row in a fresh folder and judges it (:func:`run_row`, :func:`classify`),
+The rows are in ``tests/cli/test_campaign.py`` (issue 12's) and
+``tests/cli/campaign_rows20.py`` (issue 20's: the façade, conflicting options, stored
+files), each stating what it is and what must happen. A row runs the command line
+(``argv``), a real process (``proc``) or, a **façade row** (``call``), an ``og.*`` call
+in-process, judged as the command line would print it (:func:`run_facade`): the
+project's :class:`~oilgap.model.errors.InputError` with a one-line message is refused
+cleanly; a raw Python exception (TypeError, AttributeError, ...) is still failing.
+This module runs a row in a fresh folder and judges it (:func:`run_row`, :func:`classify`),
 holds the checks of the rows' outputs and the rows that need a real process, and, run as a
 script, runs every row and prints the table of outcomes per class: refused cleanly,
 warned, accepted, ended cleanly (the process rows), still failing; then the rows that still
@@ -33,6 +39,7 @@ import sys
 import tempfile
 import time
 import traceback
+import warnings
 from collections import Counter
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -62,9 +69,24 @@ class Row:
     forbid: tuple[str, ...] = ()
     proc: Callable | None = None
     ends: str = ""
+    call: Callable | None = None
+    promise: str = ""
+
+    @property
+    def kind(self) -> str:
+        """How the row runs: ``"façade"`` (an og.* call), ``"process"`` or ``"CLI"``."""
+        return "façade" if self.call else "process" if self.proc else "CLI"
+
+    def states(self) -> str:
+        """The promise the row checks: its own words, else what its expectation says."""
+        if self.promise:
+            return self.promise
+        named = f", naming {' and '.join(self.needle)}" if self.needle else ""
+        return f"`oilgap {self.argv}` is {' or '.join(self.expect)}{named}"
 
 
-CLASSES = ("refused", "warned", "accepted", "ended cleanly", "still failing")
+CLASSES = ("refused", "warned", "accepted", "ended cleanly", "failed cleanly",
+           "still failing")
 """The outcome classes, in the table's order."""
 
 
@@ -125,6 +147,9 @@ def classify(rc: int, err: str, ends: str = "") -> str:
         return "ended cleanly"
     if rc == 2 and len(lines) == 1 and lines[0].startswith("oilgap: error:"):
         return "refused"
+    if rc in (3, 4) and len(lines) == 1 and \
+            lines[0].startswith(("oilgap: solver failure:", "oilgap: infeasible:")):
+        return "failed cleanly"     # no solution is a failure, one line, never a result
     if rc == 2 and lines and lines[0].startswith("usage: oilgap") and \
             re.match(r"oilgap [\w -]+: error: ", lines[-1]):
         return "refused"            # argparse: its usage, then one error line
@@ -151,7 +176,7 @@ def why_failing(rc: int, err: str) -> str:
 
 def _message(cls: str, out: str, err: str) -> str:
     lines = err.splitlines()
-    if cls == "refused":
+    if cls in ("refused", "failed cleanly"):
         return lines[-1] if lines else ""
     if cls == "warned":
         return "\n".join(ln for ln in lines if ln.startswith("oilgap: warning:"))
@@ -171,6 +196,35 @@ def _run_in_process(argv: list[str], d: Path) -> tuple[int, str, str]:
     return rc, out.getvalue(), err.getvalue()
 
 
+def run_facade(call: Callable[[Path], object], d: Path) -> tuple[int, str, str]:
+    """A façade call in folder ``d``, as the command line would report it: exit 0 (each
+    OilgapWarning an ``oilgap: warning:`` line), 2 and ``oilgap: error: <message>`` for
+    the project's InputError, 3/4 and ``oilgap: solver failure:`` for a SolverError;
+    any other exception is a traceback (still failing)."""
+    from oilgap.model.errors import InputError, OilgapWarning, SolverError
+
+    out, err = io.StringIO(), io.StringIO()
+    with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err), cwd(d), \
+            warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            call(d)
+            rc = 0
+        except InputError as e:
+            err.write(f"oilgap: error: {e}\n")
+            rc = 2
+        except SolverError as e:
+            err.write(f"oilgap: solver failure: {e}\n")
+            rc = e.exit_code
+        except Exception:                       # a raw Python error: broken
+            err.write(traceback.format_exc())
+            rc = 1
+    if rc == 0:
+        err.write("".join(f"oilgap: warning: {w.message}\n" for w in caught
+                          if issubclass(w.category, OilgapWarning)))
+    return rc, out.getvalue(), err.getvalue()
+
+
 def run_row(r: Row, d: Path) -> Outcome:
     """Set the row up in the empty folder ``d``, run it and judge what happened."""
     d.mkdir(parents=True, exist_ok=True)
@@ -182,7 +236,8 @@ def run_row(r: Row, d: Path) -> Outcome:
         step(d)
     before = _snapshot(d)
     t0 = time.perf_counter()
-    rc, out, err = r.proc(d) if r.proc else _run_in_process(shlex.split(r.argv), d)
+    rc, out, err = r.proc(d) if r.proc else run_facade(r.call, d) if r.call else \
+        _run_in_process(shlex.split(r.argv), d)
     seconds = time.perf_counter() - t0
     after = _snapshot(d)
     changed = sorted(k for k in before.keys() | after.keys() if before.get(k) != after.get(k))
@@ -425,7 +480,8 @@ def proc_verbose_json(d: Path) -> tuple[int, str, str]:
 
 
 LABELS = {"refused": "refused cleanly", "warned": "warned", "accepted": "accepted",
-          "ended cleanly": "ended cleanly", "still failing": "still failing"}
+          "ended cleanly": "ended cleanly", "failed cleanly": "failed cleanly (exit 3/4)",
+          "still failing": "still failing"}
 
 
 def table(outcomes) -> str:
@@ -434,10 +490,12 @@ def table(outcomes) -> str:
     groups = list(dict.fromkeys(o.row.group for o in outcomes))
     head = ["section", "rows"] + [LABELS[c] for c in CLASSES]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
-    for g in groups + ["all"]:
-        sel = [o for o in outcomes if g in ("all", o.row.group)]
+    kinds = list(dict.fromkeys(o.row.kind for o in outcomes))
+    parts = [(g, [o for o in outcomes if o.row.group == g]) for g in groups]
+    parts += [(f"*{k} rows*", [o for o in outcomes if o.row.kind == k]) for k in kinds]
+    for label, sel in parts + [("**all**", list(outcomes))]:
         n = Counter(o.cls if o.passed else "still failing" for o in sel)
-        lines.append(f"| {'**all**' if g == 'all' else g} | {len(sel)} | "
+        lines.append(f"| {label} | {len(sel)} | "
                      + " | ".join(str(n[c]) for c in CLASSES) + " |")
     return "\n".join(lines)
 
@@ -460,13 +518,13 @@ def main(argv=None) -> int:
     if args.rows:
         print()
         for o in outcomes:
-            print(f"{'ok  ' if o.passed else 'FAIL'} {o.row.id:<34} {o.cls:<14} "
-                  f"exit {o.rc:<4} {o.seconds:6.2f} s  {o.row.group}")
+            print(f"{'ok  ' if o.passed else 'FAIL'} {o.row.id:<34} {o.row.kind:<7} "
+                  f"{o.cls:<14} exit {o.rc:<4} {o.seconds:6.2f} s  {o.row.states()}")
     failing = [o for o in outcomes if not o.passed]
     if failing:
         print("\nStill failing:\n")
         for o in failing:
-            print(f"- {o.row.id} ({o.row.group}): `oilgap {o.row.argv}`; expected "
+            print(f"- {o.row.id} ({o.row.group}): {o.row.states()}; expected "
                   f"{'|'.join(o.row.expect)}, got {o.cls} (exit {o.rc}): "
                   + "; ".join(o.problems)[:400])
     return 1 if failing else 0

@@ -519,6 +519,13 @@ row("optimize-json-verbose", "optimize --json --verbose --starts 1", "accepted",
 
 
 
+# ---- issue 20's rows (the façade, conflicting options, stores, saved loop models):
+# tests/cli/campaign_rows20.py
+from campaign_rows20 import ROWS20  # noqa: E402  (it builds on the helpers above)
+
+ROWS += ROWS20
+
+
 @pytest.mark.parametrize("r", ROWS, ids=[r.id for r in ROWS])
 def test_campaign_row(r: Row, tmp_path: Path):
     res = run_row(r, tmp_path / "w")
@@ -526,8 +533,13 @@ def test_campaign_row(r: Row, tmp_path: Path):
 
 
 def test_campaign_covers_the_issue():
-    """Every section of the issue has rows, ids are unique (the table names them) and every
-    row expects a known class."""
-    assert len({r.id for r in ROWS}) == len(ROWS) and 60 <= len(ROWS) <= 150
-    assert len({r.group for r in ROWS}) == 4
+    """Every section of issues 12 and 20 has rows, ids are unique (the table names them),
+    every row expects a known class and states its promise; issue 20's table holds at
+    least 150 rows, façade rows among them."""
+    assert len({r.id for r in ROWS}) == len(ROWS) and len(ROWS) >= 150
+    groups = {r.group for r in ROWS}
+    assert len(groups) >= 7 and {"20.1 façade: wrong argument types",
+                                 "20.4 conflicting options"} <= groups
     assert all(set(r.expect) <= set(CLASSES[:-1]) for r in ROWS)
+    assert all(r.states() for r in ROWS) and all(r.promise for r in ROWS20)
+    assert sum(r.kind == "façade" for r in ROWS) >= 40

@@ -7,21 +7,19 @@
    the physical direction, measured power > 0, a non-empty oil name.
 7. Messages quote the value in the user's units, as written (``T1_mm = -1``, not -0.001).
 
-Each row of :data:`ROWS` states the promise it checks; every row runs through
-``oilgap.cli.main`` (exit code, exactly one line on stderr, no traceback, the
-words that name the field, the value as written and what is allowed) and through the
-façade (``import oilgap as og``: the project's own error class).
+Each row of :data:`ROWS` states the promise it checks; the rows run in the campaign's one
+table (``tests/cli/campaign_rows20.py`` makes each a command-line row and a façade row of
+``tests/cli/test_campaign.py``): exit code, exactly one line on stderr, no traceback, the
+words that name the field, the value as written and what is allowed; through the façade
+(``import oilgap as og``) the project's own error class.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-
 import oilgap as og
 from oilgap.cli import main
-from oilgap.model.errors import InputError, SolverError
 
 CASE = """name = "t"
 [region1]
@@ -209,61 +207,9 @@ ROWS = {
 }
 
 
-PARAMS = [pytest.param(k, marks=pytest.mark.xfail(strict=True, reason=r["xfail"]))
-          if r["xfail"] else k for k, r in ROWS.items()]
-
-
-def _write(tmp_path: Path, row: dict) -> tuple[list[str], str | None]:
-    """The files of a row; returns the CLI's argv and the façade's path."""
-    for name, text in row["files"].items():
-        (tmp_path / name).write_text(text)
-    if row["measured"] is not None:
-        p = tmp_path / "rig.csv"
-        p.write_text(row["measured"])
-        return ["loop", str(p), "--out", str(tmp_path / "o"), "--no-figures"], str(p)
-    text = CASE
-    for old, new in ([row["replace"]] if row["replace"] else []):
-        assert old in text
-        text = text.replace(old, new, 1)
-    p = tmp_path / "case.toml"
-    p.write_text(text + row["extra"])
-    return [row["cmd"], str(p), *row["argv"]], str(p)
-
-
-@pytest.mark.parametrize("rid", PARAMS)
-def test_cli(tmp_path, capsys, rid):
-    row = ROWS[rid]
-    argv, _ = _write(tmp_path, row)
-    capsys.readouterr()
-    assert main(argv) == row["code"], row["promise"]
-    cap = capsys.readouterr()
-    lines = cap.err.strip().splitlines()
-    assert len(lines) == 1, (row["promise"], cap.err)
-    assert "Traceback" not in cap.err
-    head = "oilgap: error:" if row["code"] == 2 else "oilgap: solver failure:"
-    assert lines[0].startswith(head), lines[0]
-    for w in row["words"]:
-        assert w in lines[0], (row["promise"], w, lines[0])
-
-
-@pytest.mark.parametrize("rid", PARAMS)
-def test_facade(tmp_path, rid):
-    row = ROWS[rid]
-    _, path = _write(tmp_path, row)
-    err = InputError if row["code"] == 2 else SolverError
-    with pytest.raises(err) as e:
-        if row["facade"] == "read_measured":
-            og.read_measured(path)
-        elif row["facade"] == "optimize":
-            og.optimize(path, **row["fkw"])
-        elif row["facade"] == "read_case":
-            og.read_case(path)
-        else:
-            og.evaluate(path, **row["fkw"]).summary()
-    msg = str(e.value)
-    assert "\n" not in msg
-    for w in row["words"]:
-        assert w in msg, (row["promise"], w, msg)
+# The rows run in the campaign (tests/cli/campaign_rows20.py turns each into a command-line
+# row and a façade row of tests/cli/test_campaign.py's one table): the command line's exit
+# code and its one line naming the words, the façade's own error class.
 
 
 def test_table_size():

@@ -1,0 +1,244 @@
+"""The joint's loss over arrays of uncertain inputs: one vectorised evaluation for all rows.
+
+:func:`joint_loss_arrays` gives, for every row of broadcast input arrays (names of
+:data:`~oilgap.model.uncertain.inputs.INPUTS`), the number of the scalar reference path
+``operating_temperature(apply_inputs(case, row), mode).mean_power_W`` (the
+``total_mean_power_W`` of :func:`~oilgap.model.evaluation.evaluate_case`): the regions'
+cycle-mean loss and the rolling bearing's, under any thermal mode.
+
+It is the stacked evaluation of :mod:`.rows` (the composition of
+:func:`~oilgap.model.joint_loss.joint_mean_power` with every input an array over rows: the
+oil's state, the speed nodes times ``peak / peak0``, C_m at gamma 0 times
+``friction_scale T^gamma``, the film strength on b, SKF's drag terms times
+``bearing_drag_scale``, and under ``bulk``/``full`` the balance of all rows by the model's
+one solver, each row following the scalar path's iteration). Measured against the scalar
+path: 1e-15 relative without a balance, 1e-13 with it (tests/model/test_uncertain_arrays.py;
+10^4 cases in docs/benchmarks.md).
+
+Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
+block stay in cache).
+
+References
+----------
+.. [1] Seed paper, Eqs. 5, 6, 8 and 10 (the isothermal loss over the cycle).
+.. [2] T. L. Bergman et al., *Fundamentals of Heat and Mass Transfer*, 7th ed., Wiley
+   2011, sec. 3.1 (the bulk balance).
+.. [3] ISO 3448:1992, industrial liquid lubricants, ISO viscosity classification.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from concurrent.futures import ThreadPoolExecutor
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from ..errors import InputError, SolverError
+from ..joint_loss import operating_temperature, resolve_thermal_mode
+from ..thermal import MAX_OIL_TEMP_C
+from ..thermal_modes import uses_balance
+from ..units import rpm_to_rad_s
+from .inputs import INPUTS, apply_inputs
+from .rows import RowModel, RowValues, row_balance, row_model, row_total
+
+if TYPE_CHECKING:  # pragma: no cover - typing only
+    from ..case import DesignCase
+
+BLOCK_ROWS = 4096
+"""Rows evaluated together [-]: (rows x nodes) arrays of a block stay in the CPU's cache."""
+
+
+def broadcast_inputs(inputs: Mapping[str, Any]) -> tuple[dict[str, np.ndarray], tuple]:
+    """The inputs as float arrays of one broadcast shape, names checked.
+
+    Parameters
+    ----------
+    inputs : mapping
+        Input name (:data:`INPUTS`) -> value(s) in its unit.
+
+    Returns
+    -------
+    arrays : dict
+        Name -> float array of the common shape, in the input's unit ([-], [degC], [m],
+        [rpm]).
+    shape : tuple
+        The broadcast shape [-].
+
+    Raises
+    ------
+    InputError
+        An unknown name, or arrays that do not broadcast.
+    """
+    for k in inputs:
+        if k not in INPUTS:
+            raise InputError("uncertainty input", k, f"one of {', '.join(INPUTS)}")
+    arrs = {k: np.asarray(v, dtype=float) for k, v in inputs.items()}
+    try:
+        shape = np.broadcast_shapes(*(a.shape for a in arrs.values()))
+    except ValueError:
+        raise InputError("uncertainty inputs", {k: a.shape for k, a in arrs.items()},
+                         "arrays of shapes that broadcast together") from None
+    return {k: np.broadcast_to(a, shape) for k, a in arrs.items()}, shape
+
+
+def check_input_ranges(case: DesignCase, arrays: Mapping[str, np.ndarray]) -> None:
+    """Refuse values :func:`apply_inputs` refuses: each input's lowest and highest value
+    go through it (every input's allowed set is an interval; a NaN is its own min).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The nominal case.
+    arrays : mapping
+        Input name -> array [input's unit].
+
+    Raises
+    ------
+    InputError
+        As :func:`apply_inputs`, naming the input.
+    """
+    for k, a in arrays.items():
+        if a.size == 0:
+            continue
+        lo, hi = float(np.min(a)), float(np.max(a))
+        for v in (lo, hi) if np.isfinite(lo) else (lo,):
+            apply_inputs(case, {k: v})
+
+
+def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowModel
+                ) -> RowValues:
+    """A block's inputs as :class:`RowValues` (factors relative to the case's values)."""
+    op, th = case.operating, case.thermal
+    n = len(next(iter(arrs.values())))
+    t_oil = arrs.get("oil_temp_C")
+    f = arrs.get("nu40_factor")
+    peak = arrs.get("peak_speed_rpm")
+    return RowValues(
+        n=n, oil_temp_C=np.full(n, float(op.oil_temp_C)) if t_oil is None else t_oil,
+        depth_m=float(op.depth_m) if "depth_m" not in arrs else arrs["depth_m"],
+        nu_factor=None if f is None else f * model.factor0, gamma=arrs.get("gamma"),
+        friction_scale=arrs.get("friction_scale"), film_strength=arrs.get("film_strength"),
+        drag_scale=arrs.get("bearing_drag_scale"),
+        speed_factor=None if peak is None else rpm_to_rad_s(peak)
+        / case.duty_cycle.peak_omega_rad_s,
+        sea_temp_C=None if th is None else (
+            np.full(n, float(th.sea_temp_C)) if t_oil is None
+            else th.sea_temp_C + (t_oil - op.oil_temp_C)))
+
+
+def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray]
+           ) -> np.ndarray:
+    """Loss [W] of one block of rows (NaN: no balance root below the cap)."""
+    rows = _row_values(case, arrs, model)
+    if not uses_balance(mode):
+        return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
+    th = case.thermal
+    ok = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W < MAX_OIL_TEMP_C
+    out = np.full(rows.n, np.nan)
+    if not ok.all():
+        if ok.any():
+            out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()})
+        return out
+    temps, p = row_balance(model, rows)
+    return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
+
+
+def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: bool
+          ) -> np.ndarray:
+    """The scalar reference path, row by row (the fallback of a block whose balance did not
+    converge as a whole)."""
+    n = len(next(iter(flat.values())))
+    out = np.full(n, np.nan)
+    for i in range(n):
+        c = apply_inputs(case, {k: float(a[i]) for k, a in flat.items()})
+        try:
+            out[i] = operating_temperature(c, mode).mean_power_W
+        except SolverError:
+            if strict:
+                raise
+    return out
+
+
+def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
+                      strict: bool = False, block_rows: int = BLOCK_ROWS,
+                      threads: int = 1) -> np.ndarray:
+    """Cycle-mean loss [W] of the joint (regions and bearing) for each row of inputs.
+
+    Row ``i`` equals ``operating_temperature(apply_inputs(case, row_i), mode)
+    .mean_power_W`` (the ``total_mean_power_W`` of
+    :func:`~oilgap.model.evaluation.evaluate_case` under that mode) to rounding, the
+    balance modes to the balance's tolerance (module docstring; docs/benchmarks.md).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The nominal case.
+    inputs : mapping
+        Input name (:data:`INPUTS`) -> array (or float) in its unit; all broadcast
+        together; missing inputs keep the case's value.
+    mode : str or ThermalMode, optional
+        Thermal mode (default: the case's,
+        :func:`~oilgap.model.joint_loss.default_thermal_mode`).
+    strict : bool
+        Raise :class:`SolverError` when a row has no result (a heat balance without a
+        root below the cap, a non-finite loss) instead of giving it NaN.
+    block_rows : int
+        Rows evaluated together (:data:`BLOCK_ROWS`).
+    threads : int
+        Blocks evaluated at once by a pool of threads [-] (numpy's loops release the
+        GIL; 1: one after another). The numbers do not depend on it.
+
+    Returns
+    -------
+    ndarray
+        Loss [W], the inputs' broadcast shape; NaN where a row has no result.
+
+    Raises
+    ------
+    InputError
+        An unknown input, an out-of-range value (as :func:`apply_inputs`), or a mode the
+        case cannot take.
+    SolverError
+        ``strict`` and a row without a result.
+
+    References
+    ----------
+    Seed paper [1]_ (Eqs. 5, 10); Bergman et al. [2]_ (the balance); ISO 3448 [3]_.
+    """
+    mode = resolve_thermal_mode(case, None if mode is None else str(mode))
+    arrs, shape = broadcast_inputs(inputs)
+    check_input_ranges(case, arrs)
+    n = int(np.prod(shape, dtype=np.int64))
+    flat = {k: np.ascontiguousarray(a).reshape(-1) for k, a in arrs.items()}
+    if not flat:
+        flat = {"nu40_factor": np.ones(n)}
+    model = row_model(case, mode, "gamma" in flat, "film_strength" in flat)
+    out = np.empty(n)
+    step = max(1, int(block_rows))
+
+    def run(i: int) -> None:
+        part = {k: a[i:i + step] for k, a in flat.items()}
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            try:
+                out[i:i + step] = _block(case, mode, model, part)
+            except SolverError:
+                out[i:i + step] = _loop(case, part, mode, strict)
+
+    starts = range(0, n, step)
+    if threads > 1 and len(starts) > 1:  # numpy's loops release the GIL
+        with ThreadPoolExecutor(int(threads)) as pool:
+            list(pool.map(run, starts))
+    else:
+        for i in starts:
+            run(i)
+    out[~np.isfinite(out)] = np.nan
+    if strict and np.isnan(out).any():
+        j = int(np.flatnonzero(np.isnan(out))[0])
+        raise SolverError(f"row {j} of the uncertain inputs has no loss under thermal mode "
+                          f"'{mode}' (no heat-balance root below {MAX_OIL_TEMP_C:g} degC, or "
+                          "a non-finite loss)", "no_root")
+    return out.reshape(shape)
+
+
+__all__ = ["BLOCK_ROWS", "broadcast_inputs", "check_input_ranges", "joint_loss_arrays"]

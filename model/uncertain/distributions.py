@@ -59,14 +59,17 @@ RANGES: dict[str, tuple[float, float]] = {
     "gamma": (0.0, 3.0), "friction_scale": (0.0, math.inf), "film_strength": (0.0, math.inf),
     "bearing_drag_scale": (0.0, math.inf), "peak_speed_rpm": (0.0, math.inf),
 }
-"""Where each input may lie [its unit]: a distribution reaching outside is refused (a
-normal's mean +- 6 sd counts as its reach)."""
+"""Where each input may lie [its unit]: a distribution reaching outside is refused
+(:meth:`Distribution.reach`)."""
+TAIL = 1e-9
+"""Probability clipped at either end by :meth:`Distribution.ppf` [-] (a normal's mean
++- 6.0 sd): no sample lies beyond."""
 
 _LOCATION_SUFFIX = {"oil_temp_C": "_C", "depth_m": "_m", "peak_speed_rpm": "_rpm"}
 _SPREAD_SUFFIX = {"oil_temp_C": "_K", "depth_m": "_m", "peak_speed_rpm": "_rpm"}
 
-ISO3448_SOURCE = ("ISO 3448: a grade's nu at 40 degC within +-10 % of its midpoint; uniform "
-                  "over that band (the standard gives the band, not a law inside it)")
+ISO3448_SOURCE = ("ISO 3448's +-10 % band on a grade's nu40, uniform over it (the standard "
+                  "gives the band, not a law inside it)")
 GAMMA_SD = 0.041
 """Standard deviation of gamma from the seed rig fit (``oilgap study smoothing``) [-]."""
 GAMMA_SOURCE = "the seed rig fit, `oilgap study smoothing`: 0.566 +- 0.041"
@@ -162,16 +165,17 @@ class Distribution:
             unit = INPUTS[self.input].unit
             raise InputError(f"uncertainty.{self.input}", self.text(),
                              f"a law within {lo:g}..{hi:g} {unit} (it reaches "
-                             f"{a:.4g}..{b:.4g}; a normal's reach is mean +- 6 sd)", "case TOML")
+                             f"{a:.4g}..{b:.4g} between its 1e-9 and 1 - 1e-9 quantiles)",
+                             "case TOML")
 
     def reach(self) -> tuple[float, float]:
-        """Where the law lies [the input's unit]: its support, mean +- 6 sd for a normal."""
-        p = dict(self.params)
-        if self.kind == "normal":
-            return p["mean"] - 6.0 * p["sd"], p["mean"] + 6.0 * p["sd"]
-        if self.kind == "lognormal":
-            return 0.0, math.inf
-        return p["low"], p["high"]
+        """Where the law lies [the input's unit]: its support; a normal's or lognormal's
+        quantiles at :data:`TAIL` and 1 - :data:`TAIL` (about 6 sd from the middle), where
+        :meth:`ppf` clips its probabilities."""
+        if self.kind in ("normal", "lognormal"):
+            a, b = self.frozen().ppf([TAIL, 1.0 - TAIL])
+            return float(a), float(b)
+        return self["low"], self["high"]
 
     def frozen(self):
         """The law as a frozen ``scipy.stats`` distribution (input's unit)."""
@@ -191,15 +195,15 @@ class Distribution:
         Parameters
         ----------
         u : float or array_like
-            Probabilities in [0, 1] [-] (clipped to [1e-12, 1 - 1e-12] so that a normal's
-            tails stay finite).
+            Probabilities in [0, 1] [-] (clipped to [:data:`TAIL`, 1 - :data:`TAIL`] so
+            that a normal's tails stay finite and within :meth:`reach`).
 
         Returns
         -------
         numpy.ndarray
             The quantiles [the input's unit].
         """
-        u = np.clip(np.asarray(u, dtype=float), 1e-12, 1.0 - 1e-12)
+        u = np.clip(np.asarray(u, dtype=float), TAIL, 1.0 - TAIL)
         return self.frozen().ppf(u)
 
     @property
@@ -292,7 +296,7 @@ class UncertaintySpec:
         if u.shape[1] != len(self.distributions):
             raise InputError("u", u.shape, f"an array of shape (n, {len(self.distributions)})")
         if self.correlation is not None:
-            z = stats.norm.ppf(np.clip(u, 1e-12, 1.0 - 1e-12))
+            z = stats.norm.ppf(np.clip(u, TAIL, 1.0 - TAIL))
             u = stats.norm.cdf(z @ np.linalg.cholesky(np.asarray(self.correlation)).T)
         return {d.input: d.ppf(u[:, j]) for j, d in enumerate(self.distributions)}
 

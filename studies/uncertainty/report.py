@@ -118,7 +118,7 @@ def draw_tornado(result, ax: Any) -> None:
     ax.set_yticks(pos, labels)
     ax.set_xlabel("cycle-mean loss of the joint [W] (others nominal)")
     ax.set_title(f"{result.case_name}: tornado, nominal {base:.3f} W", fontsize=9)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2)
 
 
 def _figure(draw, result, path: Path, height: float = 4.8) -> Path:

@@ -58,6 +58,7 @@ from oilgap.studies.settings import (
     UncertaintySettings,
 )
 from oilgap.studies.uncertainty.indices import sobol_indices
+from oilgap.studies.uncertainty.report import write_outputs
 
 PERCENTILES = (5.0, 50.0, 95.0)
 """The loss's percentiles reported [%]."""
@@ -260,8 +261,6 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         sobol=sobol, failed=int(np.sum(~np.isfinite(y))),
         elapsed_s=time.perf_counter() - t0, defaults=study_defaults(case, settings))
     if out_dir is not None:
-        from oilgap.studies.uncertainty.report import write_outputs
-
         files = write_outputs(Path(out_dir), result)
         object.__setattr__(result, "files", files)
     return result

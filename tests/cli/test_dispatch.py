@@ -29,7 +29,8 @@ def test_thermal_modes_are_the_models():
 
 @pytest.mark.parametrize("argv", [["evaluate"], ["study", "smoothing"], ["study", "pareto"],
                                   ["study", "oil-grade"], ["study", "sweep", "g.csv"],
-                                  ["study", "uncertainty"], ["optimize"], ["loop", "d.csv"], ["synth"],
+                                  ["study", "uncertainty"], ["optimize"], ["loop", "d.csv"],
+                                  ["synth"],
                                   ["predict", "d.csv", "--model", "m.json", "--out", "p.csv"]])
 def test_every_parser_names_a_module_with_run(argv):
     args = build_parser().parse_args(argv)

@@ -122,8 +122,8 @@ def uncertainty(case: DesignCase | str | Path | None = None, *,
         A result folder the caller already opened.
     **keywords
         The fields of :class:`~oilgap.studies.settings.UncertaintySettings` (``samples``:
-        Sobol' points of the percentiles, a power of 2, default 4096; ``sobol_samples``:
-        Saltelli base points, default 1024; ``seed``; ``thermal``; ``confidence``;
+        Sobol' points of the percentiles, a power of 2, default 8192; ``sobol_samples``:
+        Saltelli base points, default 2048; ``seed``; ``thermal``; ``confidence``;
         ``sobol``: False skips the indices), or ``settings=``, the record whole.
 
     Returns

@@ -207,7 +207,7 @@ def study_defaults(case: DesignCase, settings: UncertaintySettings) -> tuple[Def
     out = [*case_defaults(case), *uncertainty_defaults(case)]
     if settings.samples == DEFAULT_UNCERTAINTY_SAMPLES:
         out.append(study_default("uncertainty.samples", settings.samples, "-",
-                                 "default: 2^12 scrambled Sobol' points"))
+                                 "default: 2^13 scrambled Sobol' points"))
     if settings.sobol and settings.sobol_samples == DEFAULT_SOBOL_SAMPLES:
         out.append(study_default("uncertainty.sobol_samples", settings.sobol_samples, "-",
                                  "default: Saltelli base points N, N (d + 2) evaluations"))

@@ -33,6 +33,7 @@ from oilgap.studies.uncertainty.report import (
     inputs_table,
     result_lines,
 )
+from oilgap.studies.uncertainty.study import mode_why
 
 
 class Uncertainty(StudyView):
@@ -81,7 +82,9 @@ class Uncertainty(StudyView):
         the inputs with their sources, the percentile table, the Sobol' and tornado
         table, the files written."""
         r = self.raw
-        thermal = thermal_description(self.case, r.thermal_mode, r.thermal_default)
+        thermal = thermal_description(self.case, r.thermal_mode, r.thermal_default,
+                                      mode_why(self.case, r.spec, r.thermal_mode,
+                                               r.thermal_default))
         lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
                  "", *result_lines(r)]
         wrote = self.wrote()

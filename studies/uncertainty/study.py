@@ -158,6 +158,31 @@ def study_mode(case: DesignCase, spec: UncertaintySpec, thermal: str | None
     return mode, thermal is None
 
 
+def mode_why(case: DesignCase, spec: UncertaintySpec, mode: str, default: bool) -> str | None:
+    """Why a defaulted mode is what it is, when it is not the case's default: the film
+    counterpart because ``film_strength`` is uncertain (None otherwise).
+
+    Parameters
+    ----------
+    case : DesignCase
+    spec : UncertaintySpec
+    mode : str
+        The study's mode [-].
+    default : bool
+        Whether it was defaulted.
+
+    Returns
+    -------
+    str or None
+        The text for the header's ``thermal`` line.
+    """
+    base = resolve_thermal_mode(case, None)
+    if not default or mode == base:
+        return None
+    return (f"film_strength is uncertain, so the film counterpart of the default {base}; "
+            f"s = 0 gives {base} exactly")
+
+
 def _loss(case: DesignCase, values: dict[str, np.ndarray], mode: str) -> np.ndarray:
     return np.asarray(joint_loss_arrays(case, values, mode), dtype=float).reshape(-1)
 
@@ -266,4 +291,5 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     return result
 
 
-__all__ = ["PERCENTILES", "UncertaintyResult", "run", "study_defaults", "study_mode"]
+__all__ = ["PERCENTILES", "UncertaintyResult", "mode_why", "run", "study_defaults",
+           "study_mode"]

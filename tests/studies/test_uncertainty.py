@@ -10,14 +10,16 @@ import numpy as np
 import pytest
 from scipy import stats
 
+from oilgap.model.case import ThermalSpec
 from oilgap.model.errors import InputError
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.uncertain.distributions import Distribution, UncertaintySpec
+from oilgap.model.uncertain.inputs import apply_inputs
 from oilgap.studies.settings import UncertaintySettings
 from oilgap.studies.uncertainty import run
 from oilgap.studies.uncertainty.indices import sobol_indices
-from oilgap.studies.uncertainty.study import study_mode
+from oilgap.studies.uncertainty.study import mode_why, study_mode
 
 
 def _laminar_case():
@@ -126,3 +128,18 @@ def test_settings_refuse_what_is_not_a_power_of_two():
         UncertaintySettings(samples=1000)
     with pytest.raises(InputError, match="confidence"):
         UncertaintySettings(confidence=1.5)
+
+
+def test_zero_film_strength_under_the_film_counterpart_is_the_default_mode():
+    # the documented reading of "between none and the smooth-film theory": s = 0 under
+    # film (full) is the isothermal film at the oil (bulk) temperature, by the scalar path
+    th = ThermalSpec(sea_temp_C=2.0, resistance_K_W=0.5, heat_capacity_J_K=5e4)
+    case = replace(seed_case(), thermal=th)
+    s0 = apply_inputs(case, {"film_strength": 0.0})
+    for default, film in (("none", "film"), ("bulk", "full")):
+        assert evaluate_case(s0, thermal=film).total_mean_power_W == pytest.approx(
+            evaluate_case(case, thermal=default).total_mean_power_W, rel=1e-9)
+    spec = UncertaintySpec(distributions=(Distribution(
+        input="film_strength", kind="uniform", params=(("low", 0.0), ("high", 1.0))),))
+    assert study_mode(case, spec, None) == ("full", True)
+    assert "s = 0 gives bulk" in mode_why(case, spec, "full", True)

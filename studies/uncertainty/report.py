@@ -143,7 +143,10 @@ def write_outputs(out: Path, result) -> tuple[Path, ...]:
     table (CSV), the histogram and tornado (PNG) and ``summary.md``."""
     files = write_tables(out, {"uncertainty_samples.csv": result.samples,
                                "uncertainty_statistics.csv": result.statistics,
-                               "uncertainty_inputs.csv": inputs_table(result)})
+                               # without its unit column: a "-" cell is quoted against
+                               # formula injection; the law's keys name the units
+                               "uncertainty_inputs.csv": inputs_table(result).drop(
+                                   columns="unit")})
     files.append(_figure(draw_histogram, result, out / "uncertainty_histogram.png"))
     files.append(_figure(draw_tornado, result, out / "uncertainty_tornado.png",
                          2.4 + 0.45 * len(result.tornado)))

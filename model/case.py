@@ -451,6 +451,10 @@ class DesignCase:
         The values the case reader filled in [each in its unit]
         (``oilgap.model.io.defaults.case_defaults`` lists them with the ones that follow
         from the case); empty for a case made in Python.
+    uncertainty : oilgap.model.uncertain.distributions.UncertaintySpec or None
+        The uncertain inputs' joint law (``[uncertainty]``), if given; None: the documented
+        defaults (:func:`oilgap.model.uncertain.distributions.case_uncertainty`). It
+        enters no nominal number.
     """
 
     name: str
@@ -468,6 +472,7 @@ class DesignCase:
     bearing: BearingSpec | None = None
     gamma_source: str = field(default="given", compare=False)
     defaults: tuple = field(default=(), compare=False)
+    uncertainty: Any = field(default=None, compare=False)
 
     def __post_init__(self):
         if self.bounds is None:

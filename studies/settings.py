@@ -70,6 +70,13 @@ DEFAULT_SENSITIVITY_K_W = (0.05, 0.1, 0.2)
 SWEEP_MODES = ("evaluate", "optimize")
 """What a sweep does to each row."""
 
+DEFAULT_UNCERTAINTY_SAMPLES = 2**12
+"""Quasi-Monte Carlo points of the uncertainty study's percentiles [-]."""
+DEFAULT_SOBOL_SAMPLES = 2**10
+"""Base points N of the Saltelli design of its Sobol' indices (N (d + 2) evaluations) [-]."""
+DEFAULT_CONFIDENCE = 0.95
+"""Confidence level of the Sobol' indices' intervals [-]."""
+
 
 def _integer(field: str, value: Any, lowest: int, where: str) -> int:
     if isinstance(value, bool) or not hasattr(value, "__index__") or int(value) < lowest:
@@ -358,6 +365,55 @@ class ParetoSettings(_Record):
         _set(self, points=int(p), thermal=_thermal(self.thermal, THERMAL_MODES, where))
 
 
+def _power_of_two(field: str, value: Any, lowest: int, where: str) -> int:
+    n = _integer(field, value, lowest, where)
+    if n & (n - 1):
+        raise InputError(field, n, f"a power of 2 >= {lowest} (Sobol' points are balanced "
+                         f"only then), e.g. {1 << (n.bit_length() - 1)}", where)
+    return n
+
+
+@dataclass(frozen=True, kw_only=True)
+class UncertaintySettings(_Record):
+    """What the uncertainty study computes (:func:`oilgap.studies.uncertainty.run`).
+
+    Attributes
+    ----------
+    samples : int
+        Scrambled Sobol' points of the percentiles (a power of 2, >= 16).
+    sobol_samples : int
+        Base points N of the Saltelli design of the Sobol' indices (a power of 2, >= 16;
+        N (d + 2) evaluations for d uncertain inputs).
+    seed : int
+        Seed of the scrambling (>= 0).
+    thermal : {"none", "bulk", "film", "full"}, optional
+        Thermal mode (None: ``bulk`` with ``[thermal]``, else ``none``; with
+        ``film_strength`` uncertain its film counterpart, ``film`` or ``full``).
+    confidence : float
+        Confidence level of the indices' intervals [-] (in (0, 1)).
+    sobol : bool
+        Compute the Sobol' indices (SALib); False: percentiles and tornado only.
+    """
+
+    samples: int = DEFAULT_UNCERTAINTY_SAMPLES
+    sobol_samples: int = DEFAULT_SOBOL_SAMPLES
+    seed: int = 0
+    thermal: str | None = None
+    confidence: float = DEFAULT_CONFIDENCE
+    sobol: bool = True
+
+    def __post_init__(self):
+        where = "uncertainty study"
+        c = check_finite("confidence", self.confidence, where)
+        if not 0.0 < c < 1.0:
+            raise InputError("confidence", c, "must lie in (0, 1)", where)
+        _set(self, samples=_power_of_two("samples", self.samples, 16, where),
+             sobol_samples=_power_of_two("sobol_samples", self.sobol_samples, 16, where),
+             seed=_integer("seed", self.seed, 0, where),
+             thermal=_thermal(self.thermal, THERMAL_MODES, where), confidence=c,
+             sobol=bool(self.sobol))
+
+
 def split_keywords(keywords: dict[str, Any], settings_type: type,
                    run_options: bool = True) -> tuple[Any, RunOptions | None]:
     """The façade's keywords as (settings, run options): each keyword goes to the record
@@ -388,4 +444,5 @@ def split_keywords(keywords: dict[str, Any], settings_type: type,
 
 
 __all__ = ["DEFAULT_STARTS", "INLINE", "DesignLimits", "OilGradeSettings", "ParetoSettings",
-           "RunOptions", "SmoothingSettings", "SweepSettings", "split_keywords"]
+           "RunOptions", "SmoothingSettings", "SweepSettings", "UncertaintySettings",
+           "split_keywords"]

@@ -43,6 +43,7 @@ from ..oils import Oil, get_oil, read_oils_csv
 from ..skin_friction import BRANCH_KEYS, FrictionLaw, check_friction_ranges
 from ..units import MM_TO_M, celsius_to_kelvin
 from .case_bearing import BEARING_TABLE, bearing_from_doc
+from .case_uncertainty import UNCERTAINTY_TABLE, uncertainty_from_doc
 from .defaults import reader_defaults
 from .inputs import cell_for_message, read_input_text
 
@@ -138,7 +139,8 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     base_dir = base_dir or Path.cwd()
     if not isinstance(doc, dict):
         raise InputError("case", doc, "must be a TOML table")
-    allowed_top = _TOP_KEYS | set(_TABLES) | set(_ARRAY_TABLES) | {BEARING_TABLE}
+    allowed_top = _TOP_KEYS | set(_TABLES) | set(_ARRAY_TABLES) | {BEARING_TABLE,
+                                                                   UNCERTAINTY_TABLE}
     _check_keys(doc, allowed_top, "")
     for t in _TABLES:
         if t in doc and not isinstance(doc[t], dict):
@@ -168,7 +170,8 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         name=name, region1=region1, region2=region2, oil=oil, operating=operating, duty_cycle=duty,
         friction=friction, motor=motor, bounds=bounds, mission=tuple(mission), oils_csv=oils_csv,
         thermal=thermal, bearing=bearing_from_doc(doc), gamma_source=gamma_source,
-        defaults=reader_defaults(doc, bounds, motor, thermal=thermal))
+        defaults=reader_defaults(doc, bounds, motor, thermal=thermal),
+        uncertainty=uncertainty_from_doc(doc))
 
 
 def _friction_value(key: str, value, fd: dict):

@@ -274,6 +274,32 @@ def _key_unit(key: str) -> str:
     return "-"
 
 
+def uncertainty_defaults(case: DesignCase) -> tuple[Default, ...]:
+    """The uncertain inputs' laws filled in when the case has no ``[uncertainty]`` table.
+
+    Listed by the commands that use them (``oilgap study uncertainty``, the robust
+    design), not by every command: a nominal number does not use them.
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (``case.uncertainty``; its gamma centres gamma's law).
+
+    Returns
+    -------
+    tuple of Default
+        ``uncertainty.nu40_factor = uniform(low = 0.9, high = 1.1)`` (ISO 3448) and
+        ``uncertainty.gamma = normal(mean = 0.566, sd = 0.041)`` [-] (the seed fit), each
+        with its source; empty when the case declares its own.
+    """
+    from ..uncertain.distributions import default_uncertainty
+
+    if case.uncertainty is not None:
+        return ()
+    return tuple(Default(f"uncertainty.{d.input}", d.text(), "", d.source)
+                 for d in default_uncertainty(case).distributions)
+
+
 # --------------------------------------------------------------------------- outputs
 
 
@@ -389,4 +415,4 @@ def gamma_line(case: DesignCase) -> str:
 
 __all__ = ["Default", "SEED_SOURCE", "case_defaults", "defaults_block", "defaults_lines",
            "defaults_markdown", "gamma_fields", "gamma_line", "reader_defaults",
-           "study_default"]
+           "study_default", "uncertainty_defaults"]

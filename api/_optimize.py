@@ -9,12 +9,15 @@ from typing import Any
 
 from oilgap._evaluate import as_case, thermal_case, with_operating
 from oilgap._results_design import Optimization, thermal_line
+from oilgap._results_robust import RobustOptimization
 from oilgap.model.case import DesignCase
-from oilgap.model.errors import OilgapWarning
+from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
 from oilgap.optim.design import DesignProblem, compare_heating
+from oilgap.optim.design.robust import check_statistic
+from oilgap.studies.robust import RobustSettings, robust_design
 from oilgap.studies.settings import DesignLimits
 
 
@@ -22,7 +25,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             **keywords: Any) -> Optimization:
+             robust: str | None = None, **keywords: Any) -> Optimization | RobustOptimization:
     """The region-1 geometry (R, delta, groove fill, L) of least mean power under the
     motor's torque, the rotor inertia and the case's bounds (``oilgap optimize``).
 
@@ -37,6 +40,13 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C
         As :func:`oilgap._evaluate.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
+    robust : str, optional
+        ``"p95"``, ``"mean"`` or ``"mean+2sd"``: the robust design over scenarios of the
+        case's uncertain inputs beside the nominal optimum (thermal mode ``none`` only;
+        :func:`oilgap.studies.robust.robust_design`); then also the keywords
+        ``scenarios`` (N, default 64), ``seed`` (Sobol' seed, default 0), ``mc_samples``
+        (independent Monte Carlo draws, default 4096) and ``pareto`` (points of the
+        nominal-vs-statistic front, default 0: none).
     **keywords
         The fields of :class:`~oilgap.studies.settings.DesignLimits`, or ``limits=``,
         the record whole: ``starts`` (start points: the case's design and ``starts - 1``
@@ -49,8 +59,9 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
 
     Returns
     -------
-    Optimization
-        ``.raw``: a DesignResult (``none``) or HeatingComparison; powers [W].
+    Optimization or RobustOptimization
+        ``.raw``: a DesignResult (``none``) or HeatingComparison; with ``robust``, a
+        RobustDesign; powers [W].
 
     Raises
     ------
@@ -59,6 +70,9 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     """
     kw = dict(keywords)
     verbose = bool(kw.pop("verbose", False))
+    robust_kw = {k: kw.pop(k) for k in _ROBUST_KEYWORDS if k in kw}
+    if robust is None and robust_kw:
+        raise TypeError(f"{', '.join(sorted(robust_kw))} only with robust=")
     lim = kw.pop("limits", None)
     unknown = set(kw) - DesignLimits.names()
     if unknown:
@@ -69,6 +83,8 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     starts, limits = lim.starts, lim.constraints()
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)
+    if robust is not None:
+        return _robust(c, mode, robust, robust_kw, lim, verbose)
     header = thermal_line(mode, thermal is None)
     if mode == ThermalMode.NONE:
         res = DesignProblem(c, verbose=verbose).solve(starts=starts, **limits)
@@ -84,6 +100,24 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         bands = tuple(film_band(d, mode, mean_power_W=e.mean_power_W)
                       for d, e in zip(cmp.heated.design_cases(), exact[:2], strict=True))
     return Optimization(cmp, c, exact, header, limits, bands)
+
+
+_ROBUST_KEYWORDS = ("scenarios", "seed", "mc_samples", "pareto")
+
+
+def _robust(case: DesignCase, mode: str, statistic: str, kw: dict, lim: DesignLimits,
+            verbose: bool) -> RobustOptimization:
+    """``optimize(robust=...)``: the robust design study (thermal mode ``none``)."""
+    check_statistic(statistic)
+    if mode != ThermalMode.NONE:
+        raise InputError("--robust", statistic, f"thermal mode none only (the case's mode is "
+                         f"{mode}: give --thermal none)", "optimize")
+    given = {k: kw.get(k) is not None for k in ("scenarios", "seed")}
+    s = RobustSettings(statistic=statistic, starts=lim.starts,
+                       **{("pareto_points" if k == "pareto" else k): v
+                          for k, v in kw.items() if v is not None})
+    res = robust_design(case, s, verbose=verbose, **lim.constraints())
+    return RobustOptimization(res, given)
 
 
 __all__ = ["optimize"]

@@ -344,6 +344,14 @@ def robust_design(case: DesignCase, settings: RobustSettings | None = None,
                         build_time_s=build, pareto=front)
 
 
+def _pareto_row(eps_W: float, r: RobustSolve) -> dict:
+    row = {"eps_W": float(eps_W), "nominal_loss_W": r.optimal.mean_power_W,
+           "objective_W": r.objective_W, "p95_W": empirical_stats(r.losses_W)["p95_W"]}
+    row.update({VARIABLE_LABELS[v][0]: float(xv) / MM_TO_M
+                for v, xv in zip(VARIABLES, r.x_m, strict=True)})
+    return row
+
+
 def robust_pareto(rp: RobustDesignProblem, x_nom: np.ndarray, robust: RobustSolve,
                   points: int, limits: dict) -> list[dict]:
     """The front of nominal loss against the statistic (epsilon constraint).
@@ -374,23 +382,16 @@ def robust_pareto(rp: RobustDesignProblem, x_nom: np.ndarray, robust: RobustSolv
     """
     lo_w = rp.problem.point(x_nom).mean_power_W
     hi_w = robust.optimal.mean_power_W
-    if hi_w - lo_w <= 1e-9 * abs(hi_w):
-        eps = [hi_w]
-    else:
-        eps = list(np.linspace(lo_w * (1 + 1e-9), hi_w, points))
-    rows, x = [], robust.x_m
-    for e in reversed(eps):
-        try:
-            r = rp.solve(x, starts=1, nominal_max_W=float(e), **limits)
-        except SolverError:
-            continue
-        x = r.x_m
-        row = {"eps_W": float(e), "nominal_loss_W": r.optimal.mean_power_W,
-               "objective_W": r.objective_W,
-               "p95_W": empirical_stats(r.losses_W)["p95_W"]}
-        row.update({VARIABLE_LABELS[v][0]: float(xv) / MM_TO_M
-                    for v, xv in zip(VARIABLES, r.x_m, strict=True)})
-        rows.append(row)
+    rows = [_pareto_row(hi_w, robust)]  # the robust optimum: its own eps
+    if hi_w - lo_w > 1e-6 * abs(hi_w):
+        x = robust.x_m
+        for e in np.linspace(hi_w, lo_w * (1 + 1e-7), points)[1:]:
+            try:
+                r = rp.solve(x, starts=1, nominal_max_W=float(e), **limits)
+            except SolverError:
+                continue
+            x = r.x_m
+            rows.append(_pareto_row(float(e), r))
     return rows[::-1]
 
 

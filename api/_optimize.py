@@ -25,7 +25,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             robust: str | None = None, **keywords: Any) -> Optimization | RobustOptimization:
+             **keywords: Any) -> Optimization | RobustOptimization:
     """The region-1 geometry (R, delta, groove fill, L) of least mean power under the
     motor's torque, the rotor inertia and the case's bounds (``oilgap optimize``).
 
@@ -40,15 +40,14 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C
         As :func:`oilgap._evaluate.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
-    robust : str, optional
-        ``"p95"``, ``"mean"`` or ``"mean+2sd"``: the robust design over scenarios of the
-        case's uncertain inputs beside the nominal optimum (thermal mode ``none`` only;
-        :func:`oilgap.studies.robust.robust_design`); then also the keywords
+    **keywords
+        ``robust``: ``"p95"``, ``"mean"`` or ``"mean+2sd"``: the robust design over
+        scenarios of the case's uncertain inputs beside the nominal optimum (thermal mode
+        ``none`` only; :func:`oilgap.studies.robust.robust_design`); then also
         ``scenarios`` (N, default 64), ``seed`` (Sobol' seed, default 0), ``mc_samples``
         (independent Monte Carlo draws, default 4096) and ``pareto`` (points of the
-        nominal-vs-statistic front, default 0: none).
-    **keywords
-        The fields of :class:`~oilgap.studies.settings.DesignLimits`, or ``limits=``,
+        nominal-vs-statistic front, default 0: none). And the fields of
+        :class:`~oilgap.studies.settings.DesignLimits`, or ``limits=``,
         the record whole: ``starts`` (start points: the case's design and ``starts - 1``
         random points in the bounds; default
         :data:`~oilgap.studies.settings.DEFAULT_STARTS`, as ``oilgap optimize``),
@@ -70,6 +69,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     """
     kw = dict(keywords)
     verbose = bool(kw.pop("verbose", False))
+    robust = kw.pop("robust", None)
     robust_kw = {k: kw.pop(k) for k in _ROBUST_KEYWORDS if k in kw}
     if robust is None and robust_kw:
         raise TypeError(f"{', '.join(sorted(robust_kw))} only with robust=")

@@ -140,7 +140,7 @@ def check_scenarios(scenarios: Mapping[str, object]) -> dict[str, np.ndarray]:
     Returns
     -------
     dict of str -> ndarray
-        The values as float arrays of shape (N,).
+        The values as float arrays of shape (N,) [the inputs' units].
 
     Raises
     ------
@@ -196,6 +196,7 @@ def resolve_scenarios(case: DesignCase, scenarios: Mapping[str, object],
     Returns
     -------
     ScenarioSet
+        nu [m^2/s], rho [kg/m^3], laws, nodes [rad/s], constant losses [W] per scenario.
 
     Raises
     ------
@@ -254,6 +255,7 @@ def smooth_case(case: DesignCase) -> DesignCase:
     Returns
     -------
     DesignCase
+        The same case, C_m [-] in the smooth form of Eq. 6.
     """
     return replace(case, friction=case.friction.smooth())
 

@@ -45,37 +45,32 @@ References
 
 from __future__ import annotations
 
-import copy
 import time
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field, replace
+from dataclasses import dataclass, field
 from typing import Any
 
 import casadi as ca
 import numpy as np
 
 from oilgap.model.errors import InputError
-from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.units import MM_TO_M
 
-from .objective import region1_mean_power
 from .problem import DesignProblem
 from .results import DesignPoint
+from .robust_nlp import CVAR_ALPHA, build_robust_nlp
 from .scenarios import ScenarioSet, resolve_scenarios
 from .session import SolverSession, check_starts, clamp, run_starts, solver_failure
-from .variables import LOG_VARIABLES, VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
+from .variables import VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
 
 STATISTICS = ("mean", "mean+2sd", "p95")
 """Statistics the robust NLP minimises."""
 
-CVAR_ALPHA = 0.95
-"""Level of the CVaR surrogate of p95 [-]."""
 
 SCENARIOS_RANGE = (8, 4096)
 """Allowed number of scenarios N [-]: fewer than 8 leave no tail for p95; more than 4096
 build an NLP of minutes."""
 
-_EPS_VAR = 1e-16
 _LIMIT_KEYS = ("torque_min_Nm", "inertia_max_ratio", "gap_min_m", "gap_max_m",
                "radius_min_m", "radius_max_m", "length_min_m", "length_max_m", "fix")
 
@@ -267,49 +262,15 @@ class RobustDesignProblem:
         return self.scenarios.n
 
     def _build(self) -> None:
-        """The scaled NLP, its session and the report function (losses, tau, J, L_nom).
-
-        One scenario's loss is an SX Function of the design and the scenario's data
-        (nu, rho, gamma, scale, constant loss, speed nodes), mapped over the N columns
-        of data: CasADi differentiates one scenario once instead of N expanded copies
-        (64 scenarios: 0.1 s to build instead of 3.5 s; the same exact derivatives).
-        """
-        prob, n = self.problem, self.scenarios.n
-        data, weights, law = _scenario_data(self.scenarios)
-        ys = ca.SX.sym("y", 5)
-        xs = tuple((ca.exp(ys[i]) if LOG_VARIABLES[i] else ys[i]) * MM_TO_M for i in range(5))
-        th = ca.SX.sym("theta", data.shape[0])
-        loss_i = region1_mean_power(xs, th[0], th[1], th[5:], weights,
-                                    _symbolic_law(law, th[2], th[3])) + th[4]
-        one = ca.Function("scenario_loss", [ys, th], [loss_i], {"cse": True})
-        p_nom = (region1_mean_power(xs, prob.nu_m2_s, prob.rho_kg_m3, ca.DM(prob.nodes_rad_s),
-                                    prob.weights, prob.law)
-                 + prob.constant_power(prob.nu_m2_s, prob.rho_kg_m3))
-        tau = motor_torque(prob.case.motor, xs[0], xs[1], xs[4])[0]
-        J = rotor_inertia(prob.case.motor, xs[0], xs[2], xs[4], prob.machined_rotor_groove_m)
-        geom = ca.Function("robust_geometry", [ys], [tau, J, p_nom])
-        y = ca.MX.sym("y", 5)
-        losses = one.map(n, "thread", 2)(y, ca.DM(data)).T
-        tau_m, J_m, p_nom_m = geom(y)
-        ell = losses / self.loss_ref_W
-        m = ca.sum1(ell) / n
-        g = [ca.log(tau_m / prob.tau_ref_Nm), ca.log(J_m / prob.inertia_ref_kgm2),
-             ca.log(p_nom_m / self.loss_ref_W)]
-        w = y
-        if self.statistic == "mean":
-            f = ca.log(m)
-        elif self.statistic == "mean+2sd":
-            v = ca.sumsqr(ell - m) / (n - 1)
-            f = ca.log(m + 2 * ca.sqrt(v + _EPS_VAR))
-        else:
-            t, s = ca.MX.sym("t"), ca.MX.sym("s", n)
-            w = ca.vertcat(y, t, s)
-            f = t + ca.sum1(s) / (n * (1.0 - CVAR_ALPHA))
-            g.append(ell - t - s)  # <= 0
+        """The scaled NLP with its exact derivatives (:mod:`.robust_nlp`), its solver
+        session and the report function (losses, torque, inertia, nominal loss)."""
+        built = build_robust_nlp(self.problem, self.scenarios, self.statistic,
+                                 self.loss_ref_W)
+        self.nlp = built
         self.session = SolverSession("oilgap_robust_" + self.statistic.replace("+2", "_plus_2"),
-                                     {"x": w, "p": ca.MX.sym("p", 0), "f": f,
-                                      "g": ca.vertcat(*g)}, prob.verbose, expand=False)
-        self.report_fn = ca.Function("robust_report", [y], [losses, tau_m, J_m, p_nom_m])
+                                     built.nlp, self.problem.verbose, expand=False,
+                                     **built.options)
+        self.report_fn = built.report
 
     def losses(self, x_m: Sequence[float]) -> np.ndarray:
         """The NLP's per-scenario losses of a design [W] (its own expressions).
@@ -412,43 +373,6 @@ class RobustDesignProblem:
                            x_m=x, optimal=self.problem.point(x), losses_W=losses,
                            objective_W=float(statistic_value(losses, self.statistic)),
                            raw={"f": out.f, "lam_g": out.lam_g})
-
-
-def _scenario_data(sc: ScenarioSet) -> tuple[np.ndarray, np.ndarray, Any]:
-    """The scenarios as columns (nu, rho, gamma, scale, constant, nodes...), their common
-    weights and their common friction law (gamma and scale aside).
-
-    Raises
-    ------
-    InputError
-        Scenarios whose duty cycles have different node counts or weights, or whose
-        laws differ in more than gamma and the scale (cannot happen with the inputs of
-        :data:`~oilgap.model.uncertain.INPUTS`; checked all the same).
-    """
-    law0 = sc.laws[0]
-    power_law = law0.form == "power-law"
-    key = "C" if power_law else "scale"
-    cols = []
-    for i in range(sc.n):
-        law, nodes, w = sc.laws[i], sc.nodes_rad_s[i], sc.weights[i]
-        same = replace(law, gamma=law0.gamma, **{key: getattr(law0, key)}) == law0
-        if not same or nodes.shape != sc.nodes_rad_s[0].shape \
-                or not np.array_equal(w, sc.weights[0]):
-            raise InputError("scenarios", i, "scenarios that differ in the inputs' "
-                             "effects only (one friction form, one duty-cycle shape)", "robust")
-        cols.append(np.concatenate([[sc.nu_m2_s[i], sc.rho_kg_m3[i], law.gamma,
-                                     getattr(law, key), sc.constant_W[i]], nodes]))
-    return np.column_stack(cols), sc.weights[0], law0
-
-
-def _symbolic_law(law: Any, gamma: Any, scale: Any) -> Any:
-    """A copy of ``law`` with CasADi symbols for gamma and the scale (``C`` of the power
-    law): FrictionLaw validates numbers when built, so the two fields are set on the copy
-    (:func:`~oilgap.model.skin_friction.moment_coefficient` takes symbols for both)."""
-    out = copy.copy(law)
-    object.__setattr__(out, "gamma", gamma)
-    object.__setattr__(out, "C" if law.form == "power-law" else "scale", scale)
-    return out
 
 
 __all__ = ["CVAR_ALPHA", "RobustDesignProblem", "RobustSolve", "SCENARIOS_RANGE",

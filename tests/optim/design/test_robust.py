@@ -169,3 +169,31 @@ def test_seed_optimum_on_five_active_constraints_is_already_robust(prob, seed_op
     np.testing.assert_allclose(r.x_m[[0, 1, 4]], [seed_opt.optimal.R_m,
                                                   seed_opt.optimal.delta_m,
                                                   seed_opt.optimal.L_m], rtol=1e-7)
+
+
+@pytest.mark.parametrize("statistic", ["mean", "mean+2sd", "p95"])
+def test_hand_assembled_derivatives_equal_casadi_ad(prob, statistic):
+    """grad_f, jac_g and hess_lag (chain rule over mapped per-scenario derivatives) against
+    CasADi's own AD of the NLP's f and g at random points and multipliers."""
+    import casadi as ca
+    rp = RobustDesignProblem(prob, draw(8, 2, 10.0), statistic)
+    nlp, opt = rp.nlp.nlp, rp.nlp.options
+    w, p = nlp["x"], nlp["p"]
+    lam_f, lam_g = ca.MX.sym("lf"), ca.MX.sym("lg", nlp["g"].shape[0])
+    lag = lam_f * nlp["f"] + ca.dot(lam_g, nlp["g"])
+    ref = ca.Function("ref", [w, p, lam_f, lam_g],
+                      [ca.gradient(nlp["f"], w), ca.jacobian(nlp["g"], w),
+                       ca.triu(ca.hessian(lag, w)[0])])
+    rng = np.random.default_rng(0)
+    for _ in range(3):
+        y = np.log([23.0, 1.3, 1.0, 1.0, 15.0]) + rng.normal(0, 0.05, 5)
+        y[2:4] = rng.uniform(0.1, 1.4, 2)
+        wv = np.concatenate([y, rng.uniform(0.5, 1.5, w.shape[0] - 5)])
+        lf, lg = rng.uniform(0.5, 2.0), rng.normal(0, 1, nlp["g"].shape[0])
+        gf, jg, hl = (np.asarray(ca.densify(v)) for v in ref(wv, [], lf, lg))
+        np.testing.assert_allclose(np.asarray(opt["grad_f"](wv, [])[1]).ravel(), gf.ravel(),
+                                   rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(np.asarray(ca.densify(opt["jac_g"](wv, [])[1])), jg,
+                                   rtol=1e-9, atol=1e-12)
+        np.testing.assert_allclose(np.asarray(ca.densify(opt["hess_lag"](wv, [], lf, lg))),
+                                   hl, rtol=1e-8, atol=1e-10)

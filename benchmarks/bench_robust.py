@@ -15,7 +15,9 @@ variables and N extra rows), for N = 16, 32, 64:
 * the nominal NLP: ``DesignProblem.solve_isothermal`` from the case's design.
 
 Calls are interleaved in rounds (nominal, then each N) so that the machine's load hits all
-alike; medians of wall and CPU time. Target: the robust NLP with N = 64 solves in <= 20x
+alike; medians of wall and CPU time (this process's: on a shared machine the wall time of a
+call of 100 ms includes other processes' time slices, that of a 3 ms call mostly not, so
+the CPU ratio is the like-for-like one). Target: the robust NLP with N = 64 solves in <= 20x
 the nominal NLP's time. Prints a Markdown table with the date and the load average.
 """
 
@@ -80,20 +82,21 @@ def main() -> None:
           f"uncertainty from {spec.source}")
     print()
     print("| NLP | build [s] | solve wall [ms] | solve CPU [ms] | ratio wall | ratio CPU | "
-          "IPOPT iterations | from the nominal optimum, wall [ms] |")
+          "IPOPT iterations | from the nominal optimum, wall / CPU [ms] |")
     print("|---|---|---|---|---|---|---|---|")
     print(f"| nominal (5 variables, 2 rows) | {prob.build_time_s:.3f} | {nw * 1e3:.1f} | "
           f"{nc * 1e3:.1f} | 1 | 1 | {nominal.iterations} | |")
     for n in SIZES:
         w, c = med(t_cold[n], 0), med(t_cold[n], 1)
-        ww = med(t_warm[n], 0)
+        ww, wc = med(t_warm[n], 0), med(t_warm[n], 1)
         print(f"| robust p95, N = {n} ({5 + 1 + n} variables, {3 + n} rows) | "
               f"{builds[n][0]:.3f} | {w * 1e3:.1f} | {c * 1e3:.1f} | {w / nw:.1f} | "
-              f"{c / nc:.1f} | {its[n]} | {ww * 1e3:.1f} |")
-    r64 = med(t_cold[64], 0) / nw
+              f"{c / nc:.1f} | {its[n]} | {ww * 1e3:.1f} / {wc * 1e3:.1f} |")
+    r64w, r64c = med(t_cold[64], 0) / nw, med(t_cold[64], 1) / nc
     print()
-    print(f"N = 64: {r64:.1f}x the nominal solve's wall time (target <= {TARGET_RATIO:g}x): "
-          f"{'met' if r64 <= TARGET_RATIO else 'NOT met'}")
+    print(f"N = 64, same start: {r64c:.1f}x the nominal solve's CPU time, {r64w:.1f}x its wall "
+          f"time (target <= {TARGET_RATIO:g}x): "
+          f"{'met' if max(r64c, r64w) <= TARGET_RATIO else 'NOT met'}")
 
 
 if __name__ == "__main__":

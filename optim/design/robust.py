@@ -290,7 +290,7 @@ class RobustDesignProblem:
         """Start vector and bounds of the auxiliary variables (t, s) at design ``x_m``."""
         if self.statistic != "p95":
             return np.zeros(0), np.zeros(0), np.zeros(0)
-        ell = self.scenarios.losses(x_m) / self.loss_ref_W  # numpy: the same model function
+        ell = self.losses(x_m) / self.loss_ref_W
         t = float(np.percentile(ell, 100 * CVAR_ALPHA))
         w0 = np.concatenate([[t], np.maximum(ell - t, 0.0)])
         lo = np.concatenate([[-np.inf], np.zeros(self.n)])

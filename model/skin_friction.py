@@ -48,6 +48,8 @@ from dataclasses import dataclass, replace
 from enum import StrEnum
 from typing import Literal
 
+import numpy as np
+
 from . import _math as m
 from .errors import InputError, check_finite, check_positive
 from .io.inputs import check_physical
@@ -55,6 +57,9 @@ from .taylor_couette import REGIME_BOUNDARIES_RE, couette_moment_coefficient
 
 BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))
 """(C, beta) of the four branches of seed Eq. 6; each is multiplied by (delta/R)^0.3 [1]."""
+
+_BRANCH_TABLE = tuple(np.array(col) for col in zip(*BILGEN_BOULOS_BRANCHES, strict=True))
+"""(C_k, beta_k) of :data:`BILGEN_BOULOS_BRANCHES` as arrays, indexed by branch."""
 
 BILGEN_BOULOS_ALPHA = 0.3
 """Gap-ratio exponent alpha of every branch of Eq. 6 [1]."""
@@ -241,6 +246,12 @@ def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     Bilgen & Boulos [1]; Pyrhönen et al. [2];
     seed paper (Eq. 6) [3].
     """
+    if not m.is_symbolic(reynolds, gap_ratio, alpha):  # numpy: each point's own branch only
+        k = np.zeros(np.shape(reynolds), np.intp)
+        for re_k in REGIME_BOUNDARIES_RE:
+            k += reynolds >= re_k  # NaN: branch 0, and a NaN C_m as before
+        return power_law_cm(reynolds, gap_ratio, _BRANCH_TABLE[0][k], alpha,
+                            _BRANCH_TABLE[1][k])
     b = [power_law_cm(reynolds, gap_ratio, C, alpha, beta) for C, beta in BILGEN_BOULOS_BRANCHES]
     r1, r2, r3 = REGIME_BOUNDARIES_RE
     return m.where(reynolds < r1, b[0], m.where(reynolds < r2, b[1],

@@ -296,7 +296,8 @@ def _lower_sign_change(power_at, tb, rth, t, suspect, tol_K, points=16):
     found = np.zeros(t.shape, bool)
     lo, hi = tb.copy(), t.copy()
     for f in np.arange(1, points) / points:
-        tt = tb + f * (t - tb)
+        tt = np.where(suspect, tb + f * (t - tb), t)  # others held (a caching power_at
+        # evaluates them once; their g is not used)
         g = tt - tb - rth * _total(power_at(tt))
         first = suspect & ~found & (g > tol_K)
         hi = np.where(first, tt, hi)

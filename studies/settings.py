@@ -70,9 +70,9 @@ DEFAULT_SENSITIVITY_K_W = (0.05, 0.1, 0.2)
 SWEEP_MODES = ("evaluate", "optimize")
 """What a sweep does to each row."""
 
-DEFAULT_UNCERTAINTY_SAMPLES = 2**12
+DEFAULT_UNCERTAINTY_SAMPLES = 2**13
 """Quasi-Monte Carlo points of the uncertainty study's percentiles [-]."""
-DEFAULT_SOBOL_SAMPLES = 2**10
+DEFAULT_SOBOL_SAMPLES = 2**11
 """Base points N of the Saltelli design of its Sobol' indices (N (d + 2) evaluations) [-]."""
 DEFAULT_CONFIDENCE = 0.95
 """Confidence level of the Sobol' indices' intervals [-]."""

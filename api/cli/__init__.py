@@ -62,6 +62,7 @@ COMMANDS: dict[str, str] = {
     "study pareto": "oilgap.cli.study_pareto",
     "study oil-grade": "oilgap.cli.study_oil_grade",
     "study sweep": "oilgap.cli.study_sweep",
+    "study uncertainty": "oilgap.cli.study_uncertainty",
     "loop": "oilgap.cli.loop",
     "predict": "oilgap.cli.predict",
     "synth": "oilgap.cli.synth",

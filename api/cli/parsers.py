@@ -16,13 +16,16 @@ from oilgap.model.thermal_modes import THERMAL_MODES
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 from oilgap.studies.settings import (
     DEFAULT_CHUNK_SECONDS,
+    DEFAULT_CONFIDENCE,
     DEFAULT_DEPTH_RANGE_M,
     DEFAULT_ISO_TOLERANCE,
     DEFAULT_MISSION_HOURS,
     DEFAULT_NU_MAX_CST,
     DEFAULT_NU_MIN_CST,
     DEFAULT_POINTS,
+    DEFAULT_SOBOL_SAMPLES,
     DEFAULT_STARTS,
+    DEFAULT_UNCERTAINTY_SAMPLES,
     MIN_POINTS,
     PLATEAU_TOL,
 )
@@ -197,13 +200,14 @@ def add_optimize(sub) -> None:
 
 
 def add_study(sub) -> None:
-    """Register ``oilgap study`` and its four subcommands."""
-    p = sub.add_parser("study", help="trade studies: smoothing, pareto, oil-grade, sweep",
+    """Register ``oilgap study`` and its five subcommands."""
+    p = sub.add_parser("study", help="trade studies: smoothing, pareto, oil-grade, sweep, "
+                       "uncertainty",
                        description="Trade studies. Each writes CSV, PNG figures and "
                        "summary.md to --out DIR (default out/<study>/).")
     ss = p.add_subparsers(dest="study", metavar="STUDY")
     ss.required = True
-    for add in (_add_smoothing, _add_pareto, _add_oil_grade, _add_sweep):
+    for add in (_add_smoothing, _add_pareto, _add_oil_grade, _add_sweep, _add_uncertainty):
         add(ss)
     for s in ss.choices.values():  # every study: its result as one JSON document
         s.add_argument("--json", action="store_true", help="print one JSON document "
@@ -343,6 +347,34 @@ def _add_sweep(ss) -> None:
     add_thermal_argument(s)
     _progress(s)
     s.set_defaults(command="study sweep")
+
+
+def _add_uncertainty(ss) -> None:
+    s = ss.add_parser("uncertainty", help="the loss's p5/p50/p95 under uncertain inputs, "
+                      "tornado and Sobol' indices",
+                      description="Quasi-Monte Carlo (scrambled Sobol' points) of the joint's "
+                      "mean loss over the case's [uncertainty] table (default: ISO 3448's "
+                      "+-10 % on nu40 and gamma 0.566 +- 0.041 from the seed fit): its "
+                      "percentiles, a histogram, a tornado and SALib's Sobol' indices.")
+    s.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
+    s.add_argument("--samples", type=positive_int, default=DEFAULT_UNCERTAINTY_SAMPLES,
+                   metavar="N", help="Sobol' points of the percentiles, a power of 2 "
+                   f"(default {DEFAULT_UNCERTAINTY_SAMPLES})")
+    s.add_argument("--sobol-samples", type=positive_int, default=DEFAULT_SOBOL_SAMPLES,
+                   metavar="N", help="Saltelli base points of the Sobol' indices, a power of "
+                   f"2; N (d + 2) evaluations (default {DEFAULT_SOBOL_SAMPLES})")
+    s.add_argument("--no-sobol", action="store_true", help="percentiles and tornado only "
+                   "(no SALib)")
+    s.add_argument("--seed", type=int, default=0, help="seed of the scrambling (default 0)")
+    s.add_argument("--confidence", type=finite_float, default=DEFAULT_CONFIDENCE,
+                   help=f"level of the indices' intervals (default {DEFAULT_CONFIDENCE:g})")
+    s.add_argument("--model", metavar="loop.json", help="a calibrated loop: its fitted "
+                   "gamma, friction scale and film strength (intervals, correlation) replace "
+                   "the case's [uncertainty]")
+    s.add_argument("--out", metavar="DIR", help="output folder (default out/uncertainty/)")
+    add_force(s)
+    add_thermal_argument(s)
+    s.set_defaults(command="study uncertainty")
 
 
 # --------------------------------------------------------------------------- loop

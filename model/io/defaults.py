@@ -31,6 +31,7 @@ from ..case import (
 from ..duty_cycle import DutyCycle
 from ..motor import motor_torque
 from ..skin_friction import BRANCH_KEYS, FrictionLaw
+from ..uncertain.distributions import default_uncertainty
 from ..units import MM_TO_M
 from .case_bearing import bearing_default_notes, bearing_defaults
 from .serialize import round_sig
@@ -292,8 +293,6 @@ def uncertainty_defaults(case: DesignCase) -> tuple[Default, ...]:
         ``uncertainty.gamma = normal(mean = 0.566, sd = 0.041)`` [-] (the seed fit), each
         with its source; empty when the case declares its own.
     """
-    from ..uncertain.distributions import default_uncertainty
-
     if case.uncertainty is not None:
         return ()
     return tuple(Default(f"uncertainty.{d.input}", d.text(), "", d.source)

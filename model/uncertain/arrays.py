@@ -181,10 +181,9 @@ def _col(v, idx):
     return v if np.ndim(v) == 0 else np.asarray(v)[idx][:, None]
 
 
-def _power(s: _Setup, r: dict, temp_C: np.ndarray) -> np.ndarray:
-    """Total loss [W] (regions and bearing) of the block's rows at bulk temperatures
-    ``temp_C`` (length k n: the rows repeated k times, row index fastest)."""
-    idx = np.arange(len(temp_C)) % r["n"]
+def _power(s: _Setup, r: dict, temp_C: np.ndarray, idx: np.ndarray) -> np.ndarray:
+    """Total loss [W] (regions and bearing) of the block's rows ``idx`` at bulk
+    temperatures ``temp_C`` (one per index)."""
     t_k = celsius_to_kelvin(temp_C)
     depth = r["depth"] if np.ndim(r["depth"]) == 0 else r["depth"][idx]
     p = seawater_gauge_pressure(depth)
@@ -232,7 +231,7 @@ def _block(s: _Setup, arrs: Mapping[str, np.ndarray]) -> np.ndarray:
     case = s.case
     r = _rows(case, arrs, s)
     if not uses_balance(s.mode):
-        return _power(s, r, r["temp_C"])
+        return _power(s, r, r["temp_C"], np.arange(r["n"]))
     th = case.thermal
     base = r["sea_C"] + th.resistance_K_W * th.other_heat_W
     ok = base < MAX_OIL_TEMP_C
@@ -243,8 +242,33 @@ def _block(s: _Setup, arrs: Mapping[str, np.ndarray]) -> np.ndarray:
         sub = {k: v[ok] for k, v in arrs.items()}
         out[ok] = _block(s, sub)
         return out
-    temps, p = steady_temperature(lambda t: _power(s, r, t), base, th.resistance_K_W, r["n"])
+    temps, p = steady_temperature(_memo_power(s, r), base, th.resistance_K_W, r["n"])
     return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
+
+
+def _memo_power(s: _Setup, r: dict):
+    """``power_at`` of the balance (temperatures of length k n, row index fastest) that
+    evaluates only the rows whose temperature is not one of the last call's of that row
+    (any slot): the solver holds a converged row's temperature, and P(row, T) is a
+    function, so the reused value is the one it would compute."""
+    n = r["n"]
+    seen: list[tuple[np.ndarray, np.ndarray]] = []
+
+    def power_at(temp_C: np.ndarray) -> np.ndarray:
+        k = len(temp_C) // n
+        t = temp_C.reshape(k, n)
+        p = np.full((k, n), np.nan)
+        todo = np.ones((k, n), bool)
+        for ts, ps in seen:
+            hit = todo & (t == ts)
+            p[hit] = np.broadcast_to(ps, (k, n))[hit]
+            todo &= ~hit
+        if todo.any():
+            rows = np.nonzero(todo)[1]
+            p[todo] = _power(s, r, t[todo], rows)
+        seen[:] = [(t[j], p[j].copy()) for j in range(k)] + seen[:2]
+        return p.reshape(-1)
+    return power_at
 
 
 def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: bool

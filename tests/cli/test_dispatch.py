@@ -29,7 +29,8 @@ def test_thermal_modes_are_the_models():
 
 @pytest.mark.parametrize("argv", [["evaluate"], ["study", "smoothing"], ["study", "pareto"],
                                   ["study", "oil-grade"], ["study", "sweep", "g.csv"],
-                                  ["optimize"], ["loop", "d.csv"], ["synth"],
+                                  ["study", "uncertainty"], ["optimize"], ["loop", "d.csv"],
+                                  ["synth"],
                                   ["predict", "d.csv", "--model", "m.json", "--out", "p.csv"]])
 def test_every_parser_names_a_module_with_run(argv):
     args = build_parser().parse_args(argv)
@@ -41,7 +42,8 @@ def test_every_table_entry_is_reachable_from_the_parser():
     parser = build_parser()
     keys = {parser.parse_args(a).command for a in (
         ["evaluate"], ["optimize"], ["study", "smoothing"], ["study", "pareto"],
-        ["study", "oil-grade"], ["study", "sweep", "g.csv"], ["loop", "d.csv"], ["synth"],
+        ["study", "oil-grade"], ["study", "sweep", "g.csv"], ["study", "uncertainty"],
+        ["loop", "d.csv"], ["synth"],
         ["predict", "d.csv", "--model", "m.json", "--out", "p.csv"])}
     assert keys == set(COMMANDS)
 

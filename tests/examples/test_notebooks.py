@@ -31,7 +31,8 @@ from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.heating import compare_heating
 from oilgap.studies import pareto
 from oilgap.studies.oil_grade import study as oil_grade
-from oilgap.studies.settings import OilGradeSettings, ParetoSettings
+from oilgap.studies.settings import OilGradeSettings, ParetoSettings, UncertaintySettings
+from oilgap.studies.uncertainty import run as uncertainty_run
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 INPUTS = ("my_joint.toml", "mission.csv", "rig_runs.csv", "rig_new_points.csv")
@@ -71,7 +72,8 @@ def case():
 def test_notebooks_are_saved_without_outputs():
     names = sorted(p.name for p in EXAMPLES.glob("*.ipynb"))
     assert names == ["01_my_joint_evaluate_optimize.ipynb", "02_pareto_gap_inertia.ipynb",
-                     "03_oil_grade_for_a_mission.ipynb", "04_rig_data_loop_predict.ipynb"]
+                     "03_oil_grade_for_a_mission.ipynb", "04_rig_data_loop_predict.ipynb",
+                     "05_uncertainty.ipynb"]
     for name in names:
         nb = nbformat.read(EXAMPLES / name, as_version=4)
         nbformat.validate(nb)
@@ -145,3 +147,15 @@ def test_04_loop_and_predict(tmp_path, monkeypatch):
     rmse = float(np.sqrt(np.mean((table["predicted_power_W"] - new["power_W"]) ** 2)))
     printed(found, "RMSE on the new points", rmse)
     assert rmse < 2.0  # the rig's noise is 1 W: VG46, never run, is predicted to the noise
+
+
+def test_05_uncertainty(tmp_path, monkeypatch):
+    found = execute("05_uncertainty.ipynb", tmp_path, monkeypatch)
+    c = case()
+    # the nominal loss by the scalar path (bulk: the case's default), not the study's
+    printed(found, "nominal loss", evaluate_case(c, thermal=None).total_mean_power_W)
+    r = uncertainty_run(case=c, settings=UncertaintySettings(samples=1024, sobol_samples=256))
+    printed(found, "p95 of the loss", r.statistic("p95"))
+    assert found["largest total index"] == r.sobol.sort_values("ST").iloc[-1]["input"]
+    assert number(found, "p95 of the loss") > number(found, "nominal loss")
+    assert (tmp_path / "out" / "05_uncertainty" / "defaults" / "summary.md").is_file()

@@ -525,7 +525,8 @@ def warn_if_untrusted_state(fluid, temp_C, pressure_gauge_Pa=0.0,
                       f"MPa absolute: above {GAS_TRUSTED_PRESSURE_ABS_PA / MPA_TO_PA:g} MPa the "
                       "ideal-gas density and Sutherland's pressure-free viscosity leave out "
                       "real-gas effects", OilgapWarning, stacklevel=2)
-    if kind == "table" and not fluid.pressures_Pa and p_max > TABLE_NO_PRESSURE_WARN_PA:
+    table = fluid.base if isinstance(fluid, ScaledFluid) else fluid
+    if kind == "table" and not table.pressures_Pa and p_max > TABLE_NO_PRESSURE_WARN_PA:
         warnings.warn(f"the table of {fluid.name!r} has no pressures: its atmospheric "
                       f"properties are used at {p_max / MPA_TO_PA:g} MPa gauge",
                       OilgapWarning, stacklevel=2)

@@ -246,12 +246,15 @@ def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     Bilgen & Boulos [1]; Pyrhönen et al. [2];
     seed paper (Eq. 6) [3].
     """
-    if not m.is_symbolic(reynolds, gap_ratio, alpha):  # numpy: each point's own branch only
+    if np.ndim(reynolds) and not m.is_symbolic(reynolds, gap_ratio, alpha):
+        # numpy: each point's own branch only (bit for bit the four-branch form below)
         k = np.zeros(np.shape(reynolds), np.intp)
         for re_k in REGIME_BOUNDARIES_RE:
             k += reynolds >= re_k  # NaN: branch 0, and a NaN C_m as before
-        return power_law_cm(reynolds, gap_ratio, _BRANCH_TABLE[0][k], alpha,
-                            _BRANCH_TABLE[1][k])
+        beta = _BRANCH_TABLE[1][k]
+        re_beta = np.power(reynolds, beta)
+        np.divide(1.0, reynolds, out=re_beta, where=beta == -1.0)  # as numpy's Re**-1.0
+        return power_law_cm(re_beta, gap_ratio, _BRANCH_TABLE[0][k], alpha, 1.0)
     b = [power_law_cm(reynolds, gap_ratio, C, alpha, beta) for C, beta in BILGEN_BOULOS_BRANCHES]
     r1, r2, r3 = REGIME_BOUNDARIES_RE
     return m.where(reynolds < r1, b[0], m.where(reynolds < r2, b[1],

@@ -29,6 +29,7 @@ from __future__ import annotations
 
 import warnings
 from collections.abc import Mapping
+from dataclasses import replace
 
 import numpy as np
 import pandas as pd
@@ -37,12 +38,12 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning, SolverError
 from oilgap.model.evaluation import oil_state
 from oilgap.model.fluids import warn_if_untrusted_state
-from oilgap.model.joint_loss import FilmBand, joint_mean_power
+from oilgap.model.joint_loss import FilmBand
 from oilgap.model.oil_properties import seawater_gauge_pressure
 from oilgap.model.oils import Oil
 from oilgap.model.regions import Region, joint_regions
 from oilgap.model.taylor_couette import couette_reynolds
-from oilgap.model.thermal import MAX_OIL_TEMP_C, require_balanced, steady_temperature
+from oilgap.model.thermal import MAX_OIL_TEMP_C, require_balanced
 from oilgap.model.thermal_modes import (
     DEFAULT_MODE_WHY,
     THERMAL_MODE_TEXT,
@@ -50,6 +51,7 @@ from oilgap.model.thermal_modes import (
     ThermalMode,
     uses_balance,
 )
+from oilgap.model.uncertain.rows import RowValues, row_balance, row_losses, row_model, row_total
 from oilgap.model.units import MM_TO_M, m2_s_to_cst
 from oilgap.studies.grid.columns import EVALUATE_NUMBERS
 from oilgap.studies.grid.schema import WHERE, apply_params
@@ -75,17 +77,14 @@ rolling bearing (or none)."""
     return list(groups.values())
 
 
-def _stacked_regions(cases: list[DesignCase], idx: list[int], repeat: int = 1
-                     ) -> list[Region]:
-    """The group's regions, one per region index, with R, delta, L, T of shape
-    (repeat * cases, 1) (the cases repeated ``repeat`` times, case index fastest)."""
+def _stacked_regions(cases: list[DesignCase], idx: list[int]) -> tuple[Region, ...]:
+    """The group's regions, one per region index, with R, delta, L, T arrays of one value
+    per case."""
     geos = [joint_regions(cases[i]) for i in idx]
-    out = []
-    for r in range(len(geos[0])):
-        R, d, L, T = (np.tile([getattr(g[r], k) for g in geos], repeat)[:, None]
-                      for k in ("radius_m", "gap_m", "length_m", "roughness_T"))
-        out.append(Region(geos[0][r].name, R, d, L, T))
-    return out
+    return tuple(Region(geos[0][r].name, *(np.array([getattr(g[r], k) for g in geos])
+                                           for k in ("radius_m", "gap_m", "length_m",
+                                                     "roughness_T")))
+                 for r in range(len(geos[0])))
 
 
 def _oil_states(c0: DesignCase, idx: list[int], temps: np.ndarray, depths: np.ndarray,
@@ -96,7 +95,7 @@ def _oil_states(c0: DesignCase, idx: list[int], temps: np.ndarray, depths: np.nd
         warnings.simplefilter("always", OilgapWarning)
         nu, _, rho = oil_state(c0, temps, depths)
     if rec:
-        for i, t, dep in zip(idx, temps, depths, strict=True):
+        for i, t, dep in zip(idx, temps, np.broadcast_to(depths, temps.shape), strict=True):
             with warnings.catch_warnings(record=True) as r1:
                 warnings.simplefilter("always", OilgapWarning)
                 warn_if_untrusted_state(c0.oil, t, seawater_gauge_pressure(dep))
@@ -105,35 +104,6 @@ def _oil_states(c0: DesignCase, idx: list[int], temps: np.ndarray, depths: np.nd
     nu = np.broadcast_to(np.asarray(nu, dtype=float), temps.shape)
     rho = np.broadcast_to(np.asarray(rho, dtype=float), temps.shape)
     return nu, rho
-
-
-def _balance(c0: DesignCase, cases: list[DesignCase], idx: list[int], depths: np.ndarray,
-             warn_col: list[str | None], mode: str) -> tuple[np.ndarray, np.ndarray]:
-    """Bulk temperature [degC] of each row under ``bulk``/``full`` (``T = T_sea + R (P(T)
-    + Q)``, one vectorised fixed point) and its sea temperature [degC]."""
-    th = c0.thermal
-    sea = np.array([cases[i].thermal.sea_temp_C for i in idx])
-    n = len(idx)
-    regs = {1: _stacked_regions(cases, idx, 1), 2: _stacked_regions(cases, idx, 2)}
-
-    def power_at(ts: np.ndarray) -> np.ndarray:
-        k = len(ts) // n
-        return np.asarray(joint_mean_power(c0, ts, mode, np.tile(depths, k), regs[k],
-                                           include_bearing=True), dtype=float)
-
-    base = sea + th.resistance_K_W * th.other_heat_W
-    temps, p = steady_temperature(power_at, base, th.resistance_K_W, n)
-    # no root below the cap: the row fails with its own line, never a result
-    failed = {}
-    for j in np.flatnonzero(~(temps < MAX_OIL_TEMP_C)):
-        try:
-            require_balanced(temps[j:j + 1], cases[idx[j]].thermal, c0.oil.trusted_range_C,
-                             p[j:j + 1])
-        except SolverError as e:
-            failed[idx[j]] = f"SolverError: {e}"
-    if failed:
-        raise RowsFailed(failed)
-    return temps, sea
 
 
 class RowsFailed(SolverError):
@@ -146,58 +116,75 @@ class RowsFailed(SolverError):
         super().__init__(next(iter(messages.values())), "no_root")
 
 
-def _group_temperatures(cases: list[DesignCase], idx: list[int], mode: str,
-                        depths: np.ndarray, warn_col: list[str | None]
-                        ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """(operating bulk temperatures, the rows' given temperatures, sea temperatures or
-    NaN) [degC]: the given temperature is the oil's under none/film, the sea's under
-    bulk/full (the isothermal reference is taken there: the loss without any heating)."""
-    c0 = cases[idx[0]]
-    if not uses_balance(mode):
-        temps = np.array([cases[i].operating.oil_temp_C for i in idx], dtype=float)
-        return temps, temps, np.full(len(idx), np.nan)
+def _balance(c0: DesignCase, rows: RowValues, idx: list[int], mode: str) -> np.ndarray:
+    """Bulk temperature [degC] of each row under ``bulk``/``full`` (``T = T_sea + R (P(T)
+    + Q)``, one vectorised fixed point, :func:`~oilgap.model.uncertain.rows.row_balance`);
+    rows without a root below the cap raise :class:`RowsFailed`, each with its line."""
     if c0.thermal is None:
         raise InputError("thermal", mode, "'none' or 'film': the case has no [thermal] "
                          "table", WHERE)
-    temps, sea = _balance(c0, cases, idx, depths, warn_col, mode)
-    return temps, sea, sea
+    temps, p = row_balance(row_model(c0, mode, rows.gamma is not None), rows)
+    failed = {}
+    for j in np.flatnonzero(~(temps < MAX_OIL_TEMP_C)):
+        try:
+            require_balanced(temps[j:j + 1], replace(c0.thermal, sea_temp_C=float(
+                rows.sea_temp_C[j])), c0.oil.trusted_range_C, p[j:j + 1])
+        except SolverError as e:
+            failed[idx[j]] = f"SolverError: {e}"
+    if failed:
+        raise RowsFailed(failed)
+    return temps
+
+
+def evaluate_rows(c0: DesignCase, rows: RowValues, mode: str, idx: list[int],
+                  out: dict[str, np.ndarray], warn_col: list[str | None]) -> None:
+    """Fill ``out`` at ``idx`` for stacked rows of ``c0`` (:mod:`oilgap.model.uncertain.rows`;
+    rows that carry gamma and scale take ``c0``'s law at gamma 0 and scale 1): operating
+    temperature, the regions' mean powers under ``mode``, the isothermal loss, peak
+    Reynolds numbers and the resolved geometry."""
+    ii = np.asarray(idx)
+    every = np.arange(rows.n)
+    given = rows.sea_temp_C if uses_balance(mode) else rows.oil_temp_C
+    temps = _balance(c0, rows, idx, mode) if uses_balance(mode) else rows.oil_temp_C
+    depths = np.broadcast_to(np.asarray(rows.depth_m, dtype=float), (rows.n,))
+    nu, rho = _oil_states(c0, idx, temps, depths, warn_col)
+    regs, bearing = row_losses(row_model(c0, mode, rows.gamma is not None), rows, temps, every)
+    total = regs.sum(axis=1) + bearing
+    nodes, _ = c0.duty_cycle.speed_distribution()
+    w_peak = float(nodes.max()) * (1.0 if rows.speed_factor is None else rows.speed_factor)
+    geo = rows.regions if rows.regions is not None else joint_regions(c0)
+    for r, reg in enumerate(geo):
+        out[f"region{r + 1}_power_W"][ii] = regs[:, r]
+        out[f"Re{r + 1}_peak"][ii] = couette_reynolds(w_peak, reg.radius_m, reg.gap_m, nu)
+    r1 = geo[0]
+    out["T_res"][ii] = r1.roughness_T
+    out["delta_mm_res"][ii] = np.asarray(r1.gap_m) / MM_TO_M
+    out["R_mm_res"][ii] = np.asarray(r1.radius_m) / MM_TO_M
+    out["L_mm_res"][ii] = np.asarray(r1.length_m) / MM_TO_M
+    out["mean_power_W"][ii] = total
+    out["isothermal_power_W"][ii] = total if mode == ThermalMode.NONE else row_total(
+        row_model(c0, "none", rows.gamma is not None), rows, given, every)
+    out["oil_temp_op_C"][ii] = temps
+    out["sea_temp_C"][ii] = rows.sea_temp_C if uses_balance(mode) else np.nan
+    out["nu_cSt"][ii] = m2_s_to_cst(nu)
+    out["density_kg_m3"][ii] = rho
 
 
 def _evaluate_group(cases: list[DesignCase], idx: list[int], mode: str,
                     out: dict[str, np.ndarray], warn_col: list[str | None]) -> None:
-    """Fill ``out`` at ``idx``: operating temperature, the regions' mean powers under
-    ``mode``, the isothermal loss, peak Reynolds numbers and the resolved geometry."""
+    """Fill ``out`` at ``idx`` for a group of cases (:func:`_group_by_law`) by
+    :func:`evaluate_rows`."""
     c0 = cases[idx[0]]
-    ii = np.asarray(idx)
-    depths = np.array([cases[i].operating.depth_m for i in idx], dtype=float)
-    temps, given, sea = _group_temperatures(cases, idx, mode, depths, warn_col)
-    nu, rho = _oil_states(c0, idx, temps, depths, warn_col)
-    nodes, _ = c0.duty_cycle.speed_distribution()
-    w_peak = float(nodes.max())
-    regions = _stacked_regions(cases, idx)
-    total = np.zeros(len(idx))
-    for r, reg in enumerate(regions):
-        mean = np.asarray(joint_mean_power(c0, temps, mode, depths, [reg]), dtype=float)
-        total += mean
-        out[f"region{r + 1}_power_W"][ii] = mean
-        out[f"Re{r + 1}_peak"][ii] = couette_reynolds(w_peak, reg.radius_m[:, 0],
-                                                      reg.gap_m[:, 0], nu)
-    if c0.bearing is not None:  # the bearing's own term: one per row, no film factor
-        total += np.asarray(joint_mean_power(c0, temps, mode, depths, [],
-                                             include_bearing=True), dtype=float)
-    r1 = regions[0]
-    out["T_res"][ii] = r1.roughness_T[:, 0]
-    out["delta_mm_res"][ii] = r1.gap_m[:, 0] / MM_TO_M
-    out["R_mm_res"][ii] = r1.radius_m[:, 0] / MM_TO_M
-    out["L_mm_res"][ii] = r1.length_m[:, 0] / MM_TO_M
-    out["mean_power_W"][ii] = total
-    out["isothermal_power_W"][ii] = total if mode == ThermalMode.NONE else np.asarray(
-        joint_mean_power(c0, given, "none", depths, regions, include_bearing=True),
-        dtype=float)
-    out["oil_temp_op_C"][ii] = temps
-    out["sea_temp_C"][ii] = sea
-    out["nu_cSt"][ii] = m2_s_to_cst(nu)
-    out["density_kg_m3"][ii] = rho
+    if uses_balance(mode) and c0.thermal is None:
+        raise InputError("thermal", mode, "'none' or 'film': the case has no [thermal] "
+                         "table", WHERE)
+    rows = RowValues(
+        n=len(idx), oil_temp_C=np.array([cases[i].operating.oil_temp_C for i in idx], float),
+        depth_m=np.array([cases[i].operating.depth_m for i in idx], float),
+        sea_temp_C=None if c0.thermal is None else np.array(
+            [cases[i].thermal.sea_temp_C for i in idx], float),
+        regions=_stacked_regions(cases, idx))
+    evaluate_rows(c0, rows, mode, idx, out, warn_col)
 
 
 def check_mode(thermal: str) -> str:

@@ -94,10 +94,11 @@ def main() -> None:
               f"{c / nc:.1f} | {its[n]} | {ww * 1e3:.1f} / {wc * 1e3:.1f} |")
     r64w, r64c = med(t_cold[64], 0) / nw, med(t_cold[64], 1) / nc
     print()
-    print(f"N = 64, same start: {r64c:.1f}x the nominal solve's CPU time, {r64w:.1f}x its wall "
-          f"time (target <= {TARGET_RATIO:g}x): "
-          f"{'met' if max(r64c, r64w) <= TARGET_RATIO else 'NOT met'}")
-
+    print(f"N = 64, same start: {r64c:.1f}x the nominal solve's CPU time "
+          f"({'met' if r64c <= TARGET_RATIO else 'NOT met'}), {r64w:.1f}x its wall time "
+          f"({'met' if r64w <= TARGET_RATIO else 'NOT met'}); target <= {TARGET_RATIO:g}x; "
+          f"the robust calls' wall/CPU = {med(t_cold[64], 0) / med(t_cold[64], 1):.1f} "
+          f"at load {load1[0]:.1f} on {os.cpu_count()} cores")
 
 if __name__ == "__main__":
     main()

@@ -107,6 +107,10 @@ def format_robust(r: RobustDesign, given: dict | None = None) -> str:
         f"{100 * STABILITY_DESIGN_TOL:g} % of each bound range, "
         f"{100 * STABILITY_STAT_TOL:g} % of the statistic)",
     ]
+    if r.same_design:
+        lines.append("same design          the robust optimum is the nominal one (to 1e-6 of "
+                     "each bound range): the nominal design already minimises the statistic "
+                     "over these scenarios")
     if r.pareto:
         lines += ["", f"pareto: min {stat} s.t. nominal loss <= eps (smooth C_m, in sample)",
                   f"{'eps_W':>12}{'nominal_W':>12}{stat + '_W':>12}{'p95_W':>12}"

@@ -188,6 +188,14 @@ class RobustDesign:
         return (self.doubled.objective_W - self.robust.objective_W) / self.robust.objective_W
 
     @property
+    def same_design(self) -> bool:
+        """The robust design is the nominal one to 1e-6 of each bound range."""
+        lo = np.asarray(self.nominal.parameters.lower_m)
+        hi = np.asarray(self.nominal.parameters.upper_m)
+        span = np.where(hi > lo, hi - lo, 1.0)
+        return bool(np.all(np.abs(self.robust.x_m - design_x(self.nominal)) <= 1e-6 * span))
+
+    @property
     def stable(self) -> bool:
         """Both changes within :data:`STABILITY_DESIGN_TOL`, :data:`STABILITY_STAT_TOL`."""
         lo = np.asarray(self.nominal.parameters.lower_m)
@@ -227,6 +235,7 @@ class RobustDesign:
                 "status": self.robust.status, "iterations": self.robust.iterations,
                 "solve_time_s": self.robust.solve_time_s, "mc": self.mc["robust"]}),
             "price_of_robustness_W": self.price_W, "p95_gain_W": self.p95_gain_W,
+            "same_design": self.same_design,
             "monte_carlo": {"samples": s.mc_samples, "seed": self.mc_seed,
                             "path": "joint_loss_arrays (vectorised, case's C_m)"},
             "stability": {"scenarios": 2 * s.scenarios,

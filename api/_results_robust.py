@@ -8,6 +8,7 @@ from typing import Any
 from oilgap._results import ResultView, case_defaults, lazy, new_axes
 from oilgap.model.io.defaults import gamma_line
 from oilgap.optim.design.robust import CVAR_ALPHA
+from oilgap.optim.design.scenarios import FILM_ONLY
 from oilgap.studies.robust.design import (
     DEFAULT_SCENARIOS,
     MC_SEED_OFFSET,
@@ -49,6 +50,10 @@ def _header(r: RobustDesign, given: dict) -> list[str]:
              f"{src['seed']}; uncertainty from: {r.spec.source}"]
     for d in r.spec.distributions:
         lines.append(f"              {d.input:<20}{d.text():<40}{d.source}")
+    ignored = [d.input for d in r.spec.distributions if d.input in FILM_ONLY]
+    if ignored:
+        lines.append(f"              ({', '.join(ignored)}: no effect under thermal none, "
+                     "left out of the scenarios)")
     rb = r.robust
     lines.append(f"solver      IPOPT {rb.status} in {rb.iterations} iterations, "
                  f"{rb.solve_time_s:.2f} s (best of {rb.starts} starts); NLP built in "

@@ -16,7 +16,7 @@ from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
 from oilgap.optim.design import DesignProblem, compare_heating
-from oilgap.optim.design.robust import check_statistic
+from oilgap.optim.design.robust import ROBUST_MODES, check_statistic
 from oilgap.studies.robust import RobustSettings, robust_design
 from oilgap.studies.settings import DesignLimits
 
@@ -42,8 +42,8 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         temperature [degC]).
     **keywords
         ``robust``: ``"p95"``, ``"mean"`` or ``"mean+2sd"``: the robust design over
-        scenarios of the case's uncertain inputs beside the nominal optimum (thermal mode
-        ``none`` only; :func:`oilgap.studies.robust.robust_design`); then also
+        scenarios of the case's uncertain inputs beside the nominal optimum (thermal modes
+        ``none`` and ``bulk``; :func:`oilgap.studies.robust.robust_design`); then also
         ``scenarios`` (N, default 64), ``seed`` (Sobol' seed, default 0), ``mc_samples``
         (independent Monte Carlo draws, default 4096) and ``pareto`` (points of the
         nominal-vs-statistic front, default 0: none). And the fields of
@@ -107,16 +107,16 @@ _ROBUST_KEYWORDS = ("scenarios", "seed", "mc_samples", "pareto")
 
 def _robust(case: DesignCase, mode: str, statistic: str, kw: dict, lim: DesignLimits,
             verbose: bool) -> RobustOptimization:
-    """``optimize(robust=...)``: the robust design study (thermal mode ``none``)."""
+    """``optimize(robust=...)``: the robust design study (thermal ``none`` or ``bulk``)."""
     check_statistic(statistic)
-    if mode != ThermalMode.NONE:
-        raise InputError("--robust", statistic, f"thermal mode none only (the case's mode is "
-                         f"{mode}: give --thermal none)", "optimize")
+    if str(mode) not in ROBUST_MODES:
+        raise InputError("--robust", statistic, f"thermal modes none and bulk only (here "
+                         f"{mode}: give --thermal none or bulk)", "optimize")
     given = {k: kw.get(k) is not None for k in ("scenarios", "seed")}
     s = RobustSettings(statistic=statistic, starts=lim.starts,
                        **{("pareto_points" if k == "pareto" else k): v
                           for k, v in kw.items() if v is not None})
-    res = robust_design(case, s, verbose=verbose, **lim.constraints())
+    res = robust_design(case, s, verbose=verbose, mode=str(mode), **lim.constraints())
     return RobustOptimization(res, given)
 
 

@@ -41,9 +41,12 @@ def _f(v: float) -> str:
 def _header(r: RobustDesign, given: dict) -> list[str]:
     s = r.settings
     src = {k: "" if given.get(k) else " (default)" for k in ("scenarios", "seed")}
+    mode_text = {"none": "isothermal oil at each scenario's temperature",
+                 "bulk": "each scenario's oil at the bulk temperature of its own heat "
+                 "balance, one temperature variable and balance row per scenario"}
     lines = [f"case        {r.case.name}",
-             "thermal     none (the robust NLP supports none only: isothermal oil at each "
-             "scenario's temperature)",
+             f"thermal     {r.mode} ({mode_text[r.mode]}; the robust NLP supports none and "
+             "bulk)",
              gamma_line(r.case),
              f"robust      {s.statistic}: {STATISTIC_TEXT[s.statistic]}",
              f"scenarios   N = {s.scenarios}{src['scenarios']}, Sobol' seed {s.seed}"
@@ -52,7 +55,7 @@ def _header(r: RobustDesign, given: dict) -> list[str]:
         lines.append(f"              {d.input:<20}{d.text():<40}{d.source}")
     ignored = [d.input for d in r.spec.distributions if d.input in FILM_ONLY]
     if ignored:
-        lines.append(f"              ({', '.join(ignored)}: no effect under thermal none, "
+        lines.append(f"              ({', '.join(ignored)}: no effect under thermal {r.mode}, "
                      "left out of the scenarios)")
     rb = r.robust
     lines.append(f"solver      IPOPT {rb.status} in {rb.iterations} iterations, "
@@ -209,7 +212,7 @@ class RobustOptimization(ResultView):
 
     def to_dict(self) -> dict:
         """The ``oilgap optimize --robust --json`` document (without its ``out``)."""
-        return {"case": self.case.name, "thermal_mode": "none", **self.raw.to_dict(),
+        return {"case": self.case.name, "thermal_mode": self.raw.mode, **self.raw.to_dict(),
                 "defaults": self.defaults}
 
     def to_frame(self) -> Any:
@@ -247,7 +250,7 @@ class RobustOptimization(ResultView):
             for k, c in (("nominal", "tab:blue"), ("robust", "tab:orange")):
                 ax.hist(r.mc_losses_W[k], bins=60, alpha=0.5, color=c, label=f"{k} design")
                 ax.axvline(r.mc[k]["p95_W"], color=c, ls="--")
-            ax.set_xlabel("loss [W] (independent Monte Carlo, case's C_m)")
+            ax.set_xlabel(f"loss [W] (independent Monte Carlo, case's C_m, {r.mode})")
             ax.set_ylabel("draws")
             ax.set_title(f"{self.case.name}: p95 gain {r.p95_gain_W:+.3g} W, "
                          f"price {r.price_W:+.3g} W")

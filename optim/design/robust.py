@@ -58,10 +58,15 @@ from oilgap.model.units import MM_TO_M
 
 from .problem import DesignProblem
 from .results import DesignPoint
+from .robust_bulk import TEMP_SCALE_K, build_bulk_nlp, start_temperatures
 from .robust_nlp import CVAR_ALPHA, build_robust_nlp
-from .scenarios import ScenarioSet, resolve_scenarios
+from .scenarios import ScenarioSet, check_scenarios, resolve_scenarios
 from .session import SolverSession, check_starts, clamp, run_starts, solver_failure
 from .variables import VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
+
+ROBUST_MODES = ("none", "bulk")
+"""Thermal modes the robust NLP supports (``film``/``full``: the film factor per scenario,
+not built)."""
 
 STATISTICS = ("mean", "mean+2sd", "p95")
 """Statistics the robust NLP minimises."""
@@ -234,7 +239,9 @@ class RobustDesignProblem:
     Parameters
     ----------
     problem : DesignProblem
-        The nominal problem (thermal mode ``none``): its case, scaling, constraints.
+        The nominal problem: its case, scaling, constraints, and its thermal mode, ``none``
+        (:mod:`.robust_nlp`) or ``bulk`` (one oil temperature and heat balance per
+        scenario, :mod:`.robust_bulk`).
     scenarios : mapping of str -> array, or ScenarioSet
         N values of each uncertain input (:func:`.scenarios.resolve_scenarios`).
     statistic : str
@@ -244,14 +251,20 @@ class RobustDesignProblem:
     def __init__(self, problem: DesignProblem, scenarios: Mapping[str, Any] | ScenarioSet,
                  statistic: str = "p95"):
         t0 = time.perf_counter()
-        if problem.thermal_mode != "none":
-            raise InputError("thermal", problem.thermal_mode, "the robust design NLP "
-                             "supports thermal mode none only", "optimize")
+        self.mode = str(problem.thermal_mode)
+        if self.mode not in ROBUST_MODES:
+            raise InputError("thermal", self.mode, "the robust design NLP supports thermal "
+                             f"modes {' and '.join(ROBUST_MODES)}", "optimize")
         self.problem = problem
         self.statistic = check_statistic(statistic)
-        self.scenarios = (scenarios if isinstance(scenarios, ScenarioSet)
-                          else resolve_scenarios(problem.case, scenarios))
-        check_scenario_count(self.scenarios.n)
+        if self.mode == "bulk":
+            self.scenarios = check_scenarios(scenarios)
+            self._n = next(iter(self.scenarios.values())).size if self.scenarios else 0
+        else:
+            self.scenarios = (scenarios if isinstance(scenarios, ScenarioSet)
+                              else resolve_scenarios(problem.case, scenarios))
+            self._n = self.scenarios.n
+        check_scenario_count(self._n)
         self.loss_ref_W = float(problem.point(problem.x_case_m).mean_power_W)
         self._build()
         self.build_time_s = time.perf_counter() - t0
@@ -259,16 +272,22 @@ class RobustDesignProblem:
     @property
     def n(self) -> int:
         """Number of scenarios N [-]."""
-        return self.scenarios.n
+        return self._n
 
     def _build(self) -> None:
         """The scaled NLP with its exact derivatives (:mod:`.robust_nlp`), its solver
         session and the report function (losses, torque, inertia, nominal loss)."""
+        name = f"oilgap_robust_{self.mode}_" + self.statistic.replace("+2", "_plus_2")
+        if self.mode == "bulk":
+            self.bulk = build_bulk_nlp(self.problem, self.scenarios, self.statistic,
+                                       self.loss_ref_W)
+            self.session = SolverSession(name, self.bulk.nlp, self.problem.verbose,
+                                         expand=False)
+            return
         built = build_robust_nlp(self.problem, self.scenarios, self.statistic,
                                  self.loss_ref_W)
         self.nlp = built
-        self.session = SolverSession("oilgap_robust_" + self.statistic.replace("+2", "_plus_2"),
-                                     built.nlp, self.problem.verbose, expand=False,
+        self.session = SolverSession(name, built.nlp, self.problem.verbose, expand=False,
                                      **built.options)
         self.report_fn = built.report
 
@@ -284,17 +303,35 @@ class RobustDesignProblem:
         -------
         ndarray of shape (N,)
         """
-        return np.asarray(self.report_fn(ca.DM(to_nlp(np.asarray(x_m, float))))[0]).ravel()
+        x = np.asarray(x_m, float)
+        if self.mode == "bulk":  # at each scenario's own balance (the scalar path's)
+            u = self._temperatures(x) / TEMP_SCALE_K
+            return np.asarray(self.bulk.report(ca.DM(to_nlp(x)), ca.DM(u))).ravel()
+        return np.asarray(self.report_fn(ca.DM(to_nlp(x)))[0]).ravel()
+
+    def _temperatures(self, x_m: np.ndarray) -> np.ndarray:
+        """Each scenario's bulk temperature at design ``x_m`` [degC] (``bulk``)."""
+        p = self.problem
+        return start_temperatures(self.bulk.cases, x_m, (p.machined_rotor_groove_m,
+                                                         p.machined_stator_groove_m))
 
     def _w0(self, x_m: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Start vector and bounds of the auxiliary variables (t, s) at design ``x_m``."""
-        if self.statistic != "p95":
+        """Start vector and bounds of the auxiliary variables (temperatures under ``bulk``;
+        t, s under p95) at design ``x_m``."""
+        parts = []
+        if self.mode == "bulk":
+            u = self._temperatures(x_m) / TEMP_SCALE_K
+            lo, hi = self.bulk.u_bounds
+            parts.append((np.clip(u, lo, hi), lo, hi))
+        if self.statistic == "p95":
+            ell = self.losses(x_m) / self.loss_ref_W
+            t = float(np.percentile(ell, 100 * CVAR_ALPHA))
+            parts.append((np.concatenate([[t], np.maximum(ell - t, 0.0)]),
+                          np.concatenate([[-np.inf], np.zeros(self.n)]),
+                          np.full(self.n + 1, np.inf)))
+        if not parts:
             return np.zeros(0), np.zeros(0), np.zeros(0)
-        ell = self.losses(x_m) / self.loss_ref_W
-        t = float(np.percentile(ell, 100 * CVAR_ALPHA))
-        w0 = np.concatenate([[t], np.maximum(ell - t, 0.0)])
-        lo = np.concatenate([[-np.inf], np.zeros(self.n)])
-        return w0, lo, np.full(self.n + 1, np.inf)
+        return tuple(np.concatenate([q[k] for q in parts]) for k in range(3))
 
     def solve(self, x0: Sequence[float] | None = None, *, starts: int = 1, seed: int = 0,
               nominal_max_W: float | None = None, **limits: Any) -> RobustSolve:
@@ -330,14 +367,19 @@ class RobustDesignProblem:
         check_starts(starts)
         prob = self.problem
         params = prob.parameters(**limits)
+        if nominal_max_W is not None and self.mode != "none":
+            raise InputError("pareto", nominal_max_W, "under thermal mode none only",
+                             "optimize")
         if x0 is None:
-            x0 = prob.solve_isothermal(starts=starts, seed=seed, **limits).optimal
+            x0 = prob.solve(starts=starts, seed=seed, **limits).optimal
         x_start = np.asarray(x0.x_mm * MM_TO_M if isinstance(x0, DesignPoint) else x0, float)
         x_start = clamp(x_start, params.lower_m, params.upper_m)
         prob.check_feasible(params, x_start)
         lbg, ubg = prob.constraint_bounds(params)
         ub_nom = np.inf if nominal_max_W is None else np.log(nominal_max_W / self.loss_ref_W)
         lbg, ubg = [*lbg, -np.inf], [*ubg, ub_nom]
+        if self.mode == "bulk":  # the balance rows (degrees over 1 K)
+            lbg, ubg = [*lbg, *[0.0] * self.n], [*ubg, *[0.0] * self.n]
         if self.statistic == "p95":
             lbg, ubg = [*lbg, *[-np.inf] * self.n], [*ubg, *[0.0] * self.n]
         lo, hi = np.asarray(params.lower_m), np.asarray(params.upper_m)
@@ -367,10 +409,15 @@ class RobustDesignProblem:
                                  f"the robust design NLP ({self.statistic})")
         y_in = clamp(y, ylo, yhi)
         x = np.where(y_in == ylo, lo, np.where(y_in == yhi, hi, clamp(from_nlp(y_in), lo, hi)))
-        losses = self.losses(x)
+        if self.mode == "bulk":  # at the NLP's own temperatures (balanced to IPOPT's tol)
+            losses = np.asarray(self.bulk.report(ca.DM(to_nlp(x)),
+                                                 ca.DM(out.x[5:5 + self.n]))).ravel()
+            optimal = self.problem.heated.point(x)[0]
+        else:
+            losses, optimal = self.losses(x), self.problem.point(x)
         return RobustSolve(statistic=self.statistic, status=out.status,
                            iterations=out.iterations, starts=1, solve_time_s=out.time_s,
-                           x_m=x, optimal=self.problem.point(x), losses_W=losses,
+                           x_m=x, optimal=optimal, losses_W=losses,
                            objective_W=float(statistic_value(losses, self.statistic)),
                            raw={"f": out.f, "lam_g": out.lam_g})
 

@@ -127,6 +127,8 @@ class RobustDesign:
     ----------
     case : DesignCase
         The case solved.
+    mode : str
+        Thermal mode (``none`` or ``bulk``).
     settings : RobustSettings
         What was done.
     spec : UncertaintySpec
@@ -149,6 +151,7 @@ class RobustDesign:
     """
 
     case: DesignCase
+    mode: str
     settings: RobustSettings
     spec: UncertaintySpec
     nominal: DesignResult
@@ -236,7 +239,7 @@ class RobustDesign:
                 "solve_time_s": self.robust.solve_time_s, "mc": self.mc["robust"]}),
             "price_of_robustness_W": self.price_W, "p95_gain_W": self.p95_gain_W,
             "same_design": self.same_design,
-            "monte_carlo": {"samples": s.mc_samples, "seed": self.mc_seed,
+            "monte_carlo": {"samples": s.mc_samples, "seed": self.mc_seed, "mode": self.mode,
                             "path": "joint_loss_arrays (vectorised, case's C_m)"},
             "stability": {"scenarios": 2 * s.scenarios,
                           "design_change_mm": self.design_change_mm,
@@ -266,7 +269,7 @@ def design_x(res: DesignResult) -> np.ndarray:
 
 
 def monte_carlo(case: DesignCase, x_m: np.ndarray, machined_m: tuple[float, float],
-                sample: dict) -> np.ndarray:
+                sample: dict, mode: str = "none") -> np.ndarray:
     """Loss of design ``x_m`` over a sample of the uncertain inputs (vectorised path).
 
     Parameters
@@ -279,11 +282,13 @@ def monte_carlo(case: DesignCase, x_m: np.ndarray, machined_m: tuple[float, floa
         Machined groove depths d_r0, d_s0 [m].
     sample : dict of str -> ndarray
         The inputs' values [their units].
+    mode : str
+        Thermal mode (``none`` or ``bulk``).
 
     Returns
     -------
     ndarray
-        Loss of each draw, thermal mode ``none``, the case's C_m [W].
+        Loss of each draw under ``mode``, the case's C_m [W].
 
     Raises
     ------
@@ -291,31 +296,35 @@ def monte_carlo(case: DesignCase, x_m: np.ndarray, machined_m: tuple[float, floa
         A draw without a loss.
     """
     dc = design_case(case, x_m, machined_m)
-    return np.asarray(joint_loss_arrays(dc, sample, mode="none", strict=True), dtype=float)
+    return np.asarray(joint_loss_arrays(dc, sample, mode=mode, strict=True), dtype=float)
 
 
-def _at_nominal(case: DesignCase, x_m: np.ndarray, machined_m: tuple[float, float]) -> float:
+def _at_nominal(case: DesignCase, x_m: np.ndarray, machined_m: tuple[float, float],
+                mode: str) -> float:
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", OilgapWarning)
         return float(evaluate_case(design_case(case, x_m, machined_m),
-                                   thermal="none").total_mean_power_W)
+                                   thermal=mode).total_mean_power_W)
 
 
 def robust_design(case: DesignCase, settings: RobustSettings | None = None,
                   spec: UncertaintySpec | None = None, verbose: bool = False,
-                  **limits: Any) -> RobustDesign:
+                  mode: str = "none", **limits: Any) -> RobustDesign:
     """Nominal and robust optimum, the independent Monte Carlo and the 2N stability check.
 
     Parameters
     ----------
     case : DesignCase
-        The joint (thermal mode ``none``: isothermal oil at each scenario's temperature).
+        The joint.
     settings : RobustSettings, optional
         Statistic, N, seed, starts, Monte Carlo draws, Pareto points (default: p95, 64, 0).
     spec : UncertaintySpec, optional
         The uncertain inputs (default: :func:`~oilgap.model.uncertain.case_uncertainty`).
     verbose : bool
         Let IPOPT print its iterations.
+    mode : str
+        Thermal mode: ``none`` (isothermal oil at each scenario's temperature) or ``bulk``
+        (each scenario at its own heat balance; needs ``[thermal]``; no Pareto).
     **limits
         ``torque_min_Nm`` [N m], ``inertia_max_ratio`` [-] (None: the case's).
 
@@ -331,8 +340,11 @@ def robust_design(case: DesignCase, settings: RobustSettings | None = None,
     s = settings or RobustSettings()
     spec = spec or case_uncertainty(case)
     lim = {k: v for k, v in limits.items() if v is not None}
-    prob = DesignProblem(case, verbose=verbose)
-    nominal = prob.solve_isothermal(starts=s.starts, seed=s.seed, **lim)
+    if mode == "bulk" and s.pareto_points:
+        raise InputError("--pareto", s.pareto_points, "under thermal mode none only",
+                         "optimize")
+    prob = DesignProblem(case, verbose=verbose, thermal=mode)
+    nominal = prob.solve(starts=s.starts, seed=s.seed, **lim)
     x_nom = design_x(nominal)
     t0 = time.perf_counter()
     rp = RobustDesignProblem(prob, spec.sample(s.scenarios, s.seed), s.statistic)
@@ -342,12 +354,13 @@ def robust_design(case: DesignCase, settings: RobustSettings | None = None,
     doubled = rp2.solve(robust.x_m, starts=s.starts, seed=s.seed, **lim)
     machined = (prob.machined_rotor_groove_m, prob.machined_stator_groove_m)
     sample = spec.sample(s.mc_samples, s.seed + MC_SEED_OFFSET)
-    mc_l = {k: monte_carlo(case, x, machined, sample)
+    mc_l = {k: monte_carlo(case, x, machined, sample, mode)
             for k, x in (("nominal", x_nom), ("robust", robust.x_m))}
-    at_nom = {k: _at_nominal(case, x, machined)
+    at_nom = {k: _at_nominal(case, x, machined, mode)
               for k, x in (("nominal", x_nom), ("robust", robust.x_m))}
     front = robust_pareto(rp, x_nom, robust, s.pareto_points, lim) if s.pareto_points else []
-    return RobustDesign(case=case, settings=s, spec=spec, nominal=nominal, robust=robust,
+    return RobustDesign(case=case, mode=mode, settings=s, spec=spec, nominal=nominal,
+                        robust=robust,
                         doubled=doubled, at_nominal_W=at_nom,
                         mc={k: empirical_stats(v) for k, v in mc_l.items()}, mc_losses_W=mc_l,
                         build_time_s=build, pareto=front)

@@ -197,3 +197,29 @@ def test_hand_assembled_derivatives_equal_casadi_ad(prob, statistic):
                                    rtol=1e-9, atol=1e-12)
         np.testing.assert_allclose(np.asarray(ca.densify(opt["hess_lag"](wv, [], lf, lg))),
                                    hl, rtol=1e-8, atol=1e-10)
+
+
+def test_bulk_scenarios_balance_and_identical_ones_give_the_nominal_bulk_optimum():
+    """Under bulk each scenario's loss at the NLP's own temperature equals the scalar
+    path's balance (operating_temperature of apply_inputs of the design's case); N
+    identical nominal scenarios give the nominal bulk optimum."""
+    from oilgap.model.case import ThermalSpec
+    from oilgap.model.joint_loss import operating_temperature
+    case = replace(seed_case(), thermal=ThermalSpec(sea_temp_C=2.0, resistance_K_W=0.5,
+                                                    heat_capacity_J_K=5e4))
+    prob = DesignProblem(case, thermal="bulk")
+    nom = prob.solve()
+    same = RobustDesignProblem(prob, {"nu40_factor": np.ones(8)}, "mean").solve(nom.optimal)
+    x_nom = np.array([nom.optimal.R_m, nom.optimal.delta_m, nom.optimal.rotor_groove_depth_m,
+                      nom.optimal.stator_groove_depth_m, nom.optimal.L_m])
+    np.testing.assert_allclose(same.x_m, x_nom, rtol=1e-6, atol=1e-9)
+    assert same.objective_W == pytest.approx(nom.optimal.mean_power_W, rel=1e-7)
+    sc = {"nu40_factor": np.array([0.9, 1.0, 1.1] * 3)[:8], "oil_temp_C": np.linspace(0, 8, 8),
+          "gamma": np.linspace(0.5, 0.65, 8)}
+    r = RobustDesignProblem(prob, sc, "p95").solve(nom.optimal)
+    dc = smooth_case(design_case(case, r.x_m, (prob.machined_rotor_groove_m,
+                                               prob.machined_stator_groove_m)))
+    for i in range(8):
+        ci = apply_inputs(dc, {k: float(v[i]) for k, v in sc.items()})
+        assert r.losses_W[i] == pytest.approx(operating_temperature(ci, "bulk").mean_power_W,
+                                              rel=1e-7)

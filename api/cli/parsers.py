@@ -182,7 +182,7 @@ def add_optimize(sub) -> None:
                    "balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--robust", metavar="STAT", help="robust design: minimise p95 (its CVaR "
                    "surrogate), mean or mean+2sd of the loss over scenarios of the case's "
-                   "uncertain inputs, printed beside the nominal optimum (--thermal none)")
+                   "uncertain inputs, printed beside the nominal optimum (thermal none or bulk)")
     p.add_argument("--scenarios", metavar="N", help="scenarios of --robust (default 64)")
     p.add_argument("--seed", metavar="S", help="Sobol' seed of the scenarios (default 0)")
     p.add_argument("--pareto", metavar="K", help="with --robust: K points of the front of "

@@ -38,6 +38,7 @@ References
 from __future__ import annotations
 
 from collections.abc import Mapping
+from concurrent.futures import ThreadPoolExecutor
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -168,7 +169,8 @@ def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: b
 
 
 def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
-                      strict: bool = False, block_rows: int = BLOCK_ROWS) -> np.ndarray:
+                      strict: bool = False, block_rows: int = BLOCK_ROWS,
+                      threads: int = 1) -> np.ndarray:
     """Cycle-mean loss [W] of the joint (regions and bearing) for each row of inputs.
 
     Row ``i`` equals ``operating_temperature(apply_inputs(case, row_i), mode)
@@ -191,6 +193,9 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
         root below the cap, a non-finite loss) instead of giving it NaN.
     block_rows : int
         Rows evaluated together (:data:`BLOCK_ROWS`).
+    threads : int
+        Blocks evaluated at once by a pool of threads [-] (numpy's loops release the
+        GIL; 1: one after another). The numbers do not depend on it.
 
     Returns
     -------
@@ -219,13 +224,22 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     model = row_model(case, mode, "gamma" in flat, "film_strength" in flat)
     out = np.empty(n)
     step = max(1, int(block_rows))
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        for i in range(0, n, step):
-            part = {k: a[i:i + step] for k, a in flat.items()}
+
+    def run(i: int) -> None:
+        part = {k: a[i:i + step] for k, a in flat.items()}
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             try:
                 out[i:i + step] = _block(case, mode, model, part)
             except SolverError:
                 out[i:i + step] = _loop(case, part, mode, strict)
+
+    starts = range(0, n, step)
+    if threads > 1 and len(starts) > 1:  # numpy's loops release the GIL
+        with ThreadPoolExecutor(int(threads)) as pool:
+            list(pool.map(run, starts))
+    else:
+        for i in starts:
+            run(i)
     out[~np.isfinite(out)] = np.nan
     if strict and np.isnan(out).any():
         j = int(np.flatnonzero(np.isnan(out))[0])

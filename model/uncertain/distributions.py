@@ -243,8 +243,9 @@ class Distribution:
         return f"{self.kind}({inner})"
 
     def to_dict(self) -> dict[str, Any]:
-        """``{input, dist, <key>: value ..., source}``, keys as in the case file."""
-        return {"input": self.input, "dist": self.kind,
+        """``{input, unit, dist, <key>: value ..., source}``, keys as in the case file
+        (``unit``: the input's; a temperature's ``sd_K`` in K)."""
+        return {"input": self.input, "unit": INPUTS[self.input].unit, "dist": self.kind,
                 **{param_key(self.input, k): v for k, v in self.params}, "source": self.source}
 
 

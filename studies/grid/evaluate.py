@@ -263,9 +263,18 @@ def _records(cases: list[DesignCase], thermal: str) -> list[dict]:
 
 
 def evaluate_chunk(base: DesignCase, rows: list[dict],
-                   catalogue: Mapping[str, Oil] | None, thermal: str = "none") -> list[dict]:
+                   catalogue: Mapping[str, Oil] | None, thermal: str = "none",
+                   columnar: bool = True) -> list[dict]:
     """Evaluate one chunk of grid rows under a thermal mode; a row that fails carries
-    its error."""
+    its error. Rows that vary only what stacked rows take as arrays are evaluated from
+    their columns (:mod:`oilgap.studies.grid.columnar`; ``columnar=False``: one case per
+    row, as before issue 21), the others one case per row, grouped by law."""
+    if columnar:
+        from oilgap.studies.grid.columnar import columnar_chunk
+
+        recs = columnar_chunk(base, rows, catalogue, thermal)
+        if recs is not None:
+            return recs
     results: list[dict] = [{} for _ in rows]
     cases, where = [], []
     for i, row in enumerate(rows):

@@ -99,7 +99,8 @@ def analyse(names: Sequence[str], y: np.ndarray, confidence: float = 0.95,
     confidence : float
         Level of the bootstrap intervals [-].
     seed : int
-        Seed of the bootstrap [-].
+        Seed of the bootstrap [-] (SALib gets ``seed + 1``: it leaves a seed of 0
+        unseeded). The intervals repeat run to run.
 
     Returns
     -------
@@ -121,9 +122,10 @@ def analyse(names: Sequence[str], y: np.ndarray, confidence: float = 0.95,
                          "input moves it: the indices are undefined)")
     with warnings.catch_warnings():
         warnings.simplefilter("ignore")
+        # SALib seeds its bootstrap only for a truthy seed (``if seed:``): seed + 1
         si = analyze.analyze(_problem(names), y, calc_second_order=False, num_resamples=200,
                              conf_level=float(confidence), print_to_console=False,
-                             seed=int(seed))
+                             seed=int(seed) + 1)
     out = pd.DataFrame({"input": list(names)})
     for k in ("S1", "ST"):
         est, half = np.asarray(si[k], dtype=float), np.asarray(si[f"{k}_conf"], dtype=float)

@@ -100,8 +100,8 @@ def draw_histogram(result, ax: Any) -> None:
     ax.axvline(result.nominal_W, color="C3", label=f"nominal {result.nominal_W:.3f} W")
     ax.set_xlabel("cycle-mean loss of the joint [W]")
     ax.set_ylabel("scenarios")
-    ax.set_title(f"{result.case_name}: loss under uncertain "
-                 f"{', '.join(result.spec.names)} ({result.thermal_mode})", fontsize=9)
+    ax.set_title(f"{result.case_name}\nloss under {len(result.spec.names)} uncertain "
+                 f"input(s), thermal {result.thermal_mode}", fontsize=9)
     ax.legend(fontsize=8)
 
 
@@ -117,8 +117,8 @@ def draw_tornado(result, ax: Any) -> None:
     labels = [f"{n} ({INPUTS[n].unit})" if INPUTS[n].unit != "-" else n for n in t["input"]]
     ax.set_yticks(pos, labels)
     ax.set_xlabel("cycle-mean loss of the joint [W] (others nominal)")
-    ax.set_title(f"{result.case_name}: tornado, nominal {base:.3f} W", fontsize=9)
-    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.3), ncol=2)
+    ax.set_title(f"{result.case_name}\ntornado, nominal {base:.3f} W", fontsize=9)
+    ax.legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.15), ncol=2)
 
 
 def _figure(draw, result, path: Path, height: float = 4.8) -> Path:
@@ -143,10 +143,13 @@ def write_outputs(out: Path, result) -> tuple[Path, ...]:
     table (CSV), the histogram and tornado (PNG) and ``summary.md``."""
     files = write_tables(out, {"uncertainty_samples.csv": result.samples,
                                "uncertainty_statistics.csv": result.statistics,
-                               "uncertainty_inputs.csv": inputs_table(result)})
+                               # without its unit column: a "-" cell is quoted against
+                               # formula injection; the law's keys name the units
+                               "uncertainty_inputs.csv": inputs_table(result).drop(
+                                   columns="unit")})
     files.append(_figure(draw_histogram, result, out / "uncertainty_histogram.png"))
     files.append(_figure(draw_tornado, result, out / "uncertainty_tornado.png",
-                         2.0 + 0.45 * len(result.tornado)))
+                         2.4 + 0.45 * len(result.tornado)))
     files.append(atomic_write_text(out / "summary.md", summary_markdown(result)))
     return tuple(files)
 

@@ -166,7 +166,7 @@ def _unitless(doc, suffixes, dimensionless, path="", parent_unit=False):
     return bad
 
 
-def test_json_keys_carry_their_units(capsys, bearing_case):
+def test_json_keys_carry_their_units(capsys, bearing_case, tmp_path):
     suffixes, dimensionless = _convention()
     assert {"_mm", "_W", "_rpm", "_cSt", "_C", "_Nm", "_kgm2"} <= suffixes
     docs = {}
@@ -174,7 +174,10 @@ def test_json_keys_carry_their_units(capsys, bearing_case):
                        ("evaluate bearing", ["evaluate", str(bearing_case), "--json"]),
                        ("optimize", ["optimize", "--json", "--starts", "1"]),
                        ("optimize none", ["optimize", "--json", "--starts", "1",
-                                          "--thermal", "none"])):
+                                          "--thermal", "none"]),
+                       ("uncertainty", ["study", "uncertainty", "--json", "--samples", "64",
+                                        "--sobol-samples", "32", "--out",
+                                        str(tmp_path / "u")])):
         assert main(argv) == 0
         docs[name] = json.loads(capsys.readouterr().out)
     region = docs["evaluate"]["regions"][0]

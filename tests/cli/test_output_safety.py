@@ -84,6 +84,8 @@ EXISTING = [
      ("oil_grade",)),
     (["study", "smoothing", "--out", "o"], "o/summary.md", "study smoothing",
      ("smoothing",)),
+    (["study", "uncertainty", "--out", "o"], "o/uncertainty_tornado.png", "study uncertainty",
+     ("uncertainty",)),
     (["loop", "g.csv", "--out", "o"], f"o/{MARKER}", "loop", ("Loop",)),
 ]
 

@@ -12,6 +12,8 @@ Markdown tables, in one process on this machine:
      (``evaluate_chunk(..., columnar=False)``: a DesignCase per row, rows grouped by law),
      timed on ``--grid-rows`` rows (oil temperature or sea temperature, depth, gamma,
      scale and peak speed varied) and extrapolated;
+   - *grid as on main*: the same rows through another installation's chunk
+     (``--main-python``, e.g. the Python whose ``oilgap`` is main's checkout);
    - *grid, columnar*: the same rows through the columnar chunk path;
    - *vectorised*: :func:`~oilgap.model.uncertain.arrays.joint_loss_arrays` on 10^4, 10^5
      and 10^6 rows: wall time, rows per second, peak memory (tracemalloc).
@@ -36,6 +38,7 @@ import io
 import os
 import platform
 import pstats
+import subprocess
 import sys
 import tempfile
 import time
@@ -104,6 +107,39 @@ def grid_s(case, mode: str, n: int, columnar: bool) -> float:
     return (time.perf_counter() - t0) / n
 
 
+MAIN_SNIPPET = """
+import sys, time, warnings
+import numpy as np
+from oilgap.model.io.case_io import read_case_toml
+from oilgap.studies.grid.evaluate import evaluate_chunk
+warnings.simplefilter("ignore")
+case, mode, n = read_case_toml(sys.argv[1]), sys.argv[2], int(sys.argv[3])
+rng = np.random.default_rng(2)
+x = [rng.uniform(0.9, 1.1, n), rng.uniform(0.0, 6.0, n), rng.uniform(2000.0, 4000.0, n),
+     rng.uniform(0.48, 0.65, n), rng.uniform(0.9, 1.1, n)]
+key = "sea_temp_C" if mode in ("bulk", "full") else "oil_temp_C"
+rows = [{key: float(x[1][i]), "depth_m": float(x[2][i]), "gamma": float(x[3][i]),
+         "scale": float(x[4][i]), "peak_speed_rpm": float(rng.uniform(2500.0, 3500.0))}
+        for i in range(n)]
+t0 = time.perf_counter()
+recs = evaluate_chunk(case, rows, None, mode)
+assert all(r["status"] == "ok" for r in recs)
+print((time.perf_counter() - t0) / n)
+"""
+"""The grid chunk timed by another installation of oilgap (``--main-python``: main's)."""
+
+
+def main_grid_s(python: str, case, mode: str, n: int) -> float:
+    """Seconds per row of another installation's grid evaluate chunk (main's engine)."""
+    from oilgap.studies.io.case_write import write_case_toml
+
+    with tempfile.TemporaryDirectory() as d:
+        p = write_case_toml(case, Path(d) / "case.toml")
+        out = subprocess.run([python, "-c", MAIN_SNIPPET, str(p), mode, str(n)], check=True,
+                             capture_output=True, text=True, cwd=d)
+    return float(out.stdout.split()[-1])
+
+
 def vectorised(case, mode: str, n: int, threads: int) -> tuple[float, float]:
     """(wall [s], peak traced memory [MB]) of joint_loss_arrays on n rows."""
     x = inputs(n, 3)
@@ -124,8 +160,14 @@ def engines(a) -> pd.DataFrame:
             point = per_point_s(case, mode, a.point_rows)
             old = grid_s(case, mode, a.grid_rows, columnar=False)
             col = grid_s(case, mode, a.grid_rows, columnar=True)
+            if a.main_python:
+                main_s = main_grid_s(a.main_python, case, mode, a.grid_rows)
+                print(f"{name}, {mode}: main's grid {main_s * MILLION:.4g} s per 10^6",
+                      file=sys.stderr, flush=True)
             row = {"joint": name, "mode": mode,
                    "per point 10^6 [s] (extrap.)": point * MILLION,
+                   "grid as on main 10^6 [s] (extrap.)": main_s * MILLION if a.main_python
+                   else float("nan"),
                    "grid per case 10^6 [s] (extrap.)": old * MILLION,
                    "grid columnar 10^6 [s] (extrap.)": col * MILLION}
             for n in a.rows:
@@ -194,6 +236,8 @@ def main() -> None:
     ap.add_argument("--sweep-rows", type=int, default=MILLION)
     ap.add_argument("--check-rows", type=int, default=10_000)
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--main-python", default=None, help="a Python whose oilgap is main's "
+                    "(before issue 21): its grid evaluate chunk is timed too")
     a = ap.parse_args()
     warnings.simplefilter("ignore")
     load0 = os.getloadavg()

@@ -6,23 +6,14 @@
 ``total_mean_power_W`` of :func:`~oilgap.model.evaluation.evaluate_case`): the regions'
 cycle-mean loss and the rolling bearing's, under any thermal mode.
 
-It is a composition of the model's laws, as :func:`~oilgap.model.joint_loss.joint_mean_power`
-is, with every input an array over rows:
-
-- the oil's (nu, rho) from the case's fluid at the rows' (T, p), nu times the rows'
-  ``nu40_factor`` (as :class:`~oilgap.model.fluids.ScaledFluid` does);
-- the duty cycle's speed nodes times ``peak / peak0`` per row (as
-  :meth:`~oilgap.model.duty_cycle.DutyCycle.with_peak_speed`: a (rows x nodes) array);
-- each region's cycle mean by :func:`~oilgap.model.regions.region_mean_power` with the law
-  at gamma = 0, times ``friction_scale * T^gamma`` per row (C_m of Eqs. 6-8 is linear in
-  its scale, C for the power-law form, and in T^gamma);
-- the film factor (``film``/``full``) with the rows' film strength carried by b (the Nahme
-  number ``s b mu U^2/k`` is linear in b);
-- the bearing's terms by :func:`~oilgap.model.bearing.bearing_moment_terms`, its SKF drag
-  terms times ``bearing_drag_scale``;
-- under ``bulk``/``full`` the balance ``T = T_sea + R (P(T) + Q)`` of every row at once by
-  the model's one solver, :func:`~oilgap.model.thermal.steady_temperature` (the same
-  iteration and tolerance as the scalar path).
+It is the stacked evaluation of :mod:`.rows` (the composition of
+:func:`~oilgap.model.joint_loss.joint_mean_power` with every input an array over rows: the
+oil's state, the speed nodes times ``peak / peak0``, C_m at gamma 0 times
+``friction_scale T^gamma``, the film strength on b, SKF's drag terms times
+``bearing_drag_scale``, and under ``bulk``/``full`` the balance of all rows by the model's
+one solver, each row following the scalar path's iteration). Measured against the scalar
+path: 1e-15 relative without a balance, 1e-13 with it (tests/model/test_uncertain_arrays.py;
+10^4 cases in docs/benchmarks.md).
 
 Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
 block stay in cache).
@@ -69,9 +60,10 @@ def broadcast_inputs(inputs: Mapping[str, Any]) -> tuple[dict[str, np.ndarray], 
     Returns
     -------
     arrays : dict
-        Name -> float array of the common shape.
+        Name -> float array of the common shape, in the input's unit ([-], [degC], [m],
+        [rpm]).
     shape : tuple
-        The broadcast shape.
+        The broadcast shape [-].
 
     Raises
     ------

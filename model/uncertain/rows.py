@@ -99,7 +99,7 @@ class RowValues:
     regions: tuple[Region, ...] | None = None
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RowModel:
     """What stacked rows share (:func:`row_model`).
 
@@ -146,7 +146,7 @@ def row_model(case: DesignCase, mode: str, vary_gamma: bool = False,
     Returns
     -------
     RowModel
-        Fluid, law, speed nodes and weights, film.
+        Fluid, law, speed nodes [rad/s] and weights [-], film.
     """
     oil = case.oil
     fluid, f0 = (oil.base, oil.factor) if isinstance(oil, ScaledFluid) else (oil, 1.0)
@@ -155,7 +155,8 @@ def row_model(case: DesignCase, mode: str, vary_gamma: bool = False,
     film = case_film(case) if applies_film(mode) else None
     if film is not None and vary_strength:
         film = replace(film, strength=1.0)
-    return RowModel(case, fluid, float(f0), law, nodes, weights, film)
+    return RowModel(case=case, fluid=fluid, factor0=float(f0), law=law, nodes=nodes,
+                    weights=weights, film=film)
 
 
 def _at(v, idx, column: bool = True):

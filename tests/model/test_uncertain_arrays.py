@@ -187,3 +187,18 @@ def test_bad_inputs_are_refused_as_the_scalar_path_refuses_them(cases):
         joint_loss_arrays(case, {"gamma": [0.5]}, "bulk")
     with pytest.raises(InputError, match="broadcast"):
         joint_loss_arrays(case, {"gamma": [0.5, 0.6], "nu40_factor": [1.0, 1.1, 1.2]})
+
+
+def test_a_block_whose_balance_fails_is_evaluated_row_by_row(cases, monkeypatch):
+    from oilgap.model.uncertain import arrays
+
+    case = cases["skf"]
+    rows = random_rows(case, 6, seed=3)
+    want = joint_loss_arrays(case, rows, "bulk")
+
+    def fail(*_):
+        raise SolverError("did not converge", "max_iter")
+
+    monkeypatch.setattr(arrays, "row_balance", fail)
+    np.testing.assert_allclose(joint_loss_arrays(case, rows, "bulk", block_rows=4), want,
+                               rtol=REL)

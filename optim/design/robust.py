@@ -28,9 +28,10 @@ the result beside it.
 Constraints: the torque capability and the rotor inertia depend on the geometry only,
 not on any uncertain input (the motor's torque requirement is a case limit), so each
 stays one row, as in the nominal NLP. An optional row bounds the nominal loss,
-``L_nom(x) <= eps`` (the Pareto of nominal against p95 loss). Under the thermal modes
-other than ``none`` the oil temperature would be a variable per scenario with its own
-heat balance: not supported (refused with the mode named).
+``L_nom(x) <= eps`` (the Pareto of nominal against p95 loss, under ``none``). Under
+``bulk`` the oil temperature is a variable per scenario with its own heat-balance row
+(:mod:`.robust_bulk`); ``film``/``full`` are refused with the mode named. The expressions
+and their exact derivatives under ``none``: :mod:`.robust_nlp`.
 
 Solved through the problem's one solver session (:class:`.session.SolverSession`):
 multi-start as the nominal problem, the first start the nominal optimum.
@@ -70,7 +71,6 @@ not built)."""
 
 STATISTICS = ("mean", "mean+2sd", "p95")
 """Statistics the robust NLP minimises."""
-
 
 SCENARIOS_RANGE = (8, 4096)
 """Allowed number of scenarios N [-]: fewer than 8 leave no tail for p95; more than 4096

@@ -42,6 +42,7 @@ EXPORTS: dict[str, str] = {
     "read_measured": "oilgap._loop",
     "Evaluation": "oilgap._results",
     "Optimization": "oilgap._results_design",
+    "RobustOptimization": "oilgap._results_robust",
     "Pareto": "oilgap._results_studies",
     "OilGrade": "oilgap._results_studies",
     "Smoothing": "oilgap._results_studies",

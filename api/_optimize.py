@@ -10,12 +10,15 @@ from typing import Any
 from oilgap._checks import CASE, NAME, NUMBER, OILS, checked
 from oilgap._evaluate import THERMAL, as_case, thermal_case, with_operating
 from oilgap._results_design import Optimization, thermal_line
+from oilgap._results_robust import RobustOptimization
 from oilgap.model.case import DesignCase
-from oilgap.model.errors import ArgumentError, OilgapWarning
+from oilgap.model.errors import ArgumentError, InputError, OilgapWarning
 from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
 from oilgap.optim.design import DesignProblem, compare_heating
+from oilgap.optim.design.robust import ROBUST_MODES, check_statistic
+from oilgap.studies.robust import RobustSettings, robust_design
 from oilgap.studies.settings import DesignLimits
 
 
@@ -25,7 +28,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             **keywords: Any) -> Optimization:
+             **keywords: Any) -> Optimization | RobustOptimization:
     """The region-1 geometry (R, delta, groove fill, L) of least mean power under the
     motor's torque, the rotor inertia and the case's bounds (``oilgap optimize``).
 
@@ -41,7 +44,13 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         As :func:`oilgap._evaluate.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
     **keywords
-        The fields of :class:`~oilgap.studies.settings.DesignLimits`, or ``limits=``,
+        ``robust``: ``"p95"``, ``"mean"`` or ``"mean+2sd"``: the robust design over
+        scenarios of the case's uncertain inputs beside the nominal optimum (thermal modes
+        ``none`` and ``bulk``; :func:`oilgap.studies.robust.robust_design`); then also
+        ``scenarios`` (N, default 64), ``seed`` (Sobol' seed, default 0), ``mc_samples``
+        (independent Monte Carlo draws, default 4096) and ``pareto`` (points of the
+        nominal-vs-statistic front, default 0: none). And the fields of
+        :class:`~oilgap.studies.settings.DesignLimits`, or ``limits=``,
         the record whole: ``starts`` (start points: the case's design and ``starts - 1``
         random points in the bounds; default
         :data:`~oilgap.studies.settings.DEFAULT_STARTS`, as ``oilgap optimize``),
@@ -52,8 +61,9 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
 
     Returns
     -------
-    Optimization
-        ``.raw``: a DesignResult (``none``) or HeatingComparison; powers [W].
+    Optimization or RobustOptimization
+        ``.raw``: a DesignResult (``none``) or HeatingComparison; with ``robust``, a
+        RobustDesign; powers [W].
 
     Raises
     ------
@@ -62,17 +72,24 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     """
     kw = dict(keywords)
     verbose = bool(kw.pop("verbose", False))
+    robust = kw.pop("robust", None)
+    robust_kw = {k: kw.pop(k) for k in _ROBUST_KEYWORDS if k in kw}
+    if robust is None and robust_kw:
+        raise ArgumentError(", ".join(sorted(robust_kw)), robust_kw[min(robust_kw)],
+                            "only with robust= (p95, mean or mean+2sd)")
     lim = kw.pop("limits", None)
     unknown = set(kw) - DesignLimits.names()
     if unknown:
         raise ArgumentError(", ".join(sorted(unknown)), keywords[min(unknown)],
                             f"optimize's keywords are {', '.join(sorted(DesignLimits.names()))}"
-                            ", limits and verbose")
+                            ", limits, verbose, robust, scenarios, seed, mc_samples and pareto")
     if lim is not None and kw:
         raise ArgumentError("limits", lim, f"give limits or {', '.join(sorted(kw))}, not both")
     lim = lim if lim is not None else DesignLimits(**kw)
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
+    if robust is not None:
+        return robust_resolved(c, mode, robust, robust_kw, lim, verbose)
     return optimize_resolved(c, mode, thermal is None, lim, verbose)
 
 
@@ -118,4 +135,44 @@ def optimize_resolved(case: DesignCase, mode: ThermalMode, by_default: bool,
     return Optimization(cmp, case, exact, header, lim, bands)
 
 
-__all__ = ["optimize", "optimize_resolved"]
+_ROBUST_KEYWORDS = ("scenarios", "seed", "mc_samples", "pareto")
+
+
+def robust_resolved(case: DesignCase, mode: str, statistic: str, kw: dict, lim: DesignLimits,
+                    verbose: bool = False) -> RobustOptimization:
+    """``optimize(robust=...)`` of a case whose thermal mode is resolved: the robust
+    design study (thermal ``none`` or ``bulk``; ``oilgap optimize --robust``).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The joint, its oil state applied.
+    mode : str
+        The resolved thermal mode.
+    statistic : str
+        ``"p95"``, ``"mean"`` or ``"mean+2sd"``.
+    kw : dict
+        ``scenarios``, ``seed``, ``mc_samples``, ``pareto`` (None: the default) [-].
+    lim : DesignLimits
+        Starts, torque [N m] and inertia limits.
+    verbose : bool
+        Print IPOPT's iterations.
+
+    Returns
+    -------
+    RobustOptimization
+        The robust and nominal designs side by side; powers [W].
+    """
+    check_statistic(statistic)
+    if str(mode) not in ROBUST_MODES:
+        raise InputError("--robust", statistic, f"thermal modes none and bulk only (here "
+                         f"{mode}: give --thermal none or bulk)", "optimize")
+    given = {k: kw.get(k) is not None for k in ("scenarios", "seed")}
+    s = RobustSettings(statistic=statistic, starts=lim.starts,
+                       **{("pareto_points" if k == "pareto" else k): v
+                          for k, v in kw.items() if v is not None})
+    res = robust_design(case, s, verbose=verbose, mode=str(mode), **lim.constraints())
+    return RobustOptimization(res, given)
+
+
+__all__ = ["optimize", "optimize_resolved", "robust_resolved"]

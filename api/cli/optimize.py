@@ -20,7 +20,7 @@ import argparse
 import contextlib
 from pathlib import Path
 
-from oilgap._optimize import optimize_resolved
+from oilgap._optimize import optimize_resolved, robust_resolved
 from oilgap._results_design import Optimization
 from oilgap.cli.common import load_case, thermal_case
 from oilgap.cli.outputs import solver_log_to_stderr
@@ -53,6 +53,40 @@ def _starts(args: argparse.Namespace) -> int:
     return starts
 
 
+def _integer(args: argparse.Namespace, attr: str, option: str) -> int | None:
+    raw = getattr(args, attr, None)
+    if raw is None:
+        return None
+    try:
+        return int(raw)
+    except ValueError:
+        raise InputError(option, raw, "an integer is required") from None
+
+
+def _robust_keywords(args: argparse.Namespace) -> dict:
+    """``scenarios``, ``seed``, ``pareto`` of ``--robust`` (refused without it)."""
+    kw = {k: _integer(args, k, f"--{k}") for k in ("scenarios", "seed", "pareto")}
+    given = [f"--{k}" for k, v in kw.items() if v is not None]
+    if getattr(args, "figure", None):
+        given.append("--figure")
+    if args.robust is None and given:
+        raise InputError(given[0], getattr(args, given[0][2:]), "only with --robust")
+    if args.figure:
+        check_out_file(args.figure, args.force)
+    return kw
+
+
+def _write_figure(res, path: str) -> Path:
+    import matplotlib
+    matplotlib.use("Agg")
+    ax = res.plot()
+    try:
+        ax.figure.savefig(path, dpi=120, bbox_inches="tight")
+    except OSError as e:
+        raise InputError("--figure", path, f"cannot be written ({e.strerror})") from None
+    return Path(path)
+
+
 def _write(res: Optimization, args: argparse.Namespace):
     if not args.out:
         return None
@@ -72,15 +106,22 @@ def run(args: argparse.Namespace) -> int:
                           starts=_starts(args))
     if args.out:  # before any computation: folder writable, no earlier file unless --force
         check_out_file(args.out, args.force)
+    robust = _robust_keywords(args)
     case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
     log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
     with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
-        res = optimize_resolved(case, mode, args.thermal is None, limits, args.verbose)
+        if args.robust is not None:
+            res = robust_resolved(case, mode, args.robust, robust, limits, args.verbose)
+        else:
+            res = optimize_resolved(case, mode, args.thermal is None, limits, args.verbose)
     out_path = _write(res, args)
+    fig = _write_figure(res, args.figure) if getattr(args, "figure", None) else None
     if args.json:
-        print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None}))
+        print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None,
+                     **({"figure": str(fig)} if fig else {})}))
     else:
         print(res.summary())
-        if out_path:
-            print(f"\nwrote {Path(out_path)}")
+        for p in (out_path, fig):
+            if p:
+                print(f"\nwrote {Path(p)}")
     return 0

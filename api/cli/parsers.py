@@ -186,6 +186,15 @@ def add_optimize(sub) -> None:
     add_thermal_argument(p)
     p.add_argument("--sea-temp-c", metavar="X", help="sea temperature [degC] of the heat "
                    "balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
+    p.add_argument("--robust", metavar="STAT", help="robust design: minimise p95 (its CVaR "
+                   "surrogate), mean or mean+2sd of the loss over scenarios of the case's "
+                   "uncertain inputs, printed beside the nominal optimum (thermal none or bulk)")
+    p.add_argument("--scenarios", metavar="N", help="scenarios of --robust (default 64)")
+    p.add_argument("--seed", metavar="S", help="Sobol' seed of the scenarios (default 0)")
+    p.add_argument("--pareto", metavar="K", help="with --robust: K points of the front of "
+                   "nominal loss against the statistic (default: none)")
+    p.add_argument("--figure", metavar="FILE.png", help="with --robust: write the figure "
+                   "(the front with --pareto, else both designs' Monte Carlo histograms)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")

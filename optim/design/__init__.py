@@ -13,7 +13,10 @@ One module per responsibility:
 * :mod:`.thermal`: the NLP under a thermal mode (film factor; oil temperature and heat
   balance as a variable and an equality);
 * :mod:`.lean`: a sweep's solve of the isothermal NLP (buffered, only the sweep's columns);
-* :mod:`.heating`: the optimum with and without heating, side by side.
+* :mod:`.heating`: the optimum with and without heating, side by side;
+* :mod:`.scenarios`, :mod:`.robust`, :mod:`.robust_nlp`, :mod:`.robust_bulk`: the robust
+  design NLP over N scenarios of the uncertain inputs (mean, mean + 2 sd, p95 by its
+  CVaR), under thermal ``none`` or ``bulk``.
 """
 
 from .feasibility import check_feasible, infeasibility_message
@@ -29,6 +32,7 @@ from .results import (
     convert_multipliers,
     design_point,
 )
+from .robust import RobustDesignProblem, RobustSolve
 from .session import DEFAULT_STARTS, SolverSession
 from .thermal import ThermalDesignProblem
 from .variables import VARIABLE_LABELS, VARIABLES, from_nlp, to_nlp
@@ -39,4 +43,5 @@ __all__ = [
     "check_feasible", "infeasibility_message", "convert_multipliers",
     "design_point", "to_nlp", "from_nlp", "ThermalDesignProblem", "ThermalDesignResult",
     "HeatingComparison", "compare_heating", "DEFAULT_STARTS", "SolverSession",
+    "RobustDesignProblem", "RobustSolve",
 ]

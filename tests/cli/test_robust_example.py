@@ -6,7 +6,7 @@ The check does not reuse the command's sample or its Monte Carlo: 8192 plain
 pseudo-random draws (numpy's PCG64, seed 2026, not Sobol' points) of the laws written out
 below from the example's ``[uncertainty]`` table, each design's loss through the
 vectorised joint loss (``joint_loss_arrays``, the case's exact C_m; equal to the scalar
-``oilgap evaluate`` path to 1e-12, tests/model/uncertain), and the noise of the p95
+``oilgap evaluate`` path, tests/model/test_uncertain_arrays.py), and the noise of the p95
 difference estimated by a paired bootstrap over the draws. The margin asked is four
 bootstrap standard deviations (measured: gain ~0.5 W, sd ~0.04 W; docs/uncertainty.md).
 """
@@ -18,7 +18,9 @@ import numpy as np
 import pytest
 
 from oilgap.cli import main
+from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import read_case_toml
+from oilgap.model.uncertain import apply_inputs
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.scenarios import design_case
@@ -58,6 +60,10 @@ def test_robust_p95_beats_nominal_on_an_independent_monte_carlo(report):
         x_m = np.array([report[k][key] for key in KEYS]) * 1e-3
         dc = design_case(case, x_m, machined)
         loss[k] = np.asarray(joint_loss_arrays(dc, draws, mode="none", strict=True))
+        for i in (0, 1):  # the scalar path (oilgap evaluate of the scenario's case) agrees
+            ci = apply_inputs(dc, {n: float(v[i]) for n, v in draws.items()})
+            ref = evaluate_case(ci, thermal="none").total_mean_power_W
+            assert loss[k][i] == pytest.approx(ref, rel=1e-9)
     gain = np.percentile(loss["nominal"], 95) - np.percentile(loss["robust"], 95)
     rng = np.random.default_rng(7)
     idx = rng.integers(0, loss["nominal"].size, (200, loss["nominal"].size))

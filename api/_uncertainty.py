@@ -15,9 +15,11 @@ from typing import Any
 
 import pandas as pd
 
+from oilgap._checks import AX, PATH_KINDS, Arg, checked, choice
 from oilgap._evaluate import as_case
 from oilgap._results import new_axes, raw_field
 from oilgap._results_studies import StudyView, file_names, records
+from oilgap._studies import STUDY
 from oilgap.model.case import DesignCase
 from oilgap.model.io.defaults import defaults_lines, gamma_fields, gamma_line
 from oilgap.model.uncertain.distributions import UncertaintySpec
@@ -90,6 +92,7 @@ class Uncertainty(StudyView):
         wrote = self.wrote()
         return "\n".join(lines + ([""] + wrote if wrote else []))
 
+    @checked(ax=AX, kind=choice("histogram", "tornado", optional=False))
     def plot(self, ax: Any = None, kind: str = "histogram") -> Any:
         """The study's figure: ``kind="histogram"`` the loss's histogram [W] with its
         percentiles (``uncertainty_histogram.png``), ``"tornado"`` the loss with each
@@ -99,6 +102,9 @@ class Uncertainty(StudyView):
         return ax
 
 
+@checked(**STUDY, model=Arg(PATH_KINDS, "a path to a loop.json (str or pathlib.Path) or None",
+                            optional=True),
+         spec=Arg(("UncertaintySpec",), "an UncertaintySpec or None", optional=True))
 def uncertainty(case: DesignCase | str | Path | None = None, *,
                 model: str | Path | None = None, spec: UncertaintySpec | None = None,
                 out: str | Path | None = None, force: bool = False,

@@ -40,6 +40,7 @@ from ..thermal import MAX_OIL_TEMP_C
 from ..thermal_modes import uses_balance
 from ..units import rpm_to_rad_s
 from .inputs import INPUTS, apply_inputs
+from .balance import root_balance
 from .rows import RowModel, RowValues, row_balance, row_model, row_total
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
@@ -127,9 +128,10 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
             else th.sea_temp_C + (t_oil - op.oil_temp_C)))
 
 
-def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray]
-           ) -> np.ndarray:
-    """Loss [W] of one block of rows (NaN: no balance root below the cap)."""
+def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray],
+           balance: str = "replay") -> np.ndarray:
+    """Loss [W] of one block of rows (NaN: no balance root below the cap); ``balance``
+    "root": :func:`.balance.root_balance`, its rows handed back replayed."""
     rows = _row_values(case, arrs, model)
     if not uses_balance(mode):
         return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
@@ -138,8 +140,16 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     out = np.full(rows.n, np.nan)
     if not ok.all():
         if ok.any():
-            out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()})
+            out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()},
+                             balance)
         return out
+    if balance == "root":
+        base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
+        temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
+                                    th.resistance_K_W)
+        if not ok.all():
+            p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()})
+        return p
     temps, p = row_balance(model, rows)
     return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
 
@@ -162,7 +172,7 @@ def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: b
 
 def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
                       strict: bool = False, block_rows: int = BLOCK_ROWS,
-                      threads: int = 1) -> np.ndarray:
+                      threads: int = 1, balance: str = "replay") -> np.ndarray:
     """Cycle-mean loss [W] of the joint (regions and bearing) for each row of inputs.
 
     Row ``i`` equals ``operating_temperature(apply_inputs(case, row_i), mode)
@@ -188,6 +198,14 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     threads : int
         Blocks evaluated at once by a pool of threads [-] (numpy's loops release the
         GIL; 1: one after another). The numbers do not depend on it.
+    balance : {"root", "replay"}
+        How ``bulk``/``full`` solve each row's balance: "replay" (default): each row
+        follows the scalar path's own iteration
+        (:func:`~oilgap.model.uncertain.rows.row_balance`, 10-20 losses a row; equal to
+        the scalar path to 1e-13); "root": to the exact root by
+        :func:`~oilgap.model.uncertain.balance.root_balance` (about 8 losses a row, the
+        rows it hands back replayed), which differs from the scalar path's stopping
+        point (``|g| < 1e-9 K``) by up to 4e-11 relative (docs/benchmarks.md).
 
     Returns
     -------
@@ -207,6 +225,8 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     Seed paper [1]_ (Eqs. 5, 10); Bergman et al. [2]_ (the balance); ISO 3448 [3]_.
     """
     mode = resolve_thermal_mode(case, None if mode is None else str(mode))
+    if balance not in ("root", "replay"):
+        raise InputError("balance", balance, "root or replay")
     arrs, shape = broadcast_inputs(inputs)
     check_input_ranges(case, arrs)
     n = int(np.prod(shape, dtype=np.int64))
@@ -221,7 +241,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
         part = {k: a[i:i + step] for k, a in flat.items()}
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             try:
-                out[i:i + step] = _block(case, mode, model, part)
+                out[i:i + step] = _block(case, mode, model, part, balance)
             except SolverError:
                 out[i:i + step] = _loop(case, part, mode, strict)
 

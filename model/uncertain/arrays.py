@@ -39,8 +39,8 @@ from ..joint_loss import operating_temperature, resolve_thermal_mode
 from ..thermal import MAX_OIL_TEMP_C
 from ..thermal_modes import uses_balance
 from ..units import rpm_to_rad_s
-from .inputs import INPUTS, apply_inputs
 from .balance import root_balance
+from .inputs import INPUTS, apply_inputs
 from .rows import RowModel, RowValues, row_balance, row_model, row_total
 
 if TYPE_CHECKING:  # pragma: no cover - typing only

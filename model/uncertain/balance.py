@@ -8,15 +8,17 @@ after 10-20. Each step fits the exponential model ``P = P_k exp(-beta (T - T_k))
 the last two points (beta from their secant of ln P) and jumps to its root with Lambert's
 W, ``T = T_b + W(beta R P_k exp(beta (T_k - T_b)))/beta`` [1]; a step outside the bracket
 ``[lo, hi]`` (g < 0 at lo, g > 0 at hi) is replaced by the Illinois false position [2]. A
-row stops when its next step (or its bracket) is under eight rounding units of g's
-terms, ``8 eps (|T| + T_b + R P)`` (about 5e-14 K: its last point is the root to
-rounding).
+row stops when its next step is under eight rounding units of g's terms, ``8 eps (|T| +
+T_b + R P)`` (about 5e-14 K), and |g| at its last point under 16 times that: that point
+is the root to rounding.
 
 A row it cannot settle this way is handed back (``ok`` False): a loss that did not fall
 between two of its points (where the scalar solver scans for a lower root), a bracket top
 at the cap :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`, a non-finite or non-positive
-loss, or no convergence in :data:`MAX_EVALS` evaluations (a root on a step of the
-piecewise Eq. 6). The caller solves those rows by the scalar path's iteration.
+loss, a bracket closed without g reaching 0 (the root on a downward step of the piecewise
+Eq. 6, where a speed node crosses a regime boundary: the scalar solver returns the step
+from its side), or no convergence in :data:`MAX_EVALS` evaluations. The caller solves
+those rows by the scalar path's iteration.
 
 References
 ----------
@@ -89,28 +91,76 @@ def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_tem
     tb = np.asarray(base_temp_C, dtype=float)
     r = float(resistance_K_W)
     n = tb.size
-    t_out, p_out, ok = np.full(n, np.nan), np.full(n, np.nan), np.zeros(n, bool)
-    idx = np.arange(n)
+    out = (np.full(n, np.nan), np.full(n, np.nan), np.zeros(n, bool))
     with np.errstate(all="ignore"):
-        p0 = power(tb, idx)
+        p0 = power(tb, np.arange(n))
         hi = tb + r * p0
-        live = np.isfinite(p0) & (p0 > 0) & (hi < max_temp_C)
-        idx, tb_a, p0, hi = idx[live], tb[live], p0[live], hi[live]
-        p1 = power(hi, idx)  # the fixed-point iterate: g(hi) = R (P(T_b) - P(hi)) > 0
-        live = np.isfinite(p1) & (p1 > 0) & (p1 < p0)
-        st = _State(idx[live], tb_a[live], r, tb_a[live], p0[live], hi[live], p1[live])
-        for _ in range(MAX_EVALS - 2):
-            if st.idx.size == 0:
-                break
-            t_new = st.propose()
-            stop = st.stopped(t_new)
-            fin = st.idx[stop]
-            t_out[fin], p_out[fin], ok[fin] = st.t_k[stop], st.p_k[stop], True
-            st.keep(~stop)
-            t_new = t_new[~stop]
-            p_new = power(t_new, st.idx)
-            st.take(t_new, p_new)
-    return t_out, p_out, ok
+        live = np.flatnonzero(np.isfinite(p0) & (p0 > 0) & (hi < max_temp_C))
+        pilot = live[::max(1, live.size // _PILOT_ROWS)]
+        _from_top(power, live[~np.isin(live, pilot)] if pilot.size < 4 else pilot, tb, r,
+                  p0, out)
+        done = out[2][pilot]
+        if pilot.size < 4 or done.sum() < 4:
+            return out
+        t, p = out[0][pilot][done], out[1][pilot][done]
+        beta = float(np.median(np.log(p0[pilot][done] / p) / (t - tb[pilot][done])))
+        rest = live[~np.isin(live, pilot)]
+        t1 = _model_root(tb[rest], r, tb[rest], p0[rest], beta)
+        good = (t1 > tb[rest]) & (t1 < hi[rest])
+        _from_top(power, rest[~good], tb, r, p0, out)
+        rest, t1 = rest[good], t1[good]
+        p1 = power(t1, rest)
+        fell = np.isfinite(p1) & (p1 > 0) & (p1 < p0[rest])
+        rest, t1, p1 = rest[fell], t1[fell], p1[fell]
+        st = _State(rest, tb[rest], r, tb[rest], p0[rest], t1, p1)
+        below = st.g_hi < 0  # the pilot's beta put t1 below the root: hi unverified, its
+        st.lo, st.g_lo = np.where(below, t1, st.lo), np.where(below, st.g_hi, st.g_lo)
+        st.hi = np.where(below, hi[rest], t1)  # g estimated from the loss at t1 (above it)
+        st.g_hi = np.where(below, r * (p0[rest] - p1), st.g_hi)
+        _iterate(power, st, MAX_EVALS - 2, out)
+    return out
+
+
+_MODEL_K2 = 1e-10
+"""A last step s [K] is taken on the model, without evaluating the loss again, when
+``|s| (|s| + d) <= this`` [K^2] (d: the spacing of the two points the model's beta came
+from): beta's error is about ``|d beta/dT| d`` (below 0.01 /K^2 for an oil), so the loss
+there is the model's to ``|d beta/dT| d |s|``, about 1e-12 relative."""
+
+_PILOT_ROWS = 32
+"""Rows of a block solved first from ``[T_b, T_b + R P(T_b)]``; their median exponent
+beta of the loss between T_b and the root starts the other rows near their root [-]."""
+
+
+def _from_top(power, idx, tb, r, p0, out):
+    """Rows started from their bracket ``[T_b, T_b + R P(T_b)]`` (the top: the
+    fixed-point iterate, where ``g = R (P(T_b) - P(top)) > 0``)."""
+    if idx.size == 0:
+        return
+    hi = tb[idx] + r * p0[idx]
+    p1 = power(hi, idx)
+    live = np.isfinite(p1) & (p1 > 0) & (p1 < p0[idx])
+    idx, hi, p1 = idx[live], hi[live], p1[live]
+    _iterate(power, _State(idx, tb[idx], r, tb[idx], p0[idx], hi, p1), MAX_EVALS - 2, out)
+
+
+def _iterate(power, st, evals, out):
+    """Step the rows of ``st`` until solved, handed back or out of ``evals``; the solved
+    rows' (T, P, True) into ``out``."""
+    t_out, p_out, ok = out
+    for _ in range(evals):
+        if st.idx.size == 0:
+            break
+        t_new, p_model = st.propose()
+        solved, model, closed = st.stopped(t_new)
+        model &= np.isfinite(p_model)
+        fin = st.idx[solved]
+        t_out[fin], p_out[fin], ok[fin] = st.t_k[solved], st.p_k[solved], True
+        fin = st.idx[model]
+        t_out[fin], p_out[fin], ok[fin] = t_new[model], p_model[model], True
+        st.keep(~(solved | model | closed))
+        t_new = t_new[~(solved | model | closed)]
+        st.take(t_new, power(t_new, st.idx))
 
 
 class _State:
@@ -128,18 +178,26 @@ class _State:
 
     def propose(self):
         """The next temperature of each row: the exponential model's root through the
-        last two points, else the Illinois false position in the bracket."""
+        last two points, else the Illinois false position in the bracket; and the
+        model's loss there, ``P_k exp(-beta (T - T_k))``."""
         beta = np.log(self.p_a / self.p_k) / (self.t_k - self.t_a)
         t_new = _model_root(self.tb, self.r, self.t_k, self.p_k, beta)
         inside = (t_new > self.lo) & (t_new < self.hi)
         falsi = (self.lo * self.g_hi - self.hi * self.g_lo) / (self.g_hi - self.g_lo)
-        return np.where(inside, t_new, falsi)
+        t_new = np.where(inside, t_new, falsi)
+        return t_new, np.where(inside, self.p_k * np.exp(-beta * (t_new - self.t_k)), np.nan)
 
     def stopped(self, t_new):
-        """Rows whose step is under four ulp of T, or whose bracket closed."""
-        ulp = _ULPS * np.finfo(float).eps * (np.abs(self.t_k) + np.abs(self.tb)
-                                              + self.r * self.p_k)
-        return (np.abs(t_new - self.t_k) <= ulp) | (self.hi - self.lo <= ulp)
+        """(rows solved at their last point: a step under the rounding of g with g itself
+        at that level; rows solved at ``t_new`` by the model: a short last step; rows to
+        hand back: a bracket closed on a step of the loss)."""
+        tol = _ULPS * np.finfo(float).eps * (np.abs(self.t_k) + np.abs(self.tb)
+                                             + self.r * self.p_k)
+        g_k = np.abs(self.t_k - self.tb - self.r * self.p_k)
+        step = np.abs(t_new - self.t_k)
+        solved = (step <= tol) & (g_k <= 16.0 * tol)
+        model = ~solved & (step * (step + np.abs(self.t_k - self.t_a)) <= _MODEL_K2)
+        return solved, model, ~solved & ~model & (self.hi - self.lo <= tol)
 
     def keep(self, m):
         for k in ("idx", "tb", "t_a", "p_a", "t_k", "p_k", "lo", "g_lo", "hi", "g_hi",

@@ -97,14 +97,14 @@ def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_tem
         hi = tb + r * p0
         live = np.flatnonzero(np.isfinite(p0) & (p0 > 0) & (hi < max_temp_C))
         pilot = live[::max(1, live.size // _PILOT_ROWS)]
-        _from_top(power, live[~np.isin(live, pilot)] if pilot.size < 4 else pilot, tb, r,
-                  p0, out)
+        _from_top(power, pilot, tb, r, p0, out)
+        rest = live[~np.isin(live, pilot)]
         done = out[2][pilot]
-        if pilot.size < 4 or done.sum() < 4:
+        if done.sum() < 4:  # no beta to start from: every row from its bracket
+            _from_top(power, rest, tb, r, p0, out)
             return out
         t, p = out[0][pilot][done], out[1][pilot][done]
         beta = float(np.median(np.log(p0[pilot][done] / p) / (t - tb[pilot][done])))
-        rest = live[~np.isin(live, pilot)]
         t1 = _model_root(tb[rest], r, tb[rest], p0[rest], beta)
         good = (t1 > tb[rest]) & (t1 < hi[rest])
         _from_top(power, rest[~good], tb, r, p0, out)

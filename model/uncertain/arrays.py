@@ -128,6 +128,17 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
             else th.sea_temp_C + (t_oil - op.oil_temp_C)))
 
 
+def _features(rows: RowValues) -> np.ndarray:
+    """The per-row values of a block as columns (the root's predictors)."""
+    vals = [getattr(rows, k) for k in ("sea_temp_C", "depth_m", "nu_factor", "gamma",
+                                       "friction_scale", "film_strength", "drag_scale",
+                                       "speed_factor")]
+    for reg in rows.regions or ():
+        vals += [reg.radius_m, reg.gap_m, reg.length_m, reg.roughness_T]
+    cols = [np.asarray(v, float).reshape(-1) for v in vals if np.ndim(v) > 0]
+    return np.column_stack([c for c in cols if c.size == rows.n] or [np.zeros(rows.n)])
+
+
 def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray],
            balance: str = "replay") -> np.ndarray:
     """Loss [W] of one block of rows (NaN: no balance root below the cap); ``balance``
@@ -146,7 +157,7 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     if balance == "root":
         base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
         temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
-                                    th.resistance_K_W)
+                                    th.resistance_K_W, features=_features(rows))
         if not ok.all():
             p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()})
         return p

@@ -58,8 +58,8 @@ def _model_root(tb, rth, t_k, p_k, beta):
 
 
 def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_temp_C,
-                 resistance_K_W: float, max_temp_C: float = MAX_OIL_TEMP_C
-                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                 resistance_K_W: float, max_temp_C: float = MAX_OIL_TEMP_C,
+                 features=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Exact root of ``T = T_base + R P(T)`` for every row, or the row handed back [3].
 
     Parameters
@@ -73,6 +73,9 @@ def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_tem
         R [K/W], > 0.
     max_temp_C : float
         The cap [degC]: a bracket reaching it hands the row back.
+    features : ndarray, optional
+        Shape (rows, k): the values the rows differ by (their units); the other rows'
+        roots are predicted from the pilot rows' on them (fewer losses a row).
 
     Returns
     -------
@@ -92,33 +95,89 @@ def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_tem
     r = float(resistance_K_W)
     n = tb.size
     out = (np.full(n, np.nan), np.full(n, np.nan), np.zeros(n, bool))
+    idx = np.arange(n)
     with np.errstate(all="ignore"):
-        p0 = power(tb, np.arange(n))
-        hi = tb + r * p0
-        live = np.flatnonzero(np.isfinite(p0) & (p0 > 0) & (hi < max_temp_C))
-        pilot = live[::max(1, live.size // _PILOT_ROWS)]
-        _from_top(power, pilot, tb, r, p0, out)
-        rest = live[~np.isin(live, pilot)]
-        done = out[2][pilot]
-        if done.sum() < 4:  # no beta to start from: every row from its bracket
-            _from_top(power, rest, tb, r, p0, out)
-            return out
-        t, p = out[0][pilot][done], out[1][pilot][done]
-        beta = float(np.median(np.log(p0[pilot][done] / p) / (t - tb[pilot][done])))
-        t1 = _model_root(tb[rest], r, tb[rest], p0[rest], beta)
-        good = (t1 > tb[rest]) & (t1 < hi[rest])
-        _from_top(power, rest[~good], tb, r, p0, out)
-        rest, t1 = rest[good], t1[good]
-        p1 = power(t1, rest)
-        fell = np.isfinite(p1) & (p1 > 0) & (p1 < p0[rest])
-        rest, t1, p1 = rest[fell], t1[fell], p1[fell]
-        st = _State(rest, tb[rest], r, tb[rest], p0[rest], t1, p1)
-        below = st.g_hi < 0  # the pilot's beta put t1 below the root: hi unverified, its
-        st.lo, st.g_lo = np.where(below, t1, st.lo), np.where(below, st.g_hi, st.g_lo)
-        st.hi = np.where(below, hi[rest], t1)  # g estimated from the loss at t1 (above it)
-        st.g_hi = np.where(below, r * (p0[rest] - p1), st.g_hi)
-        _iterate(power, st, MAX_EVALS - 2, out)
+        pilot = idx[::max(1, n // _PILOT_ROWS)]
+        p0 = np.full(n, np.nan)
+        p0[pilot] = power(tb[pilot], pilot)
+        _from_top(power, pilot, tb, r, p0, out, max_temp_C)
+        rest = idx[~np.isin(idx, pilot)]
+        done = pilot[out[2][pilot]]
+        if features is not None and done.size >= _PILOT_ROWS // 2:
+            _from_prediction(power, rest, done, tb, r, np.asarray(features, float), out,
+                             max_temp_C)
+        elif rest.size:
+            p0[rest] = power(tb[rest], rest)
+            _from_beta(power, rest, done, tb, r, p0, out, max_temp_C)
+    out[2][:] &= out[0] < max_temp_C - 1.0  # near the cap: the scalar path decides
     return out
+
+
+def _from_beta(power, rest, done, tb, r, p0, out, cap):
+    """Rows started at the root of the exponential model through ``(T_b, P(T_b))`` with
+    the pilot rows' median beta (from their bracket without a pilot)."""
+    if done.size < 4:  # no beta to start from: every row from its bracket
+        _from_top(power, rest, tb, r, p0, out, cap)
+        return
+    t, p = out[0][done], out[1][done]
+    beta = float(np.median(np.log(p0[done] / p) / (t - tb[done])))
+    hi = tb + r * p0
+    t1 = _model_root(tb[rest], r, tb[rest], p0[rest], beta)
+    good = (t1 > tb[rest]) & (t1 < hi[rest]) & (hi[rest] < cap)
+    _from_top(power, rest[~good], tb, r, p0, out, cap)
+    rest, t1 = rest[good], t1[good]
+    p1 = power(t1, rest)
+    fell = np.isfinite(p1) & (p1 > 0) & (p1 < p0[rest])
+    rest, t1, p1 = rest[fell], t1[fell], p1[fell]
+    st = _State(rest, tb[rest], r, tb[rest], p0[rest], t1, p1)
+    below = st.g_hi < 0  # the pilot's beta put t1 below the root: hi unverified, its
+    st.lo, st.g_lo = np.where(below, t1, st.lo), np.where(below, st.g_hi, st.g_lo)
+    st.hi = np.where(below, hi[rest], t1)  # g estimated from the loss at t1 (above it)
+    st.g_hi = np.where(below, r * (p0[rest] - p1), st.g_hi)
+    _iterate(power, st, MAX_EVALS - 2, out)
+
+
+def _design(x):
+    """Regression columns of the rows' values: 1, each value, and the log of each
+    positive one, scaled to unit size."""
+    cols = [np.ones(len(x))]
+    for c in x.T:
+        cols.append(c / max(float(np.max(np.abs(c))), 1e-300))
+        if np.all(c > 0):
+            cols.append(np.log(c / np.max(c)))
+    return np.column_stack(cols)
+
+
+def _from_prediction(power, rest, done, tb, r, features, out, cap):
+    """Rows started at their root predicted from the pilot rows: ``ln(T - T_b)`` fitted
+    on the rows' values by least squares; the second point one model step from there
+    with the pilot roots' median local beta. Rows that do not start cleanly go from
+    their bracket."""
+    x = _design(features)
+    t_d, p_d = out[0][done], out[1][done]
+    coef = np.linalg.lstsq(x[done], np.log(t_d - tb[done]), rcond=None)[0]
+    beta = float(np.median(np.log(p_d / power(t_d + _BETA_STEP_K, done)) / _BETA_STEP_K))
+    t1 = tb[rest] + np.exp(x[rest] @ coef)
+    p1 = power(t1, rest)
+    t2 = _model_root(tb[rest], r, t1, p1, beta)
+    good = np.isfinite(p1) & (p1 > 0) & np.isfinite(t2) & (t2 > tb[rest]) & (t2 < cap)
+    p2 = np.full(t2.shape, np.nan)
+    p2[good] = power(t2[good], rest[good])
+    good &= np.isfinite(p2) & (p2 > 0) & ((p2 - p1) * (t2 - t1) < 0)
+    bad = rest[~good]
+    p0 = np.full(len(tb), np.nan)
+    p0[bad] = power(tb[bad], bad)
+    _from_top(power, bad, tb, r, p0, out, cap)
+    rest, t1, p1, t2, p2 = rest[good], t1[good], p1[good], t2[good], p2[good]
+    st = _State(rest, tb[rest], r, t1, p1, t2, p2)
+    g1, g2 = st.g(t1, p1), st.g(t2, p2)
+    lo1, lo2 = (g1 < 0) & ~((g2 < 0) & (t2 > t1)), (g2 < 0) & ~((g1 < 0) & (t1 > t2))
+    hi1, hi2 = (g1 > 0) & ~((g2 > 0) & (t2 < t1)), (g2 > 0) & ~((g1 > 0) & (t1 < t2))
+    st.lo = np.select([lo1, lo2], [t1, t2], st.tb)
+    st.g_lo = np.select([lo1, lo2], [g1, g2], -r * np.maximum(p1, p2))  # an estimate
+    st.hi = np.select([hi1, hi2], [t1, t2], cap)
+    st.g_hi = np.select([hi1, hi2], [g1, g2], cap - st.tb - r * np.minimum(p1, p2))
+    _iterate(power, st, MAX_EVALS - 2, out)
 
 
 _MODEL_K2 = 1e-10
@@ -127,17 +186,22 @@ _MODEL_K2 = 1e-10
 from): beta's error is about ``|d beta/dT| d`` (below 0.01 /K^2 for an oil), so the loss
 there is the model's to ``|d beta/dT| d |s|``, about 1e-12 relative."""
 
-_PILOT_ROWS = 32
+_BETA_STEP_K = 1e-3
+"""Step of the pilot roots' local beta ``-d ln P/dT`` [K]."""
+
+_PILOT_ROWS = 64
 """Rows of a block solved first from ``[T_b, T_b + R P(T_b)]``; their median exponent
 beta of the loss between T_b and the root starts the other rows near their root [-]."""
 
 
-def _from_top(power, idx, tb, r, p0, out):
+def _from_top(power, idx, tb, r, p0, out, cap):
     """Rows started from their bracket ``[T_b, T_b + R P(T_b)]`` (the top: the
     fixed-point iterate, where ``g = R (P(T_b) - P(top)) > 0``)."""
+    hi = tb[idx] + r * p0[idx]
+    idx, hi = idx[np.isfinite(hi) & (p0[idx] > 0) & (hi < cap)], hi[np.isfinite(hi)
+                                                                  & (p0[idx] > 0) & (hi < cap)]
     if idx.size == 0:
         return
-    hi = tb[idx] + r * p0[idx]
     p1 = power(hi, idx)
     live = np.isfinite(p1) & (p1 > 0) & (p1 < p0[idx])
     idx, hi, p1 = idx[live], hi[live], p1[live]

@@ -13,7 +13,10 @@ oil's state, the speed nodes times ``peak / peak0``, C_m at gamma 0 times
 ``bearing_drag_scale``, and under ``bulk``/``full`` the balance of all rows by the model's
 one solver, each row following the scalar path's iteration). Measured against the scalar
 path: 1e-15 relative without a balance, 1e-13 with it (tests/model/test_uncertain_arrays.py;
-10^4 cases in docs/benchmarks.md).
+10^4 cases in docs/benchmarks.md). ``balance="root"`` solves the balance instead to its
+exact root (:func:`~oilgap.model.uncertain.balance.root_balance`, 3.5-4 losses a row
+instead of 10-20): equal to an independent root finder's loss to 1e-13, and to the scalar
+path to its solver's tolerance (``|g| < 1e-9 K``: up to 4e-11 relative on the seed).
 
 Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
 block stay in cache).

@@ -1,16 +1,25 @@
 """The heat balance of stacked rows solved to the exact root: a fast bracketed iteration.
 
 :func:`root_balance` solves ``g(T) = T - T_base - R P(T) = 0`` for every row to full
-double precision in T with a few evaluations of the loss per row (4-6 for a Walther oil),
-where :func:`~oilgap.model.thermal.steady_temperature` (the scalar path's solver, replayed
-row by row by :func:`~oilgap.model.uncertain.rows.row_balance`) stops at ``|g| < 1e-9 K``
-after 10-20. Each step fits the exponential model ``P = P_k exp(-beta (T - T_k))`` through
-the last two points (beta from their secant of ln P) and jumps to its root with Lambert's
-W, ``T = T_b + W(beta R P_k exp(beta (T_k - T_b)))/beta`` [1]; a step outside the bracket
-``[lo, hi]`` (g < 0 at lo, g > 0 at hi) is replaced by the Illinois false position [2]. A
-row stops when its next step is under eight rounding units of g's terms, ``8 eps (|T| +
-T_b + R P)`` (about 5e-14 K), and |g| at its last point under 16 times that: that point
-is the root to rounding.
+double precision in T with 3.5-4 evaluations of the loss per row (the seed joint, alone
+and with a 6809 bearing), where :func:`~oilgap.model.thermal.steady_temperature` (the
+scalar path's solver, replayed row by row by
+:func:`~oilgap.model.uncertain.rows.row_balance`) stops at ``|g| < 1e-9 K`` after 10-20. Each step fits the exponential model
+``P = P_k exp(-beta (T - T_k))`` through the last two points (beta from their secant of
+ln P) and jumps to its root with Lambert's W, ``T = T_b + W(beta R P_k exp(beta (T_k -
+T_b)))/beta`` [1]; a step outside the bracket ``[lo, hi]`` (g < 0 at lo, g > 0 at hi) is
+replaced by the Illinois false position [2]. A row stops when its next step is under
+eight rounding units of g's terms, ``8 eps (|T| + T_b + R P)`` (about 5e-14 K), and |g|
+at its last point under 16 times that; or when the step is so short that the model's
+loss there is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10 K^2``, d the spacing of the
+model's two points), taken without another evaluation.
+
+The start: a pilot of 64 rows (evenly spaced) is solved from its bracket ``[T_b, T_b + R
+P(T_b)]``; with the rows' values (``features``) the others start at the root predicted by
+a least-squares fit of ``ln(T - T_b)`` on those values (and their logs) over the pilot,
+and their second point is one model step from there with the pilot roots' median local
+beta. Without features, every row's first point is ``T_b`` and its second the model root
+with the pilot's median beta. The start only decides how fast a row converges, not where.
 
 A row it cannot settle this way is handed back (``ok`` False): a loss that did not fall
 between two of its points (where the scalar solver scans for a lower root), a bracket top

@@ -4,22 +4,23 @@
 double precision in T with 3.5-4 evaluations of the loss per row (the seed joint, alone
 and with a 6809 bearing), where :func:`~oilgap.model.thermal.steady_temperature` (the
 scalar path's solver, replayed row by row by
-:func:`~oilgap.model.uncertain.rows.row_balance`) stops at ``|g| < 1e-9 K`` after 10-20. Each step fits the exponential model
-``P = P_k exp(-beta (T - T_k))`` through the last two points (beta from their secant of
-ln P) and jumps to its root with Lambert's W, ``T = T_b + W(beta R P_k exp(beta (T_k -
-T_b)))/beta`` [1]; a step outside the bracket ``[lo, hi]`` (g < 0 at lo, g > 0 at hi) is
-replaced by the Illinois false position [2]. A row stops when its next step is under
-eight rounding units of g's terms, ``8 eps (|T| + T_b + R P)`` (about 5e-14 K), and |g|
-at its last point under 16 times that; or when the step is so short that the model's
-loss there is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10 K^2``, d the spacing of the
-model's two points), taken without another evaluation.
+:func:`~oilgap.model.uncertain.rows.row_balance`) stops at ``|g| < 1e-9 K`` after 10-20.
+Each step fits the exponential model ``P = P_k exp(-beta (T - T_k))`` through the last
+two points (beta from their secant of ln P) and jumps to its root with Lambert's W, ``T =
+T_b + W(beta R P_k exp(beta (T_k - T_b)))/beta`` [1]; a step outside the bracket ``[lo,
+hi]`` (g < 0 at lo, g > 0 at hi) is replaced by the Illinois false position [2]. A row
+stops when its next step is under eight rounding units of g's terms, ``8 eps (|T| + T_b +
+R P)`` (about 5e-14 K), and |g| at its last point under 16 times that; or when the step
+is so short that the model's loss there is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10
+K^2``, d the spacing of the model's two points), taken without another evaluation.
 
 The start: a pilot of 64 rows (evenly spaced) is solved from its bracket ``[T_b, T_b + R
 P(T_b)]``; with the rows' values (``features``) the others start at the root predicted by
 a least-squares fit of ``ln(T - T_b)`` on those values (and their logs) over the pilot,
-and their second point is one model step from there with the pilot roots' median local
-beta. Without features, every row's first point is ``T_b`` and its second the model root
-with the pilot's median beta. The start only decides how fast a row converges, not where.
+and their second point is one model step from there with the local beta at the root
+fitted the same way. Without features, every row's first point is ``T_b`` and its second
+the model root with the pilot's median beta. The start only decides how fast a row
+converges, not where.
 
 A row it cannot settle this way is handed back (``ok`` False): a loss that did not fall
 between two of its points (where the scalar solver scans for a lower root), a bracket top
@@ -160,12 +161,14 @@ def _design(x):
 def _from_prediction(power, rest, done, tb, r, features, out, cap):
     """Rows started at their root predicted from the pilot rows: ``ln(T - T_b)`` fitted
     on the rows' values by least squares; the second point one model step from there
-    with the pilot roots' median local beta. Rows that do not start cleanly go from
+    with the local beta at the root fitted the same way. Rows that do not start cleanly go from
     their bracket."""
     x = _design(features)
     t_d, p_d = out[0][done], out[1][done]
     coef = np.linalg.lstsq(x[done], np.log(t_d - tb[done]), rcond=None)[0]
-    beta = float(np.median(np.log(p_d / power(t_d + _BETA_STEP_K, done)) / _BETA_STEP_K))
+    beta_d = np.log(p_d / power(t_d + _BETA_STEP_K, done)) / _BETA_STEP_K
+    beta = x[rest] @ np.linalg.lstsq(x[done], beta_d, rcond=None)[0]
+    beta = np.where(beta > 0, beta, float(np.median(beta_d)))
     t1 = tb[rest] + np.exp(x[rest] @ coef)
     p1 = power(t1, rest)
     t2 = _model_root(tb[rest], r, t1, p1, beta)
@@ -194,6 +197,10 @@ _MODEL_K2 = 1e-10
 ``|s| (|s| + d) <= this`` [K^2] (d: the spacing of the two points the model's beta came
 from): beta's error is about ``|d beta/dT| d`` (below 0.01 /K^2 for an oil), so the loss
 there is the model's to ``|d beta/dT| d |s|``, about 1e-12 relative."""
+
+_MAX_SLOPE = 10.0
+"""Largest slope dg/dT = 1 + R beta P [-] of a last step taken on the model: a steeper
+secant spans a step of the piecewise loss (Eq. 6), not its smooth part."""
 
 _BETA_STEP_K = 1e-3
 """Step of the pilot roots' local beta ``-d ln P/dT`` [K]."""
@@ -269,7 +276,8 @@ class _State:
         g_k = np.abs(self.t_k - self.tb - self.r * self.p_k)
         step = np.abs(t_new - self.t_k)
         solved = (step <= tol) & (g_k <= 16.0 * tol)
-        model = ~solved & (step * (step + np.abs(self.t_k - self.t_a)) <= _MODEL_K2)
+        model = (~solved & (step * (step + np.abs(self.t_k - self.t_a)) <= _MODEL_K2)
+                 & (g_k <= _MAX_SLOPE * step + 16.0 * tol))  # not across a step of P
         return solved, model, ~solved & ~model & (self.hi - self.lo <= tol)
 
     def keep(self, m):

@@ -217,7 +217,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
         follows the scalar path's own iteration
         (:func:`~oilgap.model.uncertain.rows.row_balance`, 10-20 losses a row; equal to
         the scalar path to 1e-13); "root": to the exact root by
-        :func:`~oilgap.model.uncertain.balance.root_balance` (about 8 losses a row, the
+        :func:`~oilgap.model.uncertain.balance.root_balance` (3.5-4 losses a row, the
         rows it hands back replayed), which differs from the scalar path's stopping
         point (``|g| < 1e-9 K``) by up to 4e-11 relative (docs/benchmarks.md).
 

@@ -28,7 +28,10 @@ at the cap :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`, a non-finite or non-pos
 loss, a bracket closed without g reaching 0 (the root on a downward step of the piecewise
 Eq. 6, where a speed node crosses a regime boundary: the scalar solver returns the step
 from its side), or no convergence in :data:`MAX_EVALS` evaluations. The caller solves
-those rows by the scalar path's iteration.
+those rows by the scalar path's iteration. Not reproduced: the scalar solver's scan for a
+lower root below T_b's neighbourhood (rows started near their root never evaluate the
+loss at T_b): where the loss rises only well below the root, this returns the upper root
+(docs/benchmarks.md; the seed's loss falls everywhere from -2 to 150 degC).
 
 References
 ----------

@@ -22,7 +22,13 @@ Markdown tables, in one process on this machine:
    writing its store), with where its time goes (cProfile, cumulative).
 
 3. The vectorised loss against the scalar path on ``--check-rows`` random cases (the rows
-   split over both joints and the four thermal modes): the largest relative difference.
+   split over both joints and the four thermal modes): the largest relative difference,
+   with the balance replayed (the default) and solved to its exact root
+   (``balance="root"``).
+
+``--balance root`` times the vectorised balance modes with the exact-root solver;
+``--vectorised-only --modes bulk full --sweep-rows 0 --check-rows 0`` times only
+:func:`joint_loss_arrays`.
 
 PASS/FAIL against the issue's 5 s (10^6 vectorised evaluations) and 10 s (the sweep).
 
@@ -140,12 +146,13 @@ def main_grid_s(python: str, case, mode: str, n: int) -> float:
     return float(out.stdout.split()[-1])
 
 
-def vectorised(case, mode: str, n: int, threads: int) -> tuple[float, float]:
+def vectorised(case, mode: str, n: int, threads: int, balance: str = "replay"
+               ) -> tuple[float, float]:
     """(wall [s], peak traced memory [MB]) of joint_loss_arrays on n rows."""
     x = inputs(n, 3)
     tracemalloc.start()
     t0 = time.perf_counter()
-    p = joint_loss_arrays(case, x, mode, threads=threads)
+    p = joint_loss_arrays(case, x, mode, threads=threads, balance=balance)
     wall = time.perf_counter() - t0
     peak = tracemalloc.get_traced_memory()[1] / 2**20
     tracemalloc.stop()
@@ -156,7 +163,10 @@ def vectorised(case, mode: str, n: int, threads: int) -> tuple[float, float]:
 def engines(a) -> pd.DataFrame:
     rows = []
     for name, case in cases().items():
-        for mode in ("none", "bulk"):
+        for mode in a.modes:
+            if a.vectorised_only:
+                rows.append(vectorised_row(a, name, case, mode))
+                continue
             point = per_point_s(case, mode, a.point_rows)
             old = grid_s(case, mode, a.grid_rows, columnar=False)
             col = grid_s(case, mode, a.grid_rows, columnar=True)
@@ -170,16 +180,25 @@ def engines(a) -> pd.DataFrame:
                    else float("nan"),
                    "grid per case 10^6 [s] (extrap.)": old * MILLION,
                    "grid columnar 10^6 [s] (extrap.)": col * MILLION}
-            for n in a.rows:
-                wall, peak = vectorised(case, mode, n, a.threads)
-                row[f"vectorised {n:.0e} [s]"] = wall
-                row[f"rows/s {n:.0e}"] = n / wall
-                row[f"peak MB {n:.0e}"] = peak
-            if MILLION in a.rows:
-                row["10^6 <= 5 s"] = "PASS" if row["vectorised 1e+06 [s]"] <= 5 else "FAIL"
-            print(f"{name}, {mode}: {row}", file=sys.stderr, flush=True)
+            row.update(vectorised_row(a, name, case, mode))
             rows.append(row)
     return pd.DataFrame(rows)
+
+
+def vectorised_row(a, name: str, case, mode: str) -> dict:
+    """The vectorised columns of a joint and mode (``--balance``)."""
+    row = {"joint": name, "mode": mode, "balance": a.balance if mode in ("bulk", "full")
+           else "-", "threads": a.threads}
+    for n in a.rows:
+        wall, peak = vectorised(case, mode, n, a.threads, a.balance)
+        row[f"vectorised {n:.0e} [s]"] = wall
+        row[f"rows/s {n:.0e}"] = n / wall
+        row[f"peak MB {n:.0e}"] = peak
+    if MILLION in a.rows:
+        row["10^6 <= 5 s"] = "PASS" if row["vectorised 1e+06 [s]"] <= 5 else "FAIL"
+    row["load"] = os.getloadavg()[0]
+    print(f"{name}, {mode}: {row}", file=sys.stderr, flush=True)
+    return row
 
 
 def sweep(n: int) -> tuple[float, str]:
@@ -222,9 +241,12 @@ def accuracy(n: int) -> pd.DataFrame:
                 case, {key: float(v[i]) for key, v in x.items()}), mode).mean_power_W
                 for i in range(per)])
             rel = np.abs(got / want - 1.0)
+            root = np.abs(joint_loss_arrays(case, x, mode, balance="root") / want - 1.0)
             out.append({"joint": name, "mode": mode, "rows": per,
                         "max rel. difference": float(rel.max()),
-                        "rows above 1e-12": int((rel > 1e-12).sum())})
+                        "rows above 1e-12": int((rel > 1e-12).sum()),
+                        "balance root: max rel. difference": float(root.max()),
+                        "root: rows above 1e-12": int((root > 1e-12).sum())})
     return pd.DataFrame(out)
 
 
@@ -236,6 +258,11 @@ def main() -> None:
     ap.add_argument("--sweep-rows", type=int, default=MILLION)
     ap.add_argument("--check-rows", type=int, default=10_000)
     ap.add_argument("--threads", type=int, default=1)
+    ap.add_argument("--balance", choices=("replay", "root"), default="replay",
+                    help="joint_loss_arrays' balance under bulk/full")
+    ap.add_argument("--modes", nargs="+", default=["none", "bulk"])
+    ap.add_argument("--vectorised-only", action="store_true",
+                    help="time joint_loss_arrays only (no per-point or grid engine)")
     ap.add_argument("--main-python", default=None, help="a Python whose oilgap is main's "
                     "(before issue 21): its grid evaluate chunk is timed too")
     a = ap.parse_args()

@@ -13,7 +13,10 @@ oil's state, the speed nodes times ``peak / peak0``, C_m at gamma 0 times
 ``bearing_drag_scale``, and under ``bulk``/``full`` the balance of all rows by the model's
 one solver, each row following the scalar path's iteration). Measured against the scalar
 path: 1e-15 relative without a balance, 1e-13 with it (tests/model/test_uncertain_arrays.py;
-10^4 cases in docs/benchmarks.md).
+10^4 cases in docs/benchmarks.md). ``balance="root"`` solves the balance instead to its
+exact root (:func:`~oilgap.model.uncertain.balance.root_balance`, 3.5-4 losses a row
+instead of 10-20): equal to an independent root finder's loss to 1e-13, and to the scalar
+path to its solver's tolerance (``|g| < 1e-9 K``: up to 4e-11 relative on the seed).
 
 Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
 block stay in cache).
@@ -39,6 +42,7 @@ from ..joint_loss import operating_temperature, resolve_thermal_mode
 from ..thermal import MAX_OIL_TEMP_C
 from ..thermal_modes import uses_balance
 from ..units import rpm_to_rad_s
+from .balance import root_balance
 from .inputs import INPUTS, apply_inputs
 from .rows import RowModel, RowValues, row_balance, row_model, row_total
 
@@ -127,9 +131,21 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
             else th.sea_temp_C + (t_oil - op.oil_temp_C)))
 
 
-def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray]
-           ) -> np.ndarray:
-    """Loss [W] of one block of rows (NaN: no balance root below the cap)."""
+def _features(rows: RowValues) -> np.ndarray:
+    """The per-row values of a block as columns (the root's predictors)."""
+    vals = [getattr(rows, k) for k in ("sea_temp_C", "depth_m", "nu_factor", "gamma",
+                                       "friction_scale", "film_strength", "drag_scale",
+                                       "speed_factor")]
+    for reg in rows.regions or ():
+        vals += [reg.radius_m, reg.gap_m, reg.length_m, reg.roughness_T]
+    cols = [np.asarray(v, float).reshape(-1) for v in vals if np.ndim(v) > 0]
+    return np.column_stack([c for c in cols if c.size == rows.n] or [np.zeros(rows.n)])
+
+
+def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray],
+           balance: str = "replay") -> np.ndarray:
+    """Loss [W] of one block of rows (NaN: no balance root below the cap); ``balance``
+    "root": :func:`.balance.root_balance`, its rows handed back replayed."""
     rows = _row_values(case, arrs, model)
     if not uses_balance(mode):
         return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
@@ -138,8 +154,16 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     out = np.full(rows.n, np.nan)
     if not ok.all():
         if ok.any():
-            out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()})
+            out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()},
+                             balance)
         return out
+    if balance == "root":
+        base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
+        temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
+                                    th.resistance_K_W, features=_features(rows))
+        if not ok.all():
+            p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()})
+        return p
     temps, p = row_balance(model, rows)
     return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
 
@@ -162,7 +186,7 @@ def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: b
 
 def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
                       strict: bool = False, block_rows: int = BLOCK_ROWS,
-                      threads: int = 1) -> np.ndarray:
+                      threads: int = 1, balance: str = "replay") -> np.ndarray:
     """Cycle-mean loss [W] of the joint (regions and bearing) for each row of inputs.
 
     Row ``i`` equals ``operating_temperature(apply_inputs(case, row_i), mode)
@@ -188,6 +212,14 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     threads : int
         Blocks evaluated at once by a pool of threads [-] (numpy's loops release the
         GIL; 1: one after another). The numbers do not depend on it.
+    balance : {"root", "replay"}
+        How ``bulk``/``full`` solve each row's balance: "replay" (default): each row
+        follows the scalar path's own iteration
+        (:func:`~oilgap.model.uncertain.rows.row_balance`, 10-20 losses a row; equal to
+        the scalar path to 1e-13); "root": to the exact root by
+        :func:`~oilgap.model.uncertain.balance.root_balance` (3.5-4 losses a row, the
+        rows it hands back replayed), which differs from the scalar path's stopping
+        point (``|g| < 1e-9 K``) by up to 4e-11 relative (docs/benchmarks.md).
 
     Returns
     -------
@@ -207,6 +239,8 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     Seed paper [1]_ (Eqs. 5, 10); Bergman et al. [2]_ (the balance); ISO 3448 [3]_.
     """
     mode = resolve_thermal_mode(case, None if mode is None else str(mode))
+    if balance not in ("root", "replay"):
+        raise InputError("balance", balance, "root or replay")
     arrs, shape = broadcast_inputs(inputs)
     check_input_ranges(case, arrs)
     n = int(np.prod(shape, dtype=np.int64))
@@ -221,7 +255,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
         part = {k: a[i:i + step] for k, a in flat.items()}
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             try:
-                out[i:i + step] = _block(case, mode, model, part)
+                out[i:i + step] = _block(case, mode, model, part, balance)
             except SolverError:
                 out[i:i + step] = _loop(case, part, mode, strict)
 

@@ -93,6 +93,7 @@ class Refitter:
         self.feature_scale = feature_scale
         self.cv = cv
         self._holds: dict[int, tuple[str, ...]] | None = None
+        self._sub: Refitter | bool | None = None
 
     def fit(self, names, x_start: np.ndarray, theta_start: np.ndarray | None,
             on: ForwardModel | None = None) -> ModelFit:
@@ -114,8 +115,25 @@ class Refitter:
         ModelFit
         """
         sc = np.array([self.feature_scale[n] for n in names])
+        sub = self.subsample() if on is None else None
+        if sub is not None:  # start on the subsample: a few full-data iterations remain
+            sub.model.taylor_exponent = self.model.taylor_exponent
+            f0 = sub.fit(names, x_start, theta_start)
+            x_start, theta_start = f0.x, f0.theta
         return fit_model(on or self.model, self.spec, x_start, tuple(names), theta_start, sc,
                          full=self.model)
+
+    def subsample(self) -> Refitter | None:
+        """The refitter on the deterministic subsample of :func:`screen_refitter` (cached;
+        None at most :data:`SCREEN_SAMPLES` samples).
+
+        Returns
+        -------
+        Refitter or None
+        """
+        if self._sub is None:
+            self._sub = screen_refitter(self) or False
+        return self._sub or None
 
     def fold_holds(self) -> dict[int, tuple[str, ...]]:
         """Per cross-validation group, the base parameters its fold cannot identify.
@@ -413,7 +431,7 @@ def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, 
     """
     y = refitter.model.samples.viscous_W
     added = False
-    screen = screen_refitter(refitter)
+    screen = refitter.subsample()
     while (set(final.accepted) & set(STATE_EFFECTS)) and len(final.accepted) < max_effects:
         e_now = rmse(y - final.after.pred)
         tried = [n for n in cands.usable if n not in final.accepted and n not in excluded
@@ -443,9 +461,10 @@ def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, 
     return _prune_nonlinear(refitter, final, margin) if added else final
 
 
-SCREEN_SAMPLES = 50_000
+SCREEN_SAMPLES = 20_000
 """Above this many samples the oil-state readers are screened on a subsample of about
-this many (every k-th sample of every run) before any is refitted on all samples."""
+this many (every k-th sample of every run) before any is refitted on all samples, and
+every nonlinear fit on all samples starts from the subsample's."""
 
 SCREEN_SLACK = 0.5
 """Share of the margin a reader must gain on the subsample to be refitted on all samples."""

@@ -484,8 +484,8 @@ def screen_refitter(refitter: Refitter) -> Refitter | None:
     -------
     Refitter or None
         On the subsample (its forward model a subset of the full one: the derivatives
-        and features computed on all samples), with the same specification, scales and
-        fold refits.
+        and features computed on all samples), with the same specification, feature
+        scales [W/unit] and fold refits.
     """
     model = refitter.model
     n = model.samples.n

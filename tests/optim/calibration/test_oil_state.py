@@ -222,9 +222,9 @@ def test_the_report_says_which_oil_state_the_terms_read():
 
 def test_the_subsample_screen_names_what_all_samples_name(monkeypatch):
     # above SCREEN_SAMPLES the readers are screened on every k-th sample of every run and
-    # only those that pass are refitted on all samples: on the lag + bearing pair (screen
-    # forced on at k = 3) the same model comes out as with every reader refitted on all
-    # samples, to the last digit (the full-data refit of the reader that passes is the same)
+    # only those that pass are refitted on all samples (each all-samples fit starting from
+    # the subsample's): on the lag + bearing pair (screen forced on at k = 3) the same model
+    # comes out as with every reader refitted on all samples, to the solver's tolerance
     from oilgap.optim.calibration import refit
     full = _loop("synth", ("thermal_lag", "bearing_ball_churning"))
     cfg = _synth_cfg({e: synth.DEFAULT_STRENGTH[e]
@@ -236,6 +236,6 @@ def test_the_subsample_screen_names_what_all_samples_name(monkeypatch):
                         passed[-1])
     est = LoopEstimator(case=cfg.case).fit(data)
     assert tuple(sorted(e.name for e in est.effects_)) == full[0]
-    assert est.effect_coef_ == full[3]
-    assert est.heldout_rmse_["after"] == full[1]
+    assert est.effect_coef_ == pytest.approx(full[3], rel=1e-7)
+    assert est.heldout_rmse_["after"] == pytest.approx(full[1], rel=1e-7)
     assert "bearing_ball_churning" in passed[0]  # the screen ran and let the bearing through

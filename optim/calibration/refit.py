@@ -125,7 +125,7 @@ class Refitter:
 
     def subsample(self) -> Refitter | None:
         """The refitter on the deterministic subsample of :func:`screen_refitter` (cached;
-        None at most :data:`SCREEN_SAMPLES` samples).
+        None at most :data:`SCREEN_ABOVE` samples).
 
         Returns
         -------
@@ -461,10 +461,13 @@ def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, 
     return _prune_nonlinear(refitter, final, margin) if added else final
 
 
-SCREEN_SAMPLES = 20_000
+SCREEN_ABOVE = 50_000
 """Above this many samples the oil-state readers are screened on a subsample of about
-this many (every k-th sample of every run) before any is refitted on all samples, and
-every nonlinear fit on all samples starts from the subsample's."""
+:data:`SCREEN_SAMPLES` (every k-th sample of every run) before any is refitted on all
+samples, and every nonlinear fit on all samples starts from the subsample's."""
+
+SCREEN_SAMPLES = 10_000
+"""Size of the screening subsample (about; whole strides of every run)."""
 
 SCREEN_SLACK = 0.5
 """Share of the margin a reader must gain on the subsample to be refitted on all samples."""
@@ -472,7 +475,7 @@ SCREEN_SLACK = 0.5
 
 def screen_refitter(refitter: Refitter) -> Refitter | None:
     """A refitter on a deterministic subsample of a large data set (None at most
-    :data:`SCREEN_SAMPLES` samples): every k-th sample of every run from its first,
+    :data:`SCREEN_ABOVE` samples): every k-th sample of every run from its first,
     ``k = ceil(n / SCREEN_SAMPLES)``, the same runs and folds.
 
     Parameters
@@ -489,7 +492,7 @@ def screen_refitter(refitter: Refitter) -> Refitter | None:
     """
     model = refitter.model
     n = model.samples.n
-    if n <= SCREEN_SAMPLES:
+    if n <= SCREEN_ABOVE:
         return None
     k = -(-n // SCREEN_SAMPLES)
     mask = np.zeros(n, bool)

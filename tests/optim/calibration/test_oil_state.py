@@ -221,7 +221,7 @@ def test_the_report_says_which_oil_state_the_terms_read():
 
 
 def test_the_subsample_screen_names_what_all_samples_name(monkeypatch):
-    # above SCREEN_SAMPLES the readers are screened on every k-th sample of every run and
+    # above SCREEN_ABOVE the readers are screened on every k-th sample of every run and
     # only those that pass are refitted on all samples (each all-samples fit starting from
     # the subsample's): on the lag + bearing pair (screen forced on at k = 3) the same model
     # comes out as with every reader refitted on all samples, to the solver's tolerance
@@ -230,6 +230,7 @@ def test_the_subsample_screen_names_what_all_samples_name(monkeypatch):
     cfg = _synth_cfg({e: synth.DEFAULT_STRENGTH[e]
                       for e in ("thermal_lag", "bearing_ball_churning")})
     data = synth.synthesize(cfg, 0)
+    monkeypatch.setattr(refit, "SCREEN_ABOVE", len(data) // 4)
     monkeypatch.setattr(refit, "SCREEN_SAMPLES", len(data) // 4)  # k = 3 on the oil runs
     passed, screen = [], refit.screened_readers
     monkeypatch.setattr(refit, "screened_readers", lambda *a: passed.append(screen(*a)) or

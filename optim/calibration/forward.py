@@ -184,8 +184,8 @@ class ForwardModel:
                                            s.density_kg_m3)
         self._lags: dict[float, OilState] = {}  # thermal-lag tau -> the lagged oil state
         self._features: dict[tuple, np.ndarray] = {}  # (effect, lag state key) -> feature
-        self._film_start: dict[float, np.ndarray] = {}  # lag -> last film temperature [K]
-        self._film_rise: dict[float, np.ndarray] = {}  # lag -> its rise over the base [K]
+        self._film_start: dict[float, tuple] = {}  # lag -> (c, last film temperature [K])
+        self._film_rise: dict[float, np.ndarray] = {}  # lag -> its rise over the base per c [W]
 
     @property
     def film_theory_K_W(self) -> float:
@@ -304,25 +304,27 @@ class ForwardModel:
                        for r, q in zip(self.geometry.regions, ratios, strict=True))
 
         film = film_heated_oil_state(state, c, power_at, self.oil_properties,
-                                     self._film_warm_start(tau, state))
-        self._film_start[tau] = film.temp_film_K  # warm start of the next iteration's film
-        self._film_rise[tau] = film.temp_film_K - state.temp_lagged_K
+                                     self._film_warm_start(tau, state, c))
+        self._film_start[tau] = (c, film.temp_film_K)  # warm start of the next iteration
+        self._film_rise[tau] = (film.temp_film_K - state.temp_lagged_K) / c
         for d in (self._film_start, self._film_rise):  # the last few lags only
             while len(d) > SHAPE_CACHE:
                 d.pop(next(iter(d)))
         return film
 
-    def _film_warm_start(self, tau: float, state: OilState) -> np.ndarray | None:
-        """A film temperature near the root at lag ``tau`` [K]: the last solution at this
-        lag, else the base plus the film rise of the nearest lag solved (each fit iteration
-        and each cross-validation fold moves the lag; the rise hardly moves with it). The
-        film solver keeps a warm start only if its Newton steps converge to 1e-11 K."""
-        if tau in self._film_start:
-            return self._film_start[tau]
+    def _film_warm_start(self, tau: float, state: OilState, c: float) -> np.ndarray | None:
+        """A film temperature near the root at lag ``tau`` and film coefficient ``c`` [K]:
+        the last solution at this lag and coefficient, else the base plus ``c`` times the
+        film rise per unit coefficient of this lag or of the nearest lag solved (each fit
+        iteration moves c, each cross-validation fold the lag; the rise is nearly ``c P``,
+        and P hardly moves with either). The film solver keeps a warm start only if its
+        Newton steps converge to 1e-11 K."""
+        if tau in self._film_start and self._film_start[tau][0] == c:
+            return self._film_start[tau][1]
         if not self._film_rise:
             return None
         near = min(self._film_rise, key=lambda t: abs(t - tau))
-        return state.temp_lagged_K + self._film_rise[near]
+        return state.temp_lagged_K + c * self._film_rise[near]
 
     def _bare_context(self, state: OilState, powers=None) -> EffectContext:
         """Effect context at an oil state, law-independent features only (no region power

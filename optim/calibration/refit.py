@@ -93,6 +93,7 @@ class Refitter:
         self.feature_scale = feature_scale
         self.cv = cv
         self._holds: dict[int, tuple[str, ...]] | None = None
+        self._sub: Refitter | bool | None = None
 
     def fit(self, names, x_start: np.ndarray, theta_start: np.ndarray | None,
             on: ForwardModel | None = None) -> ModelFit:
@@ -114,8 +115,25 @@ class Refitter:
         ModelFit
         """
         sc = np.array([self.feature_scale[n] for n in names])
+        sub = self.subsample() if on is None else None
+        if sub is not None:  # start on the subsample: a few full-data iterations remain
+            sub.model.taylor_exponent = self.model.taylor_exponent
+            f0 = sub.fit(names, x_start, theta_start)
+            x_start, theta_start = f0.x, f0.theta
         return fit_model(on or self.model, self.spec, x_start, tuple(names), theta_start, sc,
                          full=self.model)
+
+    def subsample(self) -> Refitter | None:
+        """The refitter on the deterministic subsample of :func:`screen_refitter` (cached;
+        None at most :data:`SCREEN_ABOVE` samples).
+
+        Returns
+        -------
+        Refitter or None
+        """
+        if self._sub is None:
+            self._sub = screen_refitter(self) or False
+        return self._sub or None
 
     def fold_holds(self) -> dict[int, tuple[str, ...]]:
         """Per cross-validation group, the base parameters its fold cannot identify.
@@ -413,12 +431,15 @@ def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, 
     """
     y = refitter.model.samples.viscous_W
     added = False
+    screen = refitter.subsample()
     while (set(final.accepted) & set(STATE_EFFECTS)) and len(final.accepted) < max_effects:
         e_now = rmse(y - final.after.pred)
+        tried = [n for n in cands.usable if n not in final.accepted and n not in excluded
+                 and n in STATE_READERS + STATE_EFFECTS]
+        if screen is not None:
+            tried = screened_readers(screen, final, tried, margin)
         best = None
-        for n in cands.usable:
-            if n in final.accepted or n in excluded or n not in STATE_READERS + STATE_EFFECTS:
-                continue
+        for n in tried:
             names = [*final.accepted, n]
             fit = refitter.fit(names, final.fit.x, np.append(final.fit.theta, 0.0))
             ho = refitter.leave_one_run_out(names, fit.x, fit.theta, fit)
@@ -438,3 +459,83 @@ def add_state_readers(refitter: Refitter, final: FinalModel, cands: Candidates, 
             taylor_exponent=final.taylor_exponent)
         added = True
     return _prune_nonlinear(refitter, final, margin) if added else final
+
+
+SCREEN_ABOVE = 50_000
+"""Above this many samples the oil-state readers are screened on a subsample of about
+:data:`SCREEN_SAMPLES` (every k-th sample of every run) before any is refitted on all
+samples, and every nonlinear fit on all samples starts from the subsample's."""
+
+SCREEN_SAMPLES = 10_000
+"""Size of the screening subsample (about; whole strides of every run)."""
+
+SCREEN_SLACK = 0.5
+"""Share of the margin a reader must gain on the subsample to be refitted on all samples."""
+
+
+def screen_refitter(refitter: Refitter) -> Refitter | None:
+    """A refitter on a deterministic subsample of a large data set (None at most
+    :data:`SCREEN_ABOVE` samples): every k-th sample of every run from its first,
+    ``k = ceil(n / SCREEN_SAMPLES)``, the same runs and folds.
+
+    Parameters
+    ----------
+    refitter : Refitter
+        On all samples.
+
+    Returns
+    -------
+    Refitter or None
+        On the subsample (its forward model a subset of the full one: the derivatives
+        and features computed on all samples), with the same specification, feature
+        scales [W/unit] and fold refits.
+    """
+    model = refitter.model
+    n = model.samples.n
+    if n <= SCREEN_ABOVE:
+        return None
+    k = -(-n // SCREEN_SAMPLES)
+    mask = np.zeros(n, bool)
+    for idx in model.runs:
+        mask[idx[::k]] = True
+    return Refitter(model.subset(mask), refitter.spec, refitter.feature_scale, refitter.cv)
+
+
+def screened_readers(screen: Refitter, final: FinalModel, tried: list[str],
+                     margin: float) -> list[str]:
+    """The readers worth a nonlinear refit on all samples, by a screen on the subsample.
+
+    On the subsample, the accepted model and each reader with it are refitted
+    nonlinearly (from the all-samples fit) and cross-validated as on all samples; a
+    reader passes if its held-out RMSE falls below the accepted model's by
+    :data:`SCREEN_SLACK` of ``margin`` (the all-samples check then asks the whole
+    margin).
+
+    Parameters
+    ----------
+    screen : Refitter
+        On the subsample (:func:`screen_refitter`).
+    final : FinalModel
+        The model so far (all samples).
+    tried : list of str
+        Candidate readers.
+    margin : float
+        Required relative fall of the held-out RMSE [-].
+
+    Returns
+    -------
+    list of str
+        The readers that pass, in the order of ``tried``.
+    """
+    if not tried:
+        return []
+    y = screen.model.samples.viscous_W
+    screen.model.taylor_exponent = final.taylor_exponent
+
+    def heldout(names, theta):
+        fit = screen.fit(names, final.fit.x, theta)
+        return rmse(y - screen.leave_one_run_out(names, fit.x, fit.theta, fit).pred)
+
+    e_now = heldout(final.accepted, final.fit.theta)
+    errs = {n: heldout([*final.accepted, n], np.append(final.fit.theta, 0.0)) for n in tried}
+    return [n for n in tried if errs[n] <= e_now * (1.0 - SCREEN_SLACK * margin)]

@@ -218,3 +218,25 @@ def test_the_report_says_which_oil_state_the_terms_read():
     *_, seal = _loop("outside", ("seal_coulomb_friction",))
     assert seal.oil_state_["applied"] == "measured" and "oil_state" not in seal.to_dict()
     assert "oil state" not in format_summary(seal)
+
+
+def test_the_subsample_screen_names_what_all_samples_name(monkeypatch):
+    # above SCREEN_ABOVE the readers are screened on every k-th sample of every run and
+    # only those that pass are refitted on all samples (each all-samples fit starting from
+    # the subsample's): on the lag + bearing pair (screen forced on at k = 3) the same model
+    # comes out as with every reader refitted on all samples, to the solver's tolerance
+    from oilgap.optim.calibration import refit
+    full = _loop("synth", ("thermal_lag", "bearing_ball_churning"))
+    cfg = _synth_cfg({e: synth.DEFAULT_STRENGTH[e]
+                      for e in ("thermal_lag", "bearing_ball_churning")})
+    data = synth.synthesize(cfg, 0)
+    monkeypatch.setattr(refit, "SCREEN_ABOVE", len(data) // 4)
+    monkeypatch.setattr(refit, "SCREEN_SAMPLES", len(data) // 4)  # k = 3 on the oil runs
+    passed, screen = [], refit.screened_readers
+    monkeypatch.setattr(refit, "screened_readers", lambda *a: passed.append(screen(*a)) or
+                        passed[-1])
+    est = LoopEstimator(case=cfg.case).fit(data)
+    assert tuple(sorted(e.name for e in est.effects_)) == full[0]
+    assert est.effect_coef_ == pytest.approx(full[3], rel=1e-7)
+    assert est.heldout_rmse_["after"] == pytest.approx(full[1], rel=1e-7)
+    assert "bearing_ball_churning" in passed[0]  # the screen ran and let the bearing through

@@ -110,10 +110,11 @@ def format_robust(r: RobustDesign, given: dict | None = None) -> str:
         f"in-sample {stat:<10} {r.robust.objective_W:.6g} W over the N scenarios "
         "(smooth C_m, the NLP's)",
         f"stability            2N = {2 * s.scenarios} scenarios: design moves by at most "
-        f"{dx:.3g} mm, {stat} by {100 * r.statistic_change:+.3f} % -> "
-        f"{'stable' if r.stable else 'NOT stable'} (tolerances: "
+        f"{dx:.3g} mm, its Monte Carlo {s.statistic} by {100 * r.statistic_change:+.3f} % "
+        f"-> {'stable' if r.stable else 'NOT stable'} (tolerances: "
         f"{100 * STABILITY_DESIGN_TOL:g} % of each bound range, "
-        f"{100 * STABILITY_STAT_TOL:g} % of the statistic)",
+        f"{100 * STABILITY_STAT_TOL:g} % of the statistic); in-sample {stat} "
+        f"{100 * r.in_sample_change:+.3f} % (other scenarios, same design)",
     ]
     if r.same_design:
         lines.append("same design          the robust optimum is the nominal one (to 1e-6 of "

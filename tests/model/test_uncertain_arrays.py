@@ -18,6 +18,7 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
+from conftest import TEST_JOINT_TOML
 
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import evaluate_case
@@ -47,27 +48,8 @@ WATER_CSV = """temp_C,nu_cSt,density_kg_m3
 """Liquid water at 0.101325 MPa (CRC Handbook, IAPWS-95 and IAPWS 2008)."""
 
 
-JOINT = """
-name = "test joint"
-[region1]
-T1_mm = 23.9
-T2_mm = 25.4
-T3_mm = 26.4
-T4_mm = 27.9
-length_mm = 14.76
-[region2]
-radius_mm = 22.0
-length_mm = 14.24
-gap_mm = 5.0
-[oil]
-name = "VG22"
-[operating]
-depth_m = 0.0
-oil_temp_C = 40.0
-[friction]
-gamma = 0.5
-"""
-"""The seed joint's geometry (Table 1, T = 4), as tests/conftest.py's test joint."""
+JOINT = TEST_JOINT_TOML
+"""The seed joint's geometry (Table 1, T = 4): tests/conftest.py's test joint."""
 
 
 @pytest.fixture(scope="module")

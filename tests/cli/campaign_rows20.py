@@ -476,3 +476,55 @@ row("predict-model-incomplete-allowed", PREDICT + " --allow-incomplete", "warned
     "marked incomplete", setup=with_model, files={"INCOMPLETE": "started\n"},
     outputs=("p.csv",), check=predicted_finite)
 # ---- end of issue 20 class 3 (lane model20)
+
+
+# ==================================================================== issue 21: uncertainty
+# ([uncertainty] tables written by hand, the uncertainty study's and the robust design's
+# options, through the command line and the façade)
+GROUP = "21 uncertain inputs and robust design"
+_U = "21: a bad [uncertainty] table is refused by one line naming the key"
+
+
+def _uncertain(**tables) -> dict:
+    """case.toml with an [uncertainty] table of the given inputs' laws."""
+    text = case()
+    for name, law in tables.items():
+        text += f"\n[uncertainty.{name}]\n" + "".join(
+            f"{k} = {json.dumps(v)}\n" for k, v in law.items())
+    return {"case.toml": text}
+
+
+cli("u-sd-negative", "study uncertainty case.toml --out o", "refused",
+    ("uncertainty.gamma", "sd"), _U,
+    files=_uncertain(gamma={"dist": "normal", "mean": 0.5, "sd": -1.0}))
+cli("u-unknown-law", "study uncertainty case.toml --out o", "refused",
+    ("uncertainty.gamma", "weibull"), _U,
+    files=_uncertain(gamma={"dist": "weibull", "mean": 0.5, "sd": 0.1}))
+cli("u-unknown-input", "study uncertainty case.toml --out o", "refused",
+    ("uncertainty", "viscosity"), _U,
+    files=_uncertain(viscosity={"dist": "uniform", "low": 0.9, "high": 1.1}))
+cli("u-low-above-high", "study uncertainty case.toml --out o", "refused",
+    ("uncertainty.nu40_factor", "low|high"), _U,
+    files=_uncertain(nu40_factor={"dist": "uniform", "low": 1.1, "high": 0.9}))
+cli("u-film-without-thermal", "study uncertainty case.toml --out o", "refused",
+    ("film_strength", "thermal"), _U,
+    files=_uncertain(film_strength={"dist": "uniform", "low": 0.0, "high": 1.0}))
+cli("u-unit-missing", "study uncertainty case.toml --out o", "refused",
+    ("uncertainty.oil_temp_C",), _U + " (a temperature's mean is mean_C)",
+    files=_uncertain(oil_temp_C={"dist": "normal", "mean": 2.0, "sd_K": 1.0}))
+cli("u-samples-not-power-of-2", "study uncertainty --samples 1000 --out o", "refused",
+    ("samples", "1000"), "21: --samples must be a power of 2 (Sobol' points), said in one line")
+cli("r-unknown-statistic", "optimize --robust p99", "refused", ("robust", "p99"),
+    "21: --robust takes p95, mean or mean+2sd")
+cli("r-too-few-scenarios", "optimize --robust p95 --scenarios 2 --starts 1", "refused",
+    ("scenarios", "2"), "21: a robust design needs enough scenarios; the bound is named")
+cli("r-film-mode", "optimize --robust p95 --thermal film --starts 1", "refused",
+    ("--robust", "film"), "21: the robust NLP's thermal modes (none, bulk) are named")
+cli("r-scenarios-without-robust", "optimize --scenarios 16 --starts 1", "refused",
+    ("--scenarios", "--robust"), "21: --scenarios without --robust is a conflict naming both")
+facade("f-uncertainty-samples-text", lambda d: og.uncertainty(samples="many"), "refused",
+       ("samples",), "21: og.uncertainty(samples='many') refused naming the argument")
+facade("f-optimize-robust-p99", lambda d: og.optimize(robust="p99", starts=1), "refused",
+       ("p99",), "21: og.optimize(robust='p99') refused naming the value and the choices")
+facade("f-optimize-scenarios-alone", lambda d: og.optimize(scenarios=16, starts=1), "refused",
+       ("scenarios", "robust"), "21: og.optimize(scenarios=16) without robust= is refused")

@@ -72,16 +72,46 @@ def _canon(v: Any) -> Any:
 
 def point_keys(grid: pd.DataFrame, base: DesignCase, mode: str,
                extra: Mapping[str, Any] | None = None) -> list[str]:
-    """Key of each grid row: hash of (engine version, mode, base case, row parameters)."""
+    """Key of each grid row: hash of (engine version, mode, base case, row parameters).
+
+    The hashed text of a row is ``json.dumps`` of its (column, value) pairs sorted by
+    column, empty cells left out, numbers as ``repr(float(v))``; it is built column by
+    column (one ``repr`` per number, one JSON text per distinct name), then hashed
+    row by row."""
     head = json.dumps([ENGINE_VERSION, mode, case_fingerprint(base),
                        sorted((extra or {}).items())], default=str)
-    keys = []
-    cols = [c for c in grid.columns if c != "label"]
-    for rec in grid[cols].itertuples(index=False, name=None):
-        body = json.dumps(sorted((c, _canon(v)) for c, v in zip(cols, rec, strict=True)
-                                 if not is_missing(v)))
-        keys.append(hashlib.sha1((head + body).encode()).hexdigest()[:20])
-    return keys
+    cols = sorted(c for c in grid.columns if c != "label")
+    n = len(grid)
+    if not cols:
+        bodies = ["[]"] * n
+    else:
+        pieces = [_key_pieces(grid[c], c) for c in cols]
+        joined = pieces[0]
+        for p in pieces[1:]:
+            joined = joined + p
+        bodies = ["[" + b[2:] + "]" for b in joined.tolist()]
+    sha1 = hashlib.sha1
+    return [sha1((head + b).encode()).hexdigest()[:20] for b in bodies]
+
+
+def _key_pieces(s: pd.Series, name: str) -> np.ndarray:
+    """``', ["name", "value"]'`` of each cell of a column as the row key's text holds it
+    (``""`` for an empty cell), an object array."""
+    lead = ", [" + json.dumps(name) + ", "
+    kind = s.dtype.kind
+    if kind in "fiu":
+        v = s.to_numpy(dtype=float)
+        text = np.array([lead + '"' + repr(x) + '"]' for x in v.tolist()], dtype=object)
+        if kind == "f":
+            text[np.isnan(v)] = ""
+        return text
+    if pd.api.types.infer_dtype(s, skipna=True) in ("string", "empty"):
+        codes, uniq = pd.factorize(s, use_na_sentinel=True)
+        table = np.array([("" if is_missing(u) else lead + json.dumps(str(u)) + "]")
+                          for u in uniq] + [""], dtype=object)
+        return table[codes]  # code -1 (None or NaN) is the trailing ""
+    return np.array([("" if is_missing(v) else lead + json.dumps(_canon(v)) + "]")
+                     for v in s.tolist()], dtype=object)
 
 
 def points_path(out_dir: str | Path, mode: str) -> Path:

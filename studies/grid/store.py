@@ -323,8 +323,10 @@ def append_points(path: Path, keys: list[str], recs: list[dict], mode: str) -> P
     :func:`fold_chunks` later folds the chunk files into ``path``. Returns the chunk
     file."""
     cols = result_columns(mode)
-    df = pd.DataFrame([{c: _clean_text(r.get(c)) for c in cols} for r in recs],
-                      columns=list(cols))
+    df = pd.DataFrame([{c: r.get(c) for c in cols} for r in recs], columns=list(cols))
+    for c in [c for c in df.columns if df[c].dtype.kind == "O"]:  # each message once
+        if any(isinstance(u, str) and _clean_text(u) != u for u in pd.unique(df[c])):
+            df[c] = df[c].map(_clean_text)
     df.insert(0, "point_key", keys)
     d = chunks_dir(path)
     try:

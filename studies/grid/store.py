@@ -29,13 +29,15 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
+import pyarrow.compute as pc
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.io.case_write import case_to_dict
 from oilgap.studies.grid.columns import ENGINE_VERSION, result_columns
 from oilgap.studies.grid.schema import WHERE, is_missing
-from oilgap.studies.grid.store_check import row_problem
+from oilgap.studies.grid.store_check import clean_rows, row_problem
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_write_text
 from oilgap.studies.io.result_folder import LOCK_NAME
 
@@ -176,12 +178,13 @@ def _read_rows(path: Path, mode: str) -> _Rows:
     rows = _Rows(header, [], 0)
     columns = result_columns(mode)
     bad_header = _header_problem(header, columns)
-    for no, line in enumerate(complete[1:], start=2):
-        if line.strip() and bad_header:
-            rows.dropped += 1
-            rows.problems.append(f"{path}:{no}: {bad_header}")
-        elif line.strip():
-            _check_line(rows, line, f"{path}:{no}", mode, columns)
+    if bad_header:
+        for no, line in enumerate(complete[1:], start=2):
+            if line.strip():
+                rows.dropped += 1
+                rows.problems.append(f"{path}:{no}: {bad_header}")
+    else:
+        _check_lines(rows, complete[1:], path, mode, columns)
     if tail.strip():
         rows.dropped += 1
         rows.problems.append(f"{path}:{len(complete) + 1}: the row is cut short")
@@ -196,6 +199,61 @@ def _header_problem(header: list[str], columns: tuple[str, ...]) -> str | None:
         return f"the header holds {', '.join(twice)} twice"
     missing = [c for c in columns if c not in header]
     return f"the header has no {', '.join(missing[:3])} column" if missing else None
+
+
+def _check_lines(rows: _Rows, body: list[str], path: Path, mode: str,
+                 columns: tuple[str, ...]) -> None:
+    """Keep the valid lines of ``body`` (the data lines of ``path``) in ``rows``, count
+    the others and say why. The plain lines (the header's number of fields, no quote,
+    no carriage return) are read at once and checked column by column
+    (:func:`~oilgap.studies.grid.store_check.clean_rows`); every other line, and every
+    plain line those checks do not pass for certain, is checked on its own
+    (:func:`_check_line`, :func:`~oilgap.studies.grid.store_check.row_problem`)."""
+    if not body:
+        return
+    lines = np.array(body, dtype=object)
+    clean = np.zeros(len(body), dtype=bool)
+    keys = np.empty(len(body), dtype=object)
+    plain = _plain_lines(body, len(rows.header))
+    if plain.size:
+        cells = _cells(rows.header, lines[plain].tolist())
+        if cells is not None:
+            clean[plain] = clean_rows(cells, mode, columns)
+            keys[plain] = cells["point_key"].astype(object).to_numpy()
+    keep = clean.copy()
+    for i in np.flatnonzero(~clean).tolist():
+        line = body[i]
+        if line.strip():
+            before = len(rows.lines)
+            _check_line(rows, line, f"{path}:{i + 2}", mode, columns)
+            if len(rows.lines) > before:
+                keep[i], keys[i] = True, rows.keys[-1]
+    rows.lines = [x + "\n" for x in lines[keep].tolist()]
+    rows.keys = keys[keep].tolist()
+
+
+def _plain_lines(body: list[str], fields: int) -> np.ndarray:
+    """Indices of the lines with ``fields`` fields, no quote, no carriage return, no NUL."""
+    arr = pa.array(body, pa.string())
+    plain = pc.equal(pc.count_substring(arr, ","), fields - 1)
+    for c in ('"', "\r", "\x00"):
+        plain = pc.and_(plain, pc.invert(pc.match_substring(arr, c)))
+    return np.flatnonzero(np.asarray(plain.to_numpy(zero_copy_only=False), dtype=bool))
+
+
+def _cells(header: list[str], lines: list[str]) -> pd.DataFrame | None:
+    """The cells of plain lines (:func:`_plain_lines`): text columns as text (empty:
+    ``""``), numbers as read (empty: NaN); None if the reader sees another number of
+    rows."""
+    text = {c for c in _DTYPES if c in header}
+    try:
+        cells = pd.read_csv(io.StringIO("\n".join(lines) + "\n"), header=None, names=header,
+                            dtype={c: str for c in text}, keep_default_na=False,
+                            na_values={c: [""] for c in header if c not in text},
+                            skip_blank_lines=False, engine="c")
+    except (ValueError, pd.errors.ParserError):
+        return None
+    return cells if len(cells) == len(lines) else None
 
 
 def _check_line(rows: _Rows, line: str, where: str, mode: str,

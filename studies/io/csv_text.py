@@ -68,10 +68,14 @@ def _column_texts(s: pd.Series) -> pa.Array | None:
         return pa.array([str(x) for x in s.tolist()], pa.string())
     if kind != "O" or pd.api.types.infer_dtype(s, skipna=True) not in ("string", "empty"):
         return None
-    codes, uniq = pd.factorize(s, use_na_sentinel=True)
-    table = pa.array([text_field(u) for u in uniq] + [""], pa.string())
-    codes = np.where(codes < 0, len(uniq), codes)
-    return table.take(pa.array(codes))
+    arr = pa.array(s.astype(object).to_numpy(), pa.string(), from_pandas=True)  # NaN: null
+    quote = pc.fill_null(pc.match_substring_regex(arr, '[,"\\r\\n]'), False)
+    idx = np.flatnonzero(np.asarray(quote.to_numpy(zero_copy_only=False), dtype=bool))
+    if idx.size:
+        fixed = pa.array([text_field(v) for v in arr.take(pa.array(idx)).to_pylist()],
+                         pa.string())
+        arr = pc.replace_with_mask(arr, quote, fixed)
+    return pc.fill_null(arr, "")
 
 
 def csv_text(df: pd.DataFrame) -> bytes | None:

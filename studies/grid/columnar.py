@@ -24,13 +24,14 @@ from collections.abc import Mapping
 from dataclasses import replace
 
 import numpy as np
+import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError
 from oilgap.model.oils import Oil
 from oilgap.model.uncertain.rows import RowValues
 from oilgap.studies.grid.columns import EVALUATE_NUMBERS
-from oilgap.studies.grid.schema import apply_params, is_missing
+from oilgap.studies.grid.schema import apply_params, missing_cells
 
 COLUMNAR = frozenset({"oil", "oil_temp_C", "depth_m", "gamma", "scale", "peak_speed_rpm",
                       "sea_temp_C", "label"})
@@ -45,15 +46,20 @@ class NotColumnar(Exception):
 
 
 def _columns(rows: list[dict]) -> tuple[dict[str, np.ndarray], list]:
-    """Numeric columns (NaN: the base case's value) and the oil names (None: the case's)."""
-    given = {k for r in rows for k, v in r.items() if not is_missing(v)} - {"label"}
+    """Numeric columns (NaN: the base case's value) and the oil names (None: the case's),
+    column by column."""
+    df = pd.DataFrame.from_records(rows) if rows else pd.DataFrame()
+    missing = {c: missing_cells(df[c]) for c in df.columns}
+    given = {c for c, m in missing.items() if not m.all()} - {"label"}
     if not given <= COLUMNAR:
         raise NotColumnar
-    num = {c: np.array([math.nan if is_missing(r.get(c)) else r[c] for r in rows], float)
+    num = {c: df[c].to_numpy(dtype=float) if df[c].dtype.kind == "f" else
+           df[c].astype(object).where(~missing[c], math.nan).to_numpy(dtype=float)
            for c in given - {"oil"}}
-    oils = [None if is_missing(r.get("oil")) else str(r["oil"]) for r in rows] \
-        if "oil" in given else [None] * len(rows)
-    return num, oils
+    if "oil" not in given:
+        return num, [None] * len(rows)
+    oil = df["oil"].to_numpy(dtype=object)
+    return num, [None if m else str(v) for v, m in zip(oil, missing["oil"], strict=True)]
 
 
 def _check(base: DesignCase, num: Mapping[str, np.ndarray],

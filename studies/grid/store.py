@@ -184,7 +184,8 @@ def _read_rows(path: Path, mode: str) -> _Rows:
                 rows.dropped += 1
                 rows.problems.append(f"{path}:{no}: {bad_header}")
     else:
-        _check_lines(rows, complete[1:], path, mode, columns)
+        body = text[len(complete[0]) + 1:len(text) - len(tail) - 1]
+        _check_lines(rows, complete[1:], path, mode, columns, body)
     if tail.strip():
         rows.dropped += 1
         rows.problems.append(f"{path}:{len(complete) + 1}: the row is cut short")
@@ -202,21 +203,23 @@ def _header_problem(header: list[str], columns: tuple[str, ...]) -> str | None:
 
 
 def _check_lines(rows: _Rows, body: list[str], path: Path, mode: str,
-                 columns: tuple[str, ...]) -> None:
+                 columns: tuple[str, ...], text: str) -> None:
     """Keep the valid lines of ``body`` (the data lines of ``path``) in ``rows``, count
     the others and say why. The plain lines (the header's number of fields, no quote,
     no carriage return) are read at once and checked column by column
     (:func:`~oilgap.studies.grid.store_check.clean_rows`); every other line, and every
     plain line those checks do not pass for certain, is checked on its own
-    (:func:`_check_line`, :func:`~oilgap.studies.grid.store_check.row_problem`)."""
+    (:func:`_check_line`, :func:`~oilgap.studies.grid.store_check.row_problem`).
+    ``text`` is ``"\\n".join(body)``."""
     if not body:
         return
     lines = np.array(body, dtype=object)
     clean = np.zeros(len(body), dtype=bool)
     keys = np.empty(len(body), dtype=object)
-    plain = _plain_lines(body, len(rows.header))
+    plain = _plain_lines(body, len(rows.header), text)
     if plain.size:
-        cells = _cells(rows.header, lines[plain].tolist())
+        cells = _cells(rows.header, text if plain.size == len(body)
+                       else "\n".join(lines[plain].tolist()), plain.size)
         if cells is not None:
             clean[plain] = clean_rows(cells, mode, columns)
             keys[plain] = cells["point_key"].astype(object).to_numpy()
@@ -232,28 +235,30 @@ def _check_lines(rows: _Rows, body: list[str], path: Path, mode: str,
     rows.keys = keys[keep].tolist()
 
 
-def _plain_lines(body: list[str], fields: int) -> np.ndarray:
-    """Indices of the lines with ``fields`` fields, no quote, no carriage return, no NUL."""
+def _plain_lines(body: list[str], fields: int, text: str) -> np.ndarray:
+    """Indices of the lines with ``fields`` fields, no quote, no carriage return, no NUL
+    (``text``: the lines joined)."""
     arr = pa.array(body, pa.string())
     plain = pc.equal(pc.count_substring(arr, ","), fields - 1)
     for c in ('"', "\r", "\x00"):
-        plain = pc.and_(plain, pc.invert(pc.match_substring(arr, c)))
+        if c in text:
+            plain = pc.and_(plain, pc.invert(pc.match_substring(arr, c)))
     return np.flatnonzero(np.asarray(plain.to_numpy(zero_copy_only=False), dtype=bool))
 
 
-def _cells(header: list[str], lines: list[str]) -> pd.DataFrame | None:
-    """The cells of plain lines (:func:`_plain_lines`): text columns as text (empty:
-    ``""``), numbers as read (empty: NaN); None if the reader sees another number of
-    rows."""
+def _cells(header: list[str], lines: str, n: int) -> pd.DataFrame | None:
+    """The cells of ``n`` plain lines (:func:`_plain_lines`, joined by newlines): text
+    columns as text (empty: ``""``), numbers as read (empty: NaN); None if the reader sees
+    another number of rows."""
     text = {c for c in _DTYPES if c in header}
     try:
-        cells = pd.read_csv(io.StringIO("\n".join(lines) + "\n"), header=None, names=header,
+        cells = pd.read_csv(io.StringIO(lines + "\n"), header=None, names=header,
                             dtype={c: str for c in text}, keep_default_na=False,
                             na_values={c: [""] for c in header if c not in text},
                             skip_blank_lines=False, engine="c")
     except (ValueError, pd.errors.ParserError):
         return None
-    return cells if len(cells) == len(lines) else None
+    return cells if len(cells) == n else None
 
 
 def _check_line(rows: _Rows, line: str, where: str, mode: str,
@@ -381,7 +386,7 @@ def append_points(path: Path, keys: list[str], recs: list[dict], mode: str) -> P
     :func:`fold_chunks` later folds the chunk files into ``path``. Returns the chunk
     file."""
     cols = result_columns(mode)
-    df = pd.DataFrame([{c: r.get(c) for c in cols} for r in recs], columns=list(cols))
+    df = pd.DataFrame(recs, columns=list(cols))  # a missing cell NaN: the same text
     for c in [c for c in df.columns if df[c].dtype.kind == "O"]:  # each message once
         if any(isinstance(u, str) and _clean_text(u) != u for u in pd.unique(df[c])):
             df[c] = df[c].map(_clean_text)

@@ -38,6 +38,7 @@ from oilgap.model.io.case_write import case_to_dict
 from oilgap.studies.grid.columns import ENGINE_VERSION, result_columns
 from oilgap.studies.grid.schema import WHERE, is_missing
 from oilgap.studies.grid.store_check import clean_rows, row_problem
+from oilgap.studies.io.csv_text import float_texts
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_write_text
 from oilgap.studies.io.result_folder import LOCK_NAME
 
@@ -78,42 +79,43 @@ def point_keys(grid: pd.DataFrame, base: DesignCase, mode: str,
 
     The hashed text of a row is ``json.dumps`` of its (column, value) pairs sorted by
     column, empty cells left out, numbers as ``repr(float(v))``; it is built column by
-    column (one ``repr`` per number, one JSON text per distinct name), then hashed
-    row by row."""
+    column (numbers through :func:`~oilgap.studies.io.csv_text.float_texts`, one JSON text
+    per distinct name, Arrow joins), then hashed row by row."""
     head = json.dumps([ENGINE_VERSION, mode, case_fingerprint(base),
                        sorted((extra or {}).items())], default=str)
     cols = sorted(c for c in grid.columns if c != "label")
-    n = len(grid)
     if not cols:
-        bodies = ["[]"] * n
+        texts = pa.array([head + "[]"] * len(grid), pa.large_string())
     else:
-        pieces = [_key_pieces(grid[c], c) for c in cols]
-        joined = pieces[0]
-        for p in pieces[1:]:
-            joined = joined + p
-        bodies = ["[" + b[2:] + "]" for b in joined.tolist()]
+        empty = pa.scalar("", pa.large_string())
+        joined = pc.binary_join_element_wise(*(_key_pieces(grid[c], c) for c in cols), empty)
+        texts = pc.binary_join_element_wise(  # "[" + pairs (their first ", " cut) + "]"
+            pa.scalar(head + "[", pa.large_string()), pc.utf8_slice_codeunits(joined, 2),
+            pa.scalar("]", pa.large_string()), empty)
     sha1 = hashlib.sha1
-    return [sha1((head + b).encode()).hexdigest()[:20] for b in bodies]
+    return [sha1(b).hexdigest()[:20] for b in texts.cast(pa.large_binary()).to_pylist()]
 
 
-def _key_pieces(s: pd.Series, name: str) -> np.ndarray:
+def _key_pieces(s: pd.Series, name: str) -> pa.Array:
     """``', ["name", "value"]'`` of each cell of a column as the row key's text holds it
-    (``""`` for an empty cell), an object array."""
+    (``""`` for an empty cell; Arrow strings)."""
     lead = ", [" + json.dumps(name) + ", "
     kind = s.dtype.kind
     if kind in "fiu":
         v = s.to_numpy(dtype=float)
-        text = np.array([lead + '"' + repr(x) + '"]' for x in v.tolist()], dtype=object)
-        if kind == "f":
-            text[np.isnan(v)] = ""
-        return text
+        text = pc.binary_join_element_wise(
+            pa.scalar(lead + '"', pa.large_string()), float_texts(v).cast(pa.large_string()),
+            pa.scalar('"]', pa.large_string()), pa.scalar("", pa.large_string()))
+        nan = np.isnan(v)
+        return pc.if_else(pa.array(nan), pa.scalar("", pa.large_string()), text) \
+            if nan.any() else text
     if pd.api.types.infer_dtype(s, skipna=True) in ("string", "empty"):
         codes, uniq = pd.factorize(s, use_na_sentinel=True)
-        table = np.array([("" if is_missing(u) else lead + json.dumps(str(u)) + "]")
-                          for u in uniq] + [""], dtype=object)
-        return table[codes]  # code -1 (None or NaN) is the trailing ""
-    return np.array([("" if is_missing(v) else lead + json.dumps(_canon(v)) + "]")
-                     for v in s.tolist()], dtype=object)
+        table = pa.array([("" if is_missing(u) else lead + json.dumps(str(u)) + "]")
+                          for u in uniq] + [""], pa.large_string())
+        return table.take(pa.array(np.where(codes < 0, len(uniq), codes)))
+    return pa.array([("" if is_missing(v) else lead + json.dumps(_canon(v)) + "]")
+                     for v in s.tolist()], pa.large_string())
 
 
 def points_path(out_dir: str | Path, mode: str) -> Path:

@@ -19,6 +19,7 @@ scale columns; with them to rounding, C_m being taken at gamma 0 and scale 1 and
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import replace
@@ -182,17 +183,14 @@ def columnar_chunk(base: DesignCase, rows: list[dict], catalogue: Mapping[str, O
 def _records(out: dict[str, np.ndarray], warn_col: list, errors: Mapping[int, str],
              thermal: str) -> list[dict]:
     """One record per row, as the per-case path makes them."""
-    cols = {k: v.tolist() for k, v in out.items()}
-    keys = list(cols)
-    recs: list[dict] = []
-    for i, vals in enumerate(zip(*cols.values(), strict=True)):
-        if i in errors:
-            recs.append({"status": "error", "error": errors[i]})
-            continue
-        rec = dict(zip(keys, vals, strict=True))
-        if not math.isfinite(rec["mean_power_W"]):
-            recs.append({"status": "error", "error": NON_FINITE})
-            continue
-        rec.update(thermal_mode=thermal, warning=warn_col[i], status="ok", error=None)
-        recs.append(rec)
+    n = len(warn_col)
+    keys = [*out, "thermal_mode", "warning", "status", "error"]
+    cols = [v.tolist() for v in out.values()]
+    cols += [itertools.repeat(thermal, n), warn_col, itertools.repeat("ok", n),
+             itertools.repeat(None, n)]
+    recs = [dict(zip(keys, vals)) for vals in zip(*cols)]  # noqa: B905 - repeat is endless
+    for i in np.flatnonzero(~np.isfinite(out["mean_power_W"])).tolist():
+        recs[i] = {"status": "error", "error": NON_FINITE}
+    for i, message in errors.items():
+        recs[i] = {"status": "error", "error": message}
     return recs

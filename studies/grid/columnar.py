@@ -19,18 +19,20 @@ scale columns; with them to rounding, C_m being taken at gamma 0 and scale 1 and
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Mapping
 from dataclasses import replace
 
 import numpy as np
+import pandas as pd
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError
 from oilgap.model.oils import Oil
 from oilgap.model.uncertain.rows import RowValues
 from oilgap.studies.grid.columns import EVALUATE_NUMBERS
-from oilgap.studies.grid.schema import apply_params, is_missing
+from oilgap.studies.grid.schema import apply_params, missing_cells
 
 COLUMNAR = frozenset({"oil", "oil_temp_C", "depth_m", "gamma", "scale", "peak_speed_rpm",
                       "sea_temp_C", "label"})
@@ -45,15 +47,20 @@ class NotColumnar(Exception):
 
 
 def _columns(rows: list[dict]) -> tuple[dict[str, np.ndarray], list]:
-    """Numeric columns (NaN: the base case's value) and the oil names (None: the case's)."""
-    given = {k for r in rows for k, v in r.items() if not is_missing(v)} - {"label"}
+    """Numeric columns (NaN: the base case's value) and the oil names (None: the case's),
+    column by column."""
+    df = pd.DataFrame.from_records(rows) if rows else pd.DataFrame()
+    missing = {c: missing_cells(df[c]) for c in df.columns}
+    given = {c for c, m in missing.items() if not m.all()} - {"label"}
     if not given <= COLUMNAR:
         raise NotColumnar
-    num = {c: np.array([math.nan if is_missing(r.get(c)) else r[c] for r in rows], float)
+    num = {c: df[c].to_numpy(dtype=float) if df[c].dtype.kind == "f" else
+           df[c].astype(object).where(~missing[c], math.nan).to_numpy(dtype=float)
            for c in given - {"oil"}}
-    oils = [None if is_missing(r.get("oil")) else str(r["oil"]) for r in rows] \
-        if "oil" in given else [None] * len(rows)
-    return num, oils
+    if "oil" not in given:
+        return num, [None] * len(rows)
+    oil = df["oil"].to_numpy(dtype=object)
+    return num, [None if m else str(v) for v, m in zip(oil, missing["oil"], strict=True)]
 
 
 def _check(base: DesignCase, num: Mapping[str, np.ndarray],
@@ -176,17 +183,14 @@ def columnar_chunk(base: DesignCase, rows: list[dict], catalogue: Mapping[str, O
 def _records(out: dict[str, np.ndarray], warn_col: list, errors: Mapping[int, str],
              thermal: str) -> list[dict]:
     """One record per row, as the per-case path makes them."""
-    cols = {k: v.tolist() for k, v in out.items()}
-    keys = list(cols)
-    recs: list[dict] = []
-    for i, vals in enumerate(zip(*cols.values(), strict=True)):
-        if i in errors:
-            recs.append({"status": "error", "error": errors[i]})
-            continue
-        rec = dict(zip(keys, vals, strict=True))
-        if not math.isfinite(rec["mean_power_W"]):
-            recs.append({"status": "error", "error": NON_FINITE})
-            continue
-        rec.update(thermal_mode=thermal, warning=warn_col[i], status="ok", error=None)
-        recs.append(rec)
+    n = len(warn_col)
+    keys = [*out, "thermal_mode", "warning", "status", "error"]
+    cols = [v.tolist() for v in out.values()]
+    cols += [itertools.repeat(thermal, n), warn_col, itertools.repeat("ok", n),
+             itertools.repeat(None, n)]
+    recs = [dict(zip(keys, vals)) for vals in zip(*cols)]  # noqa: B905 - repeat is endless
+    for i in np.flatnonzero(~np.isfinite(out["mean_power_W"])).tolist():
+        recs[i] = {"status": "error", "error": NON_FINITE}
+    for i, message in errors.items():
+        recs[i] = {"status": "error", "error": message}
     return recs

@@ -38,6 +38,7 @@ from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 from typing import IO
 
+import numpy as np
 import pandas as pd
 from tqdm import tqdm
 
@@ -187,15 +188,10 @@ def _rmdir_if_empty(d: Path) -> None:
 def _todo(keys: list[str], grid: pd.DataFrame, done: Mapping[str, dict]
           ) -> tuple[list[str], list[dict]]:
     """Keys and rows still to compute: not stored, each distinct key once."""
-    todo_keys: list[str] = []
-    todo_rows: list[dict] = []
-    seen = set(done)
-    for k, rec in zip(keys, grid.to_dict("records"), strict=True):
-        if k not in seen:
-            seen.add(k)
-            todo_keys.append(k)
-            todo_rows.append(rec)
-    return todo_keys, todo_rows
+    k = pd.Series(keys, dtype=object)
+    new = ~k.duplicated().to_numpy() & ~k.isin(list(done)).to_numpy()
+    idx = np.flatnonzero(new)
+    return [keys[i] for i in idx.tolist()], grid.iloc[idx].to_dict("records")
 
 
 def _execute(backend, sizer: ChunkSizer, todo_keys: list[str], todo_rows: list[dict],
@@ -228,7 +224,8 @@ def _assemble(grid: pd.DataFrame, keys: list[str], done: Mapping[str, dict],
               mode: str) -> pd.DataFrame:
     """The grid's columns then the result columns, one row per grid row."""
     cols = result_columns(mode)
-    res = pd.DataFrame([{c: done[k].get(c) for c in cols} for k in keys], columns=list(cols))
+    recs = [done[k] for k in keys]
+    res = pd.DataFrame({c: [r.get(c) for r in recs] for c in cols}, columns=list(cols))
     for c in ("error", "warning"):
         res[c] = res[c].astype(object).where(res[c].notna(), None)
     grid = grid.copy()

@@ -37,7 +37,7 @@ from oilgap.studies.grid.columns import (
 )
 
 __all__ = ["MODES", "OPTIMIZE_COLUMNS", "PARAM_COLUMNS", "STRING_COLUMNS", "apply_params",
-           "check_thermal_columns", "is_missing", "read_grid", "read_grid_csv",
+           "check_thermal_columns", "is_missing", "missing_cells", "read_grid", "read_grid_csv",
            "read_grid_parquet", "validate_grid"]
 
 PARQUET_SUFFIXES = (".parquet", ".pq")
@@ -51,6 +51,28 @@ def is_missing(v: Any) -> bool:
     """True for an empty grid cell: None, NaN or a blank string."""
     return v is None or (isinstance(v, float) and math.isnan(v)) or (
         isinstance(v, str) and v.strip() == "")
+
+
+def missing_cells(s: pd.Series) -> np.ndarray:
+    """Which cells of a column are empty (:func:`is_missing`), column by column.
+
+    Parameters
+    ----------
+    s : Series
+        A grid column [-].
+
+    Returns
+    -------
+    ndarray of bool
+        True where the cell is None, NaN or a blank text [-].
+    """
+    if s.dtype.kind == "f":
+        return s.isna().to_numpy(dtype=bool)
+    if pd.api.types.infer_dtype(s, skipna=True) not in ("string", "empty"):
+        return np.array([is_missing(v) for v in s.tolist()], dtype=bool)
+    codes, uniq = pd.factorize(s, use_na_sentinel=True)  # texts: each distinct one once
+    flags = np.array([is_missing(u) for u in uniq] + [True], dtype=bool)
+    return flags[codes]
 
 
 # --------------------------------------------------------------------------- grid checks
@@ -128,7 +150,7 @@ def check_thermal_columns(grid: pd.DataFrame, thermal: str, case: DesignCase) ->
     InputError
         Naming the column, the mode and what to do instead.
     """
-    given = [c for c in grid.columns if grid[c].map(lambda v: not is_missing(v)).any()]
+    given = [c for c in grid.columns if not missing_cells(grid[c]).all()]
     if thermal in (ThermalMode.BULK, ThermalMode.FULL):
         if "oil_temp_C" in given:
             raise InputError("oil_temp_C", "a grid column", f"under thermal mode '{thermal}' "

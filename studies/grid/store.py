@@ -29,13 +29,16 @@ from typing import Any
 
 import numpy as np
 import pandas as pd
+import pyarrow as pa
+import pyarrow.compute as pc
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.io.case_write import case_to_dict
 from oilgap.studies.grid.columns import ENGINE_VERSION, result_columns
 from oilgap.studies.grid.schema import WHERE, is_missing
-from oilgap.studies.grid.store_check import row_problem
+from oilgap.studies.grid.store_check import clean_rows, row_problem
+from oilgap.studies.io.csv_text import float_texts
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_write_text
 from oilgap.studies.io.result_folder import LOCK_NAME
 
@@ -72,16 +75,47 @@ def _canon(v: Any) -> Any:
 
 def point_keys(grid: pd.DataFrame, base: DesignCase, mode: str,
                extra: Mapping[str, Any] | None = None) -> list[str]:
-    """Key of each grid row: hash of (engine version, mode, base case, row parameters)."""
+    """Key of each grid row: hash of (engine version, mode, base case, row parameters).
+
+    The hashed text of a row is ``json.dumps`` of its (column, value) pairs sorted by
+    column, empty cells left out, numbers as ``repr(float(v))``; it is built column by
+    column (numbers through :func:`~oilgap.studies.io.csv_text.float_texts`, one JSON text
+    per distinct name, Arrow joins), then hashed row by row."""
     head = json.dumps([ENGINE_VERSION, mode, case_fingerprint(base),
                        sorted((extra or {}).items())], default=str)
-    keys = []
-    cols = [c for c in grid.columns if c != "label"]
-    for rec in grid[cols].itertuples(index=False, name=None):
-        body = json.dumps(sorted((c, _canon(v)) for c, v in zip(cols, rec, strict=True)
-                                 if not is_missing(v)))
-        keys.append(hashlib.sha1((head + body).encode()).hexdigest()[:20])
-    return keys
+    cols = sorted(c for c in grid.columns if c != "label")
+    if not cols:
+        texts = pa.array([head + "[]"] * len(grid), pa.large_string())
+    else:
+        empty = pa.scalar("", pa.large_string())
+        joined = pc.binary_join_element_wise(*(_key_pieces(grid[c], c) for c in cols), empty)
+        texts = pc.binary_join_element_wise(  # "[" + pairs (their first ", " cut) + "]"
+            pa.scalar(head + "[", pa.large_string()), pc.utf8_slice_codeunits(joined, 2),
+            pa.scalar("]", pa.large_string()), empty)
+    sha1 = hashlib.sha1
+    return [sha1(b).hexdigest()[:20] for b in texts.cast(pa.large_binary()).to_pylist()]
+
+
+def _key_pieces(s: pd.Series, name: str) -> pa.Array:
+    """``', ["name", "value"]'`` of each cell of a column as the row key's text holds it
+    (``""`` for an empty cell; Arrow strings)."""
+    lead = ", [" + json.dumps(name) + ", "
+    kind = s.dtype.kind
+    if kind in "fiu":
+        v = s.to_numpy(dtype=float)
+        text = pc.binary_join_element_wise(
+            pa.scalar(lead + '"', pa.large_string()), float_texts(v).cast(pa.large_string()),
+            pa.scalar('"]', pa.large_string()), pa.scalar("", pa.large_string()))
+        nan = np.isnan(v)
+        return pc.if_else(pa.array(nan), pa.scalar("", pa.large_string()), text) \
+            if nan.any() else text
+    if pd.api.types.infer_dtype(s, skipna=True) in ("string", "empty"):
+        codes, uniq = pd.factorize(s, use_na_sentinel=True)
+        table = pa.array([("" if is_missing(u) else lead + json.dumps(str(u)) + "]")
+                          for u in uniq] + [""], pa.large_string())
+        return table.take(pa.array(np.where(codes < 0, len(uniq), codes)))
+    return pa.array([("" if is_missing(v) else lead + json.dumps(_canon(v)) + "]")
+                     for v in s.tolist()], pa.large_string())
 
 
 def points_path(out_dir: str | Path, mode: str) -> Path:
@@ -146,12 +180,14 @@ def _read_rows(path: Path, mode: str) -> _Rows:
     rows = _Rows(header, [], 0)
     columns = result_columns(mode)
     bad_header = _header_problem(header, columns)
-    for no, line in enumerate(complete[1:], start=2):
-        if line.strip() and bad_header:
-            rows.dropped += 1
-            rows.problems.append(f"{path}:{no}: {bad_header}")
-        elif line.strip():
-            _check_line(rows, line, f"{path}:{no}", mode, columns)
+    if bad_header:
+        for no, line in enumerate(complete[1:], start=2):
+            if line.strip():
+                rows.dropped += 1
+                rows.problems.append(f"{path}:{no}: {bad_header}")
+    else:
+        body = text[len(complete[0]) + 1:len(text) - len(tail) - 1]
+        _check_lines(rows, complete[1:], path, mode, columns, body)
     if tail.strip():
         rows.dropped += 1
         rows.problems.append(f"{path}:{len(complete) + 1}: the row is cut short")
@@ -166,6 +202,65 @@ def _header_problem(header: list[str], columns: tuple[str, ...]) -> str | None:
         return f"the header holds {', '.join(twice)} twice"
     missing = [c for c in columns if c not in header]
     return f"the header has no {', '.join(missing[:3])} column" if missing else None
+
+
+def _check_lines(rows: _Rows, body: list[str], path: Path, mode: str,
+                 columns: tuple[str, ...], text: str) -> None:
+    """Keep the valid lines of ``body`` (the data lines of ``path``) in ``rows``, count
+    the others and say why. The plain lines (the header's number of fields, no quote,
+    no carriage return) are read at once and checked column by column
+    (:func:`~oilgap.studies.grid.store_check.clean_rows`); every other line, and every
+    plain line those checks do not pass for certain, is checked on its own
+    (:func:`_check_line`, :func:`~oilgap.studies.grid.store_check.row_problem`).
+    ``text`` is ``"\\n".join(body)``."""
+    if not body:
+        return
+    lines = np.array(body, dtype=object)
+    clean = np.zeros(len(body), dtype=bool)
+    keys = np.empty(len(body), dtype=object)
+    plain = _plain_lines(body, len(rows.header), text)
+    if plain.size:
+        cells = _cells(rows.header, text if plain.size == len(body)
+                       else "\n".join(lines[plain].tolist()), plain.size)
+        if cells is not None:
+            clean[plain] = clean_rows(cells, mode, columns)
+            keys[plain] = cells["point_key"].astype(object).to_numpy()
+    keep = clean.copy()
+    for i in np.flatnonzero(~clean).tolist():
+        line = body[i]
+        if line.strip():
+            before = len(rows.lines)
+            _check_line(rows, line, f"{path}:{i + 2}", mode, columns)
+            if len(rows.lines) > before:
+                keep[i], keys[i] = True, rows.keys[-1]
+    rows.lines = [x + "\n" for x in lines[keep].tolist()]
+    rows.keys = keys[keep].tolist()
+
+
+def _plain_lines(body: list[str], fields: int, text: str) -> np.ndarray:
+    """Indices of the lines with ``fields`` fields, no quote, no carriage return, no NUL
+    (``text``: the lines joined)."""
+    arr = pa.array(body, pa.string())
+    plain = pc.equal(pc.count_substring(arr, ","), fields - 1)
+    for c in ('"', "\r", "\x00"):
+        if c in text:
+            plain = pc.and_(plain, pc.invert(pc.match_substring(arr, c)))
+    return np.flatnonzero(np.asarray(plain.to_numpy(zero_copy_only=False), dtype=bool))
+
+
+def _cells(header: list[str], lines: str, n: int) -> pd.DataFrame | None:
+    """The cells of ``n`` plain lines (:func:`_plain_lines`, joined by newlines): text
+    columns as text (empty: ``""``), numbers as read (empty: NaN); None if the reader sees
+    another number of rows."""
+    text = {c for c in _DTYPES if c in header}
+    try:
+        cells = pd.read_csv(io.StringIO(lines + "\n"), header=None, names=header,
+                            dtype={c: str for c in text}, keep_default_na=False,
+                            na_values={c: [""] for c in header if c not in text},
+                            skip_blank_lines=False, engine="c")
+    except (ValueError, pd.errors.ParserError):
+        return None
+    return cells if len(cells) == n else None
 
 
 def _check_line(rows: _Rows, line: str, where: str, mode: str,
@@ -293,8 +388,10 @@ def append_points(path: Path, keys: list[str], recs: list[dict], mode: str) -> P
     :func:`fold_chunks` later folds the chunk files into ``path``. Returns the chunk
     file."""
     cols = result_columns(mode)
-    df = pd.DataFrame([{c: _clean_text(r.get(c)) for c in cols} for r in recs],
-                      columns=list(cols))
+    df = pd.DataFrame(recs, columns=list(cols))  # a missing cell NaN: the same text
+    for c in [c for c in df.columns if df[c].dtype.kind == "O"]:  # each message once
+        if any(isinstance(u, str) and _clean_text(u) != u for u in pd.unique(df[c])):
+            df[c] = df[c].map(_clean_text)
     df.insert(0, "point_key", keys)
     d = chunks_dir(path)
     try:

@@ -14,6 +14,11 @@ from __future__ import annotations
 import math
 import re
 
+import numpy as np
+import pandas as pd
+import pyarrow as pa
+import pyarrow.compute as pc
+
 from oilgap.model.joint_loss import THERMAL_MODES
 
 _KEY = re.compile(r"[0-9A-Za-z_-]+")
@@ -114,4 +119,60 @@ def row_problem(cells: dict[str, str], mode: str, columns: tuple[str, ...]) -> s
     return None
 
 
-__all__ = ["INTEGERS", "RANGES", "REQUIRED", "row_problem"]
+
+def _numbers_clean(cells, name: str, required: bool) -> np.ndarray:
+    """Cells of number ``name`` that :func:`_number_problem` passes for certain: finite,
+    clear of its range's bounds by 1e-9 (a value at a bound is checked row by row), a
+    whole number where one is due; empty where the number may be (the reader leaves only
+    an empty cell as NaN)."""
+    col = cells[name]
+    blank = col.isna().to_numpy()
+    if col.dtype.kind not in "fiu":  # text (True/False too: float() refuses them)
+        col = col.astype(str)
+    v = pd.to_numeric(col, errors="coerce").to_numpy(dtype=float)
+    lo, hi, _ = RANGES[name]
+    with np.errstate(invalid="ignore"):
+        good = np.isfinite(v) & (v > lo + 1e-9 * max(1.0, abs(lo)))
+        if math.isfinite(hi):
+            good &= v < hi - 1e-9 * max(1.0, abs(hi))
+        if name in INTEGERS:
+            good &= np.floor(v) == v
+    return good if required else good | blank
+
+
+def clean_rows(cells, mode: str, columns: tuple[str, ...]) -> np.ndarray:
+    """The rows of a table of stored cells that :func:`row_problem` certainly passes,
+    checked column by column (the check of a resumed store, :mod:`oilgap.studies.grid.store`).
+
+    Parameters
+    ----------
+    cells : DataFrame
+        One row per stored line, read with the header's columns: the text columns
+        (``point_key``, ``status``, ``error``, ``thermal_mode``) as text, an empty cell
+        ``""``; the numbers as read by ``pandas.read_csv``, an empty cell (only) NaN [-].
+    mode : {"evaluate", "optimize"}
+        The store's mode [-].
+    columns : tuple of str
+        The mode's result columns, all in ``cells`` [-].
+
+    Returns
+    -------
+    ndarray of bool
+        True: a valid ``ok`` row (a key, status ``ok``, no error text, a known or empty
+        thermal mode, every number finite and inside its range, away from its bounds).
+        False: a row to check with :func:`row_problem` (an ``error`` row, a doubtful
+        cell), which says whether it is valid and, if not, why [-].
+    """
+    key = pa.array(cells["point_key"].astype(object).tolist(), pa.string())
+    ok = np.asarray(pc.fill_null(pc.match_substring_regex(key, "^[0-9A-Za-z_-]+$"), False))
+    ok &= (cells["status"] == "ok").to_numpy(dtype=bool)
+    ok &= (cells["error"] == "").to_numpy(dtype=bool)
+    thermal = cells["thermal_mode"]
+    ok &= (thermal.isin(THERMAL_MODES) | (thermal == "")).to_numpy(dtype=bool)
+    for name in columns:
+        if name in RANGES:
+            ok &= _numbers_clean(cells, name, name in REQUIRED.get(mode, ()))
+    return ok
+
+
+__all__ = ["INTEGERS", "RANGES", "REQUIRED", "clean_rows", "row_problem"]

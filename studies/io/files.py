@@ -166,18 +166,45 @@ def neutralise_formulas(df: Any) -> Any:
     DataFrame
         ``df`` itself when no cell needs it, else a copy with those cells prefixed.
     """
+    import pandas as pd
+
     out = df
     for i in range(df.shape[1]):
         s = df.iloc[:, i]
         if getattr(s.dtype, "kind", "O") not in "OSU":  # numbers, bools, dates: no text
             continue
-        text = s.astype(object).where(s.map(lambda v: isinstance(v, str)), "")
-        risky = text.str[:1].isin(FORMULA_START) & ~text.map(is_number)
+        text = s.astype(object).where(_text_cells(s), "")
+        risky = pd.Series(False, index=s.index)
+        maybe = _formula_start(text).nonzero()[0]  # then is_number on those alone
+        if maybe.size:
+            risky.iloc[maybe] = ~text.iloc[maybe].map(is_number).to_numpy(dtype=bool)
         if risky.any():
             if out is df:
                 out = df.copy()
             out.isetitem(i, s.astype(object).where(~risky, "'" + text))
     return out
+
+
+def _text_cells(s: Any) -> Any:
+    """Which cells of a column are text (a column of text and empty cells at once)."""
+    import pandas as pd
+
+    if pd.api.types.infer_dtype(s, skipna=True) in ("string", "empty"):
+        return s.notna()
+    return s.map(lambda v: isinstance(v, str))
+
+
+def _formula_start(text: Any) -> Any:
+    """Whether each text of a column of texts begins with one of :data:`FORMULA_START`
+    (Arrow, column-wise)."""
+    import numpy as np
+    import pyarrow as pa
+    import pyarrow.compute as pc
+
+    arr = pa.array(text.to_numpy(dtype=object), pa.string())
+    first = pc.utf8_slice_codeunits(arr, 0, 1)
+    return np.asarray(pc.is_in(first, pa.array(FORMULA_START)).to_numpy(zero_copy_only=False),
+                      dtype=bool)
 
 
 def is_number(text: str) -> bool:
@@ -223,6 +250,12 @@ def atomic_to_csv(df: Any, path: str | Path, neutralise: bool = True, **kwargs: 
         ``path``.
     """
     safe = neutralise_formulas(df) if neutralise else df
+    if kwargs == {"index": False}:  # the same bytes, column by column (csv_text)
+        from oilgap.studies.io.csv_text import csv_text
+
+        data = csv_text(safe)
+        if data is not None:
+            return atomic_write(path, lambda fh: fh.write(data), binary=True)
     return atomic_write(path, lambda fh: safe.to_csv(fh, **kwargs), newline="")
 
 

@@ -28,7 +28,7 @@ gamma = 0.5
 """The seed joint's geometry (Table 1, T = 4) at 40 degC and the surface, gamma = 0.5."""
 
 
-@pytest.fixture
+@pytest.fixture(scope="session")
 def seed_toml() -> str:
     """TOML text of the test joint (:data:`TEST_JOINT_TOML`)."""
     return TEST_JOINT_TOML

@@ -18,7 +18,6 @@ from dataclasses import replace
 
 import numpy as np
 import pytest
-from conftest import TEST_JOINT_TOML
 
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import evaluate_case
@@ -48,18 +47,16 @@ WATER_CSV = """temp_C,nu_cSt,density_kg_m3
 """Liquid water at 0.101325 MPa (CRC Handbook, IAPWS-95 and IAPWS 2008)."""
 
 
-JOINT = TEST_JOINT_TOML
-"""The seed joint's geometry (Table 1, T = 4): tests/conftest.py's test joint."""
-
-
 @pytest.fixture(scope="module")
-def cases(tmp_path_factory):
+def cases(tmp_path_factory, seed_toml):
+    """The seed joint's geometry (Table 1, T = 4: tests/conftest.py's test joint) with a
+    6809 bearing and a heat balance, under several fluids."""
     d = tmp_path_factory.mktemp("cases")
     (d / "water.csv").write_text(WATER_CSV)
-    skf = JOINT + '[bearing]\ndesignation = "6809"\n' + THERMAL
+    skf = seed_toml + '[bearing]\ndesignation = "6809"\n' + THERMAL
     (d / "skf.toml").write_text(skf)
     (d / "pal.toml").write_text(skf.replace('"6809"\n', '"6809"\nmodel = "palmgren"\n'))
-    (d / "plain.toml").write_text(JOINT)
+    (d / "plain.toml").write_text(seed_toml)
     skf_case = read_case_toml(d / "skf.toml")
     water = read_fluid_table(d / "water.csv", outside="clamp")
     return {"skf": skf_case, "palmgren": read_case_toml(d / "pal.toml"),

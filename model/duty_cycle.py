@@ -205,10 +205,25 @@ class DutyCycle:
         """
         peak = check_physical("peak_speed_rpm", peak_speed_rpm, 0.0, MAX_SPEED_RPM,
                               SPEED_REASON, "duty_cycle", lo_open=True)
-        factor = rpm_to_rad_s(peak) / self.peak_omega_rad_s
+        factor = self.speed_factor(peak)
         spec = dict(self.spec, peak_speed_rpm=peak)
         return DutyCycle(self.time_s, self.omega_rad_s * factor,
                          f"{self.description} (peak scaled to {peak:g} rpm)", spec)
+
+    def speed_factor(self, peak_speed_rpm):
+        """The factor on every speed that makes the cycle's peak ``peak_speed_rpm``.
+
+        Parameters
+        ----------
+        peak_speed_rpm : float or array
+            New peak |speed| [rpm].
+
+        Returns
+        -------
+        float or array
+            ``peak / old peak`` [-] (:meth:`with_peak_speed` scales by it).
+        """
+        return rpm_to_rad_s(peak_speed_rpm) / self.peak_omega_rad_s
 
     @property
     def peak_omega_rad_s(self) -> float:

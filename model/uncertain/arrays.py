@@ -41,7 +41,6 @@ from ..errors import InputError, SolverError
 from ..joint_loss import operating_temperature, resolve_thermal_mode
 from ..thermal import MAX_OIL_TEMP_C
 from ..thermal_modes import uses_balance
-from ..units import rpm_to_rad_s
 from .balance import root_balance
 from .inputs import INPUTS, apply_inputs
 from .rows import RowModel, RowValues, row_balance, row_model, row_total
@@ -124,8 +123,7 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
         nu_factor=None if f is None else f * model.factor0, gamma=arrs.get("gamma"),
         friction_scale=arrs.get("friction_scale"), film_strength=arrs.get("film_strength"),
         drag_scale=arrs.get("bearing_drag_scale"),
-        speed_factor=None if peak is None else rpm_to_rad_s(peak)
-        / case.duty_cycle.peak_omega_rad_s,
+        speed_factor=None if peak is None else case.duty_cycle.speed_factor(peak),
         sea_temp_C=None if th is None else (
             np.full(n, float(th.sea_temp_C)) if t_oil is None
             else th.sea_temp_C + (t_oil - op.oil_temp_C)))

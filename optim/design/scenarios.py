@@ -38,7 +38,7 @@ from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning
 from oilgap.model.evaluation import oil_state
-from oilgap.model.regions import joint_regions, region_mean_power
+from oilgap.model.regions import joint_regions, region_mean_power, rotor_stator_radii
 from oilgap.model.skin_friction import FrictionLaw
 from oilgap.model.uncertain import INPUTS, apply_inputs
 
@@ -240,8 +240,9 @@ def design_case(case: DesignCase, x_m, machined_m: tuple[float, float]) -> Desig
         What ``oilgap evaluate`` of the design reads.
     """
     R, d, a, b, L = (float(v) for v in x_m)
-    return case.with_region1(T1=R - a, T2=R, T3=R + d, T4=R + d + b, length=L,
-                             T1_unfilled=R - machined_m[0], T4_unfilled=R + d + machined_m[1])
+    T1, T2, T3, T4 = rotor_stator_radii(R, d, a, b)
+    return case.with_region1(T1=T1, T2=T2, T3=T3, T4=T4, length=L,
+                             T1_unfilled=R - machined_m[0], T4_unfilled=T3 + machined_m[1])
 
 
 def smooth_case(case: DesignCase) -> DesignCase:

@@ -2,7 +2,8 @@
 
 The oil-free group and four oils (ISO VG 150, 320, 680, 1000: 150 ... 1000 cSt
 at 40 degC), each with the grooved (T = 4) and the smoothed (T = 2) rotor;
-1500 samples every 0.2 s of ``3000 rpm sin(0.1 pi t)`` per run. What it
+1500 samples every 0.2 s of ``3000 rpm sin(0.1 pi t)`` per run (or a trapezoid or
+steps profile, :mod:`.profiles`). What it
 simulates, per run:
 
 * Viscous power from the physics core: ``clearance_power`` per region (region 1
@@ -57,6 +58,7 @@ from oilgap.model.thermal import lumped_temperature_rate
 from oilgap.model.units import ZERO_CELSIUS_K, rad_s_to_rpm, rpm_to_rad_s
 from oilgap.optim.calibration import LoopEstimator
 from oilgap.optim.calibration.forward import case_film_theory_K_W
+from oilgap.studies.rigs.profiles import PROFILES, profile_speed
 
 DEFAULT_STRENGTH = {
     "end_face_disc": 4.0,
@@ -155,6 +157,7 @@ class SynthConfig:
     sample_interval_s: float = 0.2
     peak_speed_rpm: float = 3000.0
     frequency_hz: float = 0.05
+    profile: str = "sine"
     ambient_C: float = 25.0
     thermal_resistance_K_W: float = 0.25
     heat_capacity_J_K: float = 240.0
@@ -191,6 +194,8 @@ class SynthConfig:
         truth = self.truth or seed_truth_law(case)
         if self.kind not in ("power_W", "viscous_power_W"):
             raise InputError("kind", self.kind, "allowed: power_W, viscous_power_W", "synth")
+        if self.profile not in PROFILES:
+            raise InputError("profile", self.profile, f"allowed: {', '.join(PROFILES)}", "synth")
         if self.n_samples < 20:
             raise InputError("n_samples", self.n_samples, "must be >= 20", "synth")
         for r in self.roughness:
@@ -384,9 +389,8 @@ class _RigModel:
         return _oil_state(self.oils, has_oil, toil)
 
     def speed(self, t):
-        """Speed [rad/s] and acceleration [rad/s^2] at times t."""
-        w0, f = self.w0, self.two_pi_f
-        return w0 * np.sin(f * t), w0 * f * np.cos(f * t)
+        """Speed [rad/s] and acceleration [rad/s^2] at times t (the configured profile)."""
+        return profile_speed(self.cfg.profile, t, self.w0, self.cfg.frequency_hz)
 
     def split(self, y):
         """(heated node, measured, oil) temperatures [degC]."""

@@ -34,6 +34,7 @@ from dataclasses import dataclass
 
 import cvxpy as cp
 import numpy as np
+from scipy.optimize import linprog
 
 from oilgap.model.errors import InputError, SolverError
 
@@ -109,7 +110,8 @@ def optimal_weights(Ms: np.ndarray, criterion: str = "D", nuisance: int = 0,
         T only: the first ``nuisance`` parameters are nuisance (the base law); the rest
         are the effects to discriminate.
     effect_scale : array, optional
-        T only: s_k, the information each effect needs (1/size^2 of interest) [unit^-2].
+        T only: s_k, the information each effect needs (1/size^2 of interest, in the
+        units of ``Ms``) [unit^-2].
 
     Returns
     -------
@@ -117,8 +119,10 @@ def optimal_weights(Ms: np.ndarray, criterion: str = "D", nuisance: int = 0,
     """
     if criterion not in CRITERIA:
         raise InputError("criterion", criterion, f"allowed: {', '.join(CRITERIA)}", "plan")
-    Ms, _ = normalise(np.asarray(Ms, float))
+    Ms, d = normalise(np.asarray(Ms, float))
     m, p, _ = Ms.shape
+    if effect_scale is not None:  # s_k in the normalised parameters
+        effect_scale = np.asarray(effect_scale, float) * d[nuisance:] ** 2
     w = cp.Variable(m, nonneg=True)
     M = sum(w[i] * Ms[i] for i in range(m))
     M = (M + M.T) / 2
@@ -132,8 +136,7 @@ def optimal_weights(Ms: np.ndarray, criterion: str = "D", nuisance: int = 0,
     else:
         t = cp.Variable()
         b = nuisance
-        sc = np.ones(p - b) if effect_scale is None else np.asarray(effect_scale, float)
-        sc = sc / np.mean(sc)
+        sc = np.ones(p - b) if effect_scale is None else effect_scale / np.mean(effect_scale)
         for k in range(b, p):
             idx = list(range(b)) + [k]
             sub = M[idx][:, idx]
@@ -166,8 +169,8 @@ def equivalence_gap(Ms: np.ndarray, w: np.ndarray, criterion: str = "D", nuisanc
         efficiency bound ``p / max_i tr(M^-1 M_i)``; A gives ``max_i tr(M^-2 M_i) -
         tr M^-1`` and ``tr M^-1 / max_i tr(M^-2 M_i)``; E gives ``max_i v^T M_i v -
         lambda_min`` (v its eigenvector: a supergradient of the concave lambda_min) and
-        ``lambda_min / (lambda_min + gap)``; T the same with the active effect's
-        ``a = (-M_bb^-1 m_kb, 1)``, the supergradient of ``S_k``.
+        ``lambda_min / (lambda_min + gap)``; T the same with the hull of the active
+        effects' supergradients ``a^T M_i a``, ``a = (-M_bb^-1 m_kb, 1)``.
     nuisance, effect_scale : int, array
         T only, as in :func:`optimal_weights`.
 
@@ -191,29 +194,43 @@ def equivalence_gap(Ms: np.ndarray, w: np.ndarray, criterion: str = "D", nuisanc
         return float(d.max() - np.trace(Minv)), float(np.trace(Minv) / d.max())
     if criterion == "E":
         lam, vec = np.linalg.eigh(M)
-        a, value, s = vec[:, 0], lam[0], 1.0
+        a, value = vec[:, 0], lam[0]
+        d = np.einsum("j,ijk,k->i", a, Ms, a)
+        gap = float(max(d.max() - value, 0.0))
     else:
-        value, a, s = _active_effect(M, nuisance, effect_scale)
-    d = np.einsum("j,ijk,k->i", a, Ms, a) / s
-    gap = float(max(d.max() - value, 0.0))
+        value, gap = _t_gap(Ms, M, nuisance, effect_scale)
     return gap, float(value / (value + gap)) if value > 0 else 0.0
 
 
-def _active_effect(M: np.ndarray, b: int, effect_scale) -> tuple[float, np.ndarray, float]:
-    """The T criterion min_k S_k / s_k at M, the active effect's vector a and its s_k."""
+ACTIVE_TOL = 1e-3
+"""Relative distance to the smallest S_k / s_k within which an effect is active (T)."""
+
+
+def _t_gap(Ms: np.ndarray, M: np.ndarray, b: int, effect_scale) -> tuple[float, float]:
+    """The T criterion at M and its gap: ``min over lambda in the simplex of the active
+    effects of max_i sum_k lambda_k a_k^T M_i a_k / s_k - value`` (the superdifferential
+    of a minimum of concave functions is the hull of the active ones' gradients), an LP."""
     p = M.shape[0]
     sc = np.ones(p - b) if effect_scale is None else np.asarray(effect_scale, float)
     sc = sc / np.mean(sc)
-    best = (math.inf, None, 1.0)
+    vals, grads = [], []
     for k in range(b, p):
         a = np.zeros(p)
         a[k] = 1.0
         if b:
             a[:b] = -np.linalg.solve(M[:b, :b], M[:b, k])
-        val = float(a @ M @ a) / sc[k - b]
-        if val < best[0]:
-            best = (val, a, sc[k - b])
-    return best
+        vals.append(float(a @ M @ a) / sc[k - b])
+        grads.append(np.einsum("j,ijk,k->i", a, Ms, a) / sc[k - b])
+    vals = np.array(vals)
+    value = float(vals.min())
+    act = np.nonzero(vals <= value * (1 + ACTIVE_TOL))[0]
+    G = np.array(grads)[act]  # (active, m)
+    n = len(act)
+    res = linprog(np.r_[np.zeros(n), 1.0], A_ub=np.c_[G.T, -np.ones(G.shape[1])],
+                  b_ub=np.zeros(G.shape[1]), A_eq=np.r_[np.ones(n), 0.0][None, :], b_eq=[1.0],
+                  bounds=[(0, None)] * n + [(None, None)], method="highs")
+    best = float(res.fun) if res.success else float(G.max(axis=1).min())
+    return value, max(best - value, 0.0)
 
 
 def efficient_rounding(w: np.ndarray, n: int) -> np.ndarray:

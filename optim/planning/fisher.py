@@ -125,8 +125,9 @@ def base_jacobian(model: ForwardModel, spec: BaseSpec, x: np.ndarray,
 
     Returns
     -------
-    array, shape (n, q [+ 1])
-        dP/dz [W per unit parameter].
+    (array, array)
+        dP/dz, shape (n, q [+ 1]) [W per unit parameter], and dP/domega, shape (n,)
+        [W s/rad] (for the speed reading's share of the noise).
     """
     if spec.base not in LAW_FIELDS:
         raise InputError("base", spec.base, "the planner takes the eq6 or power-law base",
@@ -140,13 +141,13 @@ def base_jacobian(model: ForwardModel, spec: BaseSpec, x: np.ndarray,
     law = symbolic_law(spec.law(x), {k: v for k, v in sym.items()
                                      if k in LAW_FIELDS[spec.base]})
     geo = joint_geometry(model.case, roughness_T=rough, gap1_m=gap)
-    nu_p = nu * ca.exp(d_alpha * PER_GPA * p)  # Barus: nu(p) = nu_0 exp(alpha p)
+    nu_p = nu if pressure_Pa is None else nu * ca.exp(d_alpha * PER_GPA * p)  # Barus
     power = 0
     for r in geo.regions:  # the forward model's sum over regions (ForwardModel.region_powers)
         power = power + region_power(r, w, nu_p, rho, law)
     params = ca.vertcat(z, d_alpha) if pressure_Pa is not None else z
     jac = ca.Function("dP_dz", [params, w, nu, rho, rough, gap, p],
-                      [ca.jacobian(power, params)])
+                      [ca.horzcat(ca.jacobian(power, params), ca.jacobian(power, w))])
     s = model.samples
     n = s.n
     at = np.concatenate([np.asarray(x, float), [0.0] if pressure_Pa is not None else []])
@@ -155,7 +156,8 @@ def base_jacobian(model: ForwardModel, spec: BaseSpec, x: np.ndarray,
                      s.nu_m2_s[None, :], s.density_kg_m3[None, :],
                      np.broadcast_to(s.roughness_T, (n,))[None, :],
                      np.broadcast_to(s.gap1_m, (n,))[None, :], pres[None, :])
-    return np.asarray(out, dtype=float).reshape(n, len(at))
+    out = np.asarray(out, dtype=float).reshape(n, len(at) + 1)
+    return out[:, :-1], out[:, -1]
 
 
 def effect_columns(model: ForwardModel, law: FrictionLaw, effects: tuple[str, ...]
@@ -187,9 +189,15 @@ def effect_columns(model: ForwardModel, law: FrictionLaw, effects: tuple[str, ..
     return (np.column_stack(cols) if cols else np.zeros((model.samples.n, 0))), why
 
 
-def run_information(jac: np.ndarray, run_code: np.ndarray, sigma_W: float
-                    ) -> np.ndarray:
-    """Information matrix of each run, ``J_r^T J_r / sigma^2``.
+def run_information(jac: np.ndarray, run_code: np.ndarray, sigma_W: float,
+                    sample_var_W2: np.ndarray | None = None
+                    ) -> tuple[np.ndarray, np.ndarray]:
+    """Information matrix of each run, ``J_r^T J_r / sigma^2``, and its noise "meat".
+
+    The loop fits by unweighted least squares, so with per-sample noise variances
+    ``v_s`` its covariance is the sandwich ``A^-1 B A^-1`` [1] with ``A = sum J^T J /
+    sigma^2`` and ``B = sum J^T diag(v) J / sigma^4`` (``B = A`` for white noise of sd
+    sigma).
 
     Parameters
     ----------
@@ -199,17 +207,23 @@ def run_information(jac: np.ndarray, run_code: np.ndarray, sigma_W: float
         Run index of each sample (0 .. m-1).
     sigma_W : float
         Sd of the power noise per sample [W].
+    sample_var_W2 : array, shape (n,), optional
+        Total noise variance of each sample [W^2] (default sigma^2).
 
     Returns
     -------
-    array, shape (m, p, p)
+    (A, B) : arrays, shape (m, p, p)
         Per run [unit^-2].
     """
     if not sigma_W > 0 or not math.isfinite(sigma_W):
         raise InputError("noise_W", sigma_W, "a finite noise sd > 0 W is required", "plan")
     m = int(run_code.max()) + 1
-    out = np.zeros((m, jac.shape[1], jac.shape[1]))
+    v = np.full(len(jac), sigma_W ** 2) if sample_var_W2 is None else sample_var_W2
+    A = np.zeros((m, jac.shape[1], jac.shape[1]))
+    B = np.zeros_like(A)
     for r in range(m):
-        j = jac[run_code == r]
-        out[r] = j.T @ j / sigma_W ** 2
-    return out
+        sel = run_code == r
+        j = jac[sel]
+        A[r] = j.T @ j / sigma_W ** 2
+        B[r] = (j * v[sel, None]).T @ j / sigma_W ** 4
+    return A, B

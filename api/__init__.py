@@ -40,6 +40,8 @@ EXPORTS: dict[str, str] = {
     "predict": "oilgap._loop",
     "synth": "oilgap._loop",
     "read_measured": "oilgap._loop",
+    "plan": "oilgap._plan",
+    "synth_plan": "oilgap._plan",
     "Evaluation": "oilgap._results",
     "Optimization": "oilgap._results_design",
     "RobustOptimization": "oilgap._results_robust",

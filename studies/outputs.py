@@ -31,6 +31,8 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
                         "oil_grade_heatmap.png", "oil_grade_loss_vs_grade.png",
                         "oil_grade_thermal.png", "summary.md", *store_files("grid/"),
                         *store_files("grid_isothermal/"), PROVENANCE_NAME),
+    "plan": ("plan.csv", "naive.csv", "parameters.csv", "effects.csv", "plan.json",
+             "plan_runs.png", "summary.md", PROVENANCE_NAME),
     "study uncertainty": ("uncertainty_samples.csv", "uncertainty_statistics.csv",
                           "uncertainty_inputs.csv", "uncertainty_histogram.png",
                           "uncertainty_tornado.png", "summary.md", PROVENANCE_NAME),

@@ -66,6 +66,7 @@ COMMANDS: dict[str, str] = {
     "loop": "oilgap.cli.loop",
     "predict": "oilgap.cli.predict",
     "synth": "oilgap.cli.synth",
+    "plan": "oilgap.cli.plan",
 }
 """The one dispatch table: command -> module whose ``run(args)`` returns the exit code."""
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from oilgap.cli.plan_args import add_plan, add_synth_plan
 from oilgap.model.thermal_modes import THERMAL_MODES
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 from oilgap.studies.settings import (
@@ -111,6 +112,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command_name", metavar="COMMAND")
     for add in (add_evaluate, add_optimize, add_study, add_loop, add_predict, add_synth):
         add(sub)
+    add_plan(sub, add_force)
     _verbosity_everywhere(parser)
     return parser
 
@@ -490,4 +492,5 @@ def add_synth(sub) -> None:
                    "oil-free runs")
     p.add_argument("--list-effects", action="store_true",
                    help="list the library effects with their strength units and exit")
+    add_synth_plan(p)
     p.set_defaults(command="synth")

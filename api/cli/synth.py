@@ -22,6 +22,10 @@ def run(args: argparse.Namespace) -> int:
         for n, e in EFFECTS.items():
             print(f"{n:<24}{e.strength_unit:<15}{DEFAULT_STRENGTH[n]:>10.3g}  {e.formula}")
         return 0
+    if getattr(args, "plan", None) is not None:
+        return _plan_run(args)
+    if getattr(args, "effects", None) is not None:
+        raise InputError("--effects", args.effects, "only with --plan (else --effect NAME)")
     if args.strength is not None and args.effect is None:
         raise InputError("--strength", args.strength, "needs --effect NAME")
     if args.seed < 0:
@@ -46,4 +50,25 @@ def run(args: argparse.Namespace) -> int:
         print(f"injected {args.effect} at strength {s:g}{'' if unit == '-' else ' ' + unit}"
               f" (not recorded in the file); {col} noise {df.attrs['noise_power_W']:g} W",
               file=sys.stderr)
+    return 0
+
+
+def _plan_run(args: argparse.Namespace) -> int:
+    """``synth --plan plan.csv``: the planned runs, in the loop's data format."""
+    from oilgap._plan import synth_plan
+
+    if args.effect is not None or args.strength is not None:
+        raise InputError("--effect", args.effect, "with --plan give --effects NAME[=S],...")
+    if args.seed < 0:
+        raise InputError("--seed", args.seed, "an integer >= 0 is required (the noise seed)")
+    check_out_file(args.out, getattr(args, "force", False))
+    df = synth_plan(args.plan, case=args.case, effects=args.effects, seed=args.seed)
+    try:
+        path = write_data_csv(df, args.out)
+    except OSError as e:
+        raise InputError("--out", args.out, f"cannot write the file ({e.strerror})") from None
+    print(f"wrote {path}: {len(df)} rows, {df['run'].nunique()} runs of {args.plan}, "
+          f"columns {', '.join(df.columns)}")
+    if args.effects:
+        print(f"injected {args.effects} (not recorded in the file)", file=sys.stderr)
     return 0

@@ -81,6 +81,11 @@ class PlanResult:
     excluded: dict
     d_efficiency: float
 
+    def summary(self) -> str:
+        """The terminal text of ``oilgap plan``: the answer first, then the tables."""
+        from .report import summary_lines
+        return "\n".join(summary_lines(self))
+
 
 def design_parameters(cs: CandidateSet) -> tuple[list[int], dict]:
     """Indices of the parameters the design targets, and why the others are left out.
@@ -136,7 +141,7 @@ def sequence(runs: list[Candidate], settings: PlanSettings) -> list[Candidate]:
 def plan_cost(runs: list[Candidate], settings: PlanSettings) -> tuple[float, dict]:
     """Rig time of the runs in their order [h] and the changes counted."""
     ch = {"rotor": 0, "oil": 0, "temperature": 0}
-    for a, b in zip(runs, runs[1:]):
+    for a, b in zip(runs, runs[1:], strict=False):
         ch["rotor"] += a.roughness_T != b.roughness_T
         ch["oil"] += a.oil != b.oil or a.roughness_T != b.roughness_T
         ch["temperature"] += a.bath_C != b.bath_C

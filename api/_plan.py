@@ -1,0 +1,178 @@
+"""The façade's rig-planning functions: ``og.plan`` (``oilgap plan``: which runs identify
+the law and detect the effects) and ``og.synth_plan`` (``oilgap synth --plan``: the
+planned runs simulated, in the loop's data format)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pandas as pd
+
+from oilgap._checks import (
+    CASE,
+    EFFECT_NAMES,
+    FLAG,
+    INT,
+    NUMBER,
+    OUT,
+    PATH_KINDS,
+    Arg,
+    checked,
+    choice,
+)
+from oilgap._evaluate import as_case
+from oilgap.model.case import DesignCase
+from oilgap.model.effects import EFFECTS
+from oilgap.model.errors import InputError
+from oilgap.studies.outputs import result_folder
+
+LIST = Arg((tuple, list), "a tuple or list of values, e.g. (25, 40)", optional=True)
+PLAN = Arg((*PATH_KINDS, "DataFrame"), "a path to a plan.csv or its DataFrame")
+
+
+def _effect_names(effects: Any) -> tuple[str, ...] | None:
+    if effects is None:
+        return None
+    names = [e.strip() for e in effects.split(",")] if isinstance(effects, str) else \
+        list(effects)
+    for e in names:
+        if e not in EFFECTS:
+            raise InputError("effects", e, f"allowed: {', '.join(EFFECTS)}")
+    return tuple(names)
+
+
+@checked(case=CASE, oils=LIST, bath_C=LIST, roughness=LIST, profiles=LIST,
+         pressures_MPa=LIST, effects=EFFECT_NAMES, criterion=choice("D", "A", "E", "T"),
+         targets=choice("base", "all"), base=choice("eq6", "power-law"), runs=INT,
+         budget_h=NUMBER, noise_W=NUMBER, duration_s=NUMBER, sample_interval_s=NUMBER,
+         out=OUT, force=FLAG)
+def plan(case: DesignCase | str | Path | None = None, *, oils=None, bath_C=None,
+         roughness=None, profiles=None, pressures_MPa=None, effects=None,
+         criterion: str | None = None, targets: str | None = None, base: str | None = None,
+         runs: int | None = None, budget_h: float | None = None, noise_W: float | None = None,
+         duration_s: float | None = None, sample_interval_s: float | None = None,
+         out: str | Path | None = None, force: bool = False, **settings: Any):
+    """Plan a rig campaign (``oilgap plan``): the runs that identify the base law and
+    detect the effects, beside the naive full-factorial plan of the same size.
+
+    Parameters
+    ----------
+    case : DesignCase, path or None
+        The rig (None: the seed joint).
+    oils, bath_C, roughness, profiles, pressures_MPa : sequences, optional
+        Candidate oils, bath temperatures [degC], rotor roughness values T [-], speed
+        profiles (sine, trapezoid, steps) and gauge pressures [MPa].
+    effects : str or list of str, optional
+        Library effects to be able to detect (default: the library less the ball drag).
+    criterion : {"D", "A", "E", "T"}, optional
+        Design criterion (default D).
+    targets : {"base", "all"}, optional
+        Parameters of the D/A/E criterion (default: the base law's).
+    base : {"eq6", "power-law"}, optional
+        The base law the loop will fit (default eq6).
+    runs : int, optional
+        Number of runs (default 8 unless ``budget_h``).
+    budget_h : float, optional
+        Rig time available [h] (sets the number of runs).
+    noise_W, duration_s, sample_interval_s : float, optional
+        Power noise sd per sample [W], run length and sample step [s].
+    out : str or Path, optional
+        Folder for plan.csv, naive.csv, parameters.csv, effects.csv, plan.json,
+        plan_runs.png and summary.md (None: no file).
+    force : bool
+        Replace an earlier plan in ``out``.
+    **settings
+        Any other field of :class:`oilgap.studies.plan.settings.PlanSettings`
+        (``peak_speed_rpm``, ``frequency_hz``, ``noise_speed_rpm``, ``noise_temp_K``,
+        ``run_h``, ``oil_change_h``, ``temp_change_h``, ``rotor_change_h``).
+
+    Returns
+    -------
+    PlanResult
+        ``plan`` and ``naive`` (runs, expected sd and interval, detectable sizes,
+        confounding, cost), the continuous design and its gap; ``summary()``.
+    """
+    from oilgap.studies.plan.settings import PlanSettings
+    from oilgap.studies.plan.study import make_plan
+
+    given = {"oils": oils, "bath_C": bath_C, "roughness": roughness, "profiles": profiles,
+             "pressures_MPa": pressures_MPa, "effects": _effect_names(effects),
+             "criterion": criterion, "targets": targets, "base": base, "runs": runs,
+             "budget_h": budget_h, "noise_W": noise_W, "duration_s": duration_s,
+             "sample_interval_s": sample_interval_s, **settings}
+    fields = PlanSettings.__dataclass_fields__
+    for k in given:
+        if k not in fields or k == "case":
+            raise InputError(k, given[k], f"not a plan setting; allowed: "
+                             f"{', '.join(f for f in fields if f != 'case')}")
+    kw = {k: v for k, v in given.items() if v is not None}
+    if budget_h is not None and runs is None:
+        kw["runs"] = None
+    with result_folder("plan", out, force) as folder:
+        st = PlanSettings(case=None if case is None else as_case(case), **kw)
+        res = make_plan(st)
+        if folder is not None:
+            from oilgap.studies.plan.report import write_plan
+            folder.begin()
+            write_plan(res, Path(out))
+            folder.complete()
+    return res
+
+
+@checked(plan=PLAN, case=CASE, effects=EFFECT_NAMES, seed=INT)
+def synth_plan(plan: str | Path | pd.DataFrame, *, case: DesignCase | str | Path | None = None,
+               effects: Any = None, seed: int = 0) -> pd.DataFrame:
+    """The runs of a plan simulated by the synthetic rig (``oilgap synth --plan``).
+
+    Parameters
+    ----------
+    plan : path or DataFrame
+        plan.csv (or naive.csv) of ``oilgap plan``.
+    case : DesignCase, path or None
+        Rig geometry (None: the seed joint).
+    effects : str or list of str, optional
+        Library effects injected at their test strengths (``name`` or ``name=strength``).
+    seed : int
+        Noise seed (>= 0).
+
+    Returns
+    -------
+    DataFrame
+        ``run, time_s, speed_rpm, temp_C, oil, roughness_T, viscous_power_W``.
+    """
+    from oilgap.studies.plan.candidates import plan_data, runs_from_table
+
+    if isinstance(seed, bool) or seed is None or seed < 0:
+        raise InputError("seed", seed, "an integer >= 0 is required (the noise seed)")
+    if isinstance(plan, (str, Path)):
+        try:
+            table = pd.read_csv(plan)
+        except (OSError, pd.errors.ParserError, UnicodeDecodeError) as e:
+            raise InputError("plan", str(plan), f"cannot read the plan CSV ({e})") from None
+    else:
+        table = plan
+    settings, runs = runs_from_table(table, str(plan) if isinstance(plan, (str, Path))
+                                     else "plan")
+    return plan_data(settings, runs, None if case is None else as_case(case),
+                     _strengths(effects), seed=int(seed))
+
+
+def _strengths(effects: Any) -> dict | None:
+    """``name`` or ``name=strength`` items -> {name: strength or None}."""
+    if effects is None:
+        return None
+    items = [e.strip() for e in effects.split(",")] if isinstance(effects, str) else \
+        list(effects)
+    out = {}
+    for it in items:
+        name, _, val = str(it).partition("=")
+        _effect_names([name])
+        try:
+            out[name] = float(val) if val else None
+        except ValueError:
+            raise InputError("effects", it, "name or name=strength (a number)") from None
+    return out
+
+
+__all__ = ["plan", "synth_plan"]

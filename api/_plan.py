@@ -42,17 +42,15 @@ def _effect_names(effects: Any) -> tuple[str, ...] | None:
     return tuple(names)
 
 
-@checked(case=CASE, oils=LIST, bath_C=LIST, roughness=LIST, profiles=LIST,
-         pressures_MPa=LIST, effects=EFFECT_NAMES, criterion=choice("D", "A", "E", "T"),
+@checked(case=CASE, settings=Arg(("PlanSettings", dict), "a PlanSettings or a dict of its "
+                                  "fields", optional=True),
+         oils=LIST, bath_C=LIST, roughness=LIST, profiles=LIST, pressures_MPa=LIST,
+         effects=EFFECT_NAMES, criterion=choice("D", "A", "E", "T"),
          targets=choice("base", "all"), base=choice("eq6", "power-law"), runs=INT,
          budget_h=NUMBER, noise_W=NUMBER, duration_s=NUMBER, sample_interval_s=NUMBER,
          out=OUT, force=FLAG)
-def plan(case: DesignCase | str | Path | None = None, *, oils=None, bath_C=None,
-         roughness=None, profiles=None, pressures_MPa=None, effects=None,
-         criterion: str | None = None, targets: str | None = None, base: str | None = None,
-         runs: int | None = None, budget_h: float | None = None, noise_W: float | None = None,
-         duration_s: float | None = None, sample_interval_s: float | None = None,
-         out: str | Path | None = None, force: bool = False, **settings: Any):
+def plan(case: DesignCase | str | Path | None = None, settings: Any = None, *,
+         out: str | Path | None = None, force: bool = False, **options: Any):
     """Plan a rig campaign (``oilgap plan``): the runs that identify the base law and
     detect the effects, beside the naive full-factorial plan of the same size.
 
@@ -60,32 +58,22 @@ def plan(case: DesignCase | str | Path | None = None, *, oils=None, bath_C=None,
     ----------
     case : DesignCase, path or None
         The rig (None: the seed joint).
-    oils, bath_C, roughness, profiles, pressures_MPa : sequences, optional
-        Candidate oils, bath temperatures [degC], rotor roughness values T [-], speed
-        profiles (sine, trapezoid, steps) and gauge pressures [MPa].
-    effects : str or list of str, optional
-        Library effects to be able to detect (default: the library less the ball drag).
-    criterion : {"D", "A", "E", "T"}, optional
-        Design criterion (default D).
-    targets : {"base", "all"}, optional
-        Parameters of the D/A/E criterion (default: the base law's).
-    base : {"eq6", "power-law"}, optional
-        The base law the loop will fit (default eq6).
-    runs : int, optional
-        Number of runs (default 8 unless ``budget_h``).
-    budget_h : float, optional
-        Rig time available [h] (sets the number of runs).
-    noise_W, duration_s, sample_interval_s : float, optional
-        Power noise sd per sample [W], run length and sample step [s].
+    settings : PlanSettings or dict, optional
+        The campaign (:class:`oilgap.studies.plan.settings.PlanSettings`); keywords in
+        ``options`` override its fields.
     out : str or Path, optional
         Folder for plan.csv, naive.csv, parameters.csv, effects.csv, plan.json,
         plan_runs.png and summary.md (None: no file).
     force : bool
         Replace an earlier plan in ``out``.
-    **settings
-        Any other field of :class:`oilgap.studies.plan.settings.PlanSettings`
-        (``peak_speed_rpm``, ``frequency_hz``, ``noise_speed_rpm``, ``noise_temp_K``,
-        ``run_h``, ``oil_change_h``, ``temp_change_h``, ``rotor_change_h``).
+    **options
+        Fields of PlanSettings: ``oils``, ``bath_C`` [degC], ``roughness`` [-],
+        ``profiles`` (sine, trapezoid, steps), ``pressures_MPa``, ``effects`` (library
+        names to detect), ``criterion`` (D, A, E, T), ``targets`` (base, all), ``base``
+        (eq6, power-law), ``runs`` or ``budget_h`` [h], ``noise_W`` [W],
+        ``noise_speed_rpm``, ``noise_temp_K``, ``duration_s``, ``sample_interval_s`` [s],
+        ``peak_speed_rpm``, ``frequency_hz``, ``run_h``, ``oil_change_h``,
+        ``temp_change_h``, ``rotor_change_h`` [h].
 
     Returns
     -------
@@ -93,21 +81,23 @@ def plan(case: DesignCase | str | Path | None = None, *, oils=None, bath_C=None,
         ``plan`` and ``naive`` (runs, expected sd and interval, detectable sizes,
         confounding, cost), the continuous design and its gap; ``summary()``.
     """
+    from dataclasses import asdict
+
     from oilgap.studies.plan.settings import PlanSettings
     from oilgap.studies.plan.study import make_plan
 
-    given = {"oils": oils, "bath_C": bath_C, "roughness": roughness, "profiles": profiles,
-             "pressures_MPa": pressures_MPa, "effects": _effect_names(effects),
-             "criterion": criterion, "targets": targets, "base": base, "runs": runs,
-             "budget_h": budget_h, "noise_W": noise_W, "duration_s": duration_s,
-             "sample_interval_s": sample_interval_s, **settings}
+    base = {} if settings is None else (dict(settings) if isinstance(settings, dict)
+                                        else {k: v for k, v in asdict(settings).items()
+                                              if k != "case"})
     fields = PlanSettings.__dataclass_fields__
-    for k in given:
+    for k, v in {**base, **options}.items():
         if k not in fields or k == "case":
-            raise InputError(k, given[k], f"not a plan setting; allowed: "
-                             f"{', '.join(f for f in fields if f != 'case')}")
-    kw = {k: v for k, v in given.items() if v is not None}
-    if budget_h is not None and runs is None:
+            raise InputError(k, v, "not a plan setting; allowed: "
+                             + ", ".join(f for f in fields if f != "case"))
+    kw = {**base, **{k: v for k, v in options.items() if v is not None}}
+    if "effects" in kw:
+        kw["effects"] = _effect_names(kw["effects"])
+    if options.get("budget_h") is not None and options.get("runs") is None:
         kw["runs"] = None
     with result_folder("plan", out, force) as folder:
         st = PlanSettings(case=None if case is None else as_case(case), **kw)

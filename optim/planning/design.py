@@ -83,12 +83,18 @@ def _solve(problem: cp.Problem) -> str:
 
 
 def normalise(Ms: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Information matrices scaled to unit mean diagonal (the design is invariant).
+    """Information matrices scaled to unit mean diagonal (a D-optimal design is invariant;
+    A and E are then taken over the standardised parameters).
+
+    Parameters
+    ----------
+    Ms : array, shape (m, p, p)
+        Information of each candidate [unit^-2].
 
     Returns
     -------
     (Ms, d)
-        ``D M_i D`` with ``D = diag(d)``, ``d = 1/sqrt(mean_i diag M_i)``.
+        ``D M_i D`` [-] with ``D = diag(d)``, ``d = 1/sqrt(mean_i diag M_i)`` [unit].
     """
     diag = np.mean(np.diagonal(Ms, axis1=1, axis2=2), axis=0)
     d = 1.0 / np.sqrt(np.where(diag > 0, diag, 1.0))

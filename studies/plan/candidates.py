@@ -226,7 +226,9 @@ def candidate_information(settings: PlanSettings) -> CandidateSet:
         stats[:, idx] = st
     ref = np.array([EFFECTS[e].coefficient_from_strength(DEFAULT_STRENGTH[e])
                     for e in settings.effects])
-    return CandidateSet(runs, info, meat, params, spec, x0, why, ref, *stats)
+    return CandidateSet(runs=runs, info=info, meat=meat, params=params, spec=spec, x0=x0,
+                        notes=why, ref=ref, re_peak=stats[0], ta_peak=stats[1],
+                        temp_mean=stats[2])
 
 
 def sample_variance(settings: PlanSettings, model: ForwardModel, law, dP_dw: np.ndarray

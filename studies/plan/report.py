@@ -61,8 +61,8 @@ def headline(res: PlanResult) -> list[str]:
                if math.isfinite(a) and math.isfinite(b) and a < b else
                (f", {100 * (a / b - 1):.0f} % wider than naive" if math.isfinite(a)
                 and math.isfinite(b) else ""))
-        lines.append(f"{k:<12}expected sd {_fmt(a)} (naive {_fmt(b)}){cut}; 95 % interval "
-                     f"{_iv(p.interval[k])} (naive {_iv(nv.interval[k])})")
+        lines.append(f"{k:<12}expected sd {_fmt(a)} (naive {_fmt(b)}){cut}; the loop's 95 % "
+                     f"interval {_iv(p.interval[k])} (naive {_iv(nv.interval[k])})")
     det = [f"{e} {_ratio(p.detectable[e], r)}" for e, r in
            zip(res.candidates.params.effects, res.candidates.ref, strict=True)]
     lines.append("detectable  smallest effect detected (5 % level, 80 % power), x its test "
@@ -119,6 +119,7 @@ def parameters_frame(res: PlanResult) -> pd.DataFrame:
                "sd_of": res.candidates.params.label(k)}
         for tag, ev in (("plan", res.plan), ("naive", res.naive)):
             row[f"{tag}_sd"] = ev.sd[k]
+            row[f"{tag}_jackknife_sd"] = ev.jack_sd[k]
             row[f"{tag}_lo"], row[f"{tag}_hi"] = ev.interval[k]
         rows.append(row)
     return pd.DataFrame(rows)
@@ -139,7 +140,8 @@ def effects_frame(res: PlanResult) -> pd.DataFrame:
 def plan_json(res: PlanResult) -> dict:
     """Everything the plan found, JSON-able."""
     def ev_dict(ev: PlanEvaluation) -> dict:
-        return {"runs": [r.label for r in ev.runs], "sd": ev.sd, "interval95": ev.interval,
+        return {"runs": [r.label for r in ev.runs], "sd": ev.sd, "jackknife_sd": ev.jack_sd,
+                "interval95": ev.interval,
                 "detectable": ev.detectable, "explained_by_base": ev.explained,
                 "confounded": ev.confounded, "cost_h": ev.cost_h, "changes": ev.changes}
 
@@ -188,7 +190,8 @@ def summary_lines(res: PlanResult) -> list[str]:
     """The terminal output: the headline, then tables and what stays confounded."""
     lines = headline(res)
     pf = parameters_frame(res)
-    lines += ["", "expected parameters (95 % intervals with the loop's jackknife t quantile)",
+    lines += ["", "expected parameters: sd of the least-squares estimate; the loop's 95 % "
+              "jackknife interval (its expected sd, t quantile)",
               pf.to_string(index=False, float_format=lambda x: f"{x:.5g}"), "",
               "smallest detectable effect coefficient (library units)",
               effects_frame(res).to_string(index=False, float_format=lambda x: f"{x:.3g}"),

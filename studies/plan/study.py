@@ -15,8 +15,10 @@
    is shared by the runs of a plot, which is not a per-run cost.
 5. The plan and the naive plan (the full factorial in the order rotor x oil first, at the
    first bath temperature and profile, then the others) are both evaluated: expected sd
-   and interval of each base parameter, smallest detectable size of each effect,
-   confounded pairs and directions (:mod:`oilgap.optim.planning.analysis`).
+   of each base parameter (``A^-1 B A^-1``, the least-squares sandwich) and the interval
+   the loop will report (its delete-a-group jackknife's expected sd with its t quantile),
+   the smallest detectable size of each effect, confounded pairs and directions
+   (:mod:`oilgap.optim.planning.analysis`).
 """
 
 from __future__ import annotations
@@ -28,13 +30,14 @@ from dataclasses import dataclass
 import numpy as np
 from scipy import stats
 
-from oilgap.optim.calibration.folds import MAX_FOLDS
+from oilgap.optim.calibration.folds import MAX_FOLDS, grouped_folds
 from oilgap.optim.calibration.spec import LOG_PARAMS
 from oilgap.optim.planning.analysis import (
     SINGULAR_TOL,
     base_sd,
     confounding,
     detectable_sizes,
+    jackknife_sd,
 )
 from oilgap.optim.planning.design import (
     ContinuousDesign,
@@ -59,6 +62,7 @@ class PlanEvaluation:
     runs: list[Candidate]
     counts: np.ndarray
     sd: dict
+    jack_sd: dict
     interval: dict
     detectable: dict
     explained: dict
@@ -169,28 +173,32 @@ def evaluate(cs: CandidateSet, runs: list[Candidate], settings: PlanSettings
     B = np.einsum("i,ijk->jk", counts, cs.meat)
     q = len(cs.spec.free)
     sd = base_sd(M, q, B)
+    idx = [index[r] for r in runs]
+    jsd = jackknife_sd(cs.info[idx][:, :q, :q], cs.meat[idx][:, :q, :q],
+                       grouped_folds(np.arange(len(runs)), MAX_FOLDS))
     g = min(len(runs), MAX_FOLDS)
     t = stats.t.ppf(0.975, g - 1) if g >= 3 else math.inf
     vals = cs.spec.values(cs.x0)
-    sds, ivs = {}, {}
+    sds, jsds, ivs = {}, {}, {}
     for i, k in enumerate(cs.spec.free):
-        sds[k] = float(sd[i])
-        if not math.isfinite(sd[i]) or not math.isfinite(t):
+        sds[k], jsds[k] = float(sd[i]), float(jsd[i])
+        h = t * jsd[i]
+        if not math.isfinite(h):
             ivs[k] = [math.nan, math.nan]
         elif k in LOG_PARAMS:
-            ivs[k] = [vals[k] * math.exp(-t * sd[i]), vals[k] * math.exp(t * sd[i])]
+            ivs[k] = [vals[k] * math.exp(-h), vals[k] * math.exp(h)]
         else:
-            ivs[k] = [vals[k] - t * sd[i], vals[k] + t * sd[i]]
+            ivs[k] = [vals[k] - h, vals[k] + h]
     size, r2 = detectable_sizes(M, q, B)
     eff = cs.params.names[q:]
     ordered = sequence(runs, settings)
     cost, ch = plan_cost(ordered, settings)
     sign, ld = np.linalg.slogdet(normalise(M[None])[0][0]) if M.any() else (0, -math.inf)
-    return PlanEvaluation(ordered, counts, sds, ivs, dict(zip(eff, map(float, size),
-                                                              strict=True)),
-                          dict(zip(eff, map(float, r2), strict=True)),
-                          confounding(M, cs.params.names), cost, ch,
-                          float(ld) if sign > 0 else -math.inf)
+    return PlanEvaluation(runs=ordered, counts=counts, sd=sds, jack_sd=jsds, interval=ivs,
+                          detectable=dict(zip(eff, map(float, size), strict=True)),
+                          explained=dict(zip(eff, map(float, r2), strict=True)),
+                          confounded=confounding(M, cs.params.names), cost_h=cost,
+                          changes=ch, log_det=float(ld) if sign > 0 else -math.inf)
 
 
 def _runs_for(cs: CandidateSet, w: np.ndarray, n: int) -> list[Candidate]:
@@ -236,8 +244,9 @@ def make_plan(settings: PlanSettings) -> PlanResult:
     naive = evaluate(cs, naive_runs(settings, n), settings)
     _, eff_rounded = equivalence_gap(normalise(Ms)[0], plan.counts, settings.criterion, q,
                                      None if scale is None else scale * normalise(Ms)[1][q:] ** 2)
-    return PlanResult(settings, cs, names, design, plan, naive, excluded,
-                      float(eff_rounded))
+    return PlanResult(settings=settings, candidates=cs, design_params=names, design=design,
+                      plan=plan, naive=naive, excluded=excluded,
+                      d_efficiency=float(eff_rounded))
 
 
 __all__ = ["PlanEvaluation", "PlanResult", "SINGULAR_TOL", "evaluate", "make_plan",

@@ -9,10 +9,11 @@ import argparse
 from oilgap.cli.outputs import out_folder
 from oilgap.model.errors import InputError
 
-OPTIONS = {"oils": ("--oils", str), "bath_C": ("--bath-C", float),
+OPTIONS = {"oil_grades": ("--oil-grades", str), "bath_C": ("--bath-C", float),
            "roughness": ("--roughness", float), "profiles": ("--profiles", str),
            "pressures_MPa": ("--pressures-MPa", float)}
-"""List options: settings field -> (option, item type)."""
+"""List options: argparse dest -> (option, item type) (``oil_grades`` is the field
+``oils``: ``--oils`` names an oils CSV in the other commands)."""
 
 NUMBERS = {"runs": "runs", "budget_h": "budget_h", "noise_W": "noise_W",
            "duration_s": "duration_s", "sample_s": "sample_interval_s",
@@ -35,6 +36,8 @@ def settings_from_args(args: argparse.Namespace) -> dict:
     """The keyword arguments of ``og.plan`` given on the command line."""
     kw = {f: _items(opt, getattr(args, f), kind) for f, (opt, kind) in OPTIONS.items()
           if getattr(args, f) is not None}
+    if "oil_grades" in kw:
+        kw["oils"] = kw.pop("oil_grades")
     kw.update({field: getattr(args, dest) for dest, field in NUMBERS.items()
                if getattr(args, dest) is not None})
     for k in ("criterion", "targets", "base", "effects"):

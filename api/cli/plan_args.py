@@ -17,8 +17,8 @@ def add_plan(sub, add_force) -> None:
         "naive.csv, parameters.csv, effects.csv, plan.json, plan_runs.png, summary.md.")
     p.add_argument("case", metavar="CASE", nargs="?", help="rig case TOML (default: the "
                    "seed joint)")
-    p.add_argument("--oils", metavar="A,B", help="candidate oils of the oils table "
-                   "(default VG150,VG320,VG680,VG1000)")
+    p.add_argument("--oil-grades", metavar="A,B", help="candidate oils of the built-in "
+                   "table (default VG150,VG320,VG680,VG1000)")
     p.add_argument("--bath-C", metavar="T,T", help="bath temperatures [degC] (default 25,40)")
     p.add_argument("--roughness", metavar="T,T", help="rotor variants by roughness T "
                    "(default 4,2)")

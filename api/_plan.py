@@ -50,7 +50,7 @@ def _effect_names(effects: Any) -> tuple[str, ...] | None:
          budget_h=NUMBER, noise_W=NUMBER, duration_s=NUMBER, sample_interval_s=NUMBER,
          out=OUT, force=FLAG)
 def plan(case: DesignCase | str | Path | None = None, settings: Any = None, *,
-         out: str | Path | None = None, force: bool = False, **options: Any):
+         out: str | Path | None = None, force: bool = False, **keywords: Any):
     """Plan a rig campaign (``oilgap plan``): the runs that identify the base law and
     detect the effects, beside the naive full-factorial plan of the same size.
 
@@ -60,13 +60,13 @@ def plan(case: DesignCase | str | Path | None = None, settings: Any = None, *,
         The rig (None: the seed joint).
     settings : PlanSettings or dict, optional
         The campaign (:class:`oilgap.studies.plan.settings.PlanSettings`); keywords in
-        ``options`` override its fields.
+        ``keywords`` override its fields.
     out : str or Path, optional
         Folder for plan.csv, naive.csv, parameters.csv, effects.csv, plan.json,
         plan_runs.png and summary.md (None: no file).
     force : bool
         Replace an earlier plan in ``out``.
-    **options
+    **keywords
         Fields of PlanSettings: ``oils``, ``bath_C`` [degC], ``roughness`` [-],
         ``profiles`` (sine, trapezoid, steps), ``pressures_MPa``, ``effects`` (library
         names to detect), ``criterion`` (D, A, E, T), ``targets`` (base, all), ``base``
@@ -90,14 +90,14 @@ def plan(case: DesignCase | str | Path | None = None, settings: Any = None, *,
                                         else {k: v for k, v in asdict(settings).items()
                                               if k != "case"})
     fields = PlanSettings.__dataclass_fields__
-    for k, v in {**base, **options}.items():
+    for k, v in {**base, **keywords}.items():
         if k not in fields or k == "case":
             raise InputError(k, v, "not a plan setting; allowed: "
                              + ", ".join(f for f in fields if f != "case"))
-    kw = {**base, **{k: v for k, v in options.items() if v is not None}}
+    kw = {**base, **{k: v for k, v in keywords.items() if v is not None}}
     if "effects" in kw:
         kw["effects"] = _effect_names(kw["effects"])
-    if options.get("budget_h") is not None and options.get("runs") is None:
+    if keywords.get("budget_h") is not None and keywords.get("runs") is None:
         kw["runs"] = None
     with result_folder("plan", out, force) as folder:
         st = PlanSettings(case=None if case is None else as_case(case), **kw)

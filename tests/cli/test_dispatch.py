@@ -30,7 +30,7 @@ def test_thermal_modes_are_the_models():
 @pytest.mark.parametrize("argv", [["evaluate"], ["study", "smoothing"], ["study", "pareto"],
                                   ["study", "oil-grade"], ["study", "sweep", "g.csv"],
                                   ["study", "uncertainty"], ["optimize"], ["loop", "d.csv"],
-                                  ["synth"],
+                                  ["synth"], ["plan"],
                                   ["predict", "d.csv", "--model", "m.json", "--out", "p.csv"]])
 def test_every_parser_names_a_module_with_run(argv):
     args = build_parser().parse_args(argv)
@@ -43,7 +43,7 @@ def test_every_table_entry_is_reachable_from_the_parser():
     keys = {parser.parse_args(a).command for a in (
         ["evaluate"], ["optimize"], ["study", "smoothing"], ["study", "pareto"],
         ["study", "oil-grade"], ["study", "sweep", "g.csv"], ["study", "uncertainty"],
-        ["loop", "d.csv"], ["synth"],
+        ["loop", "d.csv"], ["synth"], ["plan"],
         ["predict", "d.csv", "--model", "m.json", "--out", "p.csv"])}
     assert keys == set(COMMANDS)
 

@@ -73,7 +73,7 @@ def test_notebooks_are_saved_without_outputs():
     names = sorted(p.name for p in EXAMPLES.glob("*.ipynb"))
     assert names == ["01_my_joint_evaluate_optimize.ipynb", "02_pareto_gap_inertia.ipynb",
                      "03_oil_grade_for_a_mission.ipynb", "04_rig_data_loop_predict.ipynb",
-                     "05_uncertainty.ipynb"]
+                     "05_uncertainty.ipynb", "06_plan_rig.ipynb"]
     for name in names:
         nb = nbformat.read(EXAMPLES / name, as_version=4)
         nbformat.validate(nb)
@@ -159,3 +159,21 @@ def test_05_uncertainty(tmp_path, monkeypatch):
     assert found["largest total index"] == r.sobol.sort_values("ST").iloc[-1]["input"]
     assert number(found, "p95 of the loss") > number(found, "nominal loss")
     assert (tmp_path / "out" / "05_uncertainty" / "defaults" / "summary.md").is_file()
+
+
+def test_06_plan_rig(tmp_path, monkeypatch):
+    from oilgap.studies.plan.settings import PlanSettings
+    from oilgap.studies.plan.study import make_plan
+
+    found = execute("06_plan_rig.ipynb", tmp_path, monkeypatch)
+    r = make_plan(PlanSettings(oils=("VG150", "VG1000"), bath_C=(25.0,), profiles=("sine",),
+                               duration_s=40.0, runs=6,
+                               effects=("thermal_lag", "taylor_vortex_onset")))
+    assert number(found, "plan runs") == 6
+    printed(found, "expected gamma sd plan", r.plan.sd["gamma"], rel=1e-5)
+    printed(found, "expected gamma sd naive", r.naive.sd["gamma"], rel=1e-5)
+    assert (tmp_path / "out" / "06_plan_rig" / "plan" / "plan.csv").is_file()
+    # one rehearsal each: the loop's widths within 1.5x of the plan's (one seed scatters)
+    for tag, ev in (("plan", r.plan), ("naive", r.naive)):
+        width = ev.interval["gamma"][1] - ev.interval["gamma"][0]
+        assert number(found, f"loop gamma width {tag}") < 2.5 * width

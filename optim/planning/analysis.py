@@ -113,23 +113,27 @@ def _corr(M: np.ndarray) -> np.ndarray:
     return M / d[:, None] / d[None, :]
 
 
-def jackknife_sd(As: np.ndarray, Bs: np.ndarray, folds: np.ndarray) -> np.ndarray:
+def jackknife_sd(As: np.ndarray, Bs: np.ndarray, folds: np.ndarray,
+                 held: dict | None = None) -> np.ndarray:
     """Expected sd of the delete-a-group jackknife the loop reports, linearised [3].
 
     With ``u_j`` the score of fold j (covariance ``B_j``) the all-data estimate moves by
-    ``A^-1 sum u``, the estimate without fold i by ``d_i = (A - A_i)^-1 sum_{j != i} u_j``;
-    the jackknife variance ``(g - 1)/g sum_i (d_i - mean d)^2`` has the expectation
-    ``(g - 1)/g sum_i sum_j (K_ij - Kbar_j) B_j (K_ij - Kbar_j)^T`` with ``K_ij = (A -
-    A_i)^-1`` (0 for j = i). Unlike ``A^-1 B A^-1`` it grows when the folds differ in
-    leverage: the jackknife is conservative there [3]. A fold whose training runs cannot
-    identify a parameter (``A - A_i`` singular) is left out, as the loop leaves it out.
+    ``A^-1 sum u``, the estimate without fold i by ``d_i = (A - A_i)^-1 sum_{j != i} u_j``
+    (over the parameters that fold fits); the jackknife variance ``(g - 1)/g sum_i (d_i -
+    mean d)^2`` has the expectation ``(g - 1)/g sum_i sum_j (K_ij - Kbar_j) B_j (K_ij -
+    Kbar_j)^T`` with ``K_ij = (A - A_i)^-1`` (0 for j = i). Unlike ``A^-1 B A^-1`` it grows
+    when the folds differ in leverage: the jackknife is conservative there [3]. A fold that
+    holds a parameter (the loop's rule: its training runs cannot identify it) fits the
+    others with it fixed and is left out of that parameter's jackknife, as in the loop.
 
     Parameters
     ----------
     As, Bs : arrays, shape (m, q, q)
-        Information and noise meat of each run (base parameters only).
+        Information and noise meat of each run (base parameters only) [unit^-2].
     folds : array of int, shape (m,)
-        Fold of each run (the loop's: the run itself up to 10 runs).
+        Fold of each run (the loop's: the run itself up to 10 runs) [-].
+    held : dict, optional
+        Fold code -> indices of the parameters that fold holds [-].
 
     Returns
     -------
@@ -137,29 +141,34 @@ def jackknife_sd(As: np.ndarray, Bs: np.ndarray, folds: np.ndarray) -> np.ndarra
         sqrt of the expected jackknife variance [unit of each parameter]; inf with fewer
         than 3 usable folds.
     """
+    held = held or {}
     codes = np.unique(folds)
     Af = np.array([As[folds == c].sum(axis=0) for c in codes])
     Bf = np.array([Bs[folds == c].sum(axis=0) for c in codes])
     A = Af.sum(axis=0)
     q = A.shape[0]
-    K = []
-    for i in range(len(codes)):
-        cov = sandwich(A - Af[i])
-        if cov is not None:
-            K.append((i, cov))
-    g = len(K)
-    if g < 3:
-        return np.full(q, math.inf)
-    Kij = np.zeros((g, len(codes), q, q))
-    for a, (i, Ci) in enumerate(K):
-        Kij[a] = Ci
-        Kij[a, i] = 0.0
-    Kbar = Kij.mean(axis=0)
-    var = np.zeros((q, q))
-    for a in range(g):
-        D = Kij[a] - Kbar
-        var += np.einsum("jab,jbc,jdc->ad", D, Bf, D)
-    return np.sqrt(np.diag(var) * (g - 1) / g)
+    K, used = [], []
+    for i, c in enumerate(codes):
+        free = [k for k in range(q) if k not in held.get(c, ())]
+        cov = sandwich((A - Af[i])[np.ix_(free, free)])
+        Ci = np.zeros((len(codes), q, q))
+        if cov is None:
+            continue
+        Ci[:, np.ix_(free, free)[0], np.ix_(free, free)[1]] = cov
+        Ci[i] = 0.0
+        K.append(Ci)
+        used.append(set(free))
+    out = np.full(q, math.inf)
+    for k in range(q):
+        rows = [a for a, f in enumerate(used) if k in f]
+        g = len(rows)
+        if g < 3:
+            continue
+        Kk = np.array([K[a][:, k, :] for a in rows])  # (g, folds, q): row k of each K_ij
+        D = Kk - Kk.mean(axis=0)
+        var = np.einsum("ajb,jbc,ajc->", D, Bf, D)
+        out[k] = math.sqrt(var * (g - 1) / g)
+    return out
 
 
 def detectable_sizes(M: np.ndarray, q: int, B: np.ndarray | None = None

@@ -16,6 +16,7 @@ import numpy as np
 import pandas as pd
 
 from oilgap.model.effects import EFFECTS
+from oilgap.optim.planning.fisher import BARUS
 from oilgap.studies.reporting import new_figure, save_figure, write_tables, write_text
 
 from .candidates import plan_table
@@ -57,7 +58,7 @@ def headline(res: PlanResult) -> list[str]:
              f"rounded efficiency >= {res.d_efficiency:.3f}"]
     for k in res.candidates.spec.free:
         a, b = p.sd[k], nv.sd[k]
-        cut = (f", {100 * (1 - a / b):+.0f} % vs naive".replace("+", "-", 1)
+        cut = (f", {100 * (1 - a / b):.0f} % narrower than naive"
                if math.isfinite(a) and math.isfinite(b) and a < b else
                (f", {100 * (a / b - 1):.0f} % wider than naive" if math.isfinite(a)
                 and math.isfinite(b) else ""))
@@ -65,6 +66,9 @@ def headline(res: PlanResult) -> list[str]:
                      f"interval {_iv(p.interval[k])} (naive {_iv(nv.interval[k])})")
     det = [f"{e} {_ratio(p.detectable[e], r)}" for e, r in
            zip(res.candidates.params.effects, res.candidates.ref, strict=True)]
+    if BARUS in p.detectable:
+        det.append(f"{BARUS} {_fmt(p.detectable[BARUS])} 1/GPa (naive "
+                   f"{_fmt(nv.detectable[BARUS])})")
     lines.append("detectable  smallest effect detected (5 % level, 80 % power), x its test "
                  "strength: " + ", ".join(det))
     return lines
@@ -105,7 +109,7 @@ def confounded_lines(res: PlanResult, ev: PlanEvaluation, name: str) -> list[str
 def _why_zero(n: str) -> str:
     if n == "taylor_vortex_onset":
         return " (Ta stays below 41.3 on every run)"
-    if n == "pressure_viscosity":
+    if n == BARUS:
         return " (every run at atmospheric pressure)"
     return ""
 
@@ -128,8 +132,11 @@ def parameters_frame(res: PlanResult) -> pd.DataFrame:
 def effects_frame(res: PlanResult) -> pd.DataFrame:
     """Smallest detectable coefficient of each effect, plan and naive."""
     rows = []
-    for e, ref in zip(res.candidates.params.effects, res.candidates.ref, strict=True):
-        rows.append({"effect": e, "unit": EFFECTS[e].unit, "test_coefficient": ref,
+    cs = res.candidates
+    extra = [(BARUS, "1/GPa", math.nan)] if BARUS in res.plan.detectable else []
+    for e, unit, ref in [(e, EFFECTS[e].unit, r) for e, r in
+                         zip(cs.params.effects, cs.ref, strict=True)] + extra:
+        rows.append({"effect": e, "unit": unit, "test_coefficient": ref,
                      "plan_detectable": res.plan.detectable[e],
                      "plan_share_explained_by_base": res.plan.explained[e],
                      "naive_detectable": res.naive.detectable[e],

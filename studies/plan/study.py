@@ -57,7 +57,9 @@ parameter may bring into the design criterion (below: confounded on every candid
 
 @dataclass
 class PlanEvaluation:
-    """What one plan identifies (see :mod:`oilgap.optim.planning.analysis`)."""
+    """What one plan identifies (see :mod:`oilgap.optim.planning.analysis`); ``info`` and
+    ``meat`` are its information ``A`` and noise meat ``B`` over all parameters
+    (``CandidateSet.params.names``) [unit^-2]."""
 
     runs: list[Candidate]
     counts: np.ndarray
@@ -70,6 +72,8 @@ class PlanEvaluation:
     cost_h: float
     changes: dict
     log_det: float
+    info: np.ndarray
+    meat: np.ndarray
 
 
 @dataclass
@@ -174,8 +178,9 @@ def evaluate(cs: CandidateSet, runs: list[Candidate], settings: PlanSettings
     q = len(cs.spec.free)
     sd = base_sd(M, q, B)
     idx = [index[r] for r in runs]
-    jsd = jackknife_sd(cs.info[idx][:, :q, :q], cs.meat[idx][:, :q, :q],
-                       grouped_folds(np.arange(len(runs)), MAX_FOLDS))
+    folds = grouped_folds(np.arange(len(runs)), MAX_FOLDS)
+    jsd = jackknife_sd(cs.info[idx][:, :q, :q], cs.meat[idx][:, :q, :q], folds,
+                       _held(cs, runs, folds))
     g = min(len(runs), MAX_FOLDS)
     t = stats.t.ppf(0.975, g - 1) if g >= 3 else math.inf
     vals = cs.spec.values(cs.x0)
@@ -198,7 +203,21 @@ def evaluate(cs: CandidateSet, runs: list[Candidate], settings: PlanSettings
                           detectable=dict(zip(eff, map(float, size), strict=True)),
                           explained=dict(zip(eff, map(float, r2), strict=True)),
                           confounded=confounding(M, cs.params.names), cost_h=cost,
-                          changes=ch, log_det=float(ld) if sign > 0 else -math.inf)
+                          changes=ch, log_det=float(ld) if sign > 0 else -math.inf,
+                          info=M, meat=B)
+
+
+def _held(cs: CandidateSet, runs: list[Candidate], folds: np.ndarray) -> dict:
+    """Per fold, the base parameters the loop holds: gamma where the training runs have a
+    single roughness T (:func:`~oilgap.optim.calibration.spec.fold_spec`)."""
+    if "gamma" not in cs.spec.free:
+        return {}
+    g = cs.spec.free.index("gamma")
+    out = {}
+    for c in np.unique(folds):
+        if len({r.roughness_T for r, f in zip(runs, folds, strict=True) if f != c}) < 2:
+            out[c] = (g,)
+    return out
 
 
 def _runs_for(cs: CandidateSet, w: np.ndarray, n: int) -> list[Candidate]:

@@ -508,6 +508,7 @@ it, and the loop's intervals come out near the plan's.
 """),
     code("""
 import pandas as pd
+
 from oilgap.optim.calibration import LoopEstimator
 
 plan_csv = pd.read_csv(OUT / "plan" / "plan.csv")

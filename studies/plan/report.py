@@ -197,6 +197,11 @@ def summary_lines(res: PlanResult) -> list[str]:
     """The terminal output: the headline, then tables and what stays confounded."""
     lines = headline(res)
     pf = parameters_frame(res)
+    cols = ["order", "oil", "roughness_T", "bath_C", "profile", "pressure_MPa"]
+    runs = plan_table(res.settings, res.plan.runs)[cols].join(
+        plan_table(res.settings, res.naive.runs)[cols[1:]], rsuffix="_naive")
+    lines += ["", "run table (plan.csv; naive.csv beside it, suffix _naive)",
+              runs.to_string(index=False)]
     lines += ["", "expected parameters: sd of the least-squares estimate; the loop's 95 % "
               "jackknife interval (its expected sd, t quantile)",
               pf.to_string(index=False, float_format=lambda x: f"{x:.5g}"), "",

@@ -86,3 +86,17 @@ def test_cli_plan_bad_input_is_one_line(tmp_path, capsys):
     assert "zigzag" in capsys.readouterr().err
     with pytest.raises(og.InputError, match="criterion"):
         og.plan(criterion="Z")
+
+
+def test_budget_in_hours_sets_the_number_of_runs():
+    from oilgap.studies.plan.study import plan_cost, sequence
+
+    res = og.plan(**{**SMALL, "runs": None}, budget_h=9.0)
+    st = res.settings
+    n = len(res.plan.runs)
+    # by hand: VG1000 on both rotors, (40/3600 + 0.25) h a run, one rotor change (4 h),
+    # one oil change with it (2 h): n runs cost 6 + 0.2611 n <= 9 -> n = 11
+    assert n == 11
+    assert res.plan.cost_h == pytest.approx(6.0 + n * (40 / 3600 + 0.25))
+    more = sequence(res.plan.runs + [res.plan.runs[0]], st)
+    assert plan_cost(more, st)[0] > 9.0

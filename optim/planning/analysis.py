@@ -11,8 +11,8 @@ For a plan with information ``M = sum_i n_i M_i`` (runs n_i of candidate i):
   the base columns, in the information metric). A two-sided test at level 5 % has
   power 80 % when that noncentrality reaches ``(z_0.975 + z_0.8)^2 = 7.85``: the smallest
   detectable coefficient is ``sqrt(7.85 / S_k)``;
-* near-singular directions of ``M`` (eigenvalues of the correlation-scaled matrix below
-  :data:`SINGULAR_TOL`) are named by the parameters that load them, and pairs of
+* near-singular directions of ``M`` (condition index of the correlation-scaled matrix
+  above :data:`CONDITION_INDEX`) are named by the parameters that load them, and pairs of
   parameters whose columns are nearly parallel (cosine above :data:`CONFOUNDED_COS`) are
   listed as confounded.
 
@@ -23,6 +23,8 @@ References
    linearisation: D. Ucinski, B. Bogacka, J. R. Stat. Soc. B 67:3-18, 2005.
 .. [3] B. Efron, C. Stein, "The jackknife estimate of variance", Ann. Stat. 9:586-596,
    1981 (the jackknife variance is biased upward).
+.. [4] D. A. Belsley, E. Kuh, R. E. Welsch, *Regression Diagnostics*, Wiley 1980, ch. 3
+   (condition indexes).
 """
 
 from __future__ import annotations
@@ -44,6 +46,11 @@ identified [-] (a relative sd above 1000 times the parameters' own scale)."""
 
 CONFOUNDED_COS = 0.99
 """|cosine| between two parameters' Jacobian columns above which they are confounded."""
+
+CONDITION_INDEX = 30.0
+"""Condition index ``sqrt(lambda_max / lambda)`` of the correlation-scaled information above
+which a direction is reported as confounded: Belsley, Kuh & Welsch's "strong" collinearity
+[4] (the combination's variance inflated about 900-fold)."""
 
 
 def noncentrality() -> float:
@@ -228,8 +235,9 @@ def confounding(M: np.ndarray, names: tuple[str, ...]) -> dict:
     dict
         ``uninformed``: parameters with zero information (their column vanishes on every
         run); ``pairs``: (a, b, cosine) with |cosine| > :data:`CONFOUNDED_COS`;
-        ``directions``: per eigenvalue below :data:`SINGULAR_TOL` of the
-        correlation-scaled matrix, the eigenvalue [-] and the loadings above 0.2 [-].
+        ``directions``: per eigenvalue of the correlation-scaled matrix whose condition
+        index exceeds :data:`CONDITION_INDEX`, the eigenvalue [-], the condition index
+        [-] and the loadings above 0.3 [-].
     """
     d = np.diag(M)
     uninformed = [n for n, v in zip(names, d, strict=True) if not v > 0]
@@ -243,8 +251,11 @@ def confounding(M: np.ndarray, names: tuple[str, ...]) -> dict:
     directions = []
     if keep:
         lam, vec = np.linalg.eigh(C)
-        for j in np.nonzero(lam < SINGULAR_TOL)[0]:
+        lam = np.maximum(lam, 0.0)
+        for j in np.nonzero(lam * CONDITION_INDEX ** 2 < lam[-1])[0]:
             load = {names[keep[i]]: float(vec[i, j]) for i in np.argsort(-np.abs(vec[:, j]))
-                    if abs(vec[i, j]) > 0.2}
-            directions.append({"eigenvalue": float(max(lam[j], 0.0)), "loadings": load})
+                    if abs(vec[i, j]) > 0.3}
+            ci = math.sqrt(lam[-1] / lam[j]) if lam[j] > 0 else math.inf
+            directions.append({"eigenvalue": float(lam[j]), "condition_index": ci,
+                               "loadings": load})
     return {"uninformed": uninformed, "pairs": pairs, "directions": directions}

@@ -96,8 +96,8 @@ def confounded_lines(res: PlanResult, ev: PlanEvaluation, name: str) -> list[str
                    f"over these runs (cosine {cos:+.4f})")
     for d in c["directions"]:
         load = ", ".join(f"{k} {v:+.2f}" for k, v in d["loadings"].items())
-        out.append(f"{name}: near-singular direction (eigenvalue {d['eigenvalue']:.1e} of the "
-                   f"correlation-scaled information): {load}")
+        out.append(f"{name}: near-singular direction, condition index "
+                   f"{d['condition_index']:.0f} > 30 (these move together): {load}")
     for e, r2 in ev.explained.items():
         if r2 > 0.999 and e not in c["uninformed"] and not any(e in (a, b) for a, b, _
                                                                 in c["pairs"]):

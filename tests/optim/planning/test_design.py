@@ -21,6 +21,7 @@ from oilgap.optim.calibration.forward import ForwardModel
 from oilgap.optim.calibration.spec import decide_spec
 from oilgap.optim.planning import (
     base_jacobian,
+    confounding,
     detectable_sizes,
     efficient_rounding,
     equivalence_gap,
@@ -152,3 +153,17 @@ def test_fisher_columns_match_finite_differences_of_the_forward_model(two_runs):
     fd = (at(da) - at(-da)) / (2 * da)
     assert jac[:, 2] == pytest.approx(fd, rel=1e-5, abs=1e-6 * np.abs(fd).max())
     assert np.abs(jac[:, 2]).max() > 0
+
+
+def test_confounding_names_zero_parallel_and_near_singular_columns():
+    """Columns a, b = 2a (parallel), c = a + 0.01 d (condition index sqrt(lmax/lmin) >> 30
+    with a), d independent, e = 0 (no information)."""
+    rng = np.random.default_rng(1)
+    a, d = rng.normal(size=200), rng.normal(size=200)
+    J = np.column_stack([a, 2 * a, d, a + 0.01 * d, np.zeros(200)])
+    out = confounding(J.T @ J, ("a", "b", "d", "c", "e"))
+    assert out["uninformed"] == ["e"]
+    assert ("a", "b", pytest.approx(1.0)) in [(x, y, c) for x, y, c in out["pairs"]]
+    assert ("a", "c") in [(x, y) for x, y, _ in out["pairs"]]
+    assert all(dd["condition_index"] > 30 for dd in out["directions"])
+    assert {"a", "b", "c"} >= set().union(*[dd["loadings"] for dd in out["directions"]])

@@ -81,15 +81,15 @@ def plan(case: DesignCase | str | Path | None = None, settings: Any = None, *,
         ``plan`` and ``naive`` (runs, expected sd and interval, detectable sizes,
         confounding, cost), the continuous design and its gap; ``summary()``.
     """
-    from dataclasses import asdict
-
     from oilgap.studies.plan.settings import PlanSettings
     from oilgap.studies.plan.study import make_plan
 
-    base = {} if settings is None else (dict(settings) if isinstance(settings, dict)
-                                        else {k: v for k, v in asdict(settings).items()
-                                              if k != "case"})
     fields = PlanSettings.__dataclass_fields__
+    base = {} if settings is None else (dict(settings) if isinstance(settings, dict)
+                                        else {k: getattr(settings, k) for k in fields})
+    if case is None:
+        case = base.get("case")
+    base.pop("case", None)
     for k, v in {**base, **keywords}.items():
         if k not in fields or k == "case":
             raise InputError(k, v, "not a plan setting; allowed: "

@@ -198,8 +198,9 @@ def summary_lines(res: PlanResult) -> list[str]:
     lines = headline(res)
     pf = parameters_frame(res)
     cols = ["order", "oil", "roughness_T", "bath_C", "profile", "pressure_MPa"]
-    runs = plan_table(res.settings, res.plan.runs)[cols].join(
-        plan_table(res.settings, res.naive.runs)[cols[1:]], rsuffix="_naive")
+    naive = plan_table(res.settings, res.naive.runs)[cols[1:]]
+    runs = pd.concat([plan_table(res.settings, res.plan.runs)[cols],
+                      naive.rename(columns={c: f"{c}_naive" for c in naive.columns})], axis=1)
     lines += ["", "run table (plan.csv; naive.csv beside it, suffix _naive)",
               runs.to_string(index=False)]
     lines += ["", "expected parameters: sd of the least-squares estimate; the loop's 95 % "

@@ -13,12 +13,13 @@ and chosen effects, rehearses a plan (:func:`plan_data`).
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 import pandas as pd
 
 from oilgap.model.case import DesignCase
+from oilgap.model.effects import EFFECTS
 from oilgap.model.errors import InputError
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.measured.data import oil_samples
@@ -29,7 +30,12 @@ from oilgap.model.units import rad_s_to_rpm, rpm_to_rad_s
 from oilgap.optim.calibration.forward import ForwardModel
 from oilgap.optim.calibration.spec import START_VALUES, BaseSpec, decide_spec
 from oilgap.optim.planning.fisher import Parameters, base_jacobian, effect_columns, run_information
-from oilgap.studies.rigs.synth import SynthConfig, simulate_truth, synthesize
+from oilgap.studies.rigs.synth import (
+    DEFAULT_STRENGTH,
+    SynthConfig,
+    simulate_truth,
+    synthesize,
+)
 
 from .settings import PlanSettings
 
@@ -193,9 +199,6 @@ def candidate_information(settings: PlanSettings) -> CandidateSet:
     -------
     CandidateSet
     """
-    from oilgap.model.effects import EFFECTS
-    from oilgap.studies.rigs.synth import DEFAULT_STRENGTH
-
     case = settings.case or seed_case()
     runs = candidate_runs(settings)
     pressure = any(p > 0 for p in settings.pressures_MPa)
@@ -207,7 +210,7 @@ def candidate_information(settings: PlanSettings) -> CandidateSet:
         s = oil_samples(data, case.region1.gap, pressure_gauge_Pa=p * 1e6)
         model = ForwardModel(s, case, data.oils)
         if spec is None:
-            spec = _spec(settings, runs, case, model)
+            spec, _ = decide_spec(model.samples, model.geometry, case, settings.base)
             x0 = spec.start({**START_VALUES, "gamma": case.friction.gamma})
         jb, dP_dw = base_jacobian(model, spec, x0,
                                   np.full(s.n, p * 1e6) if pressure else None)
@@ -252,13 +255,6 @@ def _run_stats(model: ForwardModel) -> np.ndarray:
                      [s.temp_C[idx].mean() for idx in model.runs]])
 
 
-def _spec(settings: PlanSettings, runs, case, model) -> BaseSpec:
-    """The base parameters the candidates can identify (the loop's own rule); T
-    identifies gamma only if the candidates hold two roughness values."""
-    spec, _ = decide_spec(model.samples, model.geometry, case, settings.base)
-    return spec
-
-
 def plan_table(settings: PlanSettings, runs: list[Candidate]) -> pd.DataFrame:
     """plan.csv / naive.csv: one row per run in the given order (:data:`RUN_COLUMNS`)."""
     rows = [{"run": f"P{i + 1:02d}", "order": i + 1, "oil": r.oil,
@@ -287,6 +283,13 @@ def runs_from_table(df: pd.DataFrame, source: str = "plan") -> tuple[PlanSetting
         if len(vals) != 1 or not np.isfinite(vals[0]):
             raise InputError(f"{source}: {c}", list(vals), "one number for every run")
         common[c] = float(vals[0])
+    for c in ("order", "roughness_T", "bath_C", "pressure_MPa"):
+        vals = pd.to_numeric(df[c], errors="coerce")
+        bad = np.nonzero(~np.isfinite(vals.to_numpy(dtype=float)))[0]
+        if len(bad):
+            raise InputError(f"{source}: {c} (row {bad[0] + 1})", df[c].iloc[bad[0]],
+                             "a finite number")
+        df = df.assign(**{c: vals})
     df = df.sort_values("order", kind="stable")
     runs = [Candidate(str(r.oil), float(r.roughness_T), float(r.bath_C), str(r.profile),
                       float(r.pressure_MPa)) for r in df.itertuples()]
@@ -296,4 +299,4 @@ def runs_from_table(df: pd.DataFrame, source: str = "plan") -> tuple[PlanSetting
                       profiles=tuple(dict.fromkeys(r.profile for r in runs)),
                       pressures_MPa=tuple(dict.fromkeys(r.pressure_MPa for r in runs)),
                       runs=max(2, len(runs)), **common)
-    return replace(st), runs
+    return st, runs

@@ -86,6 +86,13 @@ def test_cli_plan_bad_input_is_one_line(tmp_path, capsys):
     assert "zigzag" in capsys.readouterr().err
     with pytest.raises(og.InputError, match="criterion"):
         og.plan(criterion="Z")
+    bad = tmp_path / "bad.csv"
+    bad.write_text("run,order,oil,roughness_T,bath_C,profile,peak_speed_rpm,frequency_hz,"
+                   "duration_s,sample_interval_s,pressure_MPa\n"
+                   "P01,1,VG320,four,25,sine,3000,0.05,40,0.2,0\n")
+    assert main(["synth", "--plan", str(bad), "--out", str(tmp_path / "d.csv")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "roughness_T (row 1)" in err[0] and "'four'" in err[0]
 
 
 def test_budget_in_hours_sets_the_number_of_runs():

@@ -18,6 +18,7 @@ import pandas as pd
 from oilgap.model.effects import EFFECTS
 from oilgap.optim.planning.fisher import BARUS
 from oilgap.studies.reporting import new_figure, save_figure, write_tables, write_text
+from oilgap.studies.rigs.synth import DEFAULT_STRENGTH
 
 from .candidates import plan_table
 from .study import PlanEvaluation, PlanResult
@@ -64,8 +65,7 @@ def headline(res: PlanResult) -> list[str]:
                 and math.isfinite(b) else ""))
         lines.append(f"{k:<12}expected sd {_fmt(a)} (naive {_fmt(b)}){cut}; the loop's 95 % "
                      f"interval {_iv(p.interval[k])} (naive {_iv(nv.interval[k])})")
-    det = [f"{e} {_ratio(p.detectable[e], r)}" for e, r in
-           zip(res.candidates.params.effects, res.candidates.ref, strict=True)]
+    det = [f"{e} {_ratio(p.detectable[e], e)}" for e in res.candidates.params.effects]
     if BARUS in p.detectable:
         det.append(f"{BARUS} {_fmt(p.detectable[BARUS])} 1/GPa (naive "
                    f"{_fmt(nv.detectable[BARUS])})")
@@ -74,8 +74,16 @@ def headline(res: PlanResult) -> list[str]:
     return lines
 
 
-def _ratio(size: float, ref: float) -> str:
-    return "never" if not math.isfinite(size) else f"{size / ref:.2g}"
+def detectable_strength(size: float, effect: str) -> float:
+    """A detectable coefficient in the effect's strength unit (``--strength`` of synth)."""
+    return (math.inf if not math.isfinite(size)
+            else float(EFFECTS[effect].strength_from_coefficient(size)))
+
+
+def _ratio(size: float, effect: str) -> str:
+    """The detectable size as a multiple of the effect's test strength."""
+    x = detectable_strength(size, effect)
+    return "never" if not math.isfinite(x) else f"{x / DEFAULT_STRENGTH[effect]:.2g}"
 
 
 def _iv(iv) -> str:
@@ -138,10 +146,18 @@ def effects_frame(res: PlanResult) -> pd.DataFrame:
                          zip(cs.params.effects, cs.ref, strict=True)] + extra:
         rows.append({"effect": e, "unit": unit, "test_coefficient": ref,
                      "plan_detectable": res.plan.detectable[e],
+                     "plan_detectable_x_test_strength": _times(res.plan.detectable[e], e),
+                     "naive_detectable_x_test_strength": _times(res.naive.detectable[e], e),
                      "plan_share_explained_by_base": res.plan.explained[e],
                      "naive_detectable": res.naive.detectable[e],
                      "naive_share_explained_by_base": res.naive.explained[e]})
     return pd.DataFrame(rows)
+
+
+def _times(size: float, effect: str) -> float:
+    if effect not in EFFECTS:
+        return math.nan
+    return detectable_strength(size, effect) / DEFAULT_STRENGTH[effect]
 
 
 def plan_json(res: PlanResult) -> dict:

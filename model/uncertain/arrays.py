@@ -39,8 +39,10 @@ import numpy as np
 
 from ..errors import InputError, SolverError
 from ..joint_loss import operating_temperature, resolve_thermal_mode
+from ..oil_properties import walther_coefficients
 from ..thermal import MAX_OIL_TEMP_C
 from ..thermal_modes import uses_balance
+from ..units import ZERO_CELSIUS_K
 from .balance import root_balance
 from .inputs import INPUTS, apply_inputs
 from .rows import RowModel, RowValues, row_balance, row_model, row_total
@@ -115,12 +117,14 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
     op, th = case.operating, case.thermal
     n = len(next(iter(arrs.values())))
     t_oil = arrs.get("oil_temp_C")
-    f = arrs.get("nu40_factor")
+    f = arrs.get("nu_factor_all_temperatures")
     peak = arrs.get("peak_speed_rpm")
+    a, b = _walther(model.fluid, arrs)
     return RowValues(
         n=n, oil_temp_C=np.full(n, float(op.oil_temp_C)) if t_oil is None else t_oil,
         depth_m=float(op.depth_m) if "depth_m" not in arrs else arrs["depth_m"],
-        nu_factor=None if f is None else f * model.factor0, gamma=arrs.get("gamma"),
+        nu_factor=None if f is None else f * model.factor0, walther_A=a, walther_B=b,
+        gamma=arrs.get("gamma"),
         friction_scale=arrs.get("friction_scale"), film_strength=arrs.get("film_strength"),
         drag_scale=arrs.get("bearing_drag_scale"),
         speed_factor=None if peak is None else case.duty_cycle.speed_factor(peak),
@@ -129,9 +133,25 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
             else th.sea_temp_C + (t_oil - op.oil_temp_C)))
 
 
+def _walther(oil, arrs: Mapping[str, np.ndarray]):
+    """Each row's Walther coefficients (A, B) [-] through ``(f40 nu40, f100 nu100)``, as
+    :func:`.grade.walther_rebuilt` builds the scalar path's oil (ASTM D341); (None, None)
+    without those inputs."""
+    f40, f100 = arrs.get("nu40_factor"), arrs.get("nu100_factor")
+    if f40 is None and f100 is None:
+        return None, None
+    nu40 = oil.nu40_cSt if f40 is None else oil.nu40_cSt * f40
+    nu100 = oil.nu100_cSt if f100 is None else oil.nu100_cSt * f100
+    n = len(next(iter(arrs.values())))
+    a, b = walther_coefficients(np.broadcast_to(nu40, (n,)), ZERO_CELSIUS_K + 40.0,
+                                np.broadcast_to(nu100, (n,)), ZERO_CELSIUS_K + 100.0)
+    return np.asarray(a, float), np.asarray(b, float)
+
+
 def _features(rows: RowValues) -> np.ndarray:
     """The per-row values of a block as columns (the root's predictors)."""
-    vals = [getattr(rows, k) for k in ("sea_temp_C", "depth_m", "nu_factor", "gamma",
+    vals = [getattr(rows, k) for k in ("sea_temp_C", "depth_m", "nu_factor", "walther_A",
+                                       "walther_B", "gamma",
                                        "friction_scale", "film_strength", "drag_scale",
                                        "speed_factor")]
     for reg in rows.regions or ():

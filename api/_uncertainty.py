@@ -116,7 +116,7 @@ def uncertainty(case: DesignCase | str | Path | None = None, *,
     ----------
     case : DesignCase, path or None
         The joint (None: the seed joint); its ``[uncertainty]`` table, else the defaults
-        (ISO 3448's +-10 % on nu40, gamma 0.566 +- 0.041 from the seed fit).
+        (ISO 3448's +-10 % on nu40, nu100 +-5 %, gamma 0.566 +- 0.041 from the seed fit).
     model : path, optional
         A calibrated ``loop.json``: its fitted gamma, friction scale and film strength
         with their intervals and correlation replace the case's laws

@@ -101,9 +101,57 @@ def carried_factor(fluid, temp_C: float, nu40_factor: float = 1.0,
             / fluid.kinematic_viscosity_cSt(temp_C, depth_m))
 
 
+def carried_text(fluid, temp_C: float, bands: dict[str, tuple[float, float]],
+                 depth_m: float = 0.0) -> list[str]:
+    """Lines saying what the bands on nu40 and nu100 give at ``temp_C``.
+
+    ``nu40 x0.9..1.1 (nu100 held) -> nu(2 degC) -25/+30 %``, then the same with nu100
+    over its band (the four corners' extremes).
+
+    Parameters
+    ----------
+    fluid : Oil or ScaledFluid of an Oil
+        The oil.
+    temp_C : float
+        The case's oil temperature [degC].
+    bands : dict
+        ``nu40_factor``/``nu100_factor`` -> (low, high) [-] (their laws' 0/100 % or
+        5/95 % points); a missing one is held at 1.
+    depth_m : float
+        Sea depth [m].
+
+    Returns
+    -------
+    list of str
+        One line per band given (empty without ``nu40_factor`` and ``nu100_factor``).
+    """
+    b40, b100 = bands.get("nu40_factor"), bands.get("nu100_factor")
+    if b40 is None and b100 is None:
+        return []
+
+    def pct(f: float) -> str:
+        return f"{100 * (f - 1):+.0f} %"
+
+    def span(pairs) -> str:
+        fs = [carried_factor(fluid, temp_C, a, b, depth_m) for a, b in pairs]
+        return f"{pct(min(fs))}/{pct(max(fs))}"
+
+    at = f"nu({temp_C:g} degC)"
+    lines = []
+    if b40 is not None:
+        lines.append(f"nu40 x{b40[0]:g}..{b40[1]:g} (nu100 held) -> {at} "
+                     f"{span([(b40[0], 1.0), (b40[1], 1.0)])}")
+    if b100 is not None:
+        corners = [(a, b) for a in (b40 or (1.0, 1.0)) for b in b100]
+        lines.append(f"nu100 x{b100[0]:g}..{b100[1]:g}"
+                     + (" with nu40's band" if b40 is not None else "")
+                     + f" -> {at} {span(corners)}")
+    return lines
+
+
 def has_walther_line(fluid) -> bool:
     """True for an oil (or a scaled oil) with a Walther line [-]."""
     return isinstance(fluid.base if isinstance(fluid, ScaledFluid) else fluid, Oil)
 
 
-__all__ = ["carried_factor", "has_walther_line", "walther_rebuilt"]
+__all__ = ["carried_factor", "carried_text", "has_walther_line", "walther_rebuilt"]

@@ -8,15 +8,18 @@ cycle-mean loss and the rolling bearing's, under any thermal mode.
 
 It is the stacked evaluation of :mod:`.rows` (the composition of
 :func:`~oilgap.model.joint_loss.joint_mean_power` with every input an array over rows: the
-oil's state, the speed nodes times ``peak / peak0``, C_m at gamma 0 times
-``friction_scale T^gamma``, the film strength on b, SKF's drag terms times
-``bearing_drag_scale``, and under ``bulk``/``full`` the balance of all rows by the model's
-one solver, each row following the scalar path's iteration). Measured against the scalar
-path: 1e-15 relative without a balance, 1e-13 with it (tests/model/test_uncertain_arrays.py;
-10^4 cases in docs/benchmarks.md). ``balance="root"`` solves the balance instead to its
-exact root (:func:`~oilgap.model.uncertain.balance.root_balance`, 3.5-4 losses a row
-instead of 10-20): equal to an independent root finder's loss to 1e-13, and to the scalar
-path to its solver's tolerance (``|g| < 1e-9 K``: up to 4e-11 relative on the seed).
+oil's state, on each row's own Walther line where ``nu40_factor``/``nu100_factor`` vary,
+the speed nodes times ``peak / peak0``, C_m at gamma 0 times ``friction_scale T^gamma``,
+the film strength on b, SKF's drag terms times ``bearing_drag_scale``). Under
+``bulk``/``full`` the balance of all rows is solved at once to its exact root
+(:func:`~oilgap.model.uncertain.balance.root_balance`, about 3.5 losses a row); the rows it
+hands back (a loss that rises, a root on a downward step of Eq. 6, no root below the cap)
+are solved by the model's one solver over those rows
+(:func:`~oilgap.model.uncertain.rows.row_balance`, the scalar path's
+:func:`~oilgap.model.thermal.steady_temperature`, polished to the root as the scalar path
+is). Measured against the scalar path: 1e-15 relative without a balance, 1e-13 with it
+(tests/model/test_uncertain_arrays.py and test_uncertain_balance.py; 10^4 rows in
+docs/benchmarks.md).
 
 Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
 block stay in cache).
@@ -161,9 +164,10 @@ def _features(rows: RowValues) -> np.ndarray:
 
 
 def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray],
-           balance: str = "replay") -> np.ndarray:
-    """Loss [W] of one block of rows (NaN: no balance root below the cap); ``balance``
-    "root": :func:`.balance.root_balance`, its rows handed back replayed."""
+           fallback: bool = False) -> np.ndarray:
+    """Loss [W] of one block of rows (NaN: no balance root below the cap): the balance by
+    :func:`.balance.root_balance`, the rows it hands back (or all, ``fallback``) by
+    :func:`.rows.row_balance`."""
     rows = _row_values(case, arrs, model)
     if not uses_balance(mode):
         return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
@@ -173,14 +177,14 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     if not ok.all():
         if ok.any():
             out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()},
-                             balance)
+                             fallback)
         return out
-    if balance == "root":
+    if not fallback:
         base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
         temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
                                     th.resistance_K_W, features=_features(rows))
         if not ok.all():
-            p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()})
+            p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()}, True)
         return p
     temps, p = row_balance(model, rows)
     return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
@@ -204,13 +208,14 @@ def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: b
 
 def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
                       strict: bool = False, block_rows: int = BLOCK_ROWS,
-                      threads: int = 1, balance: str = "replay") -> np.ndarray:
+                      threads: int = 1) -> np.ndarray:
     """Cycle-mean loss [W] of the joint (regions and bearing) for each row of inputs.
 
     Row ``i`` equals ``operating_temperature(apply_inputs(case, row_i), mode)
     .mean_power_W`` (the ``total_mean_power_W`` of
-    :func:`~oilgap.model.evaluation.evaluate_case` under that mode) to rounding, the
-    balance modes to the balance's tolerance (module docstring; docs/benchmarks.md).
+    :func:`~oilgap.model.evaluation.evaluate_case` under that mode) to rounding (the
+    balance modes to 1e-12: both solve the balance to its root; module docstring,
+    docs/benchmarks.md).
 
     Parameters
     ----------
@@ -230,15 +235,6 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     threads : int
         Blocks evaluated at once by a pool of threads [-] (numpy's loops release the
         GIL; 1: one after another). The numbers do not depend on it.
-    balance : {"root", "replay"}
-        How ``bulk``/``full`` solve each row's balance: "replay" (default): each row
-        follows the scalar path's own iteration
-        (:func:`~oilgap.model.uncertain.rows.row_balance`, 10-20 losses a row; equal to
-        the scalar path to 1e-13); "root": to the exact root by
-        :func:`~oilgap.model.uncertain.balance.root_balance` (3.5-4 losses a row, the
-        rows it hands back replayed), which differs from the scalar path's stopping
-        point (``|g| < 1e-9 K``) by up to 4e-11 relative (docs/benchmarks.md).
-
     Returns
     -------
     ndarray
@@ -257,8 +253,6 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     Seed paper [1]_ (Eqs. 5, 10); Bergman et al. [2]_ (the balance); ISO 3448 [3]_.
     """
     mode = resolve_thermal_mode(case, None if mode is None else str(mode))
-    if balance not in ("root", "replay"):
-        raise InputError("balance", balance, "root or replay")
     arrs, shape = broadcast_inputs(inputs)
     check_input_ranges(case, arrs)
     n = int(np.prod(shape, dtype=np.int64))
@@ -273,7 +267,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
         part = {k: a[i:i + step] for k, a in flat.items()}
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             try:
-                out[i:i + step] = _block(case, mode, model, part, balance)
+                out[i:i + step] = _block(case, mode, model, part)
             except SolverError:
                 out[i:i + step] = _loop(case, part, mode, strict)
 

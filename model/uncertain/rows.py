@@ -343,7 +343,7 @@ def row_balance(model: RowModel, rows: RowValues) -> tuple[np.ndarray, np.ndarra
         seen[:] = [(t[j], p[j].copy()) for j in range(k)] + seen[:2]
         return p.reshape(-1)
 
-    return steady_temperature(power_at, base, th.resistance_K_W, n)
+    return steady_temperature(power_at, base, th.resistance_K_W, n, polish=True)
 
 
 __all__ = ["RowModel", "RowValues", "row_balance", "row_losses", "row_model", "row_total"]

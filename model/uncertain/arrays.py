@@ -46,7 +46,7 @@ from ..oil_properties import walther_coefficients
 from ..thermal import MAX_OIL_TEMP_C
 from ..thermal_modes import uses_balance
 from ..units import ZERO_CELSIUS_K
-from .balance import root_balance
+from .balance import fit_predictor, root_balance
 from .inputs import INPUTS, apply_inputs
 from .rows import RowModel, RowValues, row_balance, row_model, row_total
 
@@ -164,7 +164,7 @@ def _features(rows: RowValues) -> np.ndarray:
 
 
 def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray],
-           fallback: bool = False) -> np.ndarray:
+           fallback: bool = False, predictor=None) -> np.ndarray:
     """Loss [W] of one block of rows (NaN: no balance root below the cap): the balance by
     :func:`.balance.root_balance`, the rows it hands back (or all, ``fallback``) by
     :func:`.rows.row_balance`."""
@@ -177,17 +177,39 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     if not ok.all():
         if ok.any():
             out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()},
-                             fallback)
+                             fallback, predictor)
         return out
     if not fallback:
         base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
         temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
-                                    th.resistance_K_W, features=_features(rows))
+                                    th.resistance_K_W, features=_features(rows),
+                                    predictor=predictor)
         if not ok.all():
             p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()}, True)
         return p
     temps, p = row_balance(model, rows)
     return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
+
+
+PILOT_ROWS = 512
+"""Rows solved from their brackets before a large balance run (evenly spaced over all
+rows): the :class:`~oilgap.model.uncertain.balance.Predictor` of every block's roots."""
+
+
+def _predictor(case: DesignCase, mode: str, model: RowModel,
+               flat: Mapping[str, np.ndarray], n: int):
+    """The roots' predictor of a balance run of ``n`` rows (None below 16 pilot sizes:
+    each block fits its own from 64 rows)."""
+    if not uses_balance(mode) or n < 16 * PILOT_ROWS:
+        return None
+    pick = np.linspace(0, n - 1, PILOT_ROWS).astype(np.int64)
+    rows = _row_values(case, {k: a[pick] for k, a in flat.items()}, model)
+    th = case.thermal
+    base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
+    keep = np.flatnonzero(base < MAX_OIL_TEMP_C)
+    with np.errstate(all="ignore"):
+        return fit_predictor(lambda t, i: row_total(model, rows, t, i), base,
+                             th.resistance_K_W, _features(rows), keep)
 
 
 def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: bool
@@ -260,6 +282,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     if not flat:
         flat = {"nu40_factor": np.ones(n)}
     model = row_model(case, mode, "gamma" in flat, "film_strength" in flat)
+    predictor = _predictor(case, mode, model, flat, n)
     out = np.empty(n)
     step = max(1, int(block_rows))
 
@@ -267,7 +290,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
         part = {k: a[i:i + step] for k, a in flat.items()}
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             try:
-                out[i:i + step] = _block(case, mode, model, part)
+                out[i:i + step] = _block(case, mode, model, part, predictor=predictor)
             except SolverError:
                 out[i:i + step] = _loop(case, part, mode, strict)
 

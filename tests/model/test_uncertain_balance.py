@@ -137,3 +137,31 @@ def test_threads_do_not_change_the_numbers(cases):
     whole = joint_loss_arrays(case, x, "bulk")  # another pilot per block
     np.testing.assert_allclose(whole, one, rtol=1e-13, atol=0)
     assert math.isfinite(float(one.sum()))
+
+
+def test_a_large_run_starts_every_block_from_one_pilot_and_equals_the_scalar_path(
+        cases, monkeypatch):
+    # above 16 pilot sizes, joint_loss_arrays solves PILOT_ROWS rows from their brackets
+    # once and starts every block at the fitted predictor's root (here 40 pilot rows of
+    # 640, three inputs: a quadratic surface of 36 columns)
+    from oilgap.model.uncertain import arrays
+
+    monkeypatch.setattr(arrays, "PILOT_ROWS", 40)
+    case = cases["bearing"]
+    rng = np.random.default_rng(12)
+    n = 640
+    x = {"nu40_factor": rng.uniform(0.9, 1.1, n), "oil_temp_C": rng.uniform(0, 6, n),
+         "peak_speed_rpm": rng.uniform(2500, 3500, n)}
+    calls = []
+    real = arrays.fit_predictor
+    monkeypatch.setattr(arrays, "fit_predictor",
+                        lambda *a, **k: calls.append(1) or real(*a, **k))
+    got = joint_loss_arrays(case, x, "bulk", block_rows=128)
+    assert calls == [1]
+    pick = np.arange(0, n, 16)
+    want = np.array([operating_temperature(apply_inputs(
+        case, {k: float(v[i]) for k, v in x.items()}), "bulk").mean_power_W for i in pick])
+    np.testing.assert_allclose(got[pick], want, rtol=1e-12, atol=0)
+    monkeypatch.setattr(arrays, "PILOT_ROWS", 10_000)  # no pilot: each block its own
+    np.testing.assert_allclose(joint_loss_arrays(case, x, "bulk", block_rows=128), got,
+                               rtol=1e-13, atol=0)

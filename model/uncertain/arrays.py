@@ -164,10 +164,12 @@ def _features(rows: RowValues) -> np.ndarray:
 
 
 def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray],
-           fallback: bool = False, predictor=None) -> np.ndarray:
+           fallback: bool = False, predictor=None, back: np.ndarray | None = None
+           ) -> np.ndarray:
     """Loss [W] of one block of rows (NaN: no balance root below the cap): the balance by
     :func:`.balance.root_balance`, the rows it hands back (or all, ``fallback``) by
-    :func:`.rows.row_balance`."""
+    :func:`.rows.row_balance`; with ``back`` (bool, one per row) the rows handed back
+    are marked there (their loss NaN) for the caller to solve together."""
     rows = _row_values(case, arrs, model)
     if not uses_balance(mode):
         return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
@@ -176,15 +178,20 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     out = np.full(rows.n, np.nan)
     if not ok.all():
         if ok.any():
+            sub = None if back is None else np.zeros(int(ok.sum()), bool)
             out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()},
-                             fallback, predictor)
+                             fallback, predictor, sub)
+            if back is not None:
+                back[np.flatnonzero(ok)[sub]] = True
         return out
     if not fallback:
         base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
         temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
                                     th.resistance_K_W, features=_features(rows),
                                     predictor=predictor)
-        if not ok.all():
+        if back is not None:
+            back |= ~ok
+        elif not ok.all():
             p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()}, True)
         return p
     temps, p = row_balance(model, rows)
@@ -284,15 +291,20 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     model = row_model(case, mode, "gamma" in flat, "film_strength" in flat)
     predictor = _predictor(case, mode, model, flat, n)
     out = np.empty(n)
+    back = np.zeros(n, bool)  # rows root_balance handed back: solved together below
     step = max(1, int(block_rows))
 
-    def run(i: int) -> None:
-        part = {k: a[i:i + step] for k, a in flat.items()}
+    def run(i: int, rows=None) -> None:
+        sel = slice(i, i + step) if rows is None else rows[i:i + step]
+        part = {k: a[sel] for k, a in flat.items()}
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             try:
-                out[i:i + step] = _block(case, mode, model, part, predictor=predictor)
+                out[sel] = (_block(case, mode, model, part, predictor=predictor,
+                                   back=back[sel]) if rows is None
+                            else _block(case, mode, model, part, fallback=True))
             except SolverError:
-                out[i:i + step] = _loop(case, part, mode, strict)
+                out[sel] = _loop(case, part, mode, strict)
+                back[sel] = False
 
     starts = range(0, n, step)
     if threads > 1 and len(starts) > 1:  # numpy's loops release the GIL
@@ -301,6 +313,9 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     else:
         for i in starts:
             run(i)
+    handed = np.flatnonzero(back)
+    for i in range(0, handed.size, step):
+        run(i, handed)
     out[~np.isfinite(out)] = np.nan
     if strict and np.isnan(out).any():
         j = int(np.flatnonzero(np.isnan(out))[0])

@@ -1,11 +1,11 @@
 """The heat balance of stacked rows solved to the exact root: a fast bracketed iteration.
 
 :func:`root_balance` solves ``g(T) = T - T_base - R P(T) = 0`` for every row to full
-double precision in T with 3.5-4 evaluations of the loss per row (the seed joint, alone
-and with a 6809 bearing), where :func:`~oilgap.model.thermal.steady_temperature` (the
-scalar path's solver, replayed row by row by
-:func:`~oilgap.model.uncertain.rows.row_balance`) stops at ``|g| < 1e-9 K`` after 10-20.
-Each step fits the exponential model ``P = P_k exp(-beta (T - T_k))`` through the last
+double precision in T with 3.1 evaluations of the loss per row on a large run (the seed
+joint, alone and with a 6809 bearing; 3.5-4 with a pilot per block), where the scalar
+path's solver, :func:`~oilgap.model.thermal.steady_temperature`, takes 10-20 to ``|g| <
+1e-9 K`` and its polish (:func:`~oilgap.model.thermal.polish_roots`) 2-3 more to the
+root: the two agree to rounding (1e-13 relative in the loss). Each step fits the exponential model ``P = P_k exp(-beta (T - T_k))`` through the last
 two points (beta from their secant of ln P) and jumps to its root with Lambert's W, ``T =
 T_b + W(beta R P_k exp(beta (T_k - T_b)))/beta`` [1]; a step outside the bracket ``[lo,
 hi]`` (g < 0 at lo, g > 0 at hi) is replaced by the Illinois false position [2]. A row
@@ -14,11 +14,13 @@ R P)`` (about 5e-14 K), and |g| at its last point under 16 times that; or when t
 is so short that the model's loss there is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10
 K^2``, d the spacing of the model's two points), taken without another evaluation.
 
-The start: a pilot of 64 rows (evenly spaced) is solved from its bracket ``[T_b, T_b + R
-P(T_b)]``; with the rows' values (``features``) the others start at the root predicted by
-a least-squares fit of ``ln(T - T_b)`` on those values (and their logs) over the pilot,
-and their second point is one model step from there with the local beta at the root
-fitted the same way. Without features, every row's first point is ``T_b`` and its second
+The start: a pilot of rows is solved from its bracket ``[T_b, T_b + R P(T_b)]``; with the
+rows' values (``features``) the others start at the root predicted by a least-squares fit
+of ``ln(T - T_b)`` on those values (and their logs) over the pilot, and their second point
+is one model step from there with the local beta at the root fitted the same way. A large
+run fits one :class:`Predictor` (a quadratic surface) on 512 rows once
+(:func:`fit_predictor`) and passes it to every block; otherwise each call's own 64 rows
+fit a linear one. Without features, every row's first point is ``T_b`` and its second
 the model root with the pilot's median beta. The start only decides how fast a row
 converges, not where.
 
@@ -28,7 +30,7 @@ at the cap :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`, a non-finite or non-pos
 loss, a bracket closed without g reaching 0 (the root on a downward step of the piecewise
 Eq. 6, where a speed node crosses a regime boundary: the scalar solver returns the step
 from its side), or no convergence in :data:`MAX_EVALS` evaluations. The caller solves
-those rows by the scalar path's iteration. Not reproduced: the scalar solver's scan for a
+those rows by the scalar path's solver (about 6 rows in 10,000 with the bearing). Not reproduced: the scalar solver's scan for a
 lower root below T_b's neighbourhood (rows started near their root never evaluate the
 loss at T_b): where the loss rises only well below the root, this returns the upper root
 (docs/benchmarks.md; the seed's loss falls everywhere from -2 to 150 degC); and where the

@@ -19,9 +19,10 @@ the regions' geometry), evaluated as (rows x speed nodes) arrays by the model's 
   ``s b mu U^2/k`` is linear in b);
 - the bearing's terms (:func:`~oilgap.model.bearing.bearing_moment_terms`), SKF's drag
   terms times the row's drag factor;
-- under ``bulk``/``full`` the balance ``T = T_sea + R (P(T) + Q)`` of all rows at once by the
-  model's one solver, :func:`~oilgap.model.thermal.steady_temperature` (each row follows the
-  iteration the scalar path follows; a row the solver holds is not evaluated again).
+- under ``bulk``/``full`` the balance ``T = T_sea + R (P(T) + Q)``: :func:`row_balance` by
+  the model's one solver, :func:`~oilgap.model.thermal.steady_temperature`, polished to
+  the root as the scalar path is (the grid engine's rows; the uncertain inputs' rows
+  :func:`~oilgap.model.uncertain.balance.root_balance` hands back).
 
 References
 ----------
@@ -297,8 +298,10 @@ def row_balance(model: RowModel, rows: RowValues) -> tuple[np.ndarray, np.ndarra
     """Bulk temperature and total loss of every row: ``T = T_sea + R (P(T) + Q)``.
 
     The model's one solver, :func:`~oilgap.model.thermal.steady_temperature`, over all rows
-    at once (base ``T_sea + R Q`` per row, the case's R and Q); the solver's ``power_at``
-    evaluates only the rows whose temperature moved (it holds a converged row's).
+    at once (base ``T_sea + R Q`` per row, the case's R and Q), polished to the root
+    (:func:`~oilgap.model.thermal.polish_roots`, as the scalar path); the solver's
+    ``power_at`` evaluates only the rows whose temperature moved (it holds a converged
+    row's).
 
     Parameters
     ----------

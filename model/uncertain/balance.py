@@ -4,15 +4,16 @@
 double precision in T with 3.1 evaluations of the loss per row on a large run (the seed
 joint, alone and with a 6809 bearing; 3.5-4 with a pilot per block), where the scalar
 path's solver, :func:`~oilgap.model.thermal.steady_temperature`, takes 10-20 to ``|g| <
-1e-9 K`` and its polish (:func:`~oilgap.model.thermal.polish_roots`) 2-3 more to the
-root: the two agree to rounding (1e-13 relative in the loss). Each step fits the exponential model ``P = P_k exp(-beta (T - T_k))`` through the last
-two points (beta from their secant of ln P) and jumps to its root with Lambert's W, ``T =
-T_b + W(beta R P_k exp(beta (T_k - T_b)))/beta`` [1]; a step outside the bracket ``[lo,
-hi]`` (g < 0 at lo, g > 0 at hi) is replaced by the Illinois false position [2]. A row
-stops when its next step is under eight rounding units of g's terms, ``8 eps (|T| + T_b +
-R P)`` (about 5e-14 K), and |g| at its last point under 16 times that; or when the step
-is so short that the model's loss there is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10
-K^2``, d the spacing of the model's two points), taken without another evaluation.
+1e-9 K`` and its polish (:func:`~oilgap.model.thermal.polish_roots`) 2-3 more to the root:
+the two agree to rounding (1e-13 relative in the loss). Each step fits the exponential
+model ``P = P_k exp(-beta (T - T_k))`` through the last two points (beta from their secant
+of ln P) and jumps to its root with Lambert's W, ``T = T_b + W(beta R P_k exp(beta (T_k -
+T_b)))/beta`` [1]; a step outside the bracket ``[lo, hi]`` (g < 0 at lo, g > 0 at hi) is
+replaced by the Illinois false position [2]. A row stops when its next step is under eight
+rounding units of g's terms, ``8 eps (|T| + T_b + R P)`` (about 5e-14 K), and |g| at its
+last point under 16 times that; or when the step is so short that the model's loss there
+is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10 K^2``, d the spacing of the model's two
+points), taken without another evaluation.
 
 The start: a pilot of rows is solved from its bracket ``[T_b, T_b + R P(T_b)]``; with the
 rows' values (``features``) the others start at the root predicted by a least-squares fit
@@ -30,13 +31,14 @@ at the cap :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`, a non-finite or non-pos
 loss, a bracket closed without g reaching 0 (the root on a downward step of the piecewise
 Eq. 6, where a speed node crosses a regime boundary: the scalar solver returns the step
 from its side), or no convergence in :data:`MAX_EVALS` evaluations. The caller solves
-those rows by the scalar path's solver (about 6 rows in 10,000 with the bearing). Not reproduced: the scalar solver's scan for a
-lower root below T_b's neighbourhood (rows started near their root never evaluate the
-loss at T_b): where the loss rises only well below the root, this returns the upper root
-(docs/benchmarks.md; the seed's loss falls everywhere from -2 to 150 degC); and where the
-scalar solver's bracket collapses on a downward step of Eq. 6 (its answer: the step)
-while a genuine root lies just above it, this returns that root (5 rows in 200,000 of
-the benchmark's bearing rows, 4e-7 to 5e-6 relative apart).
+those rows by the scalar path's solver (about 6 rows in 10,000 with the bearing). Not
+reproduced: the scalar solver's scan for a lower root below T_b's neighbourhood (rows
+started near their root never evaluate the loss at T_b): where the loss rises only well
+below the root, this returns the upper root (docs/benchmarks.md; the seed's loss falls
+everywhere from -2 to 150 degC); and where the scalar solver's bracket collapses on a
+downward step of Eq. 6 (its answer: the step) while a genuine root lies just above it,
+this returns that root (5 rows in 200,000 of the benchmark's bearing rows, 4e-7 to 5e-6
+relative apart).
 
 References
 ----------

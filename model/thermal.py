@@ -178,6 +178,11 @@ piecewise) hidden inside it can move the root by no more than this."""
 _POLISH_STEPS = 6
 """Largest number of chord steps of :func:`polish_roots` [-]."""
 
+_POLISH_SLOPE_K = 1e-7
+"""Forward-difference step of the polish's slope [K]: short enough not to straddle a
+step of Eq. 6 that lies within _SLOPE_STEP_K of the root (a slope error of about 3e-7
+from the loss's rounding)."""
+
 _ROUNDING_ULPS = 64.0
 """A step under this many rounding units of g's terms ends the polish [-]: the loss's
 own rounding (a sum over speed nodes and regions) moves g by up to about 30 units near
@@ -190,13 +195,15 @@ def polish_roots(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C, resi
     """Step converged roots of ``g(T) = T - T_base - R P(T)`` to the root itself [1].
 
     A case with ``|g| < 10 tol_K`` below the cap takes chord steps ``s = -g / g'`` with
-    ``g'`` the forward-difference slope at its first point (the error shrinks by ``|1 -
-    g'(root)/g'|``, about 1e-4, a step), each within ``1e3 tol_K`` of its start, until a
-    step is under 64 rounding units of g's terms, ``64 eps (|T| + |T_base| + R P)``
-    (about 4e-13 K; the loss's rounding moves g by up to half that);
-    it returns the last point evaluated. A case whose step would leave that window (a
-    downward step of the piecewise loss, Eq. 6: no root there, the step is the answer)
-    or does not settle in :data:`_POLISH_STEPS` keeps its converged point.
+    ``g'`` the forward-difference slope at its first point (step :data:`_POLISH_SLOPE_K`;
+    the error shrinks by ``|1 - g'(root)/g'|``, about 1e-6, a step), within ``2
+    _FAST_STEP_K`` of its start (the solver's last step may have been taken without an
+    evaluation, its loss extrapolated across a step of Eq. 6), until a step is under 64
+    rounding units of g's terms, ``64 eps (|T| + |T_base| + R P)`` (about 4e-13 K; the
+    loss's rounding moves g by up to half that); it returns the last point evaluated. A
+    case whose step would leave that window, or that does not settle in
+    :data:`_POLISH_STEPS` (a downward step of the piecewise loss: no root there, the step
+    is the answer), keeps its converged point.
 
     Parameters
     ----------
@@ -233,9 +240,9 @@ def polish_roots(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C, resi
     if not live.any():
         return t, p
     start = t.copy()
-    pp = power_at(np.concatenate([t, t + _SLOPE_STEP_K]))
+    pp = power_at(np.concatenate([t, t + _POLISH_SLOPE_K]))
     p0, p1 = pp[:n], pp[n:]
-    slope = 1.0 - rth * (_total(p1) - _total(p0)) / _SLOPE_STEP_K
+    slope = 1.0 - rth * (_total(p1) - _total(p0)) / _POLISH_SLOPE_K
     live &= slope > 0
     cur_t, cur_p = t.copy(), p0
     for _ in range(_POLISH_STEPS):
@@ -246,7 +253,7 @@ def polish_roots(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C, resi
         done = live & (np.abs(step) <= tol)
         t = np.where(done, cur_t, t)
         p = np.where(done[:, None] if p.ndim == 2 else done, cur_p, p)
-        live &= ~done & (np.abs(cur_t + step - start) <= 1e3 * tol_K)
+        live &= ~done & (np.abs(cur_t + step - start) <= 2.0 * _FAST_STEP_K)
         if not live.any():
             break
         cur_t = np.where(live, cur_t + step, cur_t)

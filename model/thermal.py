@@ -99,10 +99,7 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
     Where the residual was seen to fall (P rose) on the way, g is scanned at 15
     temperatures between ``T_base`` and the root; a lower sign change is solved in
     turn, so the root returned is the lowest found, where oil warming from ``T_base``
-    stops. A case whose root lies above ``max_temp_C`` is returned at that cap. With
-    ``polish``, a case converged by ``|g| < tol_K`` is then stepped to the root itself
-    (:func:`polish_roots`: chord steps until the step is rounding), so that any other
-    solver of the same balance that reaches the root agrees to rounding.
+    stops. A case whose root lies above ``max_temp_C`` is returned at that cap.
 
     Parameters
     ----------
@@ -122,8 +119,7 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
     max_temp_C : float
         Cap of the temperature [degC] (:data:`MAX_OIL_TEMP_C`).
     polish : bool
-        Step each case converged by ``|g| < tol_K`` to the exact root
-        (:func:`polish_roots`).
+        Then step each case to the root itself (:func:`polish_roots`).
 
     Returns
     -------
@@ -158,9 +154,8 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
             lower = _lower_sign_change(power_at, tb, rth, t_out, st.suspect & ~st.capped,
                                        tol_K)
             if lower is None:
-                if polish:
-                    return polish_roots(power_at, tb, rth, t_out, p_out, max_temp_C, tol_K)
-                return t_out, p_out
+                return (polish_roots(power_at, tb, rth, t_out, p_out, max_temp_C, tol_K)
+                        if polish else (t_out, p_out))
             st.rebracket(*lower)
         st.extend_unverified(power_at, tol_K)
     raise SolverError(f"steady oil temperature did not converge to {tol_K:g} K "

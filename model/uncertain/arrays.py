@@ -198,6 +198,39 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
 
 
+def _run_blocks(case: DesignCase, mode: str, model: RowModel, flat: Mapping[str, np.ndarray],
+                n: int, step: int, threads: int, strict: bool) -> np.ndarray:
+    """Loss [W] of all rows, block by block (threads: blocks at once); the rows the
+    balance hands back solved together after the blocks (``step`` at a time)."""
+    predictor = _predictor(case, mode, model, flat, n)
+    out = np.empty(n)
+    back = np.zeros(n, bool)  # rows root_balance handed back: solved together below
+
+    def run(i: int, rows=None) -> None:
+        sel = slice(i, i + step) if rows is None else rows[i:i + step]
+        part = {k: a[sel] for k, a in flat.items()}
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            try:
+                out[sel] = (_block(case, mode, model, part, predictor=predictor,
+                                   back=back[sel]) if rows is None
+                            else _block(case, mode, model, part, fallback=True))
+            except SolverError:
+                out[sel] = _loop(case, part, mode, strict)
+                back[sel] = False
+
+    starts = range(0, n, step)
+    if threads > 1 and len(starts) > 1:  # numpy's loops release the GIL
+        with ThreadPoolExecutor(int(threads)) as pool:
+            list(pool.map(run, starts))
+    else:
+        for i in starts:
+            run(i)
+    handed = np.flatnonzero(back)
+    for i in range(0, handed.size, step):
+        run(i, handed)
+    return out
+
+
 PILOT_ROWS = 512
 """Rows solved from their brackets before a large balance run (evenly spaced over all
 rows): the :class:`~oilgap.model.uncertain.balance.Predictor` of every block's roots."""
@@ -289,33 +322,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     if not flat:
         flat = {"nu40_factor": np.ones(n)}
     model = row_model(case, mode, "gamma" in flat, "film_strength" in flat)
-    predictor = _predictor(case, mode, model, flat, n)
-    out = np.empty(n)
-    back = np.zeros(n, bool)  # rows root_balance handed back: solved together below
-    step = max(1, int(block_rows))
-
-    def run(i: int, rows=None) -> None:
-        sel = slice(i, i + step) if rows is None else rows[i:i + step]
-        part = {k: a[sel] for k, a in flat.items()}
-        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-            try:
-                out[sel] = (_block(case, mode, model, part, predictor=predictor,
-                                   back=back[sel]) if rows is None
-                            else _block(case, mode, model, part, fallback=True))
-            except SolverError:
-                out[sel] = _loop(case, part, mode, strict)
-                back[sel] = False
-
-    starts = range(0, n, step)
-    if threads > 1 and len(starts) > 1:  # numpy's loops release the GIL
-        with ThreadPoolExecutor(int(threads)) as pool:
-            list(pool.map(run, starts))
-    else:
-        for i in starts:
-            run(i)
-    handed = np.flatnonzero(back)
-    for i in range(0, handed.size, step):
-        run(i, handed)
+    out = _run_blocks(case, mode, model, flat, n, max(1, int(block_rows)), threads, strict)
     out[~np.isfinite(out)] = np.nan
     if strict and np.isnan(out).any():
         j = int(np.flatnonzero(np.isnan(out))[0])

@@ -68,6 +68,10 @@ def walther_rebuilt(fluid, nu40_factor: float = 1.0, nu100_factor: float = 1.0):
             raise InputError(name, f, "a finite number > 0", "uncertainty")
     if nu40_factor == 1.0 and nu100_factor == 1.0:
         return fluid
+    if not fluid.nu100_cSt * nu100_factor < fluid.nu40_cSt * nu40_factor:
+        raise InputError("nu100_factor", nu100_factor, f"a factor that keeps nu100 below nu40 "
+                         f"(below {fluid.nu40_cSt * nu40_factor / fluid.nu100_cSt:.4g} with "
+                         f"nu40_factor {nu40_factor:g}, oil {fluid.name!r})", "uncertainty")
     return replace(fluid, nu40_cSt=fluid.nu40_cSt * nu40_factor,
                    nu100_cSt=fluid.nu100_cSt * nu100_factor)
 

@@ -65,6 +65,8 @@ def test_a_fluid_without_a_walther_line_refuses_nu40_factor_and_defaults_to_the_
     assert default_uncertainty(case).names[0] == "nu_factor_all_temperatures"
     with pytest.raises(InputError, match="nu100_factor"):
         walther_rebuilt(get_oil("VG22"), 1.0, -0.5)
+    with pytest.raises(InputError, match=r"nu100_factor = 6.*below 4.889"):
+        apply_inputs(seed_case(), {"nu100_factor": 6.0})  # 27 cSt at 100 degC > 22 at 40
 
 
 def test_vector_rows_follow_the_rebuilt_line():

@@ -68,12 +68,14 @@ class Uncertainty(StudyView):
         return inputs_table(self.raw)
 
     def to_dict(self) -> dict:
-        """Thermal mode, the inputs' laws, the loss's statistics [W], the per-input
-        table, settings, the files written and the defaults (``--json``)."""
+        """Thermal mode, the inputs' laws, the nu40/nu100 bands carried to the oil's
+        temperature (``viscosity_carried``, text), the loss's statistics [W], the
+        per-input table, settings, the files written and the defaults (``--json``)."""
         r = self.raw
         return {"case": self.case.name, **gamma_fields(self.case),
                 "thermal_mode": r.thermal_mode, "thermal_default": r.thermal_default,
-                "uncertainty": r.spec.to_dict(), "settings": r.settings.to_dict(),
+                "uncertainty": r.spec.to_dict(), "viscosity_carried": list(r.carried),
+                "settings": r.settings.to_dict(),
                 "statistics_W": dict(zip(r.statistics["statistic"], r.statistics["loss_W"],
                                          strict=True)),
                 "failed": r.failed, "inputs": records(self.to_frame()),
@@ -116,7 +118,7 @@ def uncertainty(case: DesignCase | str | Path | None = None, *,
     ----------
     case : DesignCase, path or None
         The joint (None: the seed joint); its ``[uncertainty]`` table, else the defaults
-        (ISO 3448's +-10 % on nu40, gamma 0.566 +- 0.041 from the seed fit).
+        (ISO 3448's +-10 % on nu40, nu100 +-5 %, gamma 0.566 +- 0.041 from the seed fit).
     model : path, optional
         A calibrated ``loop.json``: its fitted gamma, friction scale and film strength
         with their intervals and correlation replace the case's laws

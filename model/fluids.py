@@ -125,10 +125,11 @@ class Fluid(Protocol):
 class ScaledFluid:
     """A fluid whose viscosity is a constant factor times another's, at every state.
 
-    The grade tolerance of ISO 3448 [1]_ (a grade's nu at 40 degC within +-10 % of its
-    nominal value) taken as one factor on the viscosity at every temperature and
-    pressure: the Walther line shifted in ``ln nu``, its slope ``b = -d ln(mu)/dT`` and
-    the density unchanged. An uncertain input of :mod:`oilgap.model.uncertain`.
+    The uncertain input ``nu_factor_all_temperatures`` of :mod:`oilgap.model.uncertain`:
+    one factor on the viscosity at every temperature and pressure, the Walther line
+    shifted in ``ln nu``, its slope ``b = -d ln(mu)/dT`` and the density unchanged. (ISO
+    3448's grade tolerance [1]_ bounds nu at 40 degC alone: ``nu40_factor``,
+    :mod:`oilgap.model.uncertain.grade`.)
 
     Attributes
     ----------
@@ -149,7 +150,8 @@ class ScaledFluid:
     def __post_init__(self):
         if isinstance(self.factor, bool) or not isinstance(self.factor, (int, float)) \
                 or not math.isfinite(self.factor) or self.factor <= 0:
-            raise InputError("nu40_factor", self.factor, "a finite number > 0", "oil")
+            raise InputError("nu_factor_all_temperatures", self.factor, "a finite number > 0",
+                             "oil")
 
     @property
     def name(self) -> str:

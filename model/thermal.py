@@ -83,8 +83,8 @@ def lumped_temperature_rate(temp_C, heat_W, ambient_C, resistance_K_W, heat_capa
 
 def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C,
                        resistance_K_W: float, n: int, tol_K: float = 1e-9,
-                       max_iter: int = 60, max_temp_C: float = MAX_OIL_TEMP_C
-                       ) -> tuple[np.ndarray, np.ndarray]:
+                       max_iter: int = 60, max_temp_C: float = MAX_OIL_TEMP_C,
+                       polish: bool = False) -> tuple[np.ndarray, np.ndarray]:
     """Solve the steady balance ``T = T_base + R_th P(T)`` of ``n`` cases at once [1].
 
     ``g(T) = T - T_base - R_th P(T)`` rises strictly where P falls as the oil warms,
@@ -118,6 +118,8 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
         Largest number of Newton iterations.
     max_temp_C : float
         Cap of the temperature [degC] (:data:`MAX_OIL_TEMP_C`).
+    polish : bool
+        Then step each case to the root itself (:func:`polish_roots`).
 
     Returns
     -------
@@ -152,7 +154,8 @@ def steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C
             lower = _lower_sign_change(power_at, tb, rth, t_out, st.suspect & ~st.capped,
                                        tol_K)
             if lower is None:
-                return t_out, p_out
+                return (polish_roots(power_at, tb, rth, t_out, p_out, max_temp_C, tol_K)
+                        if polish else (t_out, p_out))
             st.rebracket(*lower)
         st.extend_unverified(power_at, tol_K)
     raise SolverError(f"steady oil temperature did not converge to {tol_K:g} K "
@@ -165,6 +168,92 @@ _SLOPE_STEP_K = 1e-4
 _FAST_STEP_K = 1e-4
 """Largest last step taken without another evaluation [K]: a step of the loss (Eq. 6 is
 piecewise) hidden inside it can move the root by no more than this."""
+
+
+_POLISH_STEPS = 6
+"""Largest number of chord steps of :func:`polish_roots` [-]."""
+
+_POLISH_SLOPE_K = 1e-7
+"""Forward-difference step of the polish's slope [K]: short enough not to straddle a
+step of Eq. 6 that lies within _SLOPE_STEP_K of the root (a slope error of about 3e-7
+from the loss's rounding)."""
+
+_ROUNDING_ULPS = 64.0
+"""A step under this many rounding units of g's terms ends the polish [-]: the loss's
+own rounding (a sum over speed nodes and regions) moves g by up to about 30 units near
+the root (measured on the seed joint), a K-independent floor of 3e-13 K there."""
+
+
+def polish_roots(power_at: Callable[[np.ndarray], np.ndarray], base_temp_C, resistance_K_W,
+                 temps_C, power_W, max_temp_C: float = MAX_OIL_TEMP_C, tol_K: float = 1e-9
+                 ) -> tuple[np.ndarray, np.ndarray]:
+    """Step converged roots of ``g(T) = T - T_base - R P(T)`` to the root itself [1].
+
+    A case with ``|g| < 10 tol_K`` below the cap takes chord steps ``s = -g / g'`` with
+    ``g'`` the forward-difference slope at its first point (step :data:`_POLISH_SLOPE_K`;
+    the error shrinks by ``|1 - g'(root)/g'|``, about 1e-6, a step), within ``2
+    _FAST_STEP_K`` of its start (the solver's last step may have been taken without an
+    evaluation, its loss extrapolated across a step of Eq. 6), until a step is under 64
+    rounding units of g's terms, ``64 eps (|T| + |T_base| + R P)`` (about 4e-13 K; the
+    loss's rounding moves g by up to half that); it returns the last point evaluated. A
+    case whose step would leave that window, or that does not settle in
+    :data:`_POLISH_STEPS` (a downward step of the piecewise loss: no root there, the step
+    is the answer), keeps its converged point.
+
+    Parameters
+    ----------
+    power_at : callable
+        As for :func:`steady_temperature` (``k n`` temperatures, case index fastest).
+    base_temp_C : ndarray
+        ``T_base`` [degC] of each case.
+    resistance_K_W : float
+        ``R`` [K/W].
+    temps_C, power_W : ndarray
+        The converged temperatures [degC] and their losses [W] (columns allowed).
+    max_temp_C : float
+        The cap [degC]: capped cases are left.
+    tol_K : float
+        The tolerance they converged to [K].
+
+    Returns
+    -------
+    temps_C, power_W : ndarray
+        The roots [degC] and the losses evaluated there [W].
+
+    References
+    ----------
+    Bergman et al. [1], sec. 3.1 (thermal resistance).
+    """
+    n = temps_C.size
+    t, p = temps_C.copy(), power_W.copy()
+    rth = float(resistance_K_W)
+
+    def g_of(tt, pp):
+        return tt - base_temp_C - rth * _total(pp)
+
+    live = (t < max_temp_C) & np.isfinite(t) & (np.abs(g_of(t, p)) < 10.0 * tol_K)
+    if not live.any():
+        return t, p
+    start = t.copy()
+    pp = power_at(np.concatenate([t, t + _POLISH_SLOPE_K]))
+    p0, p1 = pp[:n], pp[n:]
+    slope = 1.0 - rth * (_total(p1) - _total(p0)) / _POLISH_SLOPE_K
+    live &= slope > 0
+    cur_t, cur_p = t.copy(), p0
+    for _ in range(_POLISH_STEPS):
+        g = g_of(cur_t, cur_p)
+        step = -g / np.where(live, slope, 1.0)
+        tol = _ROUNDING_ULPS * np.finfo(float).eps * (np.abs(cur_t) + np.abs(base_temp_C)
+                                                       + rth * np.abs(_total(cur_p)))
+        done = live & (np.abs(step) <= tol)
+        t = np.where(done, cur_t, t)
+        p = np.where(done[:, None] if p.ndim == 2 else done, cur_p, p)
+        live &= ~done & (np.abs(cur_t + step - start) <= 2.0 * _FAST_STEP_K)
+        if not live.any():
+            break
+        cur_t = np.where(live, cur_t + step, cur_t)
+        cur_p = power_at(cur_t)
+    return t, p
 
 
 def _total(p):
@@ -312,7 +401,9 @@ def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec:
     """Steady bulk oil temperature of a joint: ``T = T_sea + R (P(T) + Q)`` [1].
 
     The balance is :func:`steady_temperature` with the base temperature
-    ``T_base = T_sea + R Q`` (Q, the other heat, does not depend on T). The
+    ``T_base = T_sea + R Q`` (Q, the other heat, does not depend on T), polished to the
+    root (:func:`polish_roots`: the vectorised rows of
+    :mod:`oilgap.model.uncertain.balance` reach the same root, to rounding). The
     residual ``g(T) = T - T_base - R P(T)`` rises strictly because the viscous
     loss P falls as the oil warms (dP/dT < 0, so dg/dT >= 1), and
     ``g(T_base) = -R P(T_base) <= 0 <= g(T_base + R P(T_base))``: the fixed point
@@ -355,7 +446,7 @@ def joint_steady_temperature(power_at: Callable[[np.ndarray], np.ndarray], spec:
     base = spec.sea_temp_C + spec.resistance_K_W * spec.other_heat_W
     if n == 1:
         require_balanced(np.array([base]), spec, trusted_range_C)
-    temps, powers = steady_temperature(power_at, base, spec.resistance_K_W, n)
+    temps, powers = steady_temperature(power_at, base, spec.resistance_K_W, n, polish=True)
     require_balanced(temps, spec, trusted_range_C, powers)
     return temps, powers
 

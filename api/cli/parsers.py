@@ -366,7 +366,8 @@ def _add_uncertainty(ss) -> None:
                       "tornado and Sobol' indices",
                       description="Quasi-Monte Carlo (scrambled Sobol' points) of the joint's "
                       "mean loss over the case's [uncertainty] table (default: ISO 3448's "
-                      "+-10 % on nu40 and gamma 0.566 +- 0.041 from the seed fit): its "
+                      "+-10 % on nu40, nu100 +-5 % and gamma 0.566 +- 0.041 from the seed fit): "
+                      "its "
                       "percentiles, a histogram, a tornado and SALib's Sobol' indices.")
     s.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: seed)")
     s.add_argument("--samples", type=positive_int, default=DEFAULT_UNCERTAINTY_SAMPLES,

@@ -289,7 +289,8 @@ def uncertainty_defaults(case: DesignCase) -> tuple[Default, ...]:
     Returns
     -------
     tuple of Default
-        ``uncertainty.nu40_factor = uniform(low = 0.9, high = 1.1)`` (ISO 3448) and
+        ``uncertainty.nu40_factor = uniform(low = 0.9, high = 1.1)`` (ISO 3448),
+        ``uncertainty.nu100_factor = uniform(low = 0.95, high = 1.05)`` (the VI) and
         ``uncertainty.gamma = normal(mean = 0.566, sd = 0.041)`` [-] (the seed fit), each
         with its source; empty when the case declares its own.
     """

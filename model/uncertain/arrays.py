@@ -8,15 +8,18 @@ cycle-mean loss and the rolling bearing's, under any thermal mode.
 
 It is the stacked evaluation of :mod:`.rows` (the composition of
 :func:`~oilgap.model.joint_loss.joint_mean_power` with every input an array over rows: the
-oil's state, the speed nodes times ``peak / peak0``, C_m at gamma 0 times
-``friction_scale T^gamma``, the film strength on b, SKF's drag terms times
-``bearing_drag_scale``, and under ``bulk``/``full`` the balance of all rows by the model's
-one solver, each row following the scalar path's iteration). Measured against the scalar
-path: 1e-15 relative without a balance, 1e-13 with it (tests/model/test_uncertain_arrays.py;
-10^4 cases in docs/benchmarks.md). ``balance="root"`` solves the balance instead to its
-exact root (:func:`~oilgap.model.uncertain.balance.root_balance`, 3.5-4 losses a row
-instead of 10-20): equal to an independent root finder's loss to 1e-13, and to the scalar
-path to its solver's tolerance (``|g| < 1e-9 K``: up to 4e-11 relative on the seed).
+oil's state, on each row's own Walther line where ``nu40_factor``/``nu100_factor`` vary,
+the speed nodes times ``peak / peak0``, C_m at gamma 0 times ``friction_scale T^gamma``,
+the film strength on b, SKF's drag terms times ``bearing_drag_scale``). Under
+``bulk``/``full`` the balance of all rows is solved at once to its exact root
+(:func:`~oilgap.model.uncertain.balance.root_balance`, about 3.5 losses a row); the rows it
+hands back (a loss that rises, a root on a downward step of Eq. 6, no root below the cap)
+are solved by the model's one solver over those rows
+(:func:`~oilgap.model.uncertain.rows.row_balance`, the scalar path's
+:func:`~oilgap.model.thermal.steady_temperature`, polished to the root as the scalar path
+is). Measured against the scalar path: 1e-15 relative without a balance, 1e-13 with it
+(tests/model/test_uncertain_arrays.py and test_uncertain_balance.py; 10^4 rows in
+docs/benchmarks.md).
 
 Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
 block stay in cache).
@@ -39,9 +42,11 @@ import numpy as np
 
 from ..errors import InputError, SolverError
 from ..joint_loss import operating_temperature, resolve_thermal_mode
+from ..oil_properties import walther_coefficients
 from ..thermal import MAX_OIL_TEMP_C
 from ..thermal_modes import uses_balance
-from .balance import root_balance
+from ..units import ZERO_CELSIUS_K
+from .balance import fit_predictor, root_balance
 from .inputs import INPUTS, apply_inputs
 from .rows import RowModel, RowValues, row_balance, row_model, row_total
 
@@ -115,12 +120,14 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
     op, th = case.operating, case.thermal
     n = len(next(iter(arrs.values())))
     t_oil = arrs.get("oil_temp_C")
-    f = arrs.get("nu40_factor")
+    f = arrs.get("nu_factor_all_temperatures")
     peak = arrs.get("peak_speed_rpm")
+    a, b = _walther(model.fluid, arrs)
     return RowValues(
         n=n, oil_temp_C=np.full(n, float(op.oil_temp_C)) if t_oil is None else t_oil,
         depth_m=float(op.depth_m) if "depth_m" not in arrs else arrs["depth_m"],
-        nu_factor=None if f is None else f * model.factor0, gamma=arrs.get("gamma"),
+        nu_factor=None if f is None else f * model.factor0, walther_A=a, walther_B=b,
+        gamma=arrs.get("gamma"),
         friction_scale=arrs.get("friction_scale"), film_strength=arrs.get("film_strength"),
         drag_scale=arrs.get("bearing_drag_scale"),
         speed_factor=None if peak is None else case.duty_cycle.speed_factor(peak),
@@ -129,9 +136,25 @@ def _row_values(case: DesignCase, arrs: Mapping[str, np.ndarray], model: RowMode
             else th.sea_temp_C + (t_oil - op.oil_temp_C)))
 
 
+def _walther(oil, arrs: Mapping[str, np.ndarray]):
+    """Each row's Walther coefficients (A, B) [-] through ``(f40 nu40, f100 nu100)``, as
+    :func:`.grade.walther_rebuilt` builds the scalar path's oil (ASTM D341); (None, None)
+    without those inputs."""
+    f40, f100 = arrs.get("nu40_factor"), arrs.get("nu100_factor")
+    if f40 is None and f100 is None:
+        return None, None
+    nu40 = oil.nu40_cSt if f40 is None else oil.nu40_cSt * f40
+    nu100 = oil.nu100_cSt if f100 is None else oil.nu100_cSt * f100
+    n = len(next(iter(arrs.values())))
+    a, b = walther_coefficients(np.broadcast_to(nu40, (n,)), ZERO_CELSIUS_K + 40.0,
+                                np.broadcast_to(nu100, (n,)), ZERO_CELSIUS_K + 100.0)
+    return np.asarray(a, float), np.asarray(b, float)
+
+
 def _features(rows: RowValues) -> np.ndarray:
     """The per-row values of a block as columns (the root's predictors)."""
-    vals = [getattr(rows, k) for k in ("sea_temp_C", "depth_m", "nu_factor", "gamma",
+    vals = [getattr(rows, k) for k in ("sea_temp_C", "depth_m", "nu_factor", "walther_A",
+                                       "walther_B", "gamma",
                                        "friction_scale", "film_strength", "drag_scale",
                                        "speed_factor")]
     for reg in rows.regions or ():
@@ -141,9 +164,12 @@ def _features(rows: RowValues) -> np.ndarray:
 
 
 def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.ndarray],
-           balance: str = "replay") -> np.ndarray:
-    """Loss [W] of one block of rows (NaN: no balance root below the cap); ``balance``
-    "root": :func:`.balance.root_balance`, its rows handed back replayed."""
+           fallback: bool = False, predictor=None, back: np.ndarray | None = None
+           ) -> np.ndarray:
+    """Loss [W] of one block of rows (NaN: no balance root below the cap): the balance by
+    :func:`.balance.root_balance`, the rows it hands back (or all, ``fallback``) by
+    :func:`.rows.row_balance`; with ``back`` (bool, one per row) the rows handed back
+    are marked there (their loss NaN) for the caller to solve together."""
     rows = _row_values(case, arrs, model)
     if not uses_balance(mode):
         return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
@@ -152,18 +178,78 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     out = np.full(rows.n, np.nan)
     if not ok.all():
         if ok.any():
+            sub = None if back is None else np.zeros(int(ok.sum()), bool)
             out[ok] = _block(case, mode, model, {k: v[ok] for k, v in arrs.items()},
-                             balance)
+                             fallback, predictor, sub)
+            if back is not None:
+                back[np.flatnonzero(ok)[sub]] = True
         return out
-    if balance == "root":
+    if not fallback:
         base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
         temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
-                                    th.resistance_K_W, features=_features(rows))
-        if not ok.all():
-            p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()})
+                                    th.resistance_K_W, features=_features(rows),
+                                    predictor=predictor)
+        if back is not None:
+            back |= ~ok
+        elif not ok.all():
+            p[~ok] = _block(case, mode, model, {k: v[~ok] for k, v in arrs.items()}, True)
         return p
     temps, p = row_balance(model, rows)
     return np.where(temps < MAX_OIL_TEMP_C, p, np.nan)
+
+
+def _run_blocks(case: DesignCase, mode: str, model: RowModel, flat: Mapping[str, np.ndarray],
+                n: int, step: int, threads: int, strict: bool) -> np.ndarray:
+    """Loss [W] of all rows, block by block (threads: blocks at once); the rows the
+    balance hands back solved together after the blocks (``step`` at a time)."""
+    predictor = _predictor(case, mode, model, flat, n)
+    out = np.empty(n)
+    back = np.zeros(n, bool)  # rows root_balance handed back: solved together below
+
+    def run(i: int, rows=None) -> None:
+        sel = slice(i, i + step) if rows is None else rows[i:i + step]
+        part = {k: a[sel] for k, a in flat.items()}
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            try:
+                out[sel] = (_block(case, mode, model, part, predictor=predictor,
+                                   back=back[sel]) if rows is None
+                            else _block(case, mode, model, part, fallback=True))
+            except SolverError:
+                out[sel] = _loop(case, part, mode, strict)
+                back[sel] = False
+
+    starts = range(0, n, step)
+    if threads > 1 and len(starts) > 1:  # numpy's loops release the GIL
+        with ThreadPoolExecutor(int(threads)) as pool:
+            list(pool.map(run, starts))
+    else:
+        for i in starts:
+            run(i)
+    handed = np.flatnonzero(back)
+    for i in range(0, handed.size, step):
+        run(i, handed)
+    return out
+
+
+PILOT_ROWS = 512
+"""Rows solved from their brackets before a large balance run (evenly spaced over all
+rows): the :class:`~oilgap.model.uncertain.balance.Predictor` of every block's roots."""
+
+
+def _predictor(case: DesignCase, mode: str, model: RowModel,
+               flat: Mapping[str, np.ndarray], n: int):
+    """The roots' predictor of a balance run of ``n`` rows (None below 16 pilot sizes:
+    each block fits its own from 64 rows)."""
+    if not uses_balance(mode) or n < 16 * PILOT_ROWS:
+        return None
+    pick = np.linspace(0, n - 1, PILOT_ROWS).astype(np.int64)
+    rows = _row_values(case, {k: a[pick] for k, a in flat.items()}, model)
+    th = case.thermal
+    base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
+    keep = np.flatnonzero(base < MAX_OIL_TEMP_C)
+    with np.errstate(all="ignore"):
+        return fit_predictor(lambda t, i: row_total(model, rows, t, i), base,
+                             th.resistance_K_W, _features(rows), keep)
 
 
 def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: bool
@@ -184,13 +270,14 @@ def _loop(case: DesignCase, flat: Mapping[str, np.ndarray], mode: str, strict: b
 
 def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
                       strict: bool = False, block_rows: int = BLOCK_ROWS,
-                      threads: int = 1, balance: str = "replay") -> np.ndarray:
+                      threads: int = 1) -> np.ndarray:
     """Cycle-mean loss [W] of the joint (regions and bearing) for each row of inputs.
 
     Row ``i`` equals ``operating_temperature(apply_inputs(case, row_i), mode)
     .mean_power_W`` (the ``total_mean_power_W`` of
-    :func:`~oilgap.model.evaluation.evaluate_case` under that mode) to rounding, the
-    balance modes to the balance's tolerance (module docstring; docs/benchmarks.md).
+    :func:`~oilgap.model.evaluation.evaluate_case` under that mode) to rounding (the
+    balance modes to 1e-12: both solve the balance to its root; module docstring,
+    docs/benchmarks.md).
 
     Parameters
     ----------
@@ -210,15 +297,6 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     threads : int
         Blocks evaluated at once by a pool of threads [-] (numpy's loops release the
         GIL; 1: one after another). The numbers do not depend on it.
-    balance : {"root", "replay"}
-        How ``bulk``/``full`` solve each row's balance: "replay" (default): each row
-        follows the scalar path's own iteration
-        (:func:`~oilgap.model.uncertain.rows.row_balance`, 10-20 losses a row; equal to
-        the scalar path to 1e-13); "root": to the exact root by
-        :func:`~oilgap.model.uncertain.balance.root_balance` (3.5-4 losses a row, the
-        rows it hands back replayed), which differs from the scalar path's stopping
-        point (``|g| < 1e-9 K``) by up to 4e-11 relative (docs/benchmarks.md).
-
     Returns
     -------
     ndarray
@@ -237,8 +315,6 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     Seed paper [1]_ (Eqs. 5, 10); Bergman et al. [2]_ (the balance); ISO 3448 [3]_.
     """
     mode = resolve_thermal_mode(case, None if mode is None else str(mode))
-    if balance not in ("root", "replay"):
-        raise InputError("balance", balance, "root or replay")
     arrs, shape = broadcast_inputs(inputs)
     check_input_ranges(case, arrs)
     n = int(np.prod(shape, dtype=np.int64))
@@ -246,24 +322,7 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     if not flat:
         flat = {"nu40_factor": np.ones(n)}
     model = row_model(case, mode, "gamma" in flat, "film_strength" in flat)
-    out = np.empty(n)
-    step = max(1, int(block_rows))
-
-    def run(i: int) -> None:
-        part = {k: a[i:i + step] for k, a in flat.items()}
-        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-            try:
-                out[i:i + step] = _block(case, mode, model, part, balance)
-            except SolverError:
-                out[i:i + step] = _loop(case, part, mode, strict)
-
-    starts = range(0, n, step)
-    if threads > 1 and len(starts) > 1:  # numpy's loops release the GIL
-        with ThreadPoolExecutor(int(threads)) as pool:
-            list(pool.map(run, starts))
-    else:
-        for i in starts:
-            run(i)
+    out = _run_blocks(case, mode, model, flat, n, max(1, int(block_rows)), threads, strict)
     out[~np.isfinite(out)] = np.nan
     if strict and np.isnan(out).any():
         j = int(np.flatnonzero(np.isnan(out))[0])

@@ -1,24 +1,27 @@
 """The heat balance of stacked rows solved to the exact root: a fast bracketed iteration.
 
 :func:`root_balance` solves ``g(T) = T - T_base - R P(T) = 0`` for every row to full
-double precision in T with 3.5-4 evaluations of the loss per row (the seed joint, alone
-and with a 6809 bearing), where :func:`~oilgap.model.thermal.steady_temperature` (the
-scalar path's solver, replayed row by row by
-:func:`~oilgap.model.uncertain.rows.row_balance`) stops at ``|g| < 1e-9 K`` after 10-20.
-Each step fits the exponential model ``P = P_k exp(-beta (T - T_k))`` through the last
-two points (beta from their secant of ln P) and jumps to its root with Lambert's W, ``T =
-T_b + W(beta R P_k exp(beta (T_k - T_b)))/beta`` [1]; a step outside the bracket ``[lo,
-hi]`` (g < 0 at lo, g > 0 at hi) is replaced by the Illinois false position [2]. A row
-stops when its next step is under eight rounding units of g's terms, ``8 eps (|T| + T_b +
-R P)`` (about 5e-14 K), and |g| at its last point under 16 times that; or when the step
-is so short that the model's loss there is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10
-K^2``, d the spacing of the model's two points), taken without another evaluation.
+double precision in T with 3.1 evaluations of the loss per row on a large run (the seed
+joint, alone and with a 6809 bearing; 3.5-4 with a pilot per block), where the scalar
+path's solver, :func:`~oilgap.model.thermal.steady_temperature`, takes 10-20 to ``|g| <
+1e-9 K`` and its polish (:func:`~oilgap.model.thermal.polish_roots`) 2-3 more to the root:
+the two agree to rounding (1e-13 relative in the loss). Each step fits the exponential
+model ``P = P_k exp(-beta (T - T_k))`` through the last two points (beta from their secant
+of ln P) and jumps to its root with Lambert's W, ``T = T_b + W(beta R P_k exp(beta (T_k -
+T_b)))/beta`` [1]; a step outside the bracket ``[lo, hi]`` (g < 0 at lo, g > 0 at hi) is
+replaced by the Illinois false position [2]. A row stops when its next step is under eight
+rounding units of g's terms, ``8 eps (|T| + T_b + R P)`` (about 5e-14 K), and |g| at its
+last point under 16 times that; or when the step is so short that the model's loss there
+is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10 K^2``, d the spacing of the model's two
+points), taken without another evaluation.
 
-The start: a pilot of 64 rows (evenly spaced) is solved from its bracket ``[T_b, T_b + R
-P(T_b)]``; with the rows' values (``features``) the others start at the root predicted by
-a least-squares fit of ``ln(T - T_b)`` on those values (and their logs) over the pilot,
-and their second point is one model step from there with the local beta at the root
-fitted the same way. Without features, every row's first point is ``T_b`` and its second
+The start: a pilot of rows is solved from its bracket ``[T_b, T_b + R P(T_b)]``; with the
+rows' values (``features``) the others start at the root predicted by a least-squares fit
+of ``ln(T - T_b)`` on those values (and their logs) over the pilot, and their second point
+is one model step from there with the local beta at the root fitted the same way. A large
+run fits one :class:`Predictor` (a quadratic surface) on 512 rows once
+(:func:`fit_predictor`) and passes it to every block; otherwise each call's own 64 rows
+fit a linear one. Without features, every row's first point is ``T_b`` and its second
 the model root with the pilot's median beta. The start only decides how fast a row
 converges, not where.
 
@@ -28,13 +31,14 @@ at the cap :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`, a non-finite or non-pos
 loss, a bracket closed without g reaching 0 (the root on a downward step of the piecewise
 Eq. 6, where a speed node crosses a regime boundary: the scalar solver returns the step
 from its side), or no convergence in :data:`MAX_EVALS` evaluations. The caller solves
-those rows by the scalar path's iteration. Not reproduced: the scalar solver's scan for a
-lower root below T_b's neighbourhood (rows started near their root never evaluate the
-loss at T_b): where the loss rises only well below the root, this returns the upper root
-(docs/benchmarks.md; the seed's loss falls everywhere from -2 to 150 degC); and where the
-scalar solver's bracket collapses on a downward step of Eq. 6 (its answer: the step)
-while a genuine root lies just above it, this returns that root (5 rows in 200,000 of
-the benchmark's bearing rows, 4e-7 to 5e-6 relative apart).
+those rows by the scalar path's solver (about 6 rows in 10,000 with the bearing). Not
+reproduced: the scalar solver's scan for a lower root below T_b's neighbourhood (rows
+started near their root never evaluate the loss at T_b): where the loss rises only well
+below the root, this returns the upper root (docs/benchmarks.md; the seed's loss falls
+everywhere from -2 to 150 degC); and where the scalar solver's bracket collapses on a
+downward step of Eq. 6 (its answer: the step) while a genuine root lies just above it,
+this returns that root (5 rows in 200,000 of the benchmark's bearing rows, 4e-7 to 5e-6
+relative apart).
 
 References
 ----------
@@ -51,7 +55,6 @@ from __future__ import annotations
 from collections.abc import Callable
 
 import numpy as np
-from scipy.special import lambertw
 
 from ..thermal import MAX_OIL_TEMP_C
 
@@ -65,17 +68,55 @@ _NOISE_K = 1e-9
 """Points closer than this [K]: their losses' order is rounding, not a rising loss."""
 
 
+def lambert_w0(x):
+    """Principal branch of Lambert's W for real ``x >= 0``: ``w exp(w) = x`` [1]_ [-].
+
+    Halley's iteration from ``log1p(x)`` (x < e) or ``log x - log log x``, vectorised, to
+    a relative step under 4 rounding units (four or five iterations); NaN where x < 0
+    or x is not finite. Replaces SciPy's complex ``lambertw`` here (about twice as fast
+    on arrays; equal to it within 5e-16 relative from 1e-12 to 1e12).
+
+    Parameters
+    ----------
+    x : ndarray
+        Argument [-], >= 0.
+
+    Returns
+    -------
+    ndarray
+        W0(x) [-].
+
+    References
+    ----------
+    Corless et al. [1]_, eq. 5.9 (Halley's iteration for W).
+    """
+    x = np.asarray(x, dtype=float)
+    with np.errstate(all="ignore"):
+        big = x > np.e
+        lx = np.log(np.where(big, x, np.e))
+        w = np.where(big, lx - np.log(lx), np.log1p(np.where(big, 0.0, x)))
+        for _ in range(8):
+            ew = np.exp(w)
+            f = w * ew - x
+            step = f / (ew * (w + 1.0) - (w + 2.0) * f / (2.0 * w + 2.0))
+            w = w - step
+            if not np.any(np.abs(step) > 4.0 * np.finfo(float).eps * np.maximum(w, 1e-300)):
+                break
+        return np.where((x >= 0) & np.isfinite(x), np.where(x == 0, 0.0, w), np.nan)
+
+
 def _model_root(tb, rth, t_k, p_k, beta):
     """Root of ``T - T_b - R P_k exp(-beta (T - T_k))`` [degC] (NaN where beta <= 0)."""
     with np.errstate(all="ignore"):
         arg = beta * rth * p_k * np.exp(np.minimum(beta * (t_k - tb), 700.0))
-        w = np.real(lambertw(np.where(beta > 0, arg, 0.0)))
+        w = lambert_w0(np.where(beta > 0, arg, 0.0))
         return np.where(beta > 0, tb + w / beta, np.nan)
 
 
 def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_temp_C,
                  resistance_K_W: float, max_temp_C: float = MAX_OIL_TEMP_C,
-                 features=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                 features=None, predictor: Predictor | None = None
+                 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Exact root of ``T = T_base + R P(T)`` for every row, or the row handed back [3].
 
     Parameters
@@ -92,6 +133,9 @@ def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_tem
     features : ndarray, optional
         Shape (rows, k): the values the rows differ by (their units); the other rows'
         roots are predicted from the pilot rows' on them (fewer losses a row).
+    predictor : Predictor, optional
+        A predictor fitted beforehand (:func:`fit_predictor`, on other rows of the same
+        case): every row starts at its prediction from ``features``, without a pilot.
 
     Returns
     -------
@@ -113,6 +157,11 @@ def root_balance(power: Callable[[np.ndarray, np.ndarray], np.ndarray], base_tem
     out = (np.full(n, np.nan), np.full(n, np.nan), np.zeros(n, bool))
     idx = np.arange(n)
     with np.errstate(all="ignore"):
+        if predictor is not None and features is not None:
+            _from_predicted(power, idx, tb, r, *predictor(np.asarray(features, float), tb),
+                            out, max_temp_C)
+            out[2][:] &= out[0] < max_temp_C - 1.0
+            return out
         pilot = idx[::max(1, n // _PILOT_ROWS)]
         p0 = np.full(n, np.nan)
         p0[pilot] = power(tb[pilot], pilot)
@@ -153,29 +202,167 @@ def _from_beta(power, rest, done, tb, r, p0, out, cap):
     _iterate(power, st, MAX_EVALS - 2, out)
 
 
-def _design(x):
-    """Regression columns of the rows' values: 1, each value, and the log of each
-    positive one, scaled to unit size."""
-    cols = [np.ones(len(x))]
-    for c in x.T:
-        cols.append(c / max(float(np.max(np.abs(c))), 1e-300))
+def _standard(x, center=None, scale=None):
+    """The rows' values ``x`` (rows, k) and the logs of the positive ones, standardised
+    (by the given centre and scale, or the rows' own) [-]."""
+    cols = []
+    for c in np.asarray(x, float).T:
+        cols.append(c)
         if np.all(c > 0):
-            cols.append(np.log(c / np.max(c)))
-    return np.column_stack(cols)
+            cols.append(np.log(c))
+    z = np.column_stack(cols)
+    if center is None:
+        center, scale = z.mean(axis=0), z.std(axis=0)
+        scale = np.where(scale > 0, scale, 1.0)
+    return (z - center) / scale, center, scale
+
+
+def _columns(z):
+    """Regression columns of standardised values ``z``: 1, each, and the product of every
+    pair (a quadratic response surface)."""
+    k = z.shape[1]
+    quad = [z[:, i] * z[:, j] for i in range(k) for j in range(i, k)]
+    return np.column_stack([np.ones(len(z)), z, *quad])
+
+
+class Predictor:
+    """A root's predictor fitted on solved rows: ``ln(T - T_b)`` and the local exponent
+    beta at the root, least squares on a quadratic surface of the rows' values and their
+    logs (standardised)."""
+
+    def __init__(self, features, tb, temps, beta):
+        z, self.center, self.scale = _standard(features)
+        x = _columns(z)
+        self.coef = [self._unpack(_ridge(x, y), z.shape[1])
+                     for y in (np.log(temps - tb), beta)]
+        self.beta_median = float(np.median(beta))
+
+    @staticmethod
+    def _unpack(c, k):
+        """(constant, linear, upper-triangular quadratic matrix) of the coefficients."""
+        q = np.zeros((k, k))
+        q[np.triu_indices(k)] = c[1 + k:]
+        return float(c[0]), c[1:1 + k], q
+
+    def __call__(self, features, tb):
+        """(predicted root [degC], predicted beta [1/K]) of rows."""
+        z = _standard(features, self.center, self.scale)[0]
+        out = [c0 + np.einsum("ij,j->i", z, c1) + np.einsum("ij,ij->i", z,
+                                                            np.einsum("ij,jk->ik", z, q))
+               for c0, c1, q in self.coef]
+        beta = out[1]
+        return tb + np.exp(out[0]), np.where(beta > 0, beta, self.beta_median)
+
+
+def _ridge(x, y):
+    """Least squares of ``x c = y`` by its normal equations with a 1e-10 ridge (columns
+    may repeat an input: A and B of one nu40 factor) and a Cholesky factorisation written
+    out, without threaded BLAS or LAPACK: the same coefficients on any core count and
+    load (``einsum`` sums in order)."""
+    a = np.einsum("ki,kj->ij", x, x)
+    a[np.diag_indices_from(a)] += 1e-10 * max(float(np.trace(a)) / len(a), 1e-300)
+    b = np.einsum("ki,k->i", x, y)
+    n = len(a)
+    lo = np.zeros_like(a)
+    for j in range(n):  # a = L L^T, column by column
+        d = a[j, j] - np.einsum("k,k->", lo[j, :j], lo[j, :j])
+        lo[j, j] = np.sqrt(max(d, 1e-300))
+        lo[j + 1:, j] = (a[j + 1:, j] - np.einsum("ik,k->i", lo[j + 1:, :j], lo[j, :j])
+                         ) / lo[j, j]
+    u = np.zeros(n)
+    for i in range(n):  # L u = b
+        u[i] = (b[i] - np.einsum("k,k->", lo[i, :i], u[:i])) / lo[i, i]
+    c = np.zeros(n)
+    for i in range(n - 1, -1, -1):  # L^T c = u
+        c[i] = (u[i] - np.einsum("k,k->", lo[i + 1:, i], c[i + 1:])) / lo[i, i]
+    return c
+
+
+def fit_predictor(power, base_temp_C, resistance_K_W: float, features, rows,
+                  max_temp_C: float = MAX_OIL_TEMP_C) -> Predictor | None:
+    """Solve ``rows`` from their brackets (their values ``features[rows]``) and fit the
+    :class:`Predictor` of the others' roots on them (None: too few solved).
+
+    Parameters
+    ----------
+    power : callable
+        As for :func:`root_balance` (row numbers index ``base_temp_C`` and ``features``).
+    base_temp_C : ndarray
+        ``T_base`` of every row [degC].
+    resistance_K_W : float
+        R [K/W].
+    features : ndarray
+        Shape (rows, k): the rows' values.
+    rows : ndarray of int
+        The pilot rows.
+    max_temp_C : float
+        The cap [degC].
+
+    Returns
+    -------
+    Predictor or None
+        The fitted predictor [degC, 1/K].
+    """
+    tb = np.asarray(base_temp_C, dtype=float)
+    n = tb.size
+    out = (np.full(n, np.nan), np.full(n, np.nan), np.zeros(n, bool))
+    with np.errstate(all="ignore"):
+        p0 = np.full(n, np.nan)
+        p0[rows] = power(tb[rows], rows)
+        _from_top(power, rows, tb, float(resistance_K_W), p0, out, max_temp_C)
+        done = rows[out[2][rows] & (out[0][rows] > tb[rows])]
+        x = np.asarray(features, float)
+        if done.size < 2 * _columns(_standard(x[done[:2]])[0]).shape[1]:
+            return None
+        t_d, p_d = out[0][done], out[1][done]
+        beta = np.log(p_d / power(t_d + _BETA_STEP_K, done)) / _BETA_STEP_K
+        good = np.isfinite(beta) & (beta > 0)
+        return Predictor(x[done[good]], tb[done[good]], t_d[good], beta[good])
 
 
 def _from_prediction(power, rest, done, tb, r, features, out, cap):
-    """Rows started at their root predicted from the pilot rows: ``ln(T - T_b)`` fitted
-    on the rows' values by least squares; the second point one model step from there
-    with the local beta at the root fitted the same way. Rows that do not start cleanly go from
-    their bracket."""
-    x = _design(features)
+    """Rows started at their root predicted by a :class:`Predictor` fitted on the pilot
+    rows ``done``."""
+    x = np.asarray(features, float)
     t_d, p_d = out[0][done], out[1][done]
-    coef = np.linalg.lstsq(x[done], np.log(t_d - tb[done]), rcond=None)[0]
     beta_d = np.log(p_d / power(t_d + _BETA_STEP_K, done)) / _BETA_STEP_K
-    beta = x[rest] @ np.linalg.lstsq(x[done], beta_d, rcond=None)[0]
-    beta = np.where(beta > 0, beta, float(np.median(beta_d)))
-    t1 = tb[rest] + np.exp(x[rest] @ coef)
+    good = np.isfinite(beta_d) & (beta_d > 0)
+    if good.sum() > 2 * _columns(_standard(x[:2])[0]).shape[1]:
+        pred = Predictor(x[done[good]], tb[done[good]], t_d[good], beta_d[good])
+    else:
+        pred = _LinearPredictor(x[done], tb[done], t_d, beta_d)
+    _from_predicted(power, rest, tb, r, *pred(x[rest], tb[rest]), out, cap)
+
+
+class _LinearPredictor:
+    """The predictor of few pilot rows: 1, each value and its log (unit-scaled)."""
+
+    def __init__(self, x, tb, temps, beta):
+        self.scale = np.maximum(np.max(np.abs(x), axis=0), 1e-300)
+        self.logs = np.all(x > 0, axis=0)
+        d = self._design(x)
+        self.coef_t = np.linalg.lstsq(d, np.log(temps - tb), rcond=None)[0]
+        self.coef_b = np.linalg.lstsq(d, beta, rcond=None)[0]
+        self.beta_median = float(np.median(beta))
+
+    def _design(self, x):
+        cols = [np.ones(len(x))]
+        for c, s, lg in zip(x.T, self.scale, self.logs, strict=True):
+            cols.append(c / s)
+            if lg:
+                cols.append(np.log(np.maximum(c, 1e-300) / s))
+        return np.column_stack(cols)
+
+    def __call__(self, x, tb):
+        d = self._design(x)
+        beta = d @ self.coef_b
+        return tb + np.exp(d @ self.coef_t), np.where(beta > 0, beta, self.beta_median)
+
+
+def _from_predicted(power, rest, tb, r, t1, beta, out, cap):
+    """Rows started at their predicted root ``t1``; the second point one model step from
+    there with the predicted local beta. Rows that do not start cleanly go from their
+    bracket."""
     p1 = power(t1, rest)
     t2 = _model_root(tb[rest], r, t1, p1, beta)
     good = np.isfinite(p1) & (p1 > 0) & np.isfinite(t2) & (t2 > tb[rest]) & (t2 < cap)
@@ -307,4 +494,4 @@ class _State:
         self.keep(fell)
 
 
-__all__ = ["MAX_EVALS", "root_balance"]
+__all__ = ["MAX_EVALS", "Predictor", "fit_predictor", "root_balance"]

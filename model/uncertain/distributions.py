@@ -14,7 +14,13 @@ documented defaults (:func:`default_uncertainty`):
 
 - ``nu40_factor`` uniform on 0.9..1.1: ISO 3448 [2]_ lets a grade's kinematic viscosity at
   40 degC lie within +-10 % of its midpoint; it gives the band, not a law inside it, and
-  the uniform law is the least-informative one on a bounded band.
+  the uniform law is the least-informative one on a bounded band. It acts on nu40 alone
+  (the Walther line rebuilt, :mod:`.grade`).
+- ``nu100_factor`` uniform on 0.95..1.05: the viscosity index's spread. For the seed's
+  VG22 (22/4.5 cSt, VI 118 by ASTM D2270 [4]_) the band spans VI 98 to 129: from a
+  straight mineral oil (VI about 100 and below) to the modified mineral oils' 125-150
+  [5]_. A fluid without a Walther line (a gas, a table) takes
+  ``nu_factor_all_temperatures`` uniform 0.9..1.1 instead.
 - ``gamma`` normal, sd 0.041 around the case's gamma: the seed rig fit of
   ``oilgap study smoothing`` (0.566 +- 0.041).
 
@@ -30,6 +36,11 @@ References
    (each grade's kinematic viscosity at 40 degC within +-10 % of its midpoint).
 .. [3] N. L. Johnson, S. Kotz, N. Balakrishnan, *Continuous Univariate Distributions*,
    2nd ed., Wiley 1994-95 (normal, lognormal, uniform, triangular).
+.. [4] ASTM D2270-10, calculating viscosity index from kinematic viscosity at 40 and
+   100 degC (Table 1, procedures A and B).
+.. [5] tribology-abc.com, ISO 3448 / viscosity index calculator notes: "the VI of
+   conventional mineral oils roughly ranges between 0 and 100, for modified mineral oils
+   between 125 and 150" (http://www.tribology-abc.com/calculators/iso_3348.htm).
 """
 
 from __future__ import annotations
@@ -57,7 +68,9 @@ KINDS: dict[str, tuple[str, ...]] = {
 """Each kind of distribution and its parameters, in order [-]."""
 
 RANGES: dict[str, tuple[float, float]] = {
-    "nu40_factor": (0.0, math.inf), "oil_temp_C": (-40.0, 200.0), "depth_m": (0.0, 11000.0),
+    "nu40_factor": (0.0, math.inf), "nu100_factor": (0.0, math.inf),
+    "nu_factor_all_temperatures": (0.0, math.inf), "oil_temp_C": (-40.0, 200.0),
+    "depth_m": (0.0, 11000.0),
     "gamma": (0.0, 3.0), "friction_scale": (0.0, math.inf), "film_strength": (0.0, math.inf),
     "bearing_drag_scale": (0.0, math.inf), "peak_speed_rpm": (0.0, math.inf),
 }
@@ -72,6 +85,10 @@ _SPREAD_SUFFIX = {"oil_temp_C": "_K", "depth_m": "_m", "peak_speed_rpm": "_rpm"}
 
 ISO3448_SOURCE = ("ISO 3448's +-10 % band on a grade's nu40, uniform over it (the standard "
                   "gives the band, not a law inside it)")
+VI_SOURCE = ("the viscosity index's spread: nu100 +-5 % spans VI 98-129 for VG22 (ASTM "
+             "D2270), straight mineral (VI ~100) to modified mineral oils (125-150)")
+ALL_TEMPERATURES_SOURCE = ("ISO 3448's +-10 % band taken at every temperature (the fluid has "
+                           "no Walther line to carry a tolerance on nu40)")
 GAMMA_SD = 0.041
 """Standard deviation of gamma from the seed rig fit (``oilgap study smoothing``) [-]."""
 GAMMA_SOURCE = "the seed rig fit, `oilgap study smoothing`: 0.566 +- 0.041"
@@ -366,7 +383,7 @@ class UncertaintySpec:
 
 
 def default_uncertainty(case: DesignCase) -> UncertaintySpec:
-    """The documented defaults: ISO 3448's band on nu40 and gamma's seed-fit spread.
+    """The documented defaults: ISO 3448's band on nu40, the VI's on nu100, gamma's spread.
 
     Parameters
     ----------
@@ -376,14 +393,25 @@ def default_uncertainty(case: DesignCase) -> UncertaintySpec:
     Returns
     -------
     UncertaintySpec
-        ``nu40_factor`` uniform 0.9..1.1 [-] (ISO 3448 [2]_) and ``gamma`` normal with
-        the case's gamma as mean and sd 0.041 [-] (the seed fit).
+        ``nu40_factor`` uniform 0.9..1.1 [-] (ISO 3448 [2]_), ``nu100_factor`` uniform
+        0.95..1.05 [-] (the viscosity index [4]_ [5]_) and ``gamma`` normal with the case's
+        gamma as mean and sd 0.041 [-] (the seed fit); for a fluid without a Walther line
+        ``nu_factor_all_temperatures`` uniform 0.9..1.1 in place of the first two.
     """
+    from .grade import has_walther_line
+
     g = float(case.friction.gamma)
     src = GAMMA_SOURCE if g == 0.566 else f"sd of {GAMMA_SOURCE}, around the case's gamma"
+    band = (("low", 0.9), ("high", 1.1))
+    oil = ((Distribution(input="nu40_factor", kind="uniform", params=band,
+                         source=ISO3448_SOURCE),
+            Distribution(input="nu100_factor", kind="uniform",
+                         params=(("low", 0.95), ("high", 1.05)), source=VI_SOURCE))
+           if has_walther_line(case.oil) else
+           (Distribution(input="nu_factor_all_temperatures", kind="uniform", params=band,
+                         source=ALL_TEMPERATURES_SOURCE),))
     return UncertaintySpec(distributions=(
-        Distribution(input="nu40_factor", kind="uniform", params=(("low", 0.9), ("high", 1.1)),
-                     source=ISO3448_SOURCE),
+        *oil,
         Distribution(input="gamma", kind="normal", params=(("mean", g), ("sd", GAMMA_SD)),
                      source=src),
     ), source="defaults (the case has no [uncertainty] table)")

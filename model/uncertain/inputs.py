@@ -6,8 +6,14 @@ uncertainty study, the robust design NLP and the vectorised loss all use these n
 ==================== ======= ================================================================
 input                unit    acts on
 ==================== ======= ================================================================
-``nu40_factor``      [-]     factor on the oil's viscosity at every state (ISO 3448 grade
-                             tolerance, :class:`~oilgap.model.fluids.ScaledFluid`); nominal 1
+``nu40_factor``      [-]     factor on the oil's nu at 40 degC alone (ISO 3448's grade
+                             tolerance): its Walther line rebuilt through (f nu40, nu100)
+                             (:mod:`.grade`); nominal 1
+``nu100_factor``     [-]     factor on the oil's nu at 100 degC (its viscosity index), the
+                             Walther line rebuilt the same way; nominal 1
+``nu_factor_all_temperatures``
+                     [-]     one factor on the viscosity at every state (the Walther line
+                             shifted, :class:`~oilgap.model.fluids.ScaledFluid`); nominal 1
 ``oil_temp_C``       [degC]  the case's oil temperature; with a ``[thermal]`` table the sea
                              temperature of the balance moves by the same amount
 ``depth_m``          [m]     the sea depth (the oil's gauge pressure)
@@ -41,6 +47,7 @@ from typing import TYPE_CHECKING
 from ..errors import InputError
 from ..fluids import ScaledFluid
 from ..units import rad_s_to_rpm
+from .grade import walther_rebuilt
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from ..case import DesignCase
@@ -69,8 +76,12 @@ class InputInfo:
 
 
 INPUTS: dict[str, InputInfo] = {i.name: i for i in (
-    InputInfo(name="nu40_factor", unit="-", title="oil viscosity factor (ISO 3448 grade)",
+    InputInfo(name="nu40_factor", unit="-", title="oil's nu40 factor (ISO 3448 grade)",
               factor=True),
+    InputInfo(name="nu100_factor", unit="-", title="oil's nu100 factor (viscosity index)",
+              factor=True),
+    InputInfo(name="nu_factor_all_temperatures", unit="-",
+              title="oil viscosity factor at every temperature", factor=True),
     InputInfo(name="oil_temp_C", unit="degC", title="oil temperature"),
     InputInfo(name="depth_m", unit="m", title="sea depth"),
     InputInfo(name="gamma", unit="-", title="groove exponent gamma"),
@@ -98,6 +109,8 @@ def nominal_inputs(case: DesignCase) -> dict[str, float]:
     th = case.thermal
     return {
         "nu40_factor": 1.0,
+        "nu100_factor": 1.0,
+        "nu_factor_all_temperatures": 1.0,
         "oil_temp_C": float(case.operating.oil_temp_C),
         "depth_m": float(case.operating.depth_m),
         "gamma": float(case.friction.gamma),
@@ -140,14 +153,21 @@ def apply_inputs(case: DesignCase, values: Mapping[str, float]) -> DesignCase:
     ------
     InputError
         An unknown input, a non-finite or out-of-range value, ``film_strength``
-        on a case without ``[thermal]`` (the film's settings live there).
+        on a case without ``[thermal]`` (the film's settings live there),
+        ``nu40_factor``/``nu100_factor`` on a fluid without a Walther line.
     """
     v = {k: _value(k, x) for k, x in values.items()}
     changes: dict = {}
-    if "nu40_factor" in v:
-        base = case.oil.base if isinstance(case.oil, ScaledFluid) else case.oil
-        f = v["nu40_factor"] * (case.oil.factor if isinstance(case.oil, ScaledFluid) else 1.0)
-        changes["oil"] = base if f == 1.0 else ScaledFluid(base, f)
+    oil = case.oil
+    if "nu40_factor" in v or "nu100_factor" in v:
+        oil = walther_rebuilt(oil, v.get("nu40_factor", 1.0), v.get("nu100_factor", 1.0))
+    if "nu_factor_all_temperatures" in v:
+        base = oil.base if isinstance(oil, ScaledFluid) else oil
+        f = v["nu_factor_all_temperatures"] * (oil.factor if isinstance(oil, ScaledFluid)
+                                               else 1.0)
+        oil = base if f == 1.0 else ScaledFluid(base, f)
+    if oil is not case.oil:
+        changes["oil"] = oil
     op = case.operating
     if "oil_temp_C" in v or "depth_m" in v:
         changes["operating"] = replace(op, oil_temp_C=v.get("oil_temp_C", op.oil_temp_C),

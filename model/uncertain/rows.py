@@ -8,8 +8,9 @@ gamma, friction scale, film strength, bearing drag factor, peak speed, sea tempe
 the regions' geometry), evaluated as (rows x speed nodes) arrays by the model's laws, as
 :func:`~oilgap.model.joint_loss.joint_mean_power` composes them:
 
-- the oil's (nu, rho) from the fluid at the rows' (T, p), nu times the row's factor (as
-  :class:`~oilgap.model.fluids.ScaledFluid`);
+- the oil's (nu, rho) from the fluid at the rows' (T, p), on the row's own Walther line
+  (A, B) where the rows carry one (``nu40_factor``/``nu100_factor``,
+  :mod:`.grade`), nu times the row's factor (as :class:`~oilgap.model.fluids.ScaledFluid`);
 - the cycle's speed nodes times the row's ``peak / peak0`` (as
   :meth:`~oilgap.model.duty_cycle.DutyCycle.with_peak_speed`);
 - each region's mean by :func:`~oilgap.model.regions.region_mean_power` with the law at
@@ -18,9 +19,10 @@ the regions' geometry), evaluated as (rows x speed nodes) arrays by the model's 
   ``s b mu U^2/k`` is linear in b);
 - the bearing's terms (:func:`~oilgap.model.bearing.bearing_moment_terms`), SKF's drag
   terms times the row's drag factor;
-- under ``bulk``/``full`` the balance ``T = T_sea + R (P(T) + Q)`` of all rows at once by the
-  model's one solver, :func:`~oilgap.model.thermal.steady_temperature` (each row follows the
-  iteration the scalar path follows; a row the solver holds is not evaluated again).
+- under ``bulk``/``full`` the balance ``T = T_sea + R (P(T) + Q)``: :func:`row_balance` by
+  the model's one solver, :func:`~oilgap.model.thermal.steady_temperature`, polished to
+  the root as the scalar path is (the grid engine's rows; the uncertain inputs' rows
+  :func:`~oilgap.model.uncertain.balance.root_balance` hands back).
 
 References
 ----------
@@ -39,7 +41,11 @@ import numpy as np
 from ..bearing.friction import bearing_mean_power, bearing_moment_terms
 from ..fluids import ScaledFluid
 from ..joint_loss import case_film
-from ..oil_properties import seawater_gauge_pressure
+from ..oil_properties import (
+    oil_viscosities,
+    oil_viscosity_temperature_slope,
+    seawater_gauge_pressure,
+)
 from ..regions import Region, joint_regions, region_mean_power
 from ..skin_friction import groove_roughness_factor
 from ..thermal import steady_temperature
@@ -68,7 +74,11 @@ class RowValues:
     depth_m : float or array
         Sea depth [m].
     nu_factor : array or None
-        Factor on the fluid's viscosity [-] (None: 1).
+        Factor on the fluid's viscosity at every state [-] (None: 1).
+    walther_A, walther_B : array or None
+        Each row's Walther coefficients [-] (an oil's line rebuilt through its rows'
+        nu40 and nu100, :func:`~oilgap.model.oil_properties.walther_coefficients`;
+        None: the fluid's own).
     gamma : array or None
         Groove exponent of Eq. 8 [-] (None: the law's own).
     friction_scale : array or None
@@ -90,6 +100,8 @@ class RowValues:
     oil_temp_C: Any
     depth_m: Any
     nu_factor: Any = None
+    walther_A: Any = None
+    walther_B: Any = None
     gamma: Any = None
     friction_scale: Any = None
     film_strength: Any = None
@@ -203,7 +215,7 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     """
     t_k = celsius_to_kelvin(np.asarray(temp_C, dtype=float))
     p = seawater_gauge_pressure(_at(rows.depth_m, idx, False))
-    nu, _, rho = model.fluid.properties(t_k, p)
+    nu, rho, slope = _oil(model, rows, t_k, p, idx)
     nu = np.broadcast_to(np.asarray(nu, dtype=float), t_k.shape)
     factor = rows.nu_factor if rows.nu_factor is not None else (
         None if model.factor0 == 1.0 else model.factor0)
@@ -213,8 +225,7 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
         * model.nodes
     b = None
     if model.film is not None:
-        b = np.broadcast_to(np.asarray(model.fluid.temperature_slope(t_k, p), dtype=float),
-                            t_k.shape)[:, None]
+        b = np.broadcast_to(np.asarray(slope(), dtype=float), t_k.shape)[:, None]
         if rows.film_strength is not None:
             b = _at(rows.film_strength, idx) * b
     fs, gam = _at(rows.friction_scale, idx, False), _at(rows.gamma, idx, False)
@@ -233,6 +244,19 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     if spec is None:
         return out, np.zeros(len(t_k))
     return out, _bearing(spec, nodes, model.weights, nu_c, _at(rows.drag_scale, idx))
+
+
+def _oil(model: RowModel, rows: RowValues, t_k, p, idx):
+    """(nu [m^2/s], rho [kg/m^3], a callable giving b [1/K]) at the rows' states: the
+    fluid's, or the rows' own Walther line (A, B) of the oil (ASTM D341)."""
+    fl = model.fluid
+    if rows.walther_A is None:
+        nu, _, rho = fl.properties(t_k, p)
+        return nu, rho, lambda: fl.temperature_slope(t_k, p)
+    a, b = _at(rows.walther_A, idx, False), _at(rows.walther_B, idx, False)
+    nu, _, rho = oil_viscosities(a, b, fl.density_kg_m3, t_k, p, fl.barus_1_Pa)
+    return nu, rho, lambda: oil_viscosity_temperature_slope(a, b, fl.density_kg_m3, t_k, p,
+                                                            fl.barus_1_Pa)
 
 
 def _bearing(spec, nodes, weights, nu_c, drag):
@@ -274,8 +298,10 @@ def row_balance(model: RowModel, rows: RowValues) -> tuple[np.ndarray, np.ndarra
     """Bulk temperature and total loss of every row: ``T = T_sea + R (P(T) + Q)``.
 
     The model's one solver, :func:`~oilgap.model.thermal.steady_temperature`, over all rows
-    at once (base ``T_sea + R Q`` per row, the case's R and Q); the solver's ``power_at``
-    evaluates only the rows whose temperature moved (it holds a converged row's).
+    at once (base ``T_sea + R Q`` per row, the case's R and Q), polished to the root
+    (:func:`~oilgap.model.thermal.polish_roots`, as the scalar path); the solver's
+    ``power_at`` evaluates only the rows whose temperature moved (it holds a converged
+    row's).
 
     Parameters
     ----------
@@ -320,7 +346,7 @@ def row_balance(model: RowModel, rows: RowValues) -> tuple[np.ndarray, np.ndarra
         seen[:] = [(t[j], p[j].copy()) for j in range(k)] + seen[:2]
         return p.reshape(-1)
 
-    return steady_temperature(power_at, base, th.resistance_K_W, n)
+    return steady_temperature(power_at, base, th.resistance_K_W, n, polish=True)
 
 
 __all__ = ["RowModel", "RowValues", "row_balance", "row_losses", "row_model", "row_total"]

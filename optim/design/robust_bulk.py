@@ -9,7 +9,8 @@ u_i = T_i / 10 K besides the design y and one equality per scenario::
     (T_i - T_sea,i - R_th (L_i + Q)) / 1 K = 0,    T_sea,i + R_th Q <= T_i <= 250 degC
 
 with case_i the scenario's case (:func:`~oilgap.model.uncertain.apply_inputs`, the smooth
-C_m): its oil scaled by ``nu40_factor``, its depth, gamma, C_m scale, bearing drag scale,
+C_m): its oil by ``nu40_factor``/``nu100_factor`` (or the uniform factor), its depth,
+gamma, C_m scale, bearing drag scale,
 peak speed and, for ``oil_temp_C``, the sea temperature moved by the same amount. The
 loss is the model's own composition (:func:`~oilgap.model.joint_loss.joint_mean_power`,
 the one the nominal thermal NLP uses, :mod:`.thermal`), one SX function per scenario; the

@@ -8,7 +8,8 @@ A scenario is one set of values of the uncertain inputs of
 through the scalar reference path, :func:`~oilgap.model.uncertain.apply_inputs`:
 
 * the oil state (nu_i, rho_i) of the scenario's case (:func:`~oilgap.model.evaluation.
-  oil_state`: its fluid scaled by ``nu40_factor``, at its temperature and depth);
+  oil_state`: its oil's Walther line rebuilt by ``nu40_factor``/``nu100_factor``, or
+  scaled by ``nu_factor_all_temperatures``, at its temperature and depth);
 * its friction law (gamma and the scale on C_m, in the smooth form the NLP uses);
 * its duty cycle's speed distribution (the peak speed scales every node);
 * its design-independent loss: region 2 (the bearing annulus) and the rolling bearing

@@ -85,7 +85,8 @@ def sobol_lines(result) -> list[str]:
 
 def result_lines(result) -> list[str]:
     """The body of the summary: the inputs, the percentiles and the per-input table."""
-    return [*input_lines(result.spec), "", *statistics_lines(result), "",
+    carried = [f"  carried: {t}" for t in getattr(result, "carried", ())]
+    return [*input_lines(result.spec), *carried, "", *statistics_lines(result), "",
             *sobol_lines(result), "", f"wall time {result.elapsed_s:.1f} s"]
 
 

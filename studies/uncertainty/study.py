@@ -51,6 +51,7 @@ from oilgap.model.joint_loss import resolve_thermal_mode
 from oilgap.model.thermal_modes import applies_film, film_counterpart
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.model.uncertain.distributions import UncertaintySpec, case_uncertainty
+from oilgap.model.uncertain.grade import carried_text, has_walther_line
 from oilgap.model.uncertain.inputs import INPUTS, nominal_inputs
 from oilgap.studies.settings import (
     DEFAULT_SOBOL_SAMPLES,
@@ -102,6 +103,10 @@ class UncertaintyResult:
         Files written (empty without ``out_dir``).
     defaults : tuple of Default
         What the tool filled in (the case's, the uncertain inputs', the study's).
+    carried : tuple of str
+        What the bands on nu40 and nu100 give at the case's oil temperature (ISO 3448's
+        tolerance carried by the Walther line, :func:`~oilgap.model.uncertain.grade.
+        carried_text`).
     """
 
     case_name: str
@@ -118,6 +123,7 @@ class UncertaintyResult:
     elapsed_s: float = float("nan")
     files: tuple[Path, ...] = ()
     defaults: tuple = ()
+    carried: tuple = ()
 
     def statistic(self, name: str) -> float:
         """One statistic of the loss [W] (``"p95"``, ``"mean"``...)."""
@@ -284,11 +290,21 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
         thermal_default=default, nominal_W=nominal, samples=samples,
         statistics=_statistics(y, nominal), tornado=_tornado(case, spec, mode, nom),
         sobol=sobol, failed=int(np.sum(~np.isfinite(y))),
-        elapsed_s=time.perf_counter() - t0, defaults=study_defaults(case, settings))
+        elapsed_s=time.perf_counter() - t0, defaults=study_defaults(case, settings),
+        carried=_carried(case, spec))
     if out_dir is not None:
         files = write_outputs(Path(out_dir), result)
         object.__setattr__(result, "files", files)
     return result
+
+
+def _carried(case: DesignCase, spec) -> tuple[str, ...]:
+    """The bands on nu40/nu100 (their laws' reach) carried to the case's oil temperature."""
+    bands = {n: spec[n].reach() for n in ("nu40_factor", "nu100_factor") if n in spec.names}
+    if not bands or not has_walther_line(case.oil):
+        return ()
+    op = case.operating
+    return tuple(carried_text(case.oil, float(op.oil_temp_C), bands, float(op.depth_m)))
 
 
 __all__ = ["PERCENTILES", "UncertaintyResult", "mode_why", "run", "study_defaults",

@@ -44,6 +44,8 @@ def test_json_document_matches_the_facade(tmp_path, capsys):
                                                      "uncertainty.gamma"}
     assert [i["input"] for i in doc["inputs"]] == list(r.to_frame()["input"])
     assert "S1" not in r.to_frame() and r.sobol is None
+    # ISO 3448's band on nu40 carried to the seed's 2 degC (test_uncertain_grade.py)
+    assert doc["viscosity_carried"][0] == "nu40 x0.9..1.1 (nu100 held) -> nu(2 degC) -26 %/+31 %"
 
 
 def test_case_table_replaces_the_defaults(tmp_path, capsys):

@@ -36,7 +36,8 @@ def test_percentiles_of_a_loss_linear_in_nu_are_the_lognormal_ones():
     p0 = evaluate_case(case).total_mean_power_W  # the scalar path, not the study's
     sigma = 0.1
     spec = UncertaintySpec(distributions=(Distribution(
-        input="nu40_factor", kind="lognormal", params=(("median", 1.0), ("sigma_ln", sigma))),))
+        input="nu_factor_all_temperatures", kind="lognormal",
+        params=(("median", 1.0), ("sigma_ln", sigma))),))
     r = run(None, case, UncertaintySettings(samples=4096, sobol=False), spec)
     law = stats.lognorm(s=sigma, scale=p0)
     for name, q in (("p5", 0.05), ("p50", 0.5), ("p95", 0.95)):
@@ -105,7 +106,7 @@ def test_seed_study_numbers_hold_together():
     s = r.statistics.set_index("statistic")["loss_W"]
     assert s["p5"] < s["p50"] < s["p95"]
     assert r.samples["loss_W"].min() <= s["p5"] and s["p95"] <= r.samples["loss_W"].max()
-    assert set(r.sobol["input"]) == {"nu40_factor", "gamma"} and r.failed == 0
+    assert set(r.sobol["input"]) == {"nu40_factor", "nu100_factor", "gamma"} and r.failed == 0
     # the sample's inputs follow their laws: uniform 0.9..1.1 mean 1, gamma mean 0.566
     assert r.samples["nu40_factor"].mean() == pytest.approx(1.0, abs=1e-3)
     assert r.samples["gamma"].mean() == pytest.approx(0.566, abs=2e-3)

@@ -55,14 +55,17 @@ def test_without_the_table_the_defaults_apply_with_their_sources():
     case = seed_case()
     assert case.uncertainty is None and "uncertainty" not in case_to_dict(case)
     spec = case_uncertainty(case)
-    assert spec.names == ("nu40_factor", "gamma")
+    assert spec.names == ("nu40_factor", "nu100_factor", "gamma")
     assert spec["nu40_factor"].kind == "uniform"
     assert (spec["nu40_factor"]["low"], spec["nu40_factor"]["high"]) == (0.9, 1.1)
     assert "ISO 3448" in spec["nu40_factor"].source
     assert spec["gamma"].params == (("mean", 0.566), ("sd", 0.041))
     assert "smoothing" in spec["gamma"].source
     fields = [d.field for d in uncertainty_defaults(case)]
-    assert fields == ["uncertainty.nu40_factor", "uncertainty.gamma"]
+    assert (spec["nu100_factor"]["low"], spec["nu100_factor"]["high"]) == (0.95, 1.05)
+    assert "D2270" in spec["nu100_factor"].source
+    assert fields == ["uncertainty.nu40_factor", "uncertainty.nu100_factor",
+                      "uncertainty.gamma"]
 
 
 @pytest.mark.parametrize("table, field", [

@@ -10,6 +10,7 @@ execute them: ``tests/examples``), so the build needs no kernel and takes second
 from __future__ import annotations
 
 import os
+import re
 from pathlib import Path
 
 from docutils import nodes
@@ -111,9 +112,27 @@ def _links_out_of_docs(app, doctree) -> None:
         node.replace_self(link)
 
 
+_CITATION = re.compile(r"\[(\d+)\]_")
+_DEFINED = re.compile(r"^\s*\.\. \[(\d+)\]")
+
+
+def _shared_citations(app, what, name, obj, options, lines) -> None:
+    """A docstring's ``[1]_`` that its own References section does not define cites the
+    module's References (the project's convention: a module lists the sources of its laws
+    once, and its functions cite them by number). Sphinx has no target for it there (numpydoc
+    gives each docstring's citations labels of their own), so it is written as plain
+    ``[1]``: the number the module's page lists. Runs before numpydoc's own handler."""
+    defined = {m.group(1) for ln in lines if (m := _DEFINED.match(ln))}
+    for i, ln in enumerate(lines):
+        lines[i] = _CITATION.sub(
+            lambda m: m.group(0) if m.group(1) in defined else f"[{m.group(1)}]", ln)
+
+
 _copy_examples()
 
 
 def setup(app):
-    """Register the link rewrite before Sphinx collects the page's downloads."""
+    """The link rewrite before Sphinx collects the page's downloads; the citations before
+    numpydoc reads the docstring."""
     app.connect("doctree-read", _links_out_of_docs, priority=100)
+    app.connect("autodoc-process-docstring", _shared_citations, priority=100)

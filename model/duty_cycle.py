@@ -4,8 +4,8 @@ The seed's cycle is ``3000 rpm * sin(0.1 pi t)`` over 300 s sampled every
 0.2 s (1500 samples). A user cycle is a CSV ``time_s,speed_rpm``.
 
 Where the operating condition (oil temperature, depth) is steady over the
-cycle, the viscous power depends only on |omega|, so the sample mean of any
-loss equals a weighted sum over the distinct |omega| values: for the seed's
+cycle, the viscous power depends only on ``|omega|``, so the sample mean of any
+loss equals a weighted sum over the distinct ``|omega|`` values: for the seed's
 cycle 1500 samples reduce to 26 nodes (periodicity, sign symmetry and the
 mirror symmetry of the sine), with the same mean to rounding error.
 

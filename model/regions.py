@@ -186,7 +186,7 @@ def region_mean_power(region: Region, nodes_rad_s, weights, nu_m2_s, density_kg_
     region : Region
         R, delta, L [m] and T [-] of the clearance.
     nodes_rad_s : array or casadi.DM
-        Distinct |omega| of the cycle [rad/s].
+        Distinct ``|omega|`` of the cycle [rad/s].
     weights : array
         Time fraction of each node [-] (sum 1).
     nu_m2_s : float, array or CasADi symbol

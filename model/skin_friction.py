@@ -28,6 +28,7 @@ law (Eq. 7) and the groove-roughness law (Eq. 8):
   switch at Ta = 41.3 (where Eq. 6 jumps up to 50 % above Couette), the max
   is continuous wherever Eq. 6 is and keeps the loss rising with viscosity.
   Laminar law ``"bilgen-boulos"`` uses Eq. 6 as it stands.
+
 All functions accept floats, numpy arrays and CasADi symbols.
 
 References

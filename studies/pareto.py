@@ -167,7 +167,7 @@ def gap_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
               torque_min_Nm: float | None = None, out_dir: str | Path | None = None, *,
               spacing: str = "arc", options: RunOptions | None = None,
               thermal: str = "none") -> pd.DataFrame:
-    """The gap-loss front: ``min P s.t. delta <= eps`` for ``points`` values of eps, under
+    """The gap-loss front: ``min P subject to delta <= eps`` for ``points`` values of eps, under
     the thermal mode ``thermal``.
 
     eps runs from the gap of the unconstrained optimum down to the case's
@@ -238,7 +238,7 @@ def min_feasible_inertia_ratio(case: DesignCase, torque_min_Nm: float | None = N
 def inertia_front(case: DesignCase | None = None, points: int = DEFAULT_POINTS,
                   torque_min_Nm: float | None = None, out_dir: str | Path | None = None, *,
                   options: RunOptions | None = None, thermal: str = "none") -> pd.DataFrame:
-    """The loss-inertia front: ``min P s.t. J <= eps`` for ``points`` values of eps, under
+    """The loss-inertia front: ``min P subject to J <= eps`` for ``points`` values of eps, under
     the thermal mode ``thermal``.
 
     eps (as ``inertia_max_ratio`` of the case's unfilled rotor) runs from just

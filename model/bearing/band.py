@@ -115,7 +115,7 @@ def bearing_model_band(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s: float,
         The case's bearing (its geometry, loads and lubrication; its own model gives
         ``chosen_W``).
     nodes_rad_s : array
-        Distinct |omega| of the duty cycle [rad/s].
+        Distinct ``|omega|`` of the duty cycle [rad/s].
     weights : array
         Their time weights [-] (sum 1).
     nu_m2_s : float

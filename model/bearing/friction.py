@@ -267,7 +267,7 @@ def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
     spec : BearingSpec
         The bearing (series constants, d, D, loads, lubrication).
     speed_rpm : float, array or CasADi symbol
-        |n| [rpm].
+        ``|n|`` [rpm].
     nu_cSt : float, array or CasADi symbol
         Kinematic viscosity [cSt].
 
@@ -406,7 +406,7 @@ def bearing_mean_power(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s):
     spec : BearingSpec
         The bearing.
     nodes_rad_s : array or CasADi DM
-        Distinct |omega| of the cycle [rad/s]
+        Distinct ``|omega|`` of the cycle [rad/s]
         (:meth:`~oilgap.model.duty_cycle.DutyCycle.speed_distribution`).
     weights : array
         Their time weights [-] (sum 1).

@@ -266,7 +266,7 @@ def inlet_shear_factor(speed_rpm, nu_cSt, dm_mm):
     Parameters
     ----------
     speed_rpm : float, array or CasADi symbol
-        |n| [rpm] (>= 0).
+        ``|n|`` [rpm] (>= 0).
     nu_cSt : float, array or CasADi symbol
         Kinematic viscosity [cSt].
     dm_mm : float
@@ -287,7 +287,7 @@ def replenishment_factor(speed_rpm, nu_cSt, d_mm, D_mm, k_rs, k_z=3.1):
     Parameters
     ----------
     speed_rpm : float, array or CasADi symbol
-        |n| [rpm].
+        ``|n|`` [rpm].
     nu_cSt : float, array or CasADi symbol
         Kinematic viscosity [cSt].
     d_mm, D_mm : float
@@ -314,7 +314,7 @@ def sliding_friction_coefficient(speed_rpm, nu_cSt, dm_mm, mu_bl=MU_BL_DEFAULT,
     Parameters
     ----------
     speed_rpm : float, array or CasADi symbol
-        |n| [rpm].
+        ``|n|`` [rpm].
     nu_cSt : float, array or CasADi symbol
         Kinematic viscosity [cSt].
     dm_mm : float
@@ -376,7 +376,7 @@ def drag_vm_moment(speed_rpm, dm_mm, k_ball, v_m):
     Parameters
     ----------
     speed_rpm : float, array or CasADi symbol
-        |n| [rpm].
+        ``|n|`` [rpm].
     dm_mm : float
         Pitch diameter [mm].
     k_ball : float
@@ -404,7 +404,7 @@ def drag_rs_moment(speed_rpm, nu_cSt, d_mm, D_mm, level_ratio=1.2, k_z=3.1):
     Parameters
     ----------
     speed_rpm : float, array or CasADi symbol
-        |n| [rpm].
+        ``|n|`` [rpm].
     nu_cSt : float, array or CasADi symbol
         Kinematic viscosity [cSt].
     d_mm, D_mm : float
@@ -504,7 +504,7 @@ def sphere_drag_force(speed_m_s, diameter_m, nu_m2_s, rho_kg_m3):
     Parameters
     ----------
     speed_m_s : float or array
-        |U|, the sphere's speed through the fluid [m/s] (sign ignored).
+        ``|U|``, the sphere's speed through the fluid [m/s] (sign ignored).
     diameter_m : float
         Sphere diameter D [m].
     nu_m2_s : float or array

@@ -164,7 +164,7 @@ def check_power(power: np.ndarray, kind: str, speed_rpm: np.ndarray, oil_rows: n
     Raises
     ------
     InputError
-        Peak |power| above :data:`POWER_MAX_W`; a negative median power of the oil
+        Peak ``|power|`` above :data:`POWER_MAX_W`; a negative median power of the oil
         rows while the shaft turns (a loss is dissipated heat); a median electrical input below
         :data:`ELECTRIC_POWER_MIN_W` while the shaft turns; (fitting) a viscous power of
         exactly 0 in every oil row.

@@ -10,7 +10,7 @@ model ``P = P_k exp(-beta (T - T_k))`` through the last two points (beta from th
 of ln P) and jumps to its root with Lambert's W, ``T = T_b + W(beta R P_k exp(beta (T_k -
 T_b)))/beta`` [1]; a step outside the bracket ``[lo, hi]`` (g < 0 at lo, g > 0 at hi) is
 replaced by the Illinois false position [2]. A row stops when its next step is under eight
-rounding units of g's terms, ``8 eps (|T| + T_b + R P)`` (about 5e-14 K), and |g| at its
+rounding units of g's terms, ``8 eps (|T| + T_b + R P)`` (about 5e-14 K), and ``|g|`` at its
 last point under 16 times that; or when the step is so short that the model's loss there
 is exact to about 1e-13 (``|s| (|s| + d) <= 1e-10 K^2``, d the spacing of the model's two
 points), taken without another evaluation.

@@ -3,28 +3,27 @@
 One source of truth for what an uncertain input *is* (the ``[uncertainty]`` table, the
 uncertainty study, the robust design NLP and the vectorised loss all use these names):
 
-==================== ======= ================================================================
-input                unit    acts on
-==================== ======= ================================================================
-``nu40_factor``      [-]     factor on the oil's nu at 40 degC alone (ISO 3448's grade
-                             tolerance): its Walther line rebuilt through (f nu40, nu100)
-                             (:mod:`.grade`); nominal 1
-``nu100_factor``     [-]     factor on the oil's nu at 100 degC (its viscosity index), the
-                             Walther line rebuilt the same way; nominal 1
-``nu_factor_all_temperatures``
-                     [-]     one factor on the viscosity at every state (the Walther line
-                             shifted, :class:`~oilgap.model.fluids.ScaledFluid`); nominal 1
-``oil_temp_C``       [degC]  the case's oil temperature; with a ``[thermal]`` table the sea
-                             temperature of the balance moves by the same amount
-``depth_m``          [m]     the sea depth (the oil's gauge pressure)
-``gamma``            [-]     groove exponent gamma of Eq. 8 (``[friction] gamma``)
-``friction_scale``   [-]     factor on C_m (the law's ``scale``; its ``C`` for the power-law
-                             form); nominal 1
-``film_strength``    [-]     film strength s on the Nahme number (``[thermal]``; acts under
-                             the ``film``/``full`` thermal modes only)
-``bearing_drag_scale`` [-]   factor on the bearing's SKF drag terms; nominal 1
-``peak_speed_rpm``   [rpm]   the duty cycle's peak speed (every speed scaled alike)
-==================== ======= ================================================================
+=============================== ====== ============================================================
+input                           unit   acts on
+=============================== ====== ============================================================
+``nu40_factor``                 [-]    factor on the oil's nu at 40 degC alone (ISO 3448's grade
+                                       tolerance): its Walther line rebuilt through (f nu40, nu100)
+                                       (:mod:`oilgap.model.uncertain.grade`); nominal 1
+``nu100_factor``                [-]    factor on the oil's nu at 100 degC (its viscosity index), the
+                                       Walther line rebuilt the same way; nominal 1
+``nu_factor_all_temperatures``  [-]    one factor on the viscosity at every state (the Walther line
+                                       shifted, :class:`~oilgap.model.fluids.ScaledFluid`); nominal 1
+``oil_temp_C``                  [degC] the case's oil temperature; with a ``[thermal]`` table the sea
+                                       temperature of the balance moves by the same amount
+``depth_m``                     [m]    the sea depth (the oil's gauge pressure)
+``gamma``                       [-]    groove exponent gamma of Eq. 8 (``[friction] gamma``)
+``friction_scale``              [-]    factor on C_m (the law's ``scale``; its ``C`` for the power-law
+                                       form); nominal 1
+``film_strength``               [-]    film strength s on the Nahme number (``[thermal]``; acts under
+                                       the ``film``/``full`` thermal modes only)
+``bearing_drag_scale``          [-]    factor on the bearing's SKF drag terms; nominal 1
+``peak_speed_rpm``              [rpm]  the duty cycle's peak speed (every speed scaled alike)
+=============================== ====== ============================================================
 
 :func:`apply_inputs` is the scalar reference path: a copy of the case with the given
 values, to be evaluated by :func:`oilgap.model.joint_loss.joint_mean_power` or

@@ -56,7 +56,7 @@ class BaselineFit:
     temp_range_C : (float, float)
         Temperature range of the oil-free runs [degC].
     speed_max_rpm : float
-        Largest |speed| of the oil-free runs [rpm].
+        Largest ``|speed|`` of the oil-free runs [rpm].
     notes : tuple of str
         Warnings (temperature independence, extrapolation).
     cov : array, optional

@@ -35,8 +35,8 @@ stages of this package in order:
    cannot identify a parameter holds it at its all-data value.
 7. Each parameter and coefficient with a jackknife-over-folds 95 % confidence
    interval (C and the scale in log space), widened by the baseline's error
-   (:mod:`.uncertainty`).
-8. Tables and records (:mod:`.results`).
+   (:mod:`~oilgap.optim.calibration.uncertainty`).
+8. Tables and records (:mod:`~oilgap.optim.calibration.results`).
 
 References
 ----------

@@ -49,11 +49,11 @@ lasso path whatever the version's defaults and the core count (issue 18)."""
 
 
 class SignConstrainedLasso:
-    """Sign-constrained lasso ``min ||A x - b||^2 + pen . |x|, lo <= x <= hi`` (cvxpy) [1].
+    """Sign-constrained lasso ``min ||A x - b||^2 + pen * |x|, lo <= x <= hi`` (cvxpy) [1].
 
     A and the data are fixed; ``pen`` (the penalty weights, zero on the
     calibration's own columns) is a parameter, so the path re-solves without
-    recompiling. |x| is written with an epigraph variable t >= |x|.
+    recompiling. ``|x|`` is written with an epigraph variable t >= ``|x|``.
 
     Parameters
     ----------
@@ -79,7 +79,7 @@ class SignConstrainedLasso:
         Parameters
         ----------
         pen : array, shape (p,)
-            Penalty weight of each |x_j| (>= 0).
+            Penalty weight of each ``|x_j|`` (>= 0).
 
         Returns
         -------

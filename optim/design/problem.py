@@ -31,9 +31,10 @@ IPOPT is called through the problem's :class:`~.session.SolverSession` (``sessio
 every design solve is: its start clamp, bound snapping, warm-start retry, multi-start and
 failure message are those of :mod:`.session`.
 
-Built with a thermal mode (``thermal="bulk"``, ``"film"``, ``"full"``; :mod:`.thermal`)
-the problem's :meth:`DesignProblem.solve` solves the NLP of :mod:`.thermal` instead,
-which carries the oil temperature as a variable and the heat balance as an equality;
+Built with a thermal mode (``thermal="bulk"``, ``"film"``, ``"full"``;
+:mod:`~oilgap.optim.design.thermal`) the problem's :meth:`DesignProblem.solve` solves the
+NLP of :mod:`~oilgap.optim.design.thermal` instead, which carries the oil temperature as a
+variable and the heat balance as an equality;
 :meth:`DesignProblem.solve_isothermal` still solves the one above (the optimum without
 heating, :func:`~oilgap.optim.design.heating.compare_heating`).
 
@@ -118,8 +119,8 @@ class DesignProblem:
     thermal : str or None
         Thermal mode (:mod:`oilgap.model.joint_loss`): ``"none"`` (default, the
         isothermal NLP above), ``"bulk"``, ``"film"`` or ``"full"`` (:meth:`solve`
-        solves the NLP of :mod:`.thermal`, which carries the oil temperature), None for
-        the default (``bulk`` with ``[thermal]``, else ``none``).
+        solves the NLP of :mod:`~oilgap.optim.design.thermal`, which carries the oil
+        temperature), None for the default (``bulk`` with ``[thermal]``, else ``none``).
 
     Attributes
     ----------

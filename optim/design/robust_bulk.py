@@ -13,9 +13,9 @@ C_m): its oil by ``nu40_factor``/``nu100_factor`` (or the uniform factor), its d
 gamma, C_m scale, bearing drag scale,
 peak speed and, for ``oil_temp_C``, the sea temperature moved by the same amount. The
 loss is the model's own composition (:func:`~oilgap.model.joint_loss.joint_mean_power`,
-the one the nominal thermal NLP uses, :mod:`.thermal`), one SX function per scenario; the
-NLP strings the N calls together in MX and CasADi derives its exact first and second
-derivatives (no hand assembly: cost is not the target here). Statistics as
+the one the nominal thermal NLP uses, :mod:`~oilgap.optim.design.thermal`), one SX function per
+scenario; the NLP strings the N calls together in MX and CasADi derives its exact first and
+second derivatives (no hand assembly: cost is not the target here). Statistics as
 :mod:`.robust_nlp`; the geometry rows are the same (the third, the nominal loss bound of
 the Pareto, is inactive: under ``bulk`` the Pareto is not offered). Seed paper [1],
 heat balance [2].

@@ -16,7 +16,7 @@ through the scalar reference path, :func:`~oilgap.model.uncertain.apply_inputs`:
   (with the scenario's drag scale).
 
 Region 1's loss of a design x in scenario i is then :func:`.objective.region1_mean_power`
-with these data: the NLP calls it with CasADi symbols (:mod:`.robust`), and
+with these data: the NLP calls it with CasADi symbols (:mod:`~oilgap.optim.design.robust`), and
 :meth:`ScenarioSet.losses` with numpy arrays of designs (the brute-force check and the
 reports). Seed paper, Eqs. 4-10 [1]; ISO 3448 grades [2].
 

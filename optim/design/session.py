@@ -1,7 +1,8 @@
 """One IPOPT session for the design NLP: every solve of every thermal mode goes through it.
 
-A formulation (the isothermal NLP of :mod:`.problem`, the thermal NLPs of :mod:`.thermal`)
-builds its symbols, objective, constraints and report functions; the solving is here, once:
+A formulation (the isothermal NLP of :mod:`.problem`, the thermal NLPs of
+:mod:`~oilgap.optim.design.thermal`) builds its symbols, objective, constraints and report
+functions; the solving is here, once:
 
 * :class:`SolverSession`: the IPOPT solver of one NLP (the one call to ``ca.nlpsol`` for
   the design NLP), its warm-start twin built on first use, the ordinary call

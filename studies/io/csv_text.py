@@ -4,7 +4,7 @@ writes (``index=False``, the defaults otherwise), at a fraction of its time.
 ``to_csv`` formats each number through NumPy (about 1 us a cell) and writes the rows
 through the :mod:`csv` module. Here a float column's texts are Arrow's shortest
 round-trip texts where they read as Python's ``repr`` (a non-integral value with
-1e-4 <= |x| < 1e10), ``repr`` elsewhere; a text column's cells are quoted once per
+1e-4 <= ``|x|`` < 1e10), ``repr`` elsewhere; a text column's cells are quoted once per
 distinct value, as the :mod:`csv` module quotes them (QUOTE_MINIMAL); then each row's
 fields are joined. A table with a column of another kind (bool, dates, mixed objects)
 is left to ``to_csv`` (:func:`csv_text` returns None).

@@ -10,7 +10,7 @@ under the thermal mode ``bulk``/``full``; default 0-7000 m x 0-40 degC) through
   Default 13 cSt: kappa = nu/nu1 >= 1 with the ISO 281 rated viscosity
   ``nu1 = 4500 n^-0.5 dm^-0.5`` [cSt] (n >= 1000 rpm) of a bearing of pitch
   diameter dm ~ 49 mm (the seed's region 2: 2 (R2 + delta2/2)), which is
-  11.6 cSt at the seed's 3000 rpm peak and 14.6 cSt at its 1910 rpm mean |speed|.
+  11.6 cSt at the seed's 3000 rpm peak and 14.6 cSt at its 1910 rpm mean ``|speed|``.
 * **Cold limit** (start-up torque): the highest viscosity in the envelope
   (coldest, deepest point) must stay at or below ``nu_max_cSt``. Default
   1000 cSt, the usual cold-start ceiling of hydraulic practice; the seed's own

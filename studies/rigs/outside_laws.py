@@ -173,7 +173,7 @@ def enclosed_disc_power(omega, nu, rho, r_outer_m, r_inner_m, axial_gap_m, merge
     """Both end faces of the rotor in a housing [W], Daily & Nece [5].
 
     Regime II (laminar, separate boundary layers): ``C_M = 3.70 G^0.1 Re^-0.5``,
-    G = s/r_o, Re = |w| r_o^2/nu; with ``merged`` the larger of that and regime I
+    G = s/r_o, Re = ``|w|`` r_o^2/nu; with ``merged`` the larger of that and regime I
     (Couette disc) ``2 pi / (G Re)``. ``P = 0.5 C_M rho |w|^3 (r_o^5 - r_i^5)``.
     """
     w = np.abs(omega)

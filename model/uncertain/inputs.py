@@ -13,14 +13,14 @@ input                           unit   acts on
                                        Walther line rebuilt the same way; nominal 1
 ``nu_factor_all_temperatures``  [-]    one factor on the viscosity at every state (the Walther line
                                        shifted, :class:`~oilgap.model.fluids.ScaledFluid`); nominal 1
-``oil_temp_C``                  [degC] the case's oil temperature; with a ``[thermal]`` table the sea
-                                       temperature of the balance moves by the same amount
+``oil_temp_C``                  [degC] the case's oil temperature; with a ``[thermal]`` table the
+                                       sea temperature of the balance moves by the same amount
 ``depth_m``                     [m]    the sea depth (the oil's gauge pressure)
 ``gamma``                       [-]    groove exponent gamma of Eq. 8 (``[friction] gamma``)
-``friction_scale``              [-]    factor on C_m (the law's ``scale``; its ``C`` for the power-law
-                                       form); nominal 1
-``film_strength``               [-]    film strength s on the Nahme number (``[thermal]``; acts under
-                                       the ``film``/``full`` thermal modes only)
+``friction_scale``              [-]    factor on C_m (the law's ``scale``; its ``C`` for the
+                                       power-law form); nominal 1
+``film_strength``               [-]    film strength s on the Nahme number (``[thermal]``; acts
+                                       under the ``film``/``full`` thermal modes only)
 ``bearing_drag_scale``          [-]    factor on the bearing's SKF drag terms; nominal 1
 ``peak_speed_rpm``              [rpm]  the duty cycle's peak speed (every speed scaled alike)
 =============================== ====== ============================================================

@@ -11,8 +11,9 @@ input                           unit   acts on
                                        (:mod:`oilgap.model.uncertain.grade`); nominal 1
 ``nu100_factor``                [-]    factor on the oil's nu at 100 degC (its viscosity index), the
                                        Walther line rebuilt the same way; nominal 1
-``nu_factor_all_temperatures``  [-]    one factor on the viscosity at every state (the Walther line
-                                       shifted, :class:`~oilgap.model.fluids.ScaledFluid`); nominal 1
+``nu_factor_all_temperatures``  [-]    one factor on the viscosity at every state (the Walther
+                                       line shifted, :class:`~oilgap.model.fluids.ScaledFluid`);
+                                       nominal 1
 ``oil_temp_C``                  [degC] the case's oil temperature; with a ``[thermal]`` table the
                                        sea temperature of the balance moves by the same amount
 ``depth_m``                     [m]    the sea depth (the oil's gauge pressure)

@@ -33,6 +33,7 @@ from .case_limits import (
     MOTOR_RANGES,
     SLOT_COUNT_REASON,
     check_bearing_fits,
+    check_celsius,
     check_gap,
     check_motor_fits,
     check_proportions,
@@ -235,7 +236,7 @@ class OperatingPoint:
     depth_m : float
         Sea depth [m], in [0, 11000]; the oil carries the water column's pressure.
     oil_temp_C : float
-        Oil temperature [degC], in [-60, 300].
+        Oil temperature [degC], in [-60, 230].
     """
 
     depth_m: float = 3000.0
@@ -243,7 +244,7 @@ class OperatingPoint:
 
     def __post_init__(self):
         check_range("depth_m", self.depth_m, 0.0, 11_000.0, "operating")
-        check_range("oil_temp_C", self.oil_temp_C, -60.0, 300.0, "operating")
+        check_celsius("oil_temp_C", self.oil_temp_C, "operating")
 
 
 @dataclass(frozen=True)
@@ -334,7 +335,7 @@ class MissionSegment:
 
     def __post_init__(self):
         check_range("depth_m", self.depth_m, 0.0, 11_000.0, "mission")
-        check_range("oil_temp_C", self.oil_temp_C, -60.0, 300.0, "mission")
+        check_celsius("oil_temp_C", self.oil_temp_C, "mission")
         check_range("fraction", self.fraction, 0.0, 1.0, "mission")
 
 
@@ -346,7 +347,7 @@ class ThermalSpec:
     Attributes
     ----------
     sea_temp_C : float
-        Sea temperature [degC], in [-60, 300].
+        Sea temperature [degC], in [-60, 230].
     resistance_K_W : float
         Thermal resistance oil to sea [K/W], > 0.
     heat_capacity_J_K : float
@@ -382,7 +383,7 @@ class ThermalSpec:
 
     def __post_init__(self):
         where = "thermal"
-        check_range("sea_temp_C", self.sea_temp_C, -60.0, 300.0, where)
+        check_celsius("sea_temp_C", self.sea_temp_C, where)
         check_positive("resistance_K_per_W", self.resistance_K_W, where)
         check_positive("heat_capacity_J_per_K", self.heat_capacity_J_K, where)
         check_range("other_heat_W", self.other_heat_W, 0.0, None, where)

@@ -45,7 +45,7 @@ from ..units import MM_TO_M, celsius_to_kelvin
 from .case_bearing import BEARING_TABLE, bearing_from_doc
 from .case_uncertainty import UNCERTAINTY_TABLE, uncertainty_from_doc
 from .defaults import reader_defaults
-from .inputs import cell_for_message, read_input_text
+from .inputs import cell_for_message, file_kind, read_input_text
 
 MAX_CASE_BYTES = 16 * 2**20
 """Largest case TOML file read [bytes] (16 MiB; the seed's is under 2 kB)."""
@@ -412,6 +412,11 @@ def read_case_toml(path: str | Path) -> DesignCase:
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
+        kind = file_kind(path, text)
+        if kind in ("CSV", "JSON"):
+            raise InputError("case TOML", str(path), f"is a {kind} file where a case TOML is "
+                             "expected (rig data go to oilgap loop DATA.csv; a loop.json to "
+                             "predict --model)") from None
         raise InputError("case TOML", str(path), f"is malformed: {e}") from None
     return case_from_dict(doc, path.parent)
 

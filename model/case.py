@@ -35,6 +35,7 @@ from .case_limits import (
     check_bearing_fits,
     check_celsius,
     check_gap,
+    check_heat_source,
     check_motor_fits,
     check_proportions,
     check_size,
@@ -387,6 +388,7 @@ class ThermalSpec:
         check_positive("resistance_K_per_W", self.resistance_K_W, where)
         check_positive("heat_capacity_J_per_K", self.heat_capacity_J_K, where)
         check_range("other_heat_W", self.other_heat_W, 0.0, None, where)
+        check_heat_source(self.sea_temp_C, self.resistance_K_W, self.other_heat_W, where)
         if self.walls not in WALL_CONDITIONS:
             raise InputError("walls", self.walls, f"one of {', '.join(WALL_CONDITIONS)}", where)
         if self.conductivity_W_mK is not None:

@@ -21,6 +21,7 @@ from typing import Any
 
 from .errors import InputError, check_range
 from .motor import motor_torque
+from .thermal import MAX_OIL_TEMP_C
 from .units import MM_TO_M, ZERO_CELSIUS_K
 
 MAX_SLOT_COUNT = 1000
@@ -117,6 +118,46 @@ def check_celsius(field: str, value: Any, where: str) -> float:
                          f"{MAX_INPUT_TEMP_C:g}] degC: compensating oils are used below their "
                          f"flash point (mineral hydraulic oils 180-230 degC){hint}", where)
     return x
+
+
+def check_heat_source(sea_temp_C: float, resistance_K_W: float, other_heat_W: float,
+                      where: str) -> None:
+    """Refuse a ``[thermal]`` table whose other heat alone, before any viscous loss, puts
+    the oil at or above the balance's cap :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`:
+    ``T_sea + R Q >= 250 degC``. No balance ``T = T_sea + R (P(T) + Q)`` with a loss
+    ``P >= 0`` can hold it, whatever the joint; it is an impossible input (exit 2), not a
+    solver failure.
+
+    Parameters
+    ----------
+    sea_temp_C : float
+        Sea temperature [degC].
+    resistance_K_W : float
+        Thermal resistance to the sea R [K/W].
+    other_heat_W : float
+        Heat of other sources Q [W].
+    where : str
+        Table it came from [-].
+
+    Raises
+    ------
+    InputError
+        Naming ``other_heat_W`` (``resistance_K_per_W`` when Q = 0 cannot be the cause),
+        the base temperature and the cap.
+
+    References
+    ----------
+    T. L. Bergman et al., *Fundamentals of Heat and Mass Transfer*, 7th ed., Wiley 2011,
+    sec. 3.1 (thermal resistance).
+    """
+    base = sea_temp_C + resistance_K_W * other_heat_W
+    if base < MAX_OIL_TEMP_C:
+        return
+    raise InputError("other_heat_W", other_heat_W, f"the sea {sea_temp_C:g} degC + "
+                     f"resistance_K_per_W {resistance_K_W:g} K/W x other heat alone is "
+                     f"{base:.4g} degC >= {MAX_OIL_TEMP_C:g} degC, before any viscous loss: no "
+                     "oil temperature balances this heat source (a smaller other_heat_W or "
+                     "resistance_K_per_W)", where)
 
 
 def in_mm(value_m: float) -> float:

@@ -316,6 +316,11 @@ class DesignBounds:
                    min(1.2 * region1.length, MAX_LENGTH_M))
 
 
+MISSION_TEMP_KEYS = ("oil_temp_C", "sea_temp_C")
+"""The keys of a mission row's temperature: the oil's (thermal modes none/film) or the
+sea's (bulk/full)."""
+
+
 @dataclass(frozen=True)
 class MissionSegment:
     """One row of a mission profile: a steady condition held for a fraction of the time.
@@ -325,18 +330,28 @@ class MissionSegment:
     depth_m : float
         Sea depth [m].
     oil_temp_C : float
-        Oil temperature [degC].
+        The segment's temperature [degC]: the oil's, or the sea's when ``temp_key`` is
+        ``"sea_temp_C"`` (under the thermal modes ``bulk``/``full``, where the oil's is the
+        balance's result).
     fraction : float
         Share of the mission time [-]; the fractions of a mission sum to 1.
+    temp_key : str
+        The key the temperature was written under: ``"oil_temp_C"`` (default) or
+        ``"sea_temp_C"`` [-]; the oil-grade study refuses an oil temperature under
+        ``bulk``/``full`` and a sea temperature under ``none``/``film`` (issue 26).
     """
 
     depth_m: float
     oil_temp_C: float
     fraction: float
+    temp_key: str = "oil_temp_C"
 
     def __post_init__(self):
+        if self.temp_key not in MISSION_TEMP_KEYS:
+            raise InputError("temp_key", self.temp_key, f"one of {', '.join(MISSION_TEMP_KEYS)}",
+                             "mission")
         check_range("depth_m", self.depth_m, 0.0, 11_000.0, "mission")
-        check_celsius("oil_temp_C", self.oil_temp_C, "mission")
+        check_celsius(self.temp_key, self.oil_temp_C, "mission")
         check_range("fraction", self.fraction, 0.0, 1.0, "mission")
 
 

@@ -41,6 +41,7 @@ from fnmatch import fnmatch
 from io import StringIO
 from pathlib import Path
 
+import numpy as np
 import pandas as pd
 
 HERE = Path(__file__).resolve().parent
@@ -266,15 +267,20 @@ def _with_key_inputs(points: pd.DataFrame, results: Path) -> tuple[pd.DataFrame,
     return out, [f"point_key {k} is in no row of {results.name}" for k in missing[:5]]
 
 
-def _same(u, v, rtol: float, atol: float) -> bool:
-    num = isinstance(u, (int, float)) and isinstance(v, (int, float))
-    if num:
-        return _close(float(u), float(v), rtol, atol)
-    return u == v or (pd.isna(u) and pd.isna(v))
+def _same(u: pd.Series, v: pd.Series, rtol: float, atol: float) -> np.ndarray:
+    """Row by row: the cells of two columns are equal (numbers as :func:`_close`, NaN equal
+    to NaN; booleans and text exactly)."""
+    if u.dtype.kind in "iuf" and v.dtype.kind in "iuf":
+        a, b = u.to_numpy(dtype=float), v.to_numpy(dtype=float)
+        with np.errstate(invalid="ignore"):
+            close = np.abs(a - b) <= atol + rtol * np.maximum(np.abs(a), np.abs(b))
+        return close | (np.isnan(a) & np.isnan(b))
+    return _exactly(u, v)
 
 
-def _exactly(u, v) -> bool:
-    return u == v or (pd.isna(u) and pd.isna(v))
+def _exactly(u: pd.Series, v: pd.Series) -> np.ndarray:
+    a, b = u.to_numpy(dtype=object), v.to_numpy(dtype=object)
+    return (a == b) | (pd.isna(a) & pd.isna(b))
 
 
 def compare_csv(a: Path, b: Path, rel: str = "") -> list[str]:
@@ -299,18 +305,27 @@ def compare_csv(a: Path, b: Path, rel: str = "") -> list[str]:
     x = x.sort_values(ids, kind="mergesort", ignore_index=True, na_position="last")
     y = y.sort_values(ids, kind="mergesort", ignore_index=True, na_position="last")
     tols = {c: tolerance(rel, str(c).removeprefix(KEY_INPUTS)) for c in x.columns}
-    for row_x, row_y in zip(x.to_dict("records"), y.to_dict("records"), strict=True):
-        name = " ".join(f"{c}={row_x[c]}" for c in ids)
-        if not all(_same(row_x[c], row_y[c], *tols[c]) for c in ids):
-            out.append(f"{a.name}[{name}]: no row with these inputs (got "
-                       + " ".join(f"{c}={row_y[c]}" for c in ids) + ")")
+
+    def cell(df: pd.DataFrame, c: str, i: int):
+        v = df[c].iloc[i]
+        return v.item() if isinstance(v, np.generic) else v
+
+    def name(i: int) -> str:
+        return " ".join(f"{c}={cell(x, c, i)}" for c in ids)
+
+    found = np.logical_and.reduce([_same(x[c], y[c], *tols[c]) for c in ids])
+    exact = np.logical_and.reduce([_exactly(x[c], y[c]) for c in ids])
+    for i in np.flatnonzero(~found):
+        out.append(f"{a.name}[{name(i)}]: no row with these inputs (got "
+                   + " ".join(f"{c}={cell(y, c, i)}" for c in ids) + ")")
+    for c in x.columns:
+        if c in TIMING_KEYS or c in ids:
             continue
-        exact = all(_exactly(row_x[c], row_y[c]) for c in ids)
-        for c in x.columns:
-            if c in TIMING_KEYS or c in ids or (c == "point_key" and not exact):
-                continue
-            if not _same(row_x[c], row_y[c], *tols[c]):
-                out.append(f"{a.name}[{name}, {c}]: {row_x[c]!r} != {row_y[c]!r}")
+        bad = found & ~_same(x[c], y[c], *tols[c])
+        if c == "point_key":
+            bad &= exact
+        out += [f"{a.name}[{name(i)}, {c}]: {cell(x, c, i)!r} != {cell(y, c, i)!r}"
+                for i in np.flatnonzero(bad)]
     return out
 
 

@@ -243,6 +243,7 @@ class Loop(LoopEstimator, ResultView):
         finally:
             self.case, self.oils, self.effects = given
         warn_unit_hints(self)
+        self.data_.warn_if_many_dropped()
         return self
 
     @checked(data=DATA, stage=STAGE)

@@ -48,10 +48,11 @@ def lazy(module: str) -> Any:
 
 def new_axes(ax: Any = None) -> Any:
     """``ax`` (checked: a matplotlib Axes), or the axes of a new pyplot figure (shown
-    inline by Jupyter)."""
+    inline by Jupyter) with constrained layout, so that long tick labels and titles are
+    not clipped when it is shown or saved (issue 26: ``opt.plot()``)."""
     if ax is not None:
         return check_arg("ax", ax, AX)
-    _, ax = lazy("matplotlib.pyplot").subplots()
+    _, ax = lazy("matplotlib.pyplot").subplots(layout="constrained")
     return ax
 
 

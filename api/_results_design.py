@@ -23,8 +23,12 @@ MODE_TEXT = THERMAL_MODE_TEXT
 
 
 def _fmt(v: float) -> str:
+    """A number of the tables: 5 significant digits below 1 (an inertia of 0.0012345 kg m^2
+    shows its change, not 0.0012 twice; issue 26), 4 decimals to 100, 2 above."""
     a = abs(v)
-    if v == 0 or 1e-3 <= a < 1e5:
+    if 1e-3 <= a < 1:
+        return f"{v:#.5g}"
+    if v == 0 or 1 <= a < 1e5:
         return f"{v:.4f}" if a < 100 else f"{v:.2f}"
     return f"{v:.4e}"
 
@@ -345,8 +349,8 @@ class Optimization(ResultView):
         ax.barh(keys, pct, color=["tab:green" if p <= 0 else "tab:red" for p in pct])
         ax.axvline(0, color="k", lw=0.8)
         ax.set_xlabel("optimal vs initial design [%]")
-        ax.set_title(f"{self.case.name}: {i['mean_power_W']:.2f} -> {o['mean_power_W']:.2f} W "
-                     f"(thermal {self.thermal_mode})")
+        ax.set_title(f"{self.case.name}\n{i['mean_power_W']:.2f} -> {o['mean_power_W']:.2f} W "
+                     f"(thermal {self.thermal_mode})")  # two lines: a long name is not clipped
         ax.grid(axis="x", alpha=0.3)
         return ax
 

@@ -34,8 +34,10 @@ _DESIGN_ROWS = (("R_mm", "radius R = T2"), ("delta_mm", "clearance delta (magnet
 
 
 def _f(v: float) -> str:
-    a = abs(v)
-    return f"{v:.4f}" if v == 0 or 1e-3 <= a < 1e4 else f"{v:.4e}"
+    a = abs(v)  # 5 significant digits below 1, as optimize's table (issue 26: inertia)
+    if 1e-3 <= a < 1:
+        return f"{v:#.5g}"
+    return f"{v:.4f}" if v == 0 or 1 <= a < 1e4 else f"{v:.4e}"
 
 
 def _header(r: RobustDesign, given: dict) -> list[str]:

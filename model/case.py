@@ -33,7 +33,9 @@ from .case_limits import (
     MOTOR_RANGES,
     SLOT_COUNT_REASON,
     check_bearing_fits,
+    check_celsius,
     check_gap,
+    check_heat_source,
     check_motor_fits,
     check_proportions,
     check_size,
@@ -235,7 +237,7 @@ class OperatingPoint:
     depth_m : float
         Sea depth [m], in [0, 11000]; the oil carries the water column's pressure.
     oil_temp_C : float
-        Oil temperature [degC], in [-60, 300].
+        Oil temperature [degC], in [-60, 230].
     """
 
     depth_m: float = 3000.0
@@ -243,7 +245,7 @@ class OperatingPoint:
 
     def __post_init__(self):
         check_range("depth_m", self.depth_m, 0.0, 11_000.0, "operating")
-        check_range("oil_temp_C", self.oil_temp_C, -60.0, 300.0, "operating")
+        check_celsius("oil_temp_C", self.oil_temp_C, "operating")
 
 
 @dataclass(frozen=True)
@@ -314,6 +316,11 @@ class DesignBounds:
                    min(1.2 * region1.length, MAX_LENGTH_M))
 
 
+MISSION_TEMP_KEYS = ("oil_temp_C", "sea_temp_C")
+"""The keys of a mission row's temperature: the oil's (thermal modes none/film) or the
+sea's (bulk/full)."""
+
+
 @dataclass(frozen=True)
 class MissionSegment:
     """One row of a mission profile: a steady condition held for a fraction of the time.
@@ -323,18 +330,28 @@ class MissionSegment:
     depth_m : float
         Sea depth [m].
     oil_temp_C : float
-        Oil temperature [degC].
+        The segment's temperature [degC]: the oil's, or the sea's when ``temp_key`` is
+        ``"sea_temp_C"`` (under the thermal modes ``bulk``/``full``, where the oil's is the
+        balance's result).
     fraction : float
         Share of the mission time [-]; the fractions of a mission sum to 1.
+    temp_key : str
+        The key the temperature was written under: ``"oil_temp_C"`` (default) or
+        ``"sea_temp_C"`` [-]; the oil-grade study refuses an oil temperature under
+        ``bulk``/``full`` and a sea temperature under ``none``/``film`` (issue 26).
     """
 
     depth_m: float
     oil_temp_C: float
     fraction: float
+    temp_key: str = "oil_temp_C"
 
     def __post_init__(self):
+        if self.temp_key not in MISSION_TEMP_KEYS:
+            raise InputError("temp_key", self.temp_key, f"one of {', '.join(MISSION_TEMP_KEYS)}",
+                             "mission")
         check_range("depth_m", self.depth_m, 0.0, 11_000.0, "mission")
-        check_range("oil_temp_C", self.oil_temp_C, -60.0, 300.0, "mission")
+        check_celsius(self.temp_key, self.oil_temp_C, "mission")
         check_range("fraction", self.fraction, 0.0, 1.0, "mission")
 
 
@@ -346,7 +363,7 @@ class ThermalSpec:
     Attributes
     ----------
     sea_temp_C : float
-        Sea temperature [degC], in [-60, 300].
+        Sea temperature [degC], in [-60, 230].
     resistance_K_W : float
         Thermal resistance oil to sea [K/W], > 0.
     heat_capacity_J_K : float
@@ -382,10 +399,11 @@ class ThermalSpec:
 
     def __post_init__(self):
         where = "thermal"
-        check_range("sea_temp_C", self.sea_temp_C, -60.0, 300.0, where)
+        check_celsius("sea_temp_C", self.sea_temp_C, where)
         check_positive("resistance_K_per_W", self.resistance_K_W, where)
         check_positive("heat_capacity_J_per_K", self.heat_capacity_J_K, where)
         check_range("other_heat_W", self.other_heat_W, 0.0, None, where)
+        check_heat_source(self.sea_temp_C, self.resistance_K_W, self.other_heat_W, where)
         if self.walls not in WALL_CONDITIONS:
             raise InputError("walls", self.walls, f"one of {', '.join(WALL_CONDITIONS)}", where)
         if self.conductivity_W_mK is not None:

@@ -19,9 +19,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from .errors import InputError
+from .errors import InputError, check_range
 from .motor import motor_torque
-from .units import MM_TO_M
+from .thermal import MAX_OIL_TEMP_C
+from .units import MM_TO_M, ZERO_CELSIUS_K
 
 MAX_SLOT_COUNT = 1000
 """Most stator slots [-]: the largest hydro generators have a few hundred."""
@@ -72,6 +73,91 @@ MAX_GAP_RATIO = 1.0
 """Largest gap over radius delta/R [-]: Eq. 6 and the Couette law describe the annulus
 between close cylinders; a gap wider than the rotor's radius is open fluid, not a
 clearance."""
+
+
+MIN_INPUT_TEMP_C = -60.0
+"""Coldest oil or sea temperature of a case [degC]: below the pour point of every
+compensating oil (the coldest seas are at -2 degC)."""
+
+MAX_INPUT_TEMP_C = 230.0
+"""Hottest oil or sea temperature of a case [degC]: compensating oils are used well below
+their flash point (mineral hydraulic oils 180-230 degC); a larger number is most often
+a temperature in kelvin written in a degC key (275.15 K is 2 degC)."""
+
+
+def check_celsius(field: str, value: Any, where: str) -> float:
+    """An input temperature [degC] in [:data:`MIN_INPUT_TEMP_C`, :data:`MAX_INPUT_TEMP_C`],
+    or an InputError; above the range, with a "kelvin in a degC key?" hint as a length in
+    m written in a mm key gets its hint.
+
+    Parameters
+    ----------
+    field : str
+        TOML key (``"oil_temp_C"``, ``"sea_temp_C"``) [-].
+    value : Any
+        The value as written [degC].
+    where : str
+        Table it came from [-].
+
+    Returns
+    -------
+    float
+        ``float(value)`` [degC].
+
+    Raises
+    ------
+    InputError
+        Not finite, below or above the range.
+    """
+    x = check_range(field, value, MIN_INPUT_TEMP_C, None, where)
+    if x > MAX_INPUT_TEMP_C:
+        as_c = x - ZERO_CELSIUS_K
+        hint = (f"; kelvin in a degC key? {x:g} K is {as_c:.4g} degC"
+                if MIN_INPUT_TEMP_C <= as_c <= MAX_INPUT_TEMP_C else "")
+        raise InputError(field, value, f"allowed range is [{MIN_INPUT_TEMP_C:g}, "
+                         f"{MAX_INPUT_TEMP_C:g}] degC: compensating oils are used below their "
+                         f"flash point (mineral hydraulic oils 180-230 degC){hint}", where)
+    return x
+
+
+def check_heat_source(sea_temp_C: float, resistance_K_W: float, other_heat_W: float,
+                      where: str) -> None:
+    """Refuse a ``[thermal]`` table whose other heat alone, before any viscous loss, puts
+    the oil at or above the balance's cap :data:`~oilgap.model.thermal.MAX_OIL_TEMP_C`:
+    ``T_sea + R Q >= 250 degC``. No balance ``T = T_sea + R (P(T) + Q)`` with a loss
+    ``P >= 0`` can hold it, whatever the joint; it is an impossible input (exit 2), not a
+    solver failure.
+
+    Parameters
+    ----------
+    sea_temp_C : float
+        Sea temperature [degC].
+    resistance_K_W : float
+        Thermal resistance to the sea R [K/W].
+    other_heat_W : float
+        Heat of other sources Q [W].
+    where : str
+        Table it came from [-].
+
+    Raises
+    ------
+    InputError
+        Naming ``other_heat_W`` (``resistance_K_per_W`` when Q = 0 cannot be the cause),
+        the base temperature and the cap.
+
+    References
+    ----------
+    T. L. Bergman et al., *Fundamentals of Heat and Mass Transfer*, 7th ed., Wiley 2011,
+    sec. 3.1 (thermal resistance).
+    """
+    base = sea_temp_C + resistance_K_W * other_heat_W
+    if base < MAX_OIL_TEMP_C:
+        return
+    raise InputError("other_heat_W", other_heat_W, f"the sea {sea_temp_C:g} degC + "
+                     f"resistance_K_per_W {resistance_K_W:g} K/W x other heat alone is "
+                     f"{base:.4g} degC >= {MAX_OIL_TEMP_C:g} degC, before any viscous loss: no "
+                     "oil temperature balances this heat source (a smaller other_heat_W or "
+                     "resistance_K_per_W)", where)
 
 
 def in_mm(value_m: float) -> float:

@@ -22,6 +22,7 @@ import csv
 import io
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -48,6 +49,46 @@ unit slip (rad/s x 100, rpm x 60)."""
 
 SPEED_REASON = ("faster than any electric machine (high-speed spindles reach ~1e5 rpm); "
                 "a larger number is a unit slip")
+
+MIN_PEAK_SPEED_RPM = 1.0e-3
+"""Slowest peak speed of a sine duty cycle [rpm]: one turn in 11.6 days; slower, the joint
+is at rest for its viscous loss (below 1e-10 W for the seed joint), and a denormal number
+(5e-324) would underflow to a cycle at rest."""
+
+
+def check_peak_speed(value: Any, where: str = "duty_cycle") -> float:
+    """A peak speed [rpm] in [:data:`MIN_PEAK_SPEED_RPM`, :data:`MAX_SPEED_RPM`], or an
+    InputError saying which side it is on and why.
+
+    Parameters
+    ----------
+    value : Any
+        The peak |speed| as written [rpm].
+    where : str
+        Where it came from, for the message [-].
+
+    Returns
+    -------
+    float
+        ``float(value)`` [rpm].
+
+    Raises
+    ------
+    InputError
+        Not finite; negative or zero (a peak is a magnitude); below the slowest or above
+        the fastest peak.
+    """
+    peak = check_finite("peak_speed_rpm", value, where)
+    if peak <= 0.0:
+        raise InputError("peak_speed_rpm", value, "must be positive: the peak is the "
+                         "magnitude |speed| of the sine (a negative speed only turns the "
+                         "other way)", where)
+    if peak < MIN_PEAK_SPEED_RPM:
+        raise InputError("peak_speed_rpm", value, f"at least {MIN_PEAK_SPEED_RPM:g} rpm (one "
+                         "turn in 11.6 days): slower, the joint is at rest and has no loss "
+                         "to evaluate", where)
+    return check_physical("peak_speed_rpm", peak, 0.0, MAX_SPEED_RPM, SPEED_REASON, where,
+                          lo_open=True)
 
 
 @dataclass(frozen=True, eq=False)
@@ -111,8 +152,7 @@ class DutyCycle:
             cannot represent, or a cycle whose samples are all at rest.
         """
         where = "duty_cycle"
-        peak = check_physical("peak_speed_rpm", peak_speed_rpm, 0.0, MAX_SPEED_RPM,
-                              SPEED_REASON, where, lo_open=True)
+        peak = check_peak_speed(peak_speed_rpm, where)
         f = check_positive("frequency_hz", frequency_hz, where)
         dur = check_positive("duration_s", duration_s, where)
         dt = check_positive("sample_interval_s", sample_interval_s, where)
@@ -203,8 +243,7 @@ class DutyCycle:
             Times unchanged [s], speeds times ``peak / old peak`` [rad/s]; its ``spec``
             records the new peak.
         """
-        peak = check_physical("peak_speed_rpm", peak_speed_rpm, 0.0, MAX_SPEED_RPM,
-                              SPEED_REASON, "duty_cycle", lo_open=True)
+        peak = check_peak_speed(peak_speed_rpm)
         factor = self.speed_factor(peak)
         spec = dict(self.spec, peak_speed_rpm=peak)
         return DutyCycle(self.time_s, self.omega_rad_s * factor,

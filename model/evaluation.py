@@ -39,7 +39,7 @@ from .bearing.friction import (
 from .case import DesignCase
 from .errors import InputError, SolverError
 from .film_cycle import FilmPeak, film_peak
-from .fluids import warn_if_untrusted_state
+from .fluids import warn_if_sea_below_pour_point, warn_if_untrusted_state
 from .io.case_bearing import bearing_default_notes, bearing_defaults
 from .joint_loss import (
     FilmBand,
@@ -452,6 +452,7 @@ def _operating_state(case: DesignCase, mode: str, t_case: float, d: float, regio
     [W] under the mode (today's isothermal path, unchanged, under ``none``)."""
     t = t_case
     if uses_balance(mode):
+        warn_if_sea_below_pour_point(case.oil, case.thermal.sea_temp_C)
         op = operating_temperature(case, mode, d)
         t, means = op.oil_temp_C, op.region_mean_powers_W
     with warnings.catch_warnings():

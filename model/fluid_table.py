@@ -38,6 +38,14 @@ from .units import (
     m2_s_to_cst,
 )
 
+MAX_TABLE_NU_CST = 1.0e8
+"""Largest viscosity of a fluid table [cSt]: road bitumen at room temperature, no fluid
+that fills a clearance; a larger number is a unit slip, and 1e200 cSt gives no finite
+loss (issue 26)."""
+
+TABLE_NU_REASON = ("1e8 cSt is road bitumen at room temperature, not a fluid that fills a "
+                   "clearance (a unit slip?); a larger viscosity gives no finite loss")
+
 TABLE_COLUMNS = ("temp_C", "nu_cSt", "density_kg_m3")
 """Required columns of a fluid table: temperature [degC], nu [cSt], density [kg/m^3]."""
 
@@ -150,6 +158,10 @@ class TableFluid:
             if not np.all(np.isfinite(a) & (a > 0)):
                 raise InputError(col, float(a[~(np.isfinite(a) & (a > 0))][0]), "must be > 0 "
                                  "and finite", where)
+        nu = np.asarray(self.nu_m2_s, dtype=float)
+        if np.any(nu > cst_to_m2_s(MAX_TABLE_NU_CST)):  # before any solver: exit 2, not 4
+            raise InputError("nu_cSt", float(m2_s_to_cst(nu.max())), f"at most "
+                             f"{MAX_TABLE_NU_CST:g} cSt: {TABLE_NU_REASON}", where)
         _check_monotone(t, p, np.asarray(self.nu_m2_s, dtype=float), where)
         if self.outside not in OUTSIDE_TABLE:
             raise InputError("outside_table", self.outside, f"allowed: {', '.join(OUTSIDE_TABLE)}",

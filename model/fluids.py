@@ -57,7 +57,8 @@ from .units import (
 )
 
 __all__ = ["FLUID_KINDS", "Fluid", "GasFluid", "ScaledFluid", "TableFluid", "builtin_gases",
-           "gas_key", "read_fluid_table", "read_gases_csv", "warn_if_untrusted_state"]
+           "gas_key", "read_fluid_table", "read_gases_csv", "warn_if_sea_below_pour_point",
+           "warn_if_untrusted_state"]
 
 FLUID_KINDS = ("mineral", "table", "gas")
 """The kinds of fluid a case may hold."""
@@ -486,6 +487,32 @@ _LAW_NOTE = {
     "gas": "the range given for the Sutherland law of {name}; the viscosity there is an "
            "extrapolation",
 }
+
+
+def warn_if_sea_below_pour_point(fluid, sea_temp_C: float) -> None:
+    """Warn (OilgapWarning) when the sea is colder than the lower end of a mineral oil's
+    trusted range (-20 degC for the Walther line), near or below the pour point of mineral
+    compensating oils (about -15 to -40 degC for ISO VG 15-100 hydraulic oils, ISO 3016):
+    the oil that touches the sea (compensator, seals, outer wall) may not flow, whatever
+    the balance makes of the bulk oil's temperature.
+
+    Parameters
+    ----------
+    fluid : Fluid
+        The fluid (its ``kind``, ``name`` and ``trusted_range_C``); only a mineral oil is
+        checked.
+    sea_temp_C : float
+        Sea temperature [degC].
+    """
+    if fluid.kind != "mineral":
+        return
+    lo = fluid.trusted_range_C[0]
+    if sea_temp_C < lo:
+        warnings.warn(f"sea_temp_C = {sea_temp_C:g} degC lies below {lo:g} degC, near or "
+                      "below the pour point of mineral compensating oils (about -15 to -40 "
+                      f"degC, ISO 3016): {fluid.name!r} touching the sea may not flow, "
+                      "whatever the balance makes of the bulk oil", OilgapWarning,
+                      stacklevel=2)
 
 
 def warn_if_untrusted_state(fluid, temp_C, pressure_gauge_Pa=0.0,

@@ -60,6 +60,12 @@ DEFAULT_N_TEMP = 21
 """Temperatures of the envelope grid."""
 
 MIN_POINTS = 50
+MAX_POINTS = 2000
+"""Most points per Pareto front: each is one IPOPT solve (0.1-1 s) on each of two fronts,
+so 2000 points are about an hour of CPU; the fronts are smooth curves (60 by default)."""
+MAX_MISSION_HOURS = 1.0e6
+"""Longest mission [h] of the oil-grade study: 10^6 h is 114 years, beyond any joint's
+service life."""
 """Fewest points per Pareto front."""
 DEFAULT_POINTS = 60
 """Points per Pareto front."""
@@ -88,6 +94,14 @@ def _integer(field: str, value: Any, lowest: int, where: str) -> int:
     if isinstance(value, bool) or not hasattr(value, "__index__") or int(value) < lowest:
         raise InputError(field, value, f"must be an integer >= {lowest}", where)
     return int(value)
+
+
+def _mission_hours(value: Any, where: str) -> float:
+    hours = check_positive("mission_hours", value, where)
+    if hours > MAX_MISSION_HOURS:
+        raise InputError("mission_hours", value, f"at most {MAX_MISSION_HOURS:g} h (114 "
+                         "years, beyond any joint's service life)", where)
+    return hours
 
 
 def _thermal(value: Any, allowed: Sequence[str], where: str) -> str | None:
@@ -269,7 +283,7 @@ class OilGradeSettings(_Record):
              depth_range_m=_pair("depth_range_m", self.depth_range_m, 0.0, 11_000.0, where),
              n_depth=_integer("n_depth", self.n_depth, 2, where),
              n_temp=_integer("n_temp", self.n_temp, 2, where),
-             mission_hours=check_positive("mission_hours", self.mission_hours, where),
+             mission_hours=_mission_hours(self.mission_hours, where),
              rated_temps_C=None if rated is None else tuple(
                  check_finite("rated_temps_C", t, where) for t in rated),
              **ranges)
@@ -376,8 +390,11 @@ class ParetoSettings(_Record):
     def __post_init__(self):
         where = "pareto study"
         p = self.points
-        if isinstance(p, bool) or not hasattr(p, "__index__") or int(p) < MIN_POINTS:
-            raise InputError("points", p, f"must be an integer >= {MIN_POINTS}", where)
+        if isinstance(p, bool) or not hasattr(p, "__index__") or \
+                not MIN_POINTS <= int(p) <= MAX_POINTS:
+            raise InputError("points", p, f"must be an integer from {MIN_POINTS} to "
+                             f"{MAX_POINTS} (each point is one IPOPT solve on each of two "
+                             "fronts)", where)
         if self.torque_min_Nm is not None:
             _set(self, torque_min_Nm=check_positive("torque_min_Nm", self.torque_min_Nm,
                                                     where))

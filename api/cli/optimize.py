@@ -26,6 +26,7 @@ from oilgap.cli.common import load_case, thermal_case
 from oilgap.cli.outputs import solver_log_to_stderr
 from oilgap.model.errors import InputError, check_finite, check_positive
 from oilgap.model.io.serialize import dumps
+from oilgap.optim.design.session import MAX_STARTS
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
 from oilgap.studies.settings import DesignLimits
@@ -48,8 +49,9 @@ def _starts(args: argparse.Namespace) -> int:
         starts = int(args.starts)
     except ValueError:
         raise InputError("--starts", args.starts, "an integer >= 1 is required") from None
-    if starts < 1:
-        raise InputError("--starts", args.starts, "an integer >= 1 is required")
+    if not 1 <= starts <= MAX_STARTS:
+        raise InputError("--starts", args.starts, f"an integer from 1 to {MAX_STARTS} is "
+                         "required (each start is one IPOPT solve)")
     return starts
 
 

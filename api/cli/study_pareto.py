@@ -18,10 +18,10 @@ def run(args: argparse.Namespace) -> int:
     """``oilgap study pareto``: the two fronts; returns the exit code."""
     case = as_case(args.case)
     out = study_out(args, "pareto")
+    settings = ParetoSettings(points=args.points, torque_min_Nm=args.torque_min_nm,
+                              thermal=args.thermal)  # refused before the folder is locked
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
-        r = pareto(case, out=out, folder=folder,
-                   settings=ParetoSettings(points=args.points, torque_min_Nm=args.torque_min_nm,
-                                           thermal=args.thermal),
+        r = pareto(case, out=out, folder=folder, settings=settings,
                    options=RunOptions(workers=args.workers, scheduler=args.scheduler,
                                       progress=args.progress))
     show(r, args)

@@ -25,6 +25,7 @@ from typing import Any
 from ..case import (
     DEFAULT_GAMMA,
     GAMMA_DEFAULT_SOURCE,
+    MISSION_TEMP_KEYS,
     MOTOR_TOML_KEYS,
     THERMAL_TOML_KEYS,
     BearingClearance,
@@ -45,7 +46,7 @@ from ..units import MM_TO_M, celsius_to_kelvin
 from .case_bearing import BEARING_TABLE, bearing_from_doc
 from .case_uncertainty import UNCERTAINTY_TABLE, uncertainty_from_doc
 from .defaults import reader_defaults
-from .inputs import cell_for_message, read_input_text
+from .inputs import cell_for_message, file_kind, read_input_text
 
 MAX_CASE_BYTES = 16 * 2**20
 """Largest case TOML file read [bytes] (16 MiB; the seed's is under 2 kB)."""
@@ -72,7 +73,7 @@ _TABLES = {
                "length_max_mm", "inertia_max_ratio", "torque_min_Nm"},
     "thermal": set(THERMAL_TOML_KEYS),
 }
-_ARRAY_TABLES = {"mission": {"depth_m", "oil_temp_C", "fraction"}}
+_ARRAY_TABLES = {"mission": {"depth_m", "oil_temp_C", "sea_temp_C", "fraction"}}
 _OIL_KEYS = {  # [oil] keys of each kind of fluid
     "mineral": {"kind", "name", "oils_csv", "nu40_cSt", "nu100_cSt", "density_kg_m3",
                 "barus_1_GPa", "polymer_thickened"},
@@ -379,11 +380,19 @@ def _mission_from(ms: Any) -> list[MissionSegment]:
     for i, seg in enumerate(ms):
         if not isinstance(seg, dict):
             raise InputError(f"mission[{i}]", seg, "must be a table", "case TOML")
-        _check_keys(seg, _ARRAY_TABLES["mission"], f"mission[{i}]")
-        for k in _ARRAY_TABLES["mission"]:
-            _require(seg, k, f"mission[{i}]")
-        mission.append(MissionSegment(**{k: check_finite(k, v, f"mission[{i}]")
-                                         for k, v in seg.items()}))
+        where = f"mission[{i}]"
+        _check_keys(seg, _ARRAY_TABLES["mission"], where)
+        for k in ("depth_m", "fraction"):
+            _require(seg, k, where)
+        temps = [k for k in MISSION_TEMP_KEYS if k in seg]
+        if not temps:
+            _require(seg, "oil_temp_C", where)
+        if len(temps) > 1:
+            raise InputError("sea_temp_C", seg["sea_temp_C"], "give oil_temp_C (thermal modes "
+                             "none/film) or sea_temp_C (bulk/full), not both", where)
+        vals = {k: check_finite(k, v, where) for k, v in seg.items()}
+        mission.append(MissionSegment(vals["depth_m"], vals[temps[0]], vals["fraction"],
+                                      temps[0]))
     return mission
 
 
@@ -412,6 +421,11 @@ def read_case_toml(path: str | Path) -> DesignCase:
     try:
         doc = tomllib.loads(text)
     except tomllib.TOMLDecodeError as e:
+        kind = file_kind(path, text)
+        if kind in ("CSV", "JSON"):
+            raise InputError("case TOML", str(path), f"is a {kind} file where a case TOML is "
+                             "expected (rig data go to oilgap loop DATA.csv; a loop.json to "
+                             "predict --model)") from None
         raise InputError("case TOML", str(path), f"is malformed: {e}") from None
     return case_from_dict(doc, path.parent)
 

@@ -82,7 +82,7 @@ def case_to_dict(case: DesignCase) -> dict:
     if case.uncertainty is not None:  # only when given, like [bearing]
         doc[UNCERTAINTY_TABLE] = uncertainty_to_doc(case.uncertainty)
     if case.mission:
-        doc["mission"] = [{"depth_m": s.depth_m, "oil_temp_C": s.oil_temp_C,
+        doc["mission"] = [{"depth_m": s.depth_m, s.temp_key: s.oil_temp_C,
                            "fraction": s.fraction} for s in case.mission]
     return doc
 

@@ -19,8 +19,10 @@ their reasons in ``docs/case-file.md``).
 from __future__ import annotations
 
 import errno
+import json
 import os
 import stat
+import tomllib
 from pathlib import Path
 from typing import Any
 
@@ -107,6 +109,43 @@ def read_input_text(path: str | Path, field: str, what: str = "text file",
         line = data[:e.start].count(b"\n") + 1
         raise InputError(field, shown, f"is not UTF-8 text (an invalid byte on line {line}); "
                          f"a UTF-8 {what} is required", where) from None
+
+
+_KINDS = {".csv": "CSV", ".toml": "TOML", ".json": "JSON"}
+
+
+def file_kind(path: str | Path, text: str) -> str | None:
+    """What an input file is, for a message when it is not what the option expects:
+    ``"CSV"``, ``"TOML"`` or ``"JSON"`` by its suffix, else by its text (a JSON document,
+    a TOML document with keys, a first line of comma-separated names); None if unknown.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file [-].
+    text : str
+        Its text [-].
+
+    Returns
+    -------
+    str or None
+        The kind of file [-].
+    """
+    kind = _KINDS.get(Path(path).suffix.lower())
+    if kind:
+        return kind
+    try:
+        json.loads(text)
+        return "JSON"
+    except (json.JSONDecodeError, RecursionError):
+        pass
+    try:
+        if tomllib.loads(text):
+            return "TOML"
+    except tomllib.TOMLDecodeError:
+        pass
+    first = text.lstrip().split("\n", 1)[0]
+    return "CSV" if "," in first and "=" not in first else None
 
 
 def header_error(path: str | Path, cols: list[str], required: tuple[str, ...],

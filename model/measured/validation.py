@@ -15,6 +15,7 @@ References
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
@@ -22,7 +23,7 @@ from typing import Any
 import numpy as np
 import pandas as pd
 
-from ..errors import InputError
+from ..errors import InputError, OilgapWarning
 from ..io.tables import numeric_column, text_cells, text_codes
 from ..oils import Oil, builtin_fluids, normalize_oil_name
 from .plausibility import check_units
@@ -50,6 +51,10 @@ OVERRIDE_DEFAULT = {"nu_cSt": "the oils table's viscosity",
                     "density_kg_m3": "the oils table's density",
                     "gap_mm": "the case's region-1 clearance"}
 """What an empty cell of each per-row override column takes."""
+
+
+DROP_WARN_SHARE = 0.25
+"""Share of the rows read whose dropping the loop warns about on stderr [-]."""
 
 
 @dataclass(frozen=True)
@@ -130,6 +135,18 @@ class MeasuredData:
     def n_dropped(self) -> int:
         """Total number of dropped rows [-]."""
         return sum(d.count for d in self.dropped)
+
+    def warn_if_many_dropped(self) -> None:
+        """An OilgapWarning (one stderr line) when :data:`DROP_WARN_SHARE` or more of the
+        rows read were dropped, naming the largest reasons: a quarter of the data lost is
+        news (an oil not in the table, a unit slip), not a footnote in the report."""
+        if not self.n_read or self.n_dropped < DROP_WARN_SHARE * self.n_read:
+            return
+        top = sorted(self.dropped, key=lambda d: -d.count)[:2]
+        why = "; ".join(f"{d.count} {d.reason}" for d in top)
+        warnings.warn(OilgapWarning(
+            f"{self.source}: {self.n_dropped} of {self.n_read} rows "
+            f"({100 * self.n_dropped / self.n_read:.0f} %) dropped ({why})"), stacklevel=2)
 
     def drop_summary(self) -> str:
         """One line per reason.

@@ -41,6 +41,7 @@ from oilgap.model.fluid_table import TableFluid
 from oilgap.model.fluids import GasFluid
 from oilgap.model.io.case_io import case_from_dict
 from oilgap.model.io.case_write import case_to_dict
+from oilgap.model.io.inputs import file_kind
 from oilgap.model.measured.data import (
     MeasuredData,
     add_kinematics,
@@ -550,7 +551,15 @@ def load_model(path: str | Path) -> FittedModel:
                          "oilgap loop)")
     try:
         doc = parse_model_json(p.read_text(encoding="utf-8"))
-    except (UnicodeDecodeError, json.JSONDecodeError) as e:
+    except json.JSONDecodeError as e:
+        kind = file_kind(p, e.doc)
+        if kind in ("CSV", "TOML"):
+            raise InputError("--model", str(p), f"is a {kind} file where the loop.json "
+                             "written by oilgap loop is expected (run oilgap loop on the "
+                             "rig data to write one)") from None
+        raise InputError("--model", str(p), f"is not JSON ({e}; cut short or edited? run "
+                         "oilgap loop again)") from None
+    except UnicodeDecodeError as e:
         raise InputError("--model", str(p), f"is not JSON ({e}; cut short or edited? run "
                          "oilgap loop again)") from None
     except (OSError, RecursionError) as e:

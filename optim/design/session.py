@@ -43,6 +43,10 @@ from .variables import QUIET_OPTIONS, SOLVER_OPTIONS, SUCCESS_STATUSES, WARM_OPT
 DEFAULT_STARTS = 1
 """Start points of a design solve unless told otherwise (:func:`run_starts`)."""
 
+MAX_STARTS = 1000
+"""Most start points of a design solve: each is one IPOPT solve (0.1-1 s), so 1000 starts
+are minutes to hours; a multi-start search of a 5-variable design needs tens."""
+
 
 def solver_options(verbose: bool = False, **extra: Any) -> dict:
     """The nlpsol options of a design solve.
@@ -320,10 +324,12 @@ def check_starts(starts: Any) -> int:
     Raises
     ------
     InputError
-        Not an integer >= 1.
+        Not an integer in [1, :data:`MAX_STARTS`].
     """
-    if isinstance(starts, bool) or not isinstance(starts, int) or starts < 1:
-        raise InputError("starts", starts, "must be an integer >= 1", "optimize")
+    if isinstance(starts, bool) or not isinstance(starts, int) or not 1 <= starts <= MAX_STARTS:
+        raise InputError("starts", starts, f"must be an integer from 1 to {MAX_STARTS} (each "
+                         "start is one IPOPT solve; tens are enough for 5 design variables)",
+                         "optimize")
     return starts
 
 

@@ -62,8 +62,6 @@ References
 
 from __future__ import annotations
 
-import csv
-import io
 from collections.abc import Sequence
 from dataclasses import dataclass, fields, replace
 from pathlib import Path
@@ -76,12 +74,17 @@ from oilgap.model.errors import InputError, SolverError, check_finite
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import Default, case_defaults, study_default
-from oilgap.model.io.inputs import header_error, read_input_text
 from oilgap.model.joint_loss import FilmBand, bearing_mean_power_at, film_band
 from oilgap.model.joint_loss import resolve_thermal_mode as resolve_mode
 from oilgap.model.oils import builtin_oils, get_oil, read_oils_csv
 from oilgap.model.thermal_modes import ThermalMode, uses_balance
 from oilgap.studies.grid.runner import run_grid
+from oilgap.studies.oil_grade.mission import (  # noqa: F401  (re-exported)
+    SEED_MISSION,
+    mission_temps,
+    parse_mission,
+    read_mission_csv,
+)
 from oilgap.studies.oil_grade.report import summary_markdown, write_outputs
 from oilgap.studies.oil_grade.thermal import compare_recommendations
 from oilgap.studies.settings import (
@@ -101,69 +104,6 @@ from oilgap.studies.user_case import is_seed_case
 
 WHERE = "oil-grade study"
 """Context named by the study's InputErrors."""
-SEED_MISSION = (MissionSegment(0.0, 20.0, 0.05), MissionSegment(1500.0, 4.0, 0.10),
-                MissionSegment(3000.0, 2.0, 0.85))
-"""Default mission of the seed joint (it has none): fractions of the joint's running
-time at (depth [m], oil temperature [degC]; the sea's under the thermal mode ``bulk``/``full``):
-deck checks at 0 m and 20 degC (5 %), work on the way at 1500 m and 4 degC (10 %), work
-at the rated 3000 m and 2 degC (85 %)."""
-
-
-def parse_mission(mission) -> tuple[MissionSegment, ...]:
-    """Validate a mission profile: MissionSegments, (depth_m, oil_temp_C, fraction)
-    tuples, or a DataFrame with those columns. Fractions must sum to 1.
-
-    Raises
-    ------
-    InputError
-        Missing columns, bad values, no rows, fractions not summing to 1 (+-1e-6).
-    """
-    if isinstance(mission, pd.DataFrame):
-        cols = ("depth_m", "oil_temp_C", "fraction")
-        missing = [c for c in cols if c not in mission.columns]
-        extra = [c for c in mission.columns if c not in cols]
-        if missing or extra:
-            raise InputError("mission columns", list(mission.columns),
-                             "required exactly depth_m, oil_temp_C, fraction", "oil-grade study")
-        rows = list(mission[list(cols)].itertuples(index=False, name=None))
-    else:
-        rows = list(mission)
-    if not rows:
-        raise InputError("mission", "no rows", "needs at least one (depth_m, oil_temp_C, "
-                         "fraction) row", "oil-grade study")
-    segs = []
-    for i, r in enumerate(rows):
-        if isinstance(r, MissionSegment):
-            segs.append(r)
-            continue
-        if len(r) != 3:
-            raise InputError(f"mission[{i}]", r, "needs (depth_m, oil_temp_C, fraction)",
-                             "oil-grade study")
-        segs.append(MissionSegment(*(check_finite(k, v, f"mission row {i}") for k, v in
-                                     zip(("depth_m", "oil_temp_C", "fraction"), r,
-                                         strict=True))))
-    total = sum(s.fraction for s in segs)
-    if abs(total - 1.0) > 1e-6:
-        raise InputError("mission fractions", round(total, 9), "must sum to 1",
-                         "oil-grade study")
-    return tuple(segs)
-
-
-def read_mission_csv(path: str | Path) -> tuple[MissionSegment, ...]:
-    """Read a UTF-8 mission CSV ``depth_m,oil_temp_C,fraction`` (see :func:`parse_mission`);
-    a file that cannot be read, or whose header is not those columns once each, is
-    refused naming the file and the reason, never its content."""
-    p = Path(path)
-    text = read_input_text(p, "--mission", "CSV file")
-    header = next(csv.reader(io.StringIO(text)), [])
-    err = header_error(p, [c.strip() for c in header], ("depth_m", "oil_temp_C", "fraction"))
-    if err is not None:
-        raise err
-    df = pd.read_csv(io.StringIO(text), skipinitialspace=True)
-    df.columns = [str(c).strip() for c in df.columns]
-    return parse_mission(df)
-
-
 @dataclass(frozen=True, kw_only=True)
 class OilGradeEnvelope:
     """The oil-grade study's settings as applied to its case and thermal mode: the
@@ -376,9 +316,15 @@ def _mission(base: DesignCase, mission, mode: str = "none"
     """The mission profile used and where it comes from: given, the case's rows, the seed
     joint's default mission, or one segment at the case's own operating point."""
     if mission is not None:
-        return parse_mission(mission), "given"
+        segs = parse_mission(mission)
+        if not (isinstance(mission, pd.DataFrame) or any(isinstance(r, MissionSegment)
+                                                         for r in mission)):
+            return segs, "given"  # bare (depth, temperature, fraction): the mode's temperature
+        return mission_temps(segs, mode, f"the mission (a {'sea' if uses_balance(mode) else 'oil'}"
+                         "_temp_C column)"), "given"
     if base.mission:
-        return tuple(base.mission), "the case's [[mission]] rows"
+        return (mission_temps(tuple(base.mission), mode, "[[mission]]"),
+                "the case's [[mission]] rows")
     if is_seed_case(base):
         return SEED_MISSION, "default seed mission (the case has none)"
     t = _case_temp(base, mode)

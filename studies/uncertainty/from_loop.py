@@ -45,6 +45,7 @@ from scipy import stats
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError
+from oilgap.model.io.inputs import file_kind
 from oilgap.model.uncertain.distributions import Distribution, UncertaintySpec
 
 _CORR = re.compile(r"corr\((\w+), (\w+)\) = ([+-]?\d*\.?\d+)")
@@ -58,7 +59,13 @@ def _read(path: str | Path) -> dict:
                          "oilgap loop)")
     try:
         doc = json.loads(p.read_text(encoding="utf-8"))
-    except (UnicodeDecodeError, json.JSONDecodeError) as e:
+    except json.JSONDecodeError as e:
+        kind = file_kind(p, e.doc)
+        if kind in ("CSV", "TOML"):
+            raise InputError("--model", str(p), f"is a {kind} file where the loop.json "
+                             "written by oilgap loop is expected") from None
+        raise InputError("--model", str(p), f"is not JSON ({e})") from None
+    except UnicodeDecodeError as e:
         raise InputError("--model", str(p), f"is not JSON ({e})") from None
     if not isinstance(doc, dict) or not isinstance(doc.get("calibration_with_effect"), dict):
         raise InputError("--model", str(p), "a loop.json written by oilgap loop (its "

@@ -525,6 +525,11 @@ from campaign_rows20 import ROWS20  # noqa: E402  (it builds on the helpers abov
 
 ROWS += ROWS20
 
+# ---- issue 26's rows (nothing unbounded, nothing misleading): tests/cli/campaign_rows26.py
+from campaign_rows26 import ROWS26  # noqa: E402
+
+ROWS += ROWS26
+
 
 @pytest.mark.parametrize("r", ROWS, ids=[r.id for r in ROWS])
 def test_campaign_row(r: Row, tmp_path: Path):

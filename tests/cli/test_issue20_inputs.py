@@ -1,7 +1,9 @@
 """Issue 20, classes 5-7: model-level inputs, through the command line and the façade.
 
 5. A heat balance without a root below the solver's cap is a solver failure (exit 4, one
-   line naming the bound and why), never an operating temperature.
+   line naming the bound and why), never an operating temperature; a heat source that
+   alone puts the oil above the cap, before any loss, is an impossible input, refused
+   before the solver (exit 2, issue 26).
 6. Impossible joints and fluids are refused with their reasons: the bearing inside the
    joint, L/gap and L/R ranges with a "mm written as m?" hint, fluid tables monotone in
    the physical direction, measured power > 0, a non-empty oil name.
@@ -85,28 +87,30 @@ ROWS = {
         extra=THERMAL.format(r=1e300, q=0), code=4,
         words=("below 250 degC", "resistance_K_per_W = 1e+300")),
     "balance Q 1e6": R(
-        "5: other heat 1e6 W puts the base above the cap before any loss: exit 4",
-        extra=THERMAL.format(r=0.05, q=1e6), code=4,
-        words=("other_heat_W = 1e+06", "alone is", "> 250")),
+        "5: other heat 1e6 W puts the base above the cap before any loss: an impossible "
+        "input, refused before the solver (exit 2, issue 26)",
+        extra=THERMAL.format(r=0.05, q=1e6), code=2, facade="read_case",
+        words=("other_heat_W = 1000000.0", "alone is 5e+04 degC", ">= 250")),
     "balance Q 1e4 R 1": R(
-        "5: Q = 1e4 W through 1 K/W (1e4 degC) is no operating point",
-        extra=THERMAL.format(r=1, q=1e4), code=4, words=("other_heat_W = 10000", "> 250")),
+        "5: Q = 1e4 W through 1 K/W (1e4 degC) is no operating point: refused (exit 2)",
+        extra=THERMAL.format(r=1, q=1e4), code=2, facade="read_case",
+        words=("other_heat_W = 10000", ">= 250")),
     "balance R 20 full": R(
         "5: R = 20 K/W under --thermal full (the film mode) fails the same way",
         extra=THERMAL.format(r=20, q=0), argv=["--thermal", "full"], code=4,
         fkw={"thermal": "full"}, words=("below 250 degC", "resistance_K_per_W = 20")),
     "balance Q 300 R 1 bulk": R(
-        "5: T_sea + R Q = 304 degC under --thermal bulk: exit 4 naming other_heat_W",
-        extra=THERMAL.format(r=1, q=300), argv=["--thermal", "bulk"], code=4,
+        "5: T_sea + R Q = 304 degC under --thermal bulk: refused (exit 2) naming other_heat_W",
+        extra=THERMAL.format(r=1, q=300), argv=["--thermal", "bulk"], code=2,
         fkw={"thermal": "bulk"}, words=("other_heat_W = 300", "304")),
     "optimize R 1000": R(
         "5: optimize on a joint whose balance has no root fails (exit 4), not at 250 degC",
         extra=THERMAL.format(r=1000, q=0), cmd="optimize", facade="optimize", code=4,
         words=("below 250 degC", "resistance_K_per_W = 1000")),
     "optimize Q 1e6": R(
-        "5: optimize with Q = 1e6 W: the base above the cap, exit 4 naming other_heat_W",
-        extra=THERMAL.format(r=0.05, q=1e6), cmd="optimize", facade="optimize", code=4,
-        words=("other_heat_W = 1e+06",)),
+        "5: optimize with Q = 1e6 W: the base above the cap, refused (exit 2) naming "
+        "other_heat_W", extra=THERMAL.format(r=0.05, q=1e6), cmd="optimize",
+        facade="optimize", code=2, words=("other_heat_W = 1000000.0",)),
     # ------------------------------------------------------------------ class 6: joints
     "length m as mm": R(
         "6: length_mm = 0.035 (metres typed as mm) is refused with the hint",

@@ -1,17 +1,24 @@
-"""The same data and options give a bit-identical ``loop.json`` on one install (issue 18).
+"""The same data and options give the same ``loop.json`` on one install, whatever the core
+count, the thread count, the hash seed and the load (issue 18), to what the solvers
+determine (issue 26).
 
-Whatever the core count, the thread count, the hash seed and the load: the loop is run
-twice in subprocesses, once pinned to one core on one BLAS/OpenMP thread and once on
-every core with two threads and another process burning a core beside it, and the two
-``loop.json`` are compared byte for byte (the file holds no date or timing; those are in
-``provenance.json``).
+The loop is run twice in subprocesses, once pinned to one core on one BLAS/OpenMP thread
+and once on every core with two threads, another hash seed and another process burning a
+core beside it. The two ``loop.json`` are compared as the golden test compares them
+(``golden.compare_json`` with ``golden.TOLERANCES``): every word, every effect chosen and
+every count exactly; every number to the tolerance of the solver that made it. Not byte
+for byte: OpenBLAS splits its sums by thread count, and on some data (the synthetic rig
+written on a processor without AVX-512) that moves the fitted parameters by ~5e-12 and a
+held-out gain that is zero, -2.80e-11 % on one thread, to -2.84e-11 % on two. Such a
+quantity is undetermined below the fit's ``ftol``; it is compared with the absolute
+tolerance of its row (``RESIDUAL_ATOL``).
 
-Across processors the numbers may move: numpy picks its SIMD kernels (AVX2 or
-AVX-512) at run time, and ``exp``/``log``/``power`` then differ in the last bit for
-a few per cent of their arguments. The last test runs the golden ``synth`` + ``loop``
-with numpy's AVX-512 kernels switched off (where the processor has them) and checks
-that the result stays within the golden tolerances of ``golden.TOLERANCES``, which
-are stated from the solvers' own convergence tolerances.
+Across processors the numbers move too: numpy picks its SIMD kernels (AVX2 or AVX-512)
+and OpenBLAS its kernels (Haswell or SkylakeX) at run time, and ``exp``/``log``/``power``
+then differ in the last bit for a few per cent of their arguments. The last test runs the
+golden ``synth`` + ``loop`` as a processor without AVX-512 would
+(``golden.without_avx512_env``) and checks the result against the golden tolerances.
+``.ci/run`` also runs every golden test a second time that way.
 """
 
 from __future__ import annotations
@@ -30,7 +37,8 @@ import golden  # noqa: E402
 
 SYNTH = ["synth", "--effect", "seal_coulomb_friction", "--seed", "3", "--out", "synth_seal.csv"]
 LOOP = ["loop", "synth_seal.csv", "--out", "loop_seal", "--json", "--no-figures"]
-THREAD_VARS = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+THREAD_VARS = golden.THREAD_VARS
+REL = "loop_seal/loop.json"
 
 
 def _one_core() -> None:  # pragma: no cover - runs in the child
@@ -64,7 +72,7 @@ def _loop_in(d: Path, synth: Path, one_core: bool = False, **env: str) -> bytes:
     return (d / "loop_seal" / "loop.json").read_bytes()
 
 
-def test_loop_json_is_bit_identical_across_threads_hash_seed_and_load(synth_dir, tmp_path):
+def test_loop_json_is_the_same_across_threads_hash_seed_and_load(synth_dir, tmp_path):
     one = _loop_in(tmp_path / "one", synth_dir, one_core=True, PYTHONHASHSEED="0", **_threads(1))
     burner = subprocess.Popen([sys.executable, "-c", "import time\nt = time.time()\n"
                                "while time.time() - t < 120: pass"])
@@ -74,28 +82,33 @@ def test_loop_json_is_bit_identical_across_threads_hash_seed_and_load(synth_dir,
         burner.kill()
         burner.wait()
     assert b'"seal_coulomb_friction"' in one  # the loop found the injected effect
-    assert one == two
+    diffs = golden.compare_json(json.loads(one), json.loads(two), REL, REL)
+    assert not diffs, "\n".join(diffs[:20])
 
 
-def _avx512_targets() -> list[str]:
-    """numpy's AVX-512 dispatch targets that this processor runs (their names vary by version)."""
-    try:
-        from numpy._core._multiarray_umath import __cpu_dispatch__, __cpu_features__
-    except ImportError:  # pragma: no cover - numpy < 2
-        return []
-    return [f for f in __cpu_dispatch__ if ("AVX512" in f or f == "X86_V4")
-            and __cpu_features__.get(f)]
+def test_what_is_determined_is_compared_and_a_zero_is_not():
+    """The comparison of the test above on the numbers of issue 26: the held-out gain of an
+    effect that adds nothing is -2.80442e-11 % on one machine and -2.84439e-11 % on
+    another (equal within RESIDUAL_ATOL); the seal friction changed in its 7th digit
+    or an effect chosen differently is a difference."""
+    doc = {"effects": [{"name": "seal_coulomb_friction", "heldout_gain_added_pct": -2.80442e-11}],
+           "model": {"effects": {"seal_coulomb_friction": 0.04023165056948135}}}
+    zero = json.loads(json.dumps(doc).replace("-2.80442e-11", "-2.84439e-11"))
+    assert not golden.compare_json(doc, zero, REL, REL)
+    moved = json.loads(json.dumps(doc).replace("0.04023165056948135", "0.04023175056948135"))
+    assert golden.compare_json(doc, moved, REL, REL)
+    other = json.loads(json.dumps(doc).replace('"name": "seal', '"name": "viscous'))
+    assert golden.compare_json(doc, other, REL, REL)
 
 
-@pytest.mark.skipif(not _avx512_targets(), reason="no AVX-512 kernels to switch off here")
+@pytest.mark.skipif(not golden.avx512_targets(), reason="no AVX-512 kernels to switch off here")
 def test_other_simd_kernels_stay_within_the_golden_tolerance(tmp_path):
-    off = {"NPY_DISABLE_CPU_FEATURES": " ".join(_avx512_targets())}
+    off = golden.without_avx512_env()
     _oilgap(SYNTH, tmp_path, **off)
     _oilgap(LOOP, tmp_path, **off)
-    rel = "loop_seal/loop.json"
-    want = json.loads((golden.DATA / rel).read_text())
-    got = json.loads((tmp_path / rel).read_text())
-    assert not golden.compare_json(want, got, rel, rel)
+    want = json.loads((golden.DATA / REL).read_text())
+    got = json.loads((tmp_path / REL).read_text())
+    assert not golden.compare_json(want, got, REL, REL)
     md = "loop_seal/report.md"
     assert not golden.compare_text((golden.DATA / md).read_text(),
                                    (tmp_path / md).read_text(), md)

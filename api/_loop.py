@@ -257,10 +257,12 @@ class Loop(LoopEstimator, ResultView):
         self._check_fitted("to_dict()")
         return loop_json(self)
 
-    def summary(self) -> str:
-        """What ``oilgap loop`` prints (without its ``wrote`` line)."""
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap loop`` prints (without its ``wrote`` line): the held-out error
+        before and after first (``defaults`` False: without gamma and the defaults filled
+        in, ``-q``)."""
         self._check_fitted("summary()")
-        return format_summary(self)
+        return format_summary(self, defaults)
 
     def to_frame(self) -> pd.DataFrame:
         """Per run: oil, roughness, samples, mean measured and model viscous power [W]

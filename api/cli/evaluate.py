@@ -8,12 +8,12 @@ from __future__ import annotations
 import argparse
 
 from oilgap._evaluate import evaluate_resolved
-from oilgap.cli.common import load_case, thermal_case
+from oilgap.cli.common import load_case, show, thermal_case
 
 
 def run(args: argparse.Namespace) -> int:
     """Evaluate the case and print the table (or JSON); returns the exit code."""
     case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
     res = evaluate_resolved(case, mode, args.thermal is None, args.laminar_law)
-    print(res.to_json() if args.json else res.summary())
+    show(res, args)
     return 0

@@ -28,7 +28,7 @@ def _loop(args: argparse.Namespace, folder: ResultFolder) -> int:
     if args.json:
         print(est.to_json())
     else:
-        print(est.summary())
+        print(est.summary(defaults=not args.quiet))
         print(f"\nwrote {paths['json']}, {paths['report']}"
               + (f" and {len(paths['figures'])} figures" if paths["figures"] else ""))
     return 0

@@ -120,7 +120,7 @@ def run(args: argparse.Namespace) -> int:
         print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None,
                      **({"figure": str(fig)} if fig else {})}))
     else:
-        print(res.summary())
+        print(res.summary(defaults=not args.quiet))
         for p in (out_path, fig):
             if p:
                 print(f"\nwrote {Path(p)}")

@@ -33,6 +33,7 @@ from oilgap.model.io.defaults import (
     study_default,
 )
 from oilgap.model.io.serialize import Exact, dumps
+from oilgap.model.io.text import layout, wrap
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.model_io import FittedModel
 from oilgap.optim.calibration.ranges import effective_scale
@@ -236,8 +237,10 @@ def oil_state_text(est: LoopEstimator) -> str | None:
             f"temperature ({'; '.join(how)}): one oil state per sample")
 
 
-def format_summary(est: LoopEstimator) -> str:
-    """What ``oilgap loop`` prints: data, calibration, error table, effects, before/after."""
+def format_summary(est: LoopEstimator, defaults: bool = True) -> str:
+    """What ``oilgap loop`` prints: the held-out error before and after and the effects
+    first, then data, calibration, error table, effects, before/after, then gamma and
+    the defaults (``defaults`` False leaves these out, ``-q``)."""
     d = est.data_
     c = est.calibration_
     ci = est.calibration_ci_
@@ -248,8 +251,6 @@ def format_summary(est: LoopEstimator) -> str:
     if d.ignored_columns:
         lines.append(f"            ignored columns: {', '.join(d.ignored_columns)}")
     lines += [f"            {n}" for n in getattr(d, "notes", ())]
-    lines.append(f"gamma       {gamma_text(est)}")
-    lines += defaults_lines(loop_defaults(est))
     for b in est.baselines_.values():
         lines.append(f"baseline    T = {b.roughness_T:g}: oil-free fit RMSE {b.rmse_W:.3f} W "
                      f"({b.n_samples} samples)" + ("; " + "; ".join(b.notes) if b.notes else ""))
@@ -303,7 +304,23 @@ def format_summary(est: LoopEstimator) -> str:
               f"noise level {est.noise_W_:.3f} W; held-out RMSE "
               + (f"falls by {100 * (1 - h['after'] / h['before']):.1f} %"
                  if h["after"] < h["before"] else "unchanged (no effect accepted)")]
-    return "\n".join(x for x in lines if x is not None)
+    return layout(_answer(est), [w for x in lines if x is not None  # tables < 100 wide
+                                 for y in x.split("\n") for w in wrap(y)],
+                  [f"gamma       {gamma_text(est)}", *defaults_lines(loop_defaults(est))],
+                  defaults=defaults)
+
+
+def _answer(est: LoopEstimator) -> list[str]:
+    """The loop's answer in two lines: the held-out error before and after, the effects
+    accepted."""
+    h = est.heldout_rmse_
+    fall = (f"falls by {100 * (1 - h['after'] / h['before']):.1f} %"
+            if h["after"] < h["before"] else "unchanged")
+    found = (", ".join(e.name for e in est.effects_) if est.effects_
+             else "none (no missing effect found)")
+    return [f"held-out RMSE {_num(h['before'])} W before -> {_num(h['after'])} W after "
+            f"({fall}; by {getattr(est, 'cv_by', 'run')}); noise level {est.noise_W_:.3f} W",
+            f"effects     {found}"]
 
 
 def _figure_runs(curves: LoopCurves, path: Path, runs: list[int], windows: bool) -> Path:

@@ -91,7 +91,8 @@ def _write(res: Optimization, args: argparse.Namespace):
     if not args.out:
         return None
     try:
-        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None))
+        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None),
+                               exact=True)  # every digit: evaluated again, the loss printed
     except OSError as e:
         raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
 

@@ -1,0 +1,129 @@
+"""The one progress display of oilgap: tqdm bars on stderr, shown only on a terminal.
+
+:func:`progress_bar` is the bar (the grid runner's, :mod:`oilgap.studies.grid.runner`);
+:class:`Bars` turns the reports of the computing layers (:func:`oilgap.model.progress.report`:
+a task, steps done, steps in all) into one such bar per task; :func:`shown` installs it
+for a run (the command line wraps every command in it; ``og.progress_bars()`` in Python).
+Nothing is drawn when stderr is not a terminal (piped, redirected, a test's capture)
+unless asked (``--progress``), nor with ``-q`` (``--no-progress``).
+
+Why tqdm (docs/development.md, "Progress"): it is already a dependency, it writes to any
+stream and disables itself cleanly, it costs nothing when disabled, and it works in
+worker processes and notebooks alike; rich would add a dependency for a bar, and
+oilgap's tables are plain text that must stay greppable when piped.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import sys
+import time
+from collections.abc import Iterator
+from typing import IO
+
+from tqdm import tqdm
+
+from oilgap.model.progress import reporting
+
+MIN_SECONDS = 1.0
+"""A task's bar appears once it has run this long [s] (short tasks draw nothing)."""
+
+
+def progress_bar(total: int, label: str = "sweep", enabled: bool | None = None,
+                 stream: IO[str] | None = None, initial: int = 0,
+                 unit: str = " points", leave: bool = True) -> tqdm:
+    """The progress bar of a run on stderr (tqdm [1]): bar, percent, count, steps per
+    second, elapsed time and ETA; ``initial`` steps already done (a resumed run).
+
+    ``enabled`` None: shown when ``stream`` (default stderr) is a terminal.
+
+    References
+    ----------
+    .. [1] C. da Costa-Luis et al., *tqdm: a fast, extensible progress meter*,
+       https://tqdm.github.io
+    """
+    stream = stream if stream is not None else sys.stderr
+    if enabled is None:
+        enabled = is_terminal(stream)
+    return tqdm(total=max(int(total), 0), initial=int(initial), desc=f"oilgap {label}",
+                unit=unit, file=stream, disable=not enabled, mininterval=0.1,
+                dynamic_ncols=True, leave=leave)
+
+
+def is_terminal(stream) -> bool:
+    """Whether ``stream`` is a terminal (False for anything without ``isatty``)."""
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError, OSError):
+        return False
+
+
+class Bars:
+    """A reporter (:data:`oilgap.model.progress.Reporter`): one :func:`progress_bar` per
+    task, drawn on ``stream`` from :data:`MIN_SECONDS` after the task's first report and
+    removed when it is done.
+
+    Parameters
+    ----------
+    stream : file, optional
+        Where to draw (default: stderr at the time of each report).
+    """
+
+    def __init__(self, stream: IO[str] | None = None):
+        self.stream = stream
+        self._bars: dict[str, tqdm] = {}
+        self._started: dict[str, float] = {}
+
+    def __call__(self, task: str, done: int, total: int) -> None:
+        now = time.monotonic()
+        start = self._started.setdefault(task, now)
+        bar = self._bars.get(task)
+        if bar is None and now - start >= MIN_SECONDS and done < total:
+            bar = self._bars[task] = progress_bar(
+                total, task, True, self.stream if self.stream is not None else sys.stderr,
+                unit=" steps", leave=False)
+        if bar is not None:
+            bar.n = min(done, total)
+            bar.refresh()
+        if done >= total:
+            self._done(task)
+
+    def _done(self, task: str) -> None:
+        bar = self._bars.pop(task, None)
+        self._started.pop(task, None)
+        if bar is not None:
+            bar.close()
+
+    def close(self) -> None:
+        """Remove every bar still drawn."""
+        for task in list(self._bars):
+            self._done(task)
+
+
+@contextlib.contextmanager
+def shown(enabled: bool | None = None, stream: IO[str] | None = None) -> Iterator[None]:
+    """While inside, the computing layers' progress reports are drawn as bars
+    (:class:`Bars`) when ``enabled``, or (None) when stderr is a terminal; otherwise
+    nothing is installed and nothing drawn.
+
+    Parameters
+    ----------
+    enabled : bool or None
+        True: always; False: never; None: on a terminal only.
+    stream : file, optional
+        Where to draw (default stderr).
+    """
+    on = enabled if enabled is not None else is_terminal(stream or sys.stderr)
+    if not on:
+        with reporting(None):
+            yield
+        return
+    bars = Bars(stream)
+    try:
+        with reporting(bars):
+            yield
+    finally:
+        bars.close()
+
+
+__all__ = ["Bars", "MIN_SECONDS", "is_terminal", "progress_bar", "shown"]

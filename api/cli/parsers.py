@@ -199,6 +199,7 @@ def add_optimize(sub) -> None:
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
     add_force(p)
+    _progress(p)
     p.set_defaults(command="optimize")  # -v/--verbose (every command) shows IPOPT's log
 
 
@@ -384,6 +385,7 @@ def _add_uncertainty(ss) -> None:
     s.add_argument("--out", metavar="DIR", help="output folder (default out/uncertainty/)")
     add_force(s)
     add_thermal_argument(s)
+    _progress(s)
     s.set_defaults(command="study uncertainty")
 
 
@@ -424,6 +426,10 @@ def add_loop(sub) -> None:
                    "held out whole (default: run; e.g. gap_mm, oil; more than 10 groups: "
                    "grouped 10-fold)")
     p.add_argument("--no-figures", action="store_true", help="skip the figures")
+    p.add_argument("--figures", choices=("summary", "all"), default="summary",
+                   help="summary (default): every run's figures up to 24 runs, above that "
+                   "the 12 worst runs and a grid of small multiples; all: every run's")
+    _progress(p)
     p.set_defaults(command="loop")
 
 

@@ -12,6 +12,10 @@ Tables and figures follow :mod:`oilgap.studies.reporting`. Figures (drawn by
   named in the legend.
 
 More than 12 runs: ``measured_vs_model_2.png``... and ``measured_vs_model_window_2.png``...
+More than :data:`~oilgap.studies.loop.figures.CAP` runs (a campaign): a summary instead
+(the overview and windows of the 12 worst runs by held-out error after, the residuals, and
+``measured_vs_model_grid.png``, small multiples of up to 48 runs spread over all);
+every run's pages with ``figures="all"`` (``oilgap loop --figures all``).
 """
 
 from __future__ import annotations
@@ -37,16 +41,23 @@ from oilgap.model.io.text import layout, wrap
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.model_io import FittedModel
 from oilgap.optim.calibration.ranges import effective_scale
+from oilgap.studies.io.files import atomic_savefig
 from oilgap.studies.loop.figures import (
+    GRID,
     OVERVIEW,
+    PER_PAGE,
     SPEED,
     TIME,
+    WINDOW,
     LoopCurves,
     figure_names,
+    grid_runs,
     pages,
+    plot_grid,
     plot_overview,
     plot_residuals,
     plot_windows,
+    summarised,
 )
 from oilgap.studies.reporting import markdown_rows, save_figure, write_text
 
@@ -335,11 +346,34 @@ def _figure_residuals(curves: LoopCurves, path: Path, against: str) -> Path:
     return save_figure(axs[0].figure, path, DPI)
 
 
-def _figures(est: LoopEstimator, out: Path) -> list[Path]:
+def worst_runs(est: LoopEstimator, n: int = PER_PAGE) -> list[int]:
+    """The ``n`` runs of largest held-out RMSE after (in-sample after where not held
+    out), worst first, as indices into the run names."""
+    names = list(est.samples_.run_names)
+
+    def err(x: dict) -> float:
+        v = x.get("heldout_rmse_after_W", math.nan)
+        v = v if v is not None and math.isfinite(v) else x.get("rmse_with_effect_W", math.nan)
+        return v if v is not None and math.isfinite(v) else -math.inf
+
+    ranked = sorted(est.per_run_, key=lambda x: (-err(x), names.index(x["run"])))
+    return [names.index(x["run"]) for x in ranked[:n]]
+
+
+def _figures(est: LoopEstimator, out: Path, every: bool = False) -> list[Path]:
     """The figures of :func:`oilgap.studies.loop.figures.figure_names`, written into
-    ``out`` in that order (at most 12 runs a figure)."""
+    ``out`` in that order (at most 12 runs a figure; above the cap without ``every``,
+    the summary)."""
     c = LoopCurves.of(est)
-    names = figure_names(len(c.run_names))
+    names = figure_names(len(c.run_names), every)
+    if summarised(len(c.run_names), every):
+        worst = worst_runs(est)
+        grid = plot_grid(c)[0].figure
+        return [_figure_runs(c, out / OVERVIEW, worst, False),
+                _figure_residuals(c, out / SPEED, "speed"),
+                _figure_residuals(c, out / TIME, "time"),
+                atomic_savefig(grid, out / GRID, dpi=DPI),
+                _figure_runs(c, out / names[-1], worst, True)]
     pg = pages(len(c.run_names))
     paths = [_figure_runs(c, out / names[0], pg[0], False),
              _figure_residuals(c, out / names[1], "speed"),
@@ -468,7 +502,36 @@ def _md_effects(est: LoopEstimator) -> list[str]:
     return parts
 
 
-def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
+FIGURE_CHOICES = ("summary", "all", "none")
+"""What the report draws: the figures (a summary above the cap), every run's, none."""
+
+
+def figure_mode(figures: bool | str) -> str:
+    """``figures`` as one of :data:`FIGURE_CHOICES` (True: ``"summary"``, False:
+    ``"none"``); anything else is refused (InputError naming ``figures``)."""
+    if figures is True or figures is False:
+        return "summary" if figures else "none"
+    if figures not in FIGURE_CHOICES:
+        raise InputError("figures", figures, "allowed: summary, all, none (or True, False)",
+                         "loop report")
+    return str(figures)
+
+
+def _md_figures(est: LoopEstimator, mode: str) -> list[str]:
+    """Report section: the figures, and what a summary shows."""
+    n = len(est.samples_.run_names)
+    if mode == "none":
+        return ["## Figures", "", "Not drawn (`--no-figures`)."]
+    every = mode == "all"
+    note = ([f"{n} runs: the figures summarise. `{OVERVIEW}` and `{WINDOW}` show the "
+             f"{PER_PAGE} runs of largest held-out error after (worst first), `{GRID}` "
+             f"{len(grid_runs(n))} runs spread over all {n}; the table above lists every run. "
+             "Every run's figures: `oilgap loop --figures all` "
+             "(`Loop.report(..., figures=\"all\")`).", ""] if summarised(n, every) else [])
+    return ["## Figures", "", *note, *(f"![{f}]({f})" for f in figure_names(n, every))]
+
+
+def _md_errors(est: LoopEstimator, figures: bool | str = True) -> list[str]:
     """Report section: the errors before and after, overall and per run; the figures."""
     h, r = est.heldout_rmse_, est.rmse_
     return ["## Errors before and after", "",
@@ -483,10 +546,7 @@ def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
                                 f"{x['rmse_with_effect_W']:.3f}",
                                 f"{x['heldout_rmse_before_W']:.3f}",
                                 f"{x['heldout_rmse_after_W']:.3f}"] for x in est.per_run_]), "",
-            cv_sentence(est), "",
-            "## Figures", "", *((f"![{f}]({f})" for f in
-                                 figure_names(len(est.samples_.run_names))) if figures
-                                else ["Not drawn (`--no-figures`)."])]
+            cv_sentence(est), "", *_md_figures(est, figure_mode(figures))]
 
 
 def cv_sentence(est: LoopEstimator) -> str:
@@ -510,8 +570,9 @@ def cv_sentence(est: LoopEstimator) -> str:
     return f"{text} ({cv['rule']}); 95 % intervals by the {cv['jackknife']}."
 
 
-def report_markdown(est: LoopEstimator, figures: bool = True) -> str:
-    """The ``report.md`` text (``figures``: the figures are drawn and linked)."""
+def report_markdown(est: LoopEstimator, figures: bool | str = True) -> str:
+    """The ``report.md`` text (``figures``: which figures are drawn and linked,
+    :func:`figure_mode`)."""
     parts = (_md_data(est) + _md_calibration(est) + _md_search(est) + _md_effects(est)
              + _md_errors(est, figures))
     return "\n".join(parts) + "\n"
@@ -552,11 +613,14 @@ def loop_json(est: LoopEstimator) -> dict:
     return doc
 
 
-def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) -> dict:
+def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool | str = True) -> dict:
     """Write the figures, ``report.md`` and last ``loop.json`` to ``out_dir`` (each file
     atomically; the documents that name the others come last, so a failure while
     drawing never leaves a report linking figures that do not exist); returns the
-    paths."""
+    paths. ``figures``: ``"summary"`` (or True: every run's figures up to
+    :data:`~oilgap.studies.loop.figures.CAP` runs, a summary above), ``"all"`` (every
+    run's, however many), ``"none"`` (or False)."""
+    mode = figure_mode(figures)
     out = Path(out_dir)
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -564,8 +628,8 @@ def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) 
         raise InputError("--out", str(out), f"cannot create the directory ({e.strerror})") \
             from None
     paths = {"json": out / "loop.json", "report": out / "report.md"}
-    paths["figures"] = _figures(est, out) if figures else []
-    text = report_markdown(est, figures)
+    paths["figures"] = _figures(est, out, mode == "all") if mode != "none" else []
+    text = report_markdown(est, mode)
     doc = dumps(loop_json(est))  # 6 significant digits; the model block in full
     write_text(paths["report"], text)
     write_text(paths["json"], doc)

@@ -24,6 +24,7 @@ from typing import Any
 
 from oilgap._checks import AX, FLAG, Arg, check_arg, checked
 from oilgap.model.case import DesignCase
+from oilgap.model.errors import ArgumentError
 from oilgap.model.evaluation import CaseEvaluation
 from oilgap.model.io.defaults import case_defaults as model_case_defaults
 from oilgap.model.io.defaults import defaults_block, gamma_fields, gamma_line
@@ -92,6 +93,9 @@ class ResultView:
 
     raw: Any = None
     case: DesignCase | None = None
+    report_command: str | None = None
+    """The command whose report folder :meth:`report` writes (None: the view has none;
+    a study writes its own folder with ``out=``)."""
 
     def to_dict(self) -> dict:
         """Plain dict, units in the key names."""
@@ -126,6 +130,19 @@ class ResultView:
             out = check_out_file(path, force, field="path", option="force=True")
             atomic_write_text(out, text + "\n")
         return text
+
+    @checked(out=Arg((str, Path), "a folder path (str or pathlib.Path)"), force=FLAG)
+    def report(self, out: str | Path, force: bool = False, folder: Any = None) -> list[Path]:
+        """Write a report folder (``oilgap evaluate/optimize --report DIR``): ``summary.md``
+        (the answer, the text, the table, the figure, the defaults), the JSON document,
+        the table as CSV, the figure as PNG, ``provenance.json`` (an optimum: also the
+        optimal case TOML with every digit); atomic, an earlier report refused unless
+        ``force`` (:func:`oilgap._report.write_view_report`). Returns the files written."""
+        if self.report_command is None:
+            raise ArgumentError("report", type(self).__name__, "a report folder of evaluate or "
+                                "optimize; a study writes its folder with out=")
+        return lazy("oilgap._report").write_view_report(self, self.report_command, out,
+                                                        force, folder)
 
     def header(self) -> list[str]:
         """The summary's lines up to its first blank line."""
@@ -338,6 +355,8 @@ class Evaluation(ResultView):
     case : DesignCase
         The case evaluated (overrides applied).
     """
+
+    report_command = "evaluate"
 
     def __init__(self, raw: CaseEvaluation, case: DesignCase):
         self.raw = raw

@@ -234,6 +234,8 @@ class Optimization(ResultView):
         :func:`~oilgap.model.joint_loss.film_band`).
     """
 
+    report_command = "optimize"
+
     def __init__(self, raw: DesignResult | HeatingComparison, case: DesignCase, exact: tuple,
                  thermal_header: str, limits: dict | None = None,
                  bands: tuple[FilmBand | None, ...] | None = None):

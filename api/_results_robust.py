@@ -157,6 +157,8 @@ class RobustOptimization(ResultView):
         Which of ``scenarios``, ``seed`` were given (the report marks the others default).
     """
 
+    report_command = "optimize"
+
     def __init__(self, raw: RobustDesign, given: dict | None = None):
         self.raw = raw
         self.case = raw.case

@@ -9,11 +9,16 @@ import argparse
 
 from oilgap._evaluate import evaluate_resolved
 from oilgap.cli.common import load_case, show, thermal_case
+from oilgap.cli.outputs import print_wrote, report_folder
 
 
 def run(args: argparse.Namespace) -> int:
-    """Evaluate the case and print the table (or JSON); returns the exit code."""
-    case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
-    res = evaluate_resolved(case, mode, args.thermal is None, args.laminar_law)
+    """Evaluate the case and print the table (or JSON; ``--report DIR``: also the report
+    folder, checked and locked before computing); returns the exit code."""
+    with report_folder(args) as folder:
+        case, mode = thermal_case(load_case(args), args)  # the one resolution, as given
+        res = evaluate_resolved(case, mode, args.thermal is None, args.laminar_law)
+        files = res.report(args.report, folder=folder) if folder is not None else []
     show(res, args)
+    print_wrote(args, files)
     return 0

@@ -75,6 +75,13 @@ def add_force(p, what: str = "--out") -> None:
                    "to overwrite anything)")
 
 
+def add_report(p) -> None:
+    """The ``--report DIR`` option of evaluate and optimize."""
+    p.add_argument("--report", metavar="DIR", help="also write a report folder: summary.md "
+                   "(the answer, the tables, the figure, the defaults), the JSON, a CSV, a "
+                   "PNG and provenance.json (refused if DIR holds a report, unless --force)")
+
+
 def add_thermal_argument(p) -> None:
     """The one ``--thermal`` option of every command that reports a loss."""
     p.add_argument("--thermal", choices=THERMAL_MODES, default=None,
@@ -149,6 +156,8 @@ def add_evaluate(sub) -> None:
     p.add_argument("--sea-temp-c", type=finite_float, help="sea temperature [degC] of the "
                    "heat balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_report(p)
+    add_force(p, "--report")
     p.set_defaults(command="evaluate")
 
 
@@ -199,6 +208,7 @@ def add_optimize(sub) -> None:
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
     add_force(p)
+    add_report(p)
     _progress(p)
     p.set_defaults(command="optimize")  # -v/--verbose (every command) shows IPOPT's log
 

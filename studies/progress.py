@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import contextlib
 import sys
+import threading
 import time
 from collections.abc import Iterator
 from typing import IO
@@ -27,6 +28,8 @@ from oilgap.model.progress import reporting
 
 MIN_SECONDS = 1.0
 """A task's bar appears once it has run this long [s] (short tasks draw nothing)."""
+TICK_SECONDS = 0.5
+"""The bars are redrawn this often [s] (their elapsed time moves during a long step)."""
 
 
 def progress_bar(total: int, label: str = "sweep", enabled: bool | None = None,
@@ -60,44 +63,73 @@ def is_terminal(stream) -> bool:
 
 class Bars:
     """A reporter (:data:`oilgap.model.progress.Reporter`): one :func:`progress_bar` per
-    task, drawn on ``stream`` from :data:`MIN_SECONDS` after the task's first report and
-    removed when it is done.
+    task, drawn on ``stream`` once the task has run :data:`MIN_SECONDS` and removed when
+    it is done. A daemon thread (:meth:`start`) redraws the bars every
+    :data:`TICK_SECONDS`, so that a long step shows its elapsed time moving.
 
     Parameters
     ----------
     stream : file, optional
-        Where to draw (default: stderr at the time of each report).
+        Where to draw (default: stderr at the time of drawing).
     """
 
     def __init__(self, stream: IO[str] | None = None):
         self.stream = stream
         self._bars: dict[str, tqdm] = {}
-        self._started: dict[str, float] = {}
+        self._tasks: dict[str, list] = {}  # task -> [start, done, total]
+        self._lock = threading.RLock()
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
 
     def __call__(self, task: str, done: int, total: int) -> None:
-        now = time.monotonic()
-        start = self._started.setdefault(task, now)
+        with self._lock:
+            state = self._tasks.setdefault(task, [time.monotonic(), 0, 0])
+            state[1:] = [min(done, total), total]
+            if done >= total:
+                self._done(task)
+            else:
+                self._draw(task)
+
+    def _draw(self, task: str) -> None:
+        """Create the task's bar once it is :data:`MIN_SECONDS` old; show its count."""
+        start, done, total = self._tasks[task]
         bar = self._bars.get(task)
-        if bar is None and now - start >= MIN_SECONDS and done < total:
+        if bar is None:
+            if time.monotonic() - start < MIN_SECONDS:
+                return
             bar = self._bars[task] = progress_bar(
                 total, task, True, self.stream if self.stream is not None else sys.stderr,
                 unit=" steps", leave=False)
-        if bar is not None:
-            bar.n = min(done, total)
-            bar.refresh()
-        if done >= total:
-            self._done(task)
+        bar.n = done
+        bar.refresh()
 
     def _done(self, task: str) -> None:
+        self._tasks.pop(task, None)
         bar = self._bars.pop(task, None)
-        self._started.pop(task, None)
         if bar is not None:
             bar.close()
 
+    def _tick(self) -> None:
+        while not self._stop.wait(TICK_SECONDS):
+            with self._lock:
+                for task in list(self._tasks):
+                    self._draw(task)
+
+    def start(self) -> Bars:
+        """Start redrawing every :data:`TICK_SECONDS` (a daemon thread)."""
+        self._thread = threading.Thread(target=self._tick, name="oilgap-progress",
+                                        daemon=True)
+        self._thread.start()
+        return self
+
     def close(self) -> None:
-        """Remove every bar still drawn."""
-        for task in list(self._bars):
-            self._done(task)
+        """Stop redrawing and remove every bar still drawn."""
+        self._stop.set()
+        if self._thread is not None:
+            self._thread.join()
+        with self._lock:
+            for task in list(self._tasks):
+                self._done(task)
 
 
 @contextlib.contextmanager
@@ -118,7 +150,7 @@ def shown(enabled: bool | None = None, stream: IO[str] | None = None) -> Iterato
         with reporting(None):
             yield
         return
-    bars = Bars(stream)
+    bars = Bars(stream).start()
     try:
         with reporting(bars):
             yield
@@ -126,4 +158,4 @@ def shown(enabled: bool | None = None, stream: IO[str] | None = None) -> Iterato
         bars.close()
 
 
-__all__ = ["Bars", "MIN_SECONDS", "is_terminal", "progress_bar", "shown"]
+__all__ = ["Bars", "MIN_SECONDS", "TICK_SECONDS", "is_terminal", "progress_bar", "shown"]

@@ -23,13 +23,18 @@ from collections.abc import Iterable, Sequence
 WIDTH = 100
 """Width of the text commands print [characters]."""
 
+_GLUE = re.compile(r"(?<=\d) (?=(?:%|W|K|J|s|ms|mm|m|degC|cSt|Wh|h|rpm|N m|kg|x)(?![\w/^]))")
+"""The space between a number and its unit: never a line break ("34.9 W", "-29 %")."""
+_NBSP = "\u00a0"
+
 _LABEL = re.compile(r"^(\s*)(\S(?:[^ ]| (?! ))*?\s{2,}|\S[^:]{0,30}: )")
 """A line's label: ``thermal     `` (a word padded to its column) or ``film band: ``."""
 
 
 def wrap(line: str, width: int = WIDTH) -> list[str]:
     """One prose line as lines of at most ``width`` characters (a word longer than the
-    width stays whole), continuation lines indented under the text after the label.
+    width stays whole, a number stays with its unit), continuation lines indented under
+    the text after the label.
 
     Parameters
     ----------
@@ -48,8 +53,9 @@ def wrap(line: str, width: int = WIDTH) -> list[str]:
     m = _LABEL.match(line)
     indent = len(m.group(0)) if m and len(m.group(0)) <= 40 else \
         len(line) - len(line.lstrip()) + 2
-    return textwrap.wrap(line, width, subsequent_indent=" " * indent,
-                         break_long_words=False, break_on_hyphens=False) or [line]
+    out = textwrap.wrap(_GLUE.sub(_NBSP, line), width, subsequent_indent=" " * indent,
+                        break_long_words=False, break_on_hyphens=False)
+    return [x.replace(_NBSP, " ") for x in out] or [line]
 
 
 def wrapped(lines: Iterable[str], width: int = WIDTH) -> list[str]:

@@ -63,7 +63,8 @@ def test_loop_on_clean_data_says_so(tmp_path, capsys):
     assert main(["loop", str(data), "--out", str(tmp_path / "r"), "--no-figures"]) == 0
     text = capsys.readouterr().out
     assert "no missing effect found" in text
-    held = json.loads((tmp_path / "r" / "loop.json").read_text())["heldout_rmse_W"]  # the answer first (issue 26): held-out before -> after
+    # the answer first (issue 26): the held-out error before -> after
+    held = json.loads((tmp_path / "r" / "loop.json").read_text())["heldout_rmse_W"]
     assert text.startswith(f"held-out RMSE {held['before']:.4g} W before -> "
                            f"{held['after']:.4g} W after")
     assert text.splitlines()[1].startswith("effects     none")

@@ -78,7 +78,12 @@ def reporting(reporter: Reporter | None) -> Iterator[None]:
     Parameters
     ----------
     reporter : callable or None
-        ``reporter(task, done, total)``.
+        ``reporter(task, done, total)`` [-].
+
+    Returns
+    -------
+    context manager
+        Inside it, :func:`report` calls ``reporter`` [-].
     """
     token = _REPORTER.set(reporter)
     try:

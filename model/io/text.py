@@ -59,7 +59,20 @@ def wrap(line: str, width: int = WIDTH) -> list[str]:
 
 
 def wrapped(lines: Iterable[str], width: int = WIDTH) -> list[str]:
-    """Each of ``lines`` through :func:`wrap`."""
+    """Each of ``lines`` through :func:`wrap`.
+
+    Parameters
+    ----------
+    lines : iterable of str
+        Prose lines [-].
+    width : int
+        The width [characters].
+
+    Returns
+    -------
+    list of str
+        The lines, each wrapped in place [-].
+    """
     return [x for line in lines for x in wrap(line, width)]
 
 
@@ -71,19 +84,20 @@ def layout(answer: Sequence[str], body: Sequence[str] = (), assumptions: Sequenc
     Parameters
     ----------
     answer : sequence of str
-        The result in a few lines (first on stdout).
+        The result in a few lines (first on stdout) [-].
     body : sequence of str
-        Tables and notes, as given (blank lines kept inside).
+        Tables and notes, as given (blank lines kept inside) [-].
     assumptions : sequence of str
-        The case, thermal mode, gamma, the defaults filled in.
+        The case, thermal mode, gamma, the defaults filled in [-].
     tail : sequence of str
-        Lines that close the text (the files written).
+        Lines that close the text (the files written) [-].
     defaults : bool
-        Print the assumptions (False: ``-q``).
+        Print the assumptions (False: ``-q``) [-].
 
     Returns
     -------
     str
+        The text, lines of at most :data:`WIDTH` characters but the body's tables [-].
     """
     blocks = [wrapped(answer), _trim(body), wrapped(assumptions) if defaults else [],
               _trim(tail)]

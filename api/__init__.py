@@ -40,6 +40,7 @@ EXPORTS: dict[str, str] = {
     "predict": "oilgap._loop",
     "synth": "oilgap._loop",
     "read_measured": "oilgap._loop",
+    "progress_bars": "oilgap._progress",
     "Evaluation": "oilgap._results",
     "Optimization": "oilgap._results_design",
     "RobustOptimization": "oilgap._results_robust",

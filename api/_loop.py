@@ -49,13 +49,13 @@ from oilgap.studies.io.result_folder import ResultFolder
 from oilgap.studies.loop.figures import pages, plot_overview, plot_residuals, plot_windows
 from oilgap.studies.loop.model_file import read_model
 from oilgap.studies.loop.report import (
-    FIGURE_CHOICES,
     format_summary,
     loop_json,
     unit_mistake,
     warn_unit_hints,
     write_report,
 )
+from oilgap.studies.loop.report_figures import FIGURE_CHOICES
 from oilgap.studies.outputs import result_folder
 from oilgap.studies.rigs.synth import SynthConfig, synthesize
 

@@ -166,7 +166,7 @@ def test_loop_overview_and_windows_one_panel_per_run_with_legends(loop):
 
 
 def test_loop_report_writes_every_named_figure(loop, tmp_path, monkeypatch):
-    monkeypatch.setattr("oilgap.studies.loop.report.DPI", 20)  # small files, fast
+    monkeypatch.setattr("oilgap.studies.loop.report_figures.DPI", 20)  # small files, fast
     paths = write_report(loop, tmp_path)
     names = lf.figure_names(len(loop.samples_.run_names))
     assert [p.name for p in paths["figures"]] == names

@@ -8,7 +8,7 @@ import pytest
 
 import oilgap.studies.loop.figures as lf
 from oilgap.model.errors import InputError
-from oilgap.studies.loop.report import figure_mode, worst_runs
+from oilgap.studies.loop.report_figures import figure_mode, worst_runs
 
 
 def test_up_to_the_cap_every_run_above_it_a_summary():

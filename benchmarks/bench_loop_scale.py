@@ -113,12 +113,15 @@ def make_data(runs: int, per_run: int, effect: str | None, path: Path) -> Path:
     return write_data_csv(pd.concat(frames, ignore_index=True), path)
 
 
-def run_shape(runs: int, per_run: int, effect: str | None, tmp: Path) -> dict:
-    """Write the data, run the loop in a child process, return its record."""
+def run_shape(runs: int, per_run: int, effect: str | None, tmp: Path,
+              figures: str = "auto") -> dict:
+    """Write the data, run the loop in a child process, return its record (``figures``
+    "auto": the report's summary above :data:`CAMPAIGN_RUNS` runs, none below)."""
     csv = make_data(runs, per_run, effect, tmp / f"data_{runs}x{per_run}.csv")
     ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
-    figures = "summary" if runs > CAMPAIGN_RUNS else "none"
+    if figures == "auto":
+        figures = "summary" if runs > CAMPAIGN_RUNS else "none"
     r = subprocess.run([sys.executable, __file__, "--child", str(csv),
                         str(tmp / f"out_{runs}x{per_run}"), figures],
                        capture_output=True, text=True, check=True)
@@ -161,6 +164,9 @@ def main() -> None:
     ap.add_argument("--sizes", default=None, help="comma-separated total samples, 10 runs each")
     ap.add_argument("--effects", default="none,thermal_lag",
                     help="comma-separated: none (clean) and/or library effects")
+    ap.add_argument("--figures", choices=("auto", "none", "summary", "all"), default="auto",
+                    help="the report's figures: auto (summary above 100 runs, else none), "
+                    "or as given (all: every run's pages, as before issue 26)")
     ap.add_argument("--child", nargs=3, metavar=("CSV", "OUT", "FIGURES"),
                     help=argparse.SUPPRESS)
     args = ap.parse_args()
@@ -181,7 +187,7 @@ def main() -> None:
     with tempfile.TemporaryDirectory() as d:
         for effect in effects:
             for runs, per_run in shapes:
-                r = run_shape(runs, per_run, effect, Path(d))
+                r = run_shape(runs, per_run, effect, Path(d), args.figures)
                 h, v = r["heldout"], verdict(r)
                 folds = f"{r['folds']}" + ("" if r["scheme"] == "grouped k-fold" else "*")
                 print(f"{effect or 'clean':<12}{runs:>5}{per_run:>10}{r['rows']:>9}{folds:>6}"

@@ -7,7 +7,7 @@ the task's name, the steps done and the steps in all. That call goes to the *rep
 the caller installed for the duration of a run with :func:`reporting` (the command line
 does for every command, :mod:`oilgap.cli`; the façade's ``og.progress_bars()``): a
 callable ``reporter(task, done, total)``. With none installed (the default, and in
-worker processes), :func:`report` does nothing.
+worker processes, forked ones included), :func:`report` does nothing.
 
 The reporter travels down through a :class:`contextvars.ContextVar`, not through
 every function's signature: one mechanism for every command, without a ``progress``
@@ -19,6 +19,7 @@ reporter the project ships, tqdm bars on stderr shown only on a terminal, is
 from __future__ import annotations
 
 import contextlib
+import os
 from collections.abc import Callable, Iterable, Iterator, Sized
 from contextvars import ContextVar
 from typing import TypeVar
@@ -26,7 +27,10 @@ from typing import TypeVar
 Reporter = Callable[[str, int, int], None]
 """``reporter(task, done, total)``: ``done`` of ``total`` steps of ``task`` are done [-]."""
 
-_REPORTER: ContextVar[Reporter | None] = ContextVar("oilgap_progress", default=None)
+_REPORTER: ContextVar[tuple[int, Reporter] | None] = ContextVar("oilgap_progress",
+                                                                default=None)
+"""The installed reporter and the process that installed it (a forked worker inherits the
+variable, not the right to draw: its reports are dropped)."""
 
 T = TypeVar("T")
 
@@ -42,9 +46,9 @@ def report(task: str, done: int, total: int) -> None:
     done, total : int
         Steps done and in all [-].
     """
-    reporter = _REPORTER.get()
-    if reporter is not None:
-        reporter(task, int(done), int(total))
+    installed = _REPORTER.get()
+    if installed is not None and installed[0] == os.getpid():
+        installed[1](task, int(done), int(total))
 
 
 def steps(task: str, items: Iterable[T], total: int | None = None) -> Iterator[T]:
@@ -85,7 +89,7 @@ def reporting(reporter: Reporter | None) -> Iterator[None]:
     context manager
         Inside it, :func:`report` calls ``reporter`` [-].
     """
-    token = _REPORTER.set(reporter)
+    token = _REPORTER.set(None if reporter is None else (os.getpid(), reporter))
     try:
         yield
     finally:

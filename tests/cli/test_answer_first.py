@@ -154,3 +154,19 @@ def test_progress_is_drawn_on_a_terminal_only(monkeypatch):
 def test_cli_draws_no_progress_when_not_a_terminal(capsys):
     code, _, err = _run(capsys, ["optimize", "--starts", "3"])
     assert code == 0 and "steps" not in err and "oilgap optimize: starts" not in err
+
+
+def test_a_forked_worker_does_not_draw_its_parents_bars():
+    """run_grid's workers are forked: they inherit the installed reporter, not the right
+    to draw on the parent's terminal."""
+    import os
+
+    seen = []
+    with reporting(lambda *a: seen.append(a)):
+        report("parent", 1, 2)
+        pid = os.fork()
+        if pid == 0:  # the child: exit 3 if its report reached the parent's reporter
+            report("child", 1, 2)
+            os._exit(3 if seen[-1][0] == "child" else 0)
+        _, status = os.waitpid(pid, 0)
+    assert os.waitstatus_to_exitcode(status) == 0 and seen == [("parent", 1, 2)]

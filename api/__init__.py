@@ -42,6 +42,7 @@ EXPORTS: dict[str, str] = {
     "read_measured": "oilgap._loop",
     "plan": "oilgap._plan",
     "synth_plan": "oilgap._plan",
+    "progress_bars": "oilgap._progress",
     "Evaluation": "oilgap._results",
     "Optimization": "oilgap._results_design",
     "RobustOptimization": "oilgap._results_robust",

@@ -30,7 +30,7 @@ from oilgap._evaluate import as_case, oil_catalogue
 from oilgap._results import ResultView, case_defaults, lazy
 from oilgap.model.case import DesignCase
 from oilgap.model.effects import EFFECTS
-from oilgap.model.errors import InputError, OilgapWarning, SolverError
+from oilgap.model.errors import ArgumentError, InputError, OilgapWarning, SolverError
 from oilgap.model.io.defaults import gamma_fields
 from oilgap.model.measured.data import MeasuredData, load_measured, read_table, validate
 from oilgap.model.oils import Oil
@@ -55,6 +55,7 @@ from oilgap.studies.loop.report import (
     warn_unit_hints,
     write_report,
 )
+from oilgap.studies.loop.report_figures import FIGURE_CHOICES
 from oilgap.studies.outputs import result_folder
 from oilgap.studies.rigs.synth import SynthConfig, synthesize
 
@@ -164,6 +165,12 @@ LOOP_PLOTS = ("windows", "overview", "residuals", "residuals_speed")
 """The figures :meth:`Loop.plot` draws."""
 
 
+def _figures_check(name: str, value: Any) -> None:
+    """``figures`` is a bool or one of :data:`FIGURE_CHOICES`."""
+    if isinstance(value, str) and value not in FIGURE_CHOICES:
+        raise ArgumentError(name, value, "True, False, \"summary\", \"all\" or \"none\"")
+
+
 class Loop(LoopEstimator, ResultView):
     """The measured-data loop (``oilgap loop``): calibrate the model on measured runs,
     search the library for a missing effect, report before/after.
@@ -258,10 +265,12 @@ class Loop(LoopEstimator, ResultView):
         self._check_fitted("to_dict()")
         return loop_json(self)
 
-    def summary(self) -> str:
-        """What ``oilgap loop`` prints (without its ``wrote`` line)."""
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap loop`` prints (without its ``wrote`` line): the held-out error
+        before and after first (``defaults`` False: without gamma and the defaults filled
+        in, ``-q``)."""
         self._check_fitted("summary()")
-        return format_summary(self)
+        return format_summary(self, defaults)
 
     def to_frame(self) -> pd.DataFrame:
         """Per run: oil, roughness, samples, mean measured and model viscous power [W]
@@ -304,12 +313,17 @@ class Loop(LoopEstimator, ResultView):
         return axs[0]
 
     @checked(out=Arg(OUT.kinds, "a folder path (str or pathlib.Path)", check=OUT.check),
-             figures=FLAG, force=FLAG)
-    def report(self, out: str | Path, figures: bool = True, force: bool = False,
+             figures=Arg((bool, "bool_", str), "True, False, \"summary\", \"all\" or "
+                         "\"none\"", check=_figures_check), force=FLAG)
+    def report(self, out: str | Path, figures: bool | str = True, force: bool = False,
                folder: ResultFolder | None = None) -> dict:
         """Write ``loop.json``, ``report.md`` and the figures into the folder ``out``
         (an earlier report refused unless ``force``; ``folder``: a result folder the
-        caller already opened). Returns the paths (``json``, ``report``, ``figures``)."""
+        caller already opened). Returns the paths (``json``, ``report``, ``figures``).
+
+        ``figures``: True or ``"summary"`` (every run's figures up to 24 runs; above, the
+        12 worst runs and a grid of small multiples), ``"all"`` (every run's pages,
+        however many: ``oilgap loop --figures all``), False or ``"none"``."""
         self._check_fitted("report()")
         with result_folder("loop", out, force, folder=folder) as f:
             f.note(**gamma_fields(self.case_))  # the rig case as read, for provenance.json

@@ -24,10 +24,12 @@ from typing import Any
 
 from oilgap._checks import AX, FLAG, Arg, check_arg, checked
 from oilgap.model.case import DesignCase
+from oilgap.model.errors import ArgumentError
 from oilgap.model.evaluation import CaseEvaluation
 from oilgap.model.io.defaults import case_defaults as model_case_defaults
 from oilgap.model.io.defaults import defaults_block, gamma_fields, gamma_line
 from oilgap.model.io.serialize import dumps
+from oilgap.model.io.text import layout, wrapped
 from oilgap.model.thermal_modes import (
     DEFAULT_MODE_WHY,
     THERMAL_MODE_TEXT,
@@ -92,6 +94,9 @@ class ResultView:
 
     raw: Any = None
     case: DesignCase | None = None
+    report_command: str | None = None
+    """The command whose report folder :meth:`report` writes (None: the view has none;
+    a study writes its own folder with ``out=``)."""
 
     def to_dict(self) -> dict:
         """Plain dict, units in the key names."""
@@ -105,8 +110,9 @@ class ResultView:
         """Draw on ``ax`` (default: a new pyplot figure); returns the axes."""
         raise NotImplementedError
 
-    def summary(self) -> str:
-        """The text the command line prints."""
+    def summary(self, defaults: bool = True) -> str:
+        """The text the command line prints: the answer first (``defaults`` False: without
+        the assumptions and the defaults filled in, ``-q``)."""
         raise NotImplementedError
 
     @property
@@ -125,6 +131,19 @@ class ResultView:
             out = check_out_file(path, force, field="path", option="force=True")
             atomic_write_text(out, text + "\n")
         return text
+
+    @checked(out=Arg((str, Path), "a folder path (str or pathlib.Path)"), force=FLAG)
+    def report(self, out: str | Path, force: bool = False, folder: Any = None) -> list[Path]:
+        """Write a report folder (``oilgap evaluate/optimize --report DIR``): ``summary.md``
+        (the answer, the text, the table, the figure, the defaults), the JSON document,
+        the table as CSV, the figure as PNG, ``provenance.json`` (an optimum: also the
+        optimal case TOML with every digit); atomic, an earlier report refused unless
+        ``force`` (:func:`oilgap._report.write_view_report`). Returns the files written."""
+        if self.report_command is None:
+            raise ArgumentError("report", type(self).__name__, "a report folder of evaluate or "
+                                "optimize; a study writes its folder with out=")
+        return lazy("oilgap._report").write_view_report(self, self.report_command, out,
+                                                        force, folder)
 
     def header(self) -> list[str]:
         """The summary's lines up to its first blank line."""
@@ -259,11 +278,13 @@ def _film_notes(ev: CaseEvaluation) -> list[str]:
     return notes
 
 
-def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
-    """Human-readable table of an evaluation (``gamma``: the header line naming the groove
-    exponent and its source, :func:`~oilgap.cli.common.gamma_line`)."""
-    lines = _header(ev) + ([gamma] if gamma else []) + [
-        "",
+def format_evaluation(ev: CaseEvaluation, gamma: str | None = None,
+                      defaults: bool = True) -> str:
+    """Human-readable text of an evaluation: the total first, the table, the notes, then
+    the case, thermal mode, oil and friction (``gamma``: the line naming the groove
+    exponent and its source, :func:`~oilgap.model.io.defaults.gamma_line`; ``defaults``
+    False leaves these last lines out, ``-q``)."""
+    lines = [
         f"{'region':<14}{'R mm':>7}{'gap mm':>8}{'L mm':>7}{'T':>6}{'Re_peak':>10}"
         f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}{'Na_peak':>9}{'Na_eff':>8}"
         f"{'Phi_st':>8}{'Phi_app':>8}{'rise K':>8}  regimes visited",
@@ -278,12 +299,20 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
             f"{r.film_factor_steady_peak:>8.3f}{r.film_factor_applied_peak:>8.3f}{rise:>8}"
             f"  {', '.join(r.regimes)}")
     lines += _bearing_rows(ev)
+    notes = wrapped(_film_notes(ev) + _bearing_notes(ev))
+    return layout(_total_lines(ev), lines + [""] + notes,
+                  _header(ev) + ([gamma] if gamma else []), defaults=defaults)
+
+
+def _total_lines(ev: CaseEvaluation) -> list[str]:
+    """The answer: the total mean power and its shares, the film band, the loss without
+    the heat balance, the torque at the peak and the energy per cycle."""
     parts = [(r.name, r.mean_power_W) for r in ev.regions]
     parts += [(f"rolling bearing {b.name}", b.mean_power_W) for b in ev.bearings]
     share = ", ".join(f"{n} {100 * p / ev.total_mean_power_W:.0f} %"
                       for n, p in parts) if ev.total_mean_power_W > 0 else ""
     label = "total mean power          " if ev.bearings else "total mean viscous power  "
-    lines += ["", f"{label} {ev.total_mean_power_W:.3f} W   ({share})"]
+    lines = [f"{label} {ev.total_mean_power_W:.3f} W   ({share})"]
     if ev.film_band is not None:
         lines.append(f"film band                  {ev.film_band.line('.4g')}")
     if uses_balance(ev.thermal_mode):
@@ -292,12 +321,8 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
                   f"{100 * (ev.total_mean_power_W / iso - 1):+.1f} %") if iso > 0 else ""
         lines.append(f"no heat balance            {iso:.3f} W   (--thermal none at "
                      f"[operating] oil_temp_C{change})")
-    lines += [
-        f"viscous torque at peak     {ev.viscous_torque_peak_Nm:.4f} N m",
-        f"energy per cycle           {ev.cycle_energy_J:.1f} J",
-        "",
-    ] + _film_notes(ev) + _bearing_notes(ev)
-    return "\n".join(lines)
+    return lines + [f"viscous torque at peak     {ev.viscous_torque_peak_Nm:.4f} N m",
+                    f"energy per cycle           {ev.cycle_energy_J:.1f} J"]
 
 
 def evaluation_rows(ev: CaseEvaluation) -> list[dict]:
@@ -331,6 +356,8 @@ class Evaluation(ResultView):
     case : DesignCase
         The case evaluated (overrides applied).
     """
+
+    report_command = "evaluate"
 
     def __init__(self, raw: CaseEvaluation, case: DesignCase):
         self.raw = raw
@@ -375,9 +402,10 @@ class Evaluation(ResultView):
         """One row per region (and rolling bearing), indexed by its name."""
         return lazy("pandas").DataFrame(evaluation_rows(self.raw)).set_index("region")
 
-    def summary(self) -> str:
-        """What ``oilgap evaluate`` prints."""
-        return format_evaluation(self.raw, gamma_line(self.case))
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap evaluate`` prints: the total first (``defaults`` False: without
+        the case, thermal-mode, oil and gamma lines, ``-q``)."""
+        return format_evaluation(self.raw, gamma_line(self.case), defaults)
 
     def plot(self, ax: Any = None) -> Any:
         """Mean power of each region (and bearing) over the cycle, a bar each [W]."""

@@ -12,6 +12,7 @@ from oilgap._results import ResultView, case_defaults, new_axes
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import oil_state
 from oilgap.model.io.defaults import gamma_fields, gamma_line
+from oilgap.model.io.text import layout, wrapped
 from oilgap.model.joint_loss import FilmBand
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, THERMAL_MODE_TEXT, ThermalMode
 from oilgap.model.units import m2_s_to_cst
@@ -42,13 +43,6 @@ def thermal_line(mode: str, default: bool) -> str:
     if mode != ThermalMode.NONE:
         text += "; --thermal none for the seed paper's isothermal model"
     return text + ")"
-
-
-def with_gamma(text: str, case: DesignCase) -> str:
-    """The report with the gamma line after its oil line (the end of the header)."""
-    lines = text.split("\n")
-    at = next((i + 1 for i, x in enumerate(lines) if x.startswith("oil ")), 1)
-    return "\n".join(lines[:at] + [gamma_line(case)] + lines[at:])
 
 
 def _rows(prm) -> list[tuple[str, str]]:
@@ -90,21 +84,29 @@ def band_lines(bands: tuple | None) -> list[str]:
             for k, b in zip(("initial", "optimal"), bands, strict=True) if b is not None]
 
 
+def _answer(res: DesignResult, exact_initial: float, exact_optimal: float,
+            heating: str = "") -> list[str]:
+    """The optimum in two lines: its loss against the initial design's, and its
+    geometry."""
+    i, o = res.initial.to_dict(), res.optimal.to_dict()
+    a, b = i["mean_power_W"], o["mean_power_W"]
+    return [f"optimum     {b:.4f} W mean viscous power{heating} (initial {a:.4f} W, "
+            f"{_change(a, b)}); {exact_optimal:.4f} W with the case's exact C_m as "
+            f"oilgap evaluate (initial {exact_initial:.4f} W)",
+            f"design      delta {o['delta_mm']:.4f} mm, R {o['R_mm']:.4f} mm, "
+            f"L {o['L_mm']:.4f} mm, T {o['T']:.4f}; IPOPT {res.status}"]
+
+
 def format_result(res: DesignResult, exact: tuple | None = None,
-                  thermal: str | None = None, bands: tuple | None = None) -> str:
-    """Side-by-side table of the initial and optimal designs, with the multipliers
-    (``thermal``: the header line naming the mode; ``bands``: the designs' film bands)."""
+                  thermal: str | None = None, bands: tuple | None = None,
+                  gamma: str | None = None, defaults: bool = True) -> str:
+    """The optimum first, then the side-by-side table of the initial and optimal designs
+    with the multipliers, then the case, mode, oil, gamma and solver lines (``thermal``:
+    the line naming the mode; ``bands``: the designs' film bands; ``defaults`` False
+    leaves the last lines out, ``-q``)."""
     prm = res.parameters
     i, o = res.initial.to_dict(), res.optimal.to_dict()
-    lines = [f"case        {res.case.name}"] + ([thermal] if thermal else []) + [
-        f"oil         {prm.oil} at {prm.oil_temp_C:g} degC, {prm.depth_m:g} m: "
-        f"nu = {m2_s_to_cst(prm.nu_m2_s):.4g} cSt, rho = {prm.rho_kg_m3:.1f} kg/m^3",
-        f"solver      IPOPT {res.status} in {res.iterations} iterations, "
-        f"{res.solve_time_s * 1e3:.1f} ms" + (f" (best of {res.starts} starts)"
-                                               if res.starts > 1 else ""),
-        "",
-        f"{'quantity':<24}{'initial':>13}{'optimal':>13}{'change':>11}  meaning",
-    ]
+    lines = [f"{'quantity':<24}{'initial':>13}{'optimal':>13}{'change':>11}  meaning"]
     for key, meaning in (r for r in _rows(prm) if r[0] in o):  # bearing only with one
         a, b = i[key], o[key]
         lines.append(f"{key:<24}{_fmt(a):>13}{_fmt(b):>13}{_change(a, b):>11}  {meaning}")
@@ -112,9 +114,18 @@ def format_result(res: DesignResult, exact: tuple | None = None,
         a, b = exact[0].total_mean_power_W, exact[1].total_mean_power_W
         lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>13}{_fmt(b):>13}"
                      f"{100 * (b - a) / a:>+9.1f} %  same, case's exact C_m (oilgap evaluate)")
-    lines += band_lines(bands)
+    lines += wrapped(band_lines(bands))
     lines += ["", "active constraints and what they cost (d optimal power / d bound):"]
-    return "\n".join(lines + _costs(res))
+    head = [f"case        {res.case.name}"] + ([thermal] if thermal else []) + [
+        f"oil         {prm.oil} at {prm.oil_temp_C:g} degC, {prm.depth_m:g} m: "
+        f"nu = {m2_s_to_cst(prm.nu_m2_s):.4g} cSt, rho = {prm.rho_kg_m3:.1f} kg/m^3",
+        *([gamma] if gamma else []),
+        f"solver      IPOPT {res.status} in {res.iterations} iterations, "
+        f"{res.solve_time_s * 1e3:.1f} ms" + (f" (best of {res.starts} starts)"
+                                               if res.starts > 1 else "")]
+    answer = _answer(res, *((exact[0].total_mean_power_W, exact[1].total_mean_power_W)
+                            if exact is not None else (i["mean_power_W"], o["mean_power_W"])))
+    return layout(answer, lines + wrapped(_costs(res)), head, defaults=defaults)
 
 
 def _oil_lines(cmp: HeatingComparison) -> list[str]:
@@ -138,8 +149,11 @@ def _oil_lines(cmp: HeatingComparison) -> list[str]:
 
 
 def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
-                      bands: tuple | None = None) -> str:
-    """The optimum with heating beside the one without, what changed, and the costs.
+                      bands: tuple | None = None, gamma: str | None = None,
+                      defaults: bool = True) -> str:
+    """The optimum with heating first, then beside the one without, what changed, and the
+    costs, then the case, mode, oil, gamma and solver lines (``defaults`` False leaves
+    these out, ``-q``).
 
     ``exact``: (initial, optimal) OperatingTemperature of the heated designs with the
     case's exact C_m, and the isothermal optimum's CaseEvaluation; ``bands``: the
@@ -148,11 +162,12 @@ def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
     prm = h.parameters
     i, o, n = h.initial.to_dict(), h.optimal.to_dict(), iso.optimal.to_dict()
     starts = f" (best of {h.starts} starts)" if h.starts > 1 else ""
-    lines = [f"case        {h.case.name}", thermal] + _oil_lines(cmp) + [
+    head = [f"case        {h.case.name}", thermal] + _oil_lines(cmp) + [
+        *([gamma] if gamma else []),
         f"solver      IPOPT {h.status} in {h.iterations} iterations, "
         f"{h.solve_time_s * 1e3:.1f} ms{starts}; without heating {iso.status} in "
-        f"{iso.iterations} iterations, {iso.solve_time_s * 1e3:.1f} ms",
-        "",
+        f"{iso.iterations} iterations, {iso.solve_time_s * 1e3:.1f} ms"]
+    lines = [
         f"{'quantity':<24}{'initial':>12}{'optimal':>12}{'change':>9}{'no heating':>12}"
         f"{'heating':>10}  meaning",
         f"{'':<24}{'(' + h.thermal_mode + ')':>12}{'(' + h.thermal_mode + ')':>12}{'':>9}"
@@ -168,26 +183,30 @@ def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
     a, b, c = exact[0].mean_power_W, exact[1].mean_power_W, exact[2].total_mean_power_W
     lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>12}{_fmt(b):>12}{_change(a, b):>9}"
                  f"{_fmt(c):>12}{_change(c, b):>10}  same, case's exact C_m (oilgap evaluate)")
-    lines += band_lines(bands)
+    lines += wrapped(band_lines(bands))
     lines += ["", f"active constraints with heating ({h.thermal_mode}) and what they cost "
-              "(d optimal power / d bound):"] + _costs(h)
+              "(d optimal power / d bound):"] + wrapped(_costs(h))
+    prose = []
     act = cmp.active()
     if act["only_with_heating"] or act["only_without_heating"]:
-        lines.append("heating changes the active set: "
+        prose.append("heating changes the active set: "
                      f"only with heating: {', '.join(act['only_with_heating']) or '-'}; "
                      f"only without: {', '.join(act['only_without_heating']) or '-'}")
     else:
-        lines.append("the same constraints are active without heating")
+        prose.append("the same constraints are active without heating")
     if h.sea_temp_cost_W_per_K is not None:
         c = h.sea_temp_cost_W_per_K
-        lines.append(f"sea temperature: dP*/dT_sea = {c:+.4g} W/K (the heat balance's "
+        prose.append(f"sea temperature: dP*/dT_sea = {c:+.4g} W/K (the heat balance's "
                      f"multiplier): a sea 1 K warmer {'saves' if c < 0 else 'costs'} "
                      f"{abs(c):.4g} W at the optimum")
     if h.oil_temp_cost_W_per_K is not None:
         c = h.oil_temp_cost_W_per_K
-        lines.append(f"oil temperature: dP*/dT_oil = {c:+.4g} W/K at the fixed oil "
+        prose.append(f"oil temperature: dP*/dT_oil = {c:+.4g} W/K at the fixed oil "
                      "temperature (its bound's multiplier)")
-    return "\n".join(lines)
+    answer = _answer(h, a, b, f" with heating ({h.thermal_mode}, oil at {t1:.2f} degC)")
+    answer.append(f"no heating  {n['mean_power_W']:.4f} W at the optimum without heating "
+                  f"(oil at {tn:g} degC; exact C_m {exact[2].total_mean_power_W:.4f} W)")
+    return layout(answer, lines + wrapped(prose), head, defaults=defaults)
 
 
 DESIGN_KEYS = ("delta_mm", "R_mm", "L_mm", "T", "mean_power_W", "torque_capability_Nm",
@@ -218,6 +237,8 @@ class Optimization(ResultView):
         The film bands of the initial and optimal designs (exact C_m;
         :func:`~oilgap.model.joint_loss.film_band`).
     """
+
+    report_command = "optimize"
 
     def __init__(self, raw: DesignResult | HeatingComparison, case: DesignCase, exact: tuple,
                  thermal_header: str, limits: dict | None = None,
@@ -332,13 +353,15 @@ class Optimization(ResultView):
         frame.index.name = "design"
         return frame
 
-    def summary(self) -> str:
-        """What ``oilgap optimize`` prints (without the ``wrote`` line of ``--out``)."""
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap optimize`` prints (without the ``wrote`` line of ``--out``): the
+        optimum first (``defaults`` False: without the case, mode, oil, gamma and solver
+        lines, ``-q``)."""
         if isinstance(self.raw, HeatingComparison):
-            return with_gamma(format_comparison(self.raw, self.exact, self.thermal_header,
-                                                self.bands), self.raw.heated.case)
-        return with_gamma(format_result(self.raw, self.exact, self.thermal_header, self.bands),
-                          self.raw.case)
+            return format_comparison(self.raw, self.exact, self.thermal_header, self.bands,
+                                     gamma_line(self.raw.heated.case), defaults)
+        return format_result(self.raw, self.exact, self.thermal_header, self.bands,
+                             gamma_line(self.raw.case), defaults)
 
     def plot(self, ax: Any = None) -> Any:
         """Change of each design quantity from the initial to the optimal design [%]."""
@@ -355,4 +378,4 @@ class Optimization(ResultView):
         return ax
 
 
-__all__ = ["Optimization", "format_comparison", "format_result", "thermal_line", "with_gamma"]
+__all__ = ["Optimization", "format_comparison", "format_result", "thermal_line"]

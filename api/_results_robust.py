@@ -7,6 +7,7 @@ from typing import Any
 
 from oilgap._results import ResultView, case_defaults, lazy, new_axes
 from oilgap.model.io.defaults import gamma_line
+from oilgap.model.io.text import layout, wrapped
 from oilgap.optim.design.robust import CVAR_ALPHA
 from oilgap.optim.design.scenarios import FILM_ONLY
 from oilgap.studies.robust.design import (
@@ -85,7 +86,7 @@ def _table(r: RobustDesign) -> list[str]:
     return lines
 
 
-def format_robust(r: RobustDesign, given: dict | None = None) -> str:
+def format_robust(r: RobustDesign, given: dict | None = None, defaults: bool = True) -> str:
     """What ``oilgap optimize --robust`` prints.
 
     Parameters
@@ -94,21 +95,30 @@ def format_robust(r: RobustDesign, given: dict | None = None) -> str:
         The result.
     given : dict, optional
         Which of ``scenarios``, ``seed`` the user gave (the others are marked default).
+    defaults : bool
+        Print the case, mode, scenarios and solver lines after the tables (False:
+        ``-q``).
 
     Returns
     -------
     str
+        The answer first: the p95 gain, the price of robustness, the robust design.
     """
     s = r.settings
-    lines = _header(r, given or {}) + [""] + _table(r)
+    lines = _table(r)
     stat = "CVaR95" if s.statistic == "p95" else s.statistic
     dx = max(abs(v) for v in r.design_change_mm.values())
-    lines += [
-        "",
-        f"price of robustness  {r.price_W:+.4g} W at nominal inputs (robust - nominal)",
+    rb, nm = r.to_dict()["robust"], r.to_dict()["nominal"]
+    answer = [
         f"p95 gain             {r.p95_gain_W:+.4g} W (nominal p95 - robust p95; "
         f"{s.mc_samples} Sobol' draws, seed {s.seed + MC_SEED_OFFSET}, vectorised loss "
         "joint_loss_arrays, case's C_m)",
+        f"price of robustness  {r.price_W:+.4g} W at nominal inputs (robust - nominal)",
+        f"robust design        delta {rb['delta_mm']:.4f} mm, R {rb['R_mm']:.4f} mm, L "
+        f"{rb['L_mm']:.4f} mm: Monte Carlo p95 {rb['mc']['p95_W']:.4f} W (nominal design "
+        f"{nm['mc']['p95_W']:.4f} W)"]
+    lines += [
+        "",
         f"in-sample {stat:<10} {r.robust.objective_W:.6g} W over the N scenarios "
         "(smooth C_m, the NLP's)",
         f"stability            2N = {2 * s.scenarios} scenarios: design moves by at most "
@@ -134,7 +144,8 @@ def format_robust(r: RobustDesign, given: dict | None = None) -> str:
                          f"{p['delta_mm']:>10.4f}{p['L_mm']:>10.4f}")
         if len(r.pareto) == 1:
             lines.append("  (one point: the robust optimum is the nominal one)")
-    return "\n".join(lines)
+    return layout(answer, [*lines[:len(_table(r))], *wrapped(lines[len(_table(r)):])],
+                  _header(r, given or {}), defaults=defaults)
 
 
 class RobustOptimization(ResultView):
@@ -147,6 +158,8 @@ class RobustOptimization(ResultView):
     given : dict, optional
         Which of ``scenarios``, ``seed`` were given (the report marks the others default).
     """
+
+    report_command = "optimize"
 
     def __init__(self, raw: RobustDesign, given: dict | None = None):
         self.raw = raw
@@ -234,9 +247,10 @@ class RobustOptimization(ResultView):
         frame.index.name = "design"
         return frame
 
-    def summary(self) -> str:
-        """What ``oilgap optimize --robust`` prints."""
-        return format_robust(self.raw, self.given)
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap optimize --robust`` prints: the p95 gain and the price first
+        (``defaults`` False: without the case, mode, scenarios and solver lines, ``-q``)."""
+        return format_robust(self.raw, self.given, defaults)
 
     def plot(self, ax: Any = None) -> Any:
         """The Pareto front (nominal loss vs the statistic) when computed, else the Monte

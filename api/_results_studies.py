@@ -21,6 +21,7 @@ from oilgap._results import ResultView, new_axes, raw_field
 from oilgap.model.case import DesignCase
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
+from oilgap.model.io.text import layout, wrap, wrapped
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade.report import draw_heatmap, draw_vs_grade, result_json
@@ -110,36 +111,38 @@ class Pareto(StudyView):
                 "gap_front": records(r.gap_front), "inertia_front": records(r.inertia_front),
                 "files": file_names(r), "defaults": self.defaults}
 
-    def summary(self) -> str:
-        """What ``oilgap study pareto`` prints: header (thermal, gamma, defaults), the
-        fronts, the designs, the files written."""
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap study pareto`` prints: the fronts first, the designs, then the
+        thermal mode, gamma and the defaults (``defaults`` False leaves these out,
+        ``-q``), the files written."""
         r = self.raw
         g, i = r.gap_front, r.inertia_front
         gok, iok = g[g["status"] == "ok"], i[i["status"] == "ok"]
         thermal = thermal_description(self.case, r.thermal_mode, r.thermal_default)
-        lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
-                 f"gap front: {len(gok)}/{len(g)} points, delta {gok['delta_mm'].min():.3f}.."
-                 f"{gok['delta_mm'].max():.3f} mm, loss {gok['mean_power_W'].max():.2f}.."
-                 f"{gok['mean_power_W'].min():.2f} W; sweep {r.sweep_time_s:.2f} s "
-                 f"(median solve {1e3 * gok['solve_time_s'].median():.1f} ms)",
-                 f"  hypervolume {r.hypervolume:.4f} mm W, reference point "
-                 f"(delta {r.reference_point[0]:g} mm, P {r.reference_point[1]:.3f} W)",
-                 f"inertia front: {len(iok)}/{len(i)} points, inertia "
-                 f"{iok['inertia_ratio'].min():.3f}..{iok['inertia_ratio'].max():.3f} x the "
-                 f"case's rotor, loss {iok['mean_power_W'].max():.2f}.."
-                 f"{iok['mean_power_W'].min():.2f} W"]
+        answer = [f"gap front: {len(gok)}/{len(g)} points, delta {gok['delta_mm'].min():.3f}.."
+                  f"{gok['delta_mm'].max():.3f} mm, loss {gok['mean_power_W'].max():.2f}.."
+                  f"{gok['mean_power_W'].min():.2f} W; sweep {r.sweep_time_s:.2f} s "
+                  f"(median solve {1e3 * gok['solve_time_s'].median():.1f} ms)",
+                  f"  hypervolume {r.hypervolume:.4f} mm W, reference point "
+                  f"(delta {r.reference_point[0]:g} mm, P {r.reference_point[1]:.3f} W)",
+                  f"inertia front: {len(iok)}/{len(i)} points, inertia "
+                  f"{iok['inertia_ratio'].min():.3f}..{iok['inertia_ratio'].max():.3f} x the "
+                  f"case's rotor, loss {iok['mean_power_W'].max():.2f}.."
+                  f"{iok['mean_power_W'].min():.2f} W"]
         width = max(22, *(len(d) for d in r.seeds["design"]))
-        lines += [f"  {s['design']:<{width}} delta {s['delta_mm']:.3f} mm  T {s['T']:.2f}  "
-                  f"P {s['mean_power_W']:.2f} W  inertia {s['inertia_ratio']:.3f} x"
-                  for _, s in r.seeds.iterrows()]
-        lines += [f"  film band of {s['design']} (exact C_m {s['mean_power_exact_W']:.4g} W): "
-                  f"{band_text(s)}" for _, s in r.seeds.iterrows()]
+        lines = [f"  {s['design']:<{width}} delta {s['delta_mm']:.3f} mm  T {s['T']:.2f}  "
+                 f"P {s['mean_power_W']:.2f} W  inertia {s['inertia_ratio']:.3f} x"
+                 for _, s in r.seeds.iterrows()]
+        lines += wrapped(f"  film band of {s['design']} (exact C_m "
+                         f"{s['mean_power_exact_W']:.4g} W): {band_text(s)}"
+                         for _, s in r.seeds.iterrows())
         bad = pd.concat([g[g["status"] != "ok"], i[i["status"] != "ok"]])
         if len(bad):
-            lines.append(f"{len(bad)} points failed (rows kept with their error); first: "
-                         f"{bad['error'].iloc[0]}")
-        wrote = self.wrote()
-        return "\n".join(lines + ([""] + wrote if wrote else []))
+            lines += wrap(f"{len(bad)} points failed (rows kept with their error); first: "
+                          f"{bad['error'].iloc[0]}")
+        return layout(answer, lines, [f"thermal     {thermal}", gamma_line(self.case),
+                                      *defaults_lines(r.defaults)],
+                      self.wrote(), defaults)
 
     @checked(front=choice("gap", "inertia", optional=False))
     def plot(self, ax: Any = None, front: str = "gap") -> Any:
@@ -201,30 +204,33 @@ class OilGrade(StudyView):
                          f"{row['mission_energy_Wh']:>11.1f}  {row['verdict']}: {row['reason']}")
         return lines
 
-    def summary(self) -> str:
-        """What ``oilgap study oil-grade`` prints: header (thermal, gamma, defaults,
-        envelope), the recommendation, the grade table, the mission, the files written."""
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap study oil-grade`` prints: the recommendation first, the grade
+        table, the mission, then the thermal mode, gamma, the defaults and the envelope
+        (``defaults`` False leaves these out, ``-q``), the files written."""
         r, s = self.raw, self.raw.settings
         axis = "sea" if uses_balance(r.thermal_mode) else "oil"
         thermal = thermal_description(self.case, r.thermal_mode, s.thermal_default)
-        lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
-                 f"envelope    {s.depth_range_m[0]:g}-{s.depth_range_m[1]:g} m x {axis} "
-                 f"{s.temp_range_C[0]:g}-{s.temp_range_C[1]:g} degC", ""]
+        answer = [f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}"
+                  if r.recommended is not None else
+                  "recommended: none (no grade passes both limits; see the verdicts)"]
         if r.film_band is not None:
-            lines += [f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
-                      f"film band: {r.film_band.line()}", ""]
-        if r.recommended is not None:
-            lines += [f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}", ""]
-        lines += self._table()
-        lines += ["", f"mission: {r.mission_source}; " + ", ".join(
+            answer.append(f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
+                          f"film band: {r.film_band.line()}")
+        lines = self._table()
+        lines += ["", *wrap(f"mission: {r.mission_source}; " + ", ".join(
             f"{m.depth_m:g} m/{'sea ' if axis == 'sea' else ''}{m.oil_temp_C:g} degC/"
-            f"{m.fraction:g}" for m in r.mission)]
+            f"{m.fraction:g}" for m in r.mission))]
         if r.comparison is not None:
             c = r.comparison
-            lines += ["", f"isothermal recommendation: {c['recommended_isothermal'] or 'none'}; "
-                      f"under {r.thermal_mode}: {c['recommended'] or 'none'} "
-                      f"({'changed' if c['changed'] else 'unchanged'})", f"why: {c['why']}"]
-        return "\n".join(lines + self.wrote())
+            lines += ["", *wrapped([
+                f"isothermal recommendation: {c['recommended_isothermal'] or 'none'}; "
+                f"under {r.thermal_mode}: {c['recommended'] or 'none'} "
+                f"({'changed' if c['changed'] else 'unchanged'})", f"why: {c['why']}"])]
+        head = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
+                f"envelope    {s.depth_range_m[0]:g}-{s.depth_range_m[1]:g} m x {axis} "
+                f"{s.temp_range_C[0]:g}-{s.temp_range_C[1]:g} degC"]
+        return layout(answer, lines, head, self.wrote(), defaults)
 
     @checked(kind=choice("grade", "envelope", optional=False))
     def plot(self, ax: Any = None, kind: str = "grade") -> Any:
@@ -308,17 +314,19 @@ class Smoothing(StudyView):
                          f"{c['reduction_max_abs_W']:>7.2f}{gamma:>8}  {c['temperatures']}")
         return lines
 
-    def _seed_lines(self) -> list[str]:
+    def _seed_text(self, defaults: bool) -> str:
+        """On the seed rig: the fitted gamma and the reductions first, Table 4 with the
+        model, the fits compared, the plateau, then the assumptions."""
         r, f = self.raw, self.raw.fit
         t = r.table[r.table["group"] > 0]
-        lines = [f"thermal     {thermal_line(f, r.thermal_default)}",
-                 f"{gamma_line(seed_case())}; this study fits its own below",
-                 *defaults_lines(r.defaults),
-                 f"fitted gamma = {f.gamma:.3f} +- {f.gamma_se:.3f}"
-                 + ("   <- candidate calibrated default for the seed case"
-                    if (f.method, f.thermal_mode, f.resistance_K_W) == ("per-oil", "none", 0.0)
-                    else ""),
-                 f"effective temperature: {f.describe()}", "",
+        d = t["model_minus_measured_change_W"].abs()
+        answer = [f"fitted gamma = {f.gamma:.3f} +- {f.gamma_se:.3f}"
+                  + ("   <- candidate calibrated default for the seed case"
+                     if (f.method, f.thermal_mode, f.resistance_K_W) == ("per-oil", "none", 0.0)
+                     else ""),
+                  f"reductions within {d.max():.2f} W of measured (paper's model: "
+                  f"{t['paper_model_minus_measured_change_W'].abs().max():.2f} W)"]
+        lines = [*wrap(f"effective temperature: {f.describe()}"), "",
                  f"{'oil':<8}{'T_oil':>7}{'model T=4':>11}{'T=2':>8}{'change':>9}"
                  f"{'measured T=4':>14}{'T=2':>8}{'change':>9}{'paper model':>13}{'diff':>8}"]
         for _, row in t.iterrows():
@@ -328,30 +336,34 @@ class Smoothing(StudyView):
                 f"{row['measured_before_W']:>14.2f}{row['measured_after_W']:>8.2f}"
                 f"{row['measured_change_W']:>9.2f}{row['paper_model_change_W']:>13.2f}"
                 f"{row['model_minus_measured_change_W']:>8.2f}")
-        d = t["model_minus_measured_change_W"].abs()
-        lines += ["", f"reductions within {d.max():.2f} W of measured (paper's model: "
-                  f"{t['paper_model_minus_measured_change_W'].abs().max():.2f} W)", ""]
         pl = r.plateau
-        evidence = [] if r.film_evidence is None else ["", *evidence_lines(r.film_evidence)]
-        return lines + self._comparison() + evidence + [
-            "", f"loss vs T: within {100 * self.plateau_tol:g} % of P(T=1) only for T <= "
+        evidence = [] if r.film_evidence is None else ["", *wrapped(evidence_lines(
+            r.film_evidence))]
+        lines += ["", *self._comparison(), *evidence, "", *wrap(
+            f"loss vs T: within {100 * self.plateau_tol:g} % of P(T=1) only for T <= "
             f"{pl['T_stop'].min():.2f}..{pl['T_stop'].max():.2f}; 4 -> 2 takes "
             f"{100 * pl['share_of_possible_saving_4_to_2'].mean():.0f} % of the possible "
-            "saving"]
+            "saving")]
+        head = [f"thermal     {thermal_line(f, r.thermal_default)}",
+                f"{gamma_line(seed_case())}; this study fits its own above",
+                *defaults_lines(r.defaults)]
+        return layout(answer, lines, head, self.wrote(), defaults)
 
-    def _case_lines(self) -> list[str]:
+    def _case_text(self, defaults: bool) -> str:
+        """On a case: what smoothing saves first, then the assumptions."""
         r = self.raw
-        return [f"thermal     {r.thermal_mode}" + (f" (default: {DEFAULT_MODE_WHY})"
+        head = [f"thermal     {r.thermal_mode}" + (f" (default: {DEFAULT_MODE_WHY})"
                                                    if r.thermal_default else ""),
-                gamma_line(self.case), *defaults_lines(r.defaults), "",
-                *saving_lines(self.case, r.plateau, r.thermal_mode), "", NO_TABLE4]
+                gamma_line(self.case), *defaults_lines(r.defaults)]
+        return layout(saving_lines(self.case, r.plateau, r.thermal_mode), wrap(NO_TABLE4),
+                      head, self.wrote(), defaults)
 
-    def summary(self) -> str:
-        """What ``oilgap study smoothing`` prints: on the seed rig the fit, Table 4, the
-        fits compared and the plateau; on a case the savings; the files written."""
-        lines = self._seed_lines() if self.raw.seed_rig else self._case_lines()
-        wrote = self.wrote()
-        return "\n".join(lines + ([""] + wrote if wrote else []))
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap study smoothing`` prints: on the seed rig the fitted gamma and the
+        reductions first, Table 4, the fits compared and the plateau; on a case the
+        savings; then the thermal mode, gamma and the defaults (``defaults`` False
+        leaves these out, ``-q``); the files written."""
+        return self._seed_text(defaults) if self.raw.seed_rig else self._case_text(defaults)
 
     def plot(self, ax: Any = None) -> Any:
         """The study's ``smoothing_loss_vs_T.png``: mean loss [W] against roughness T

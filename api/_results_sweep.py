@@ -122,11 +122,13 @@ class Sweep(ResultView):
                 "base_film_band": self.band().to_dict(), "results": records(self.raw),
                 "files": [str(f) for f in self.files], "defaults": self.defaults}
 
-    def summary(self) -> str:
-        """What ``oilgap study sweep`` prints: thermal mode, gamma, empty cells, points
-        done and failed, the range of the mean power, the files written."""
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap study sweep`` prints: thermal mode, gamma (``defaults`` False
+        leaves these two lines out, ``-q``), empty cells, points done and failed, the
+        range of the mean power (within the first 5 lines), the files written."""
         ok, bad, computed, reused = self._counts()
-        lines = [f"thermal     {self.thermal_text()}", gamma_line(self.case)]
+        lines = [f"thermal     {self.thermal_text()}", gamma_line(self.case)] if defaults \
+            else []
         if empty_cells(self.grid):
             lines.append(empty_cells(self.grid))
         lines.append(f"{len(self.raw)} points: {len(ok)} ok, {len(bad)} failed "

@@ -22,6 +22,7 @@ from oilgap._results_studies import StudyView, file_names, records
 from oilgap._studies import STUDY
 from oilgap.model.case import DesignCase
 from oilgap.model.io.defaults import defaults_lines, gamma_fields, gamma_line
+from oilgap.model.io.text import layout, wrapped
 from oilgap.model.uncertain.distributions import UncertaintySpec
 from oilgap.studies.grid.evaluate import thermal_description
 from oilgap.studies.io.result_folder import ResultFolder
@@ -32,8 +33,10 @@ from oilgap.studies.uncertainty.from_loop import loop_uncertainty
 from oilgap.studies.uncertainty.report import (
     draw_histogram,
     draw_tornado,
+    input_lines,
     inputs_table,
-    result_lines,
+    sobol_lines,
+    statistics_lines,
 )
 from oilgap.studies.uncertainty.study import mode_why
 
@@ -81,18 +84,21 @@ class Uncertainty(StudyView):
                 "failed": r.failed, "inputs": records(self.to_frame()),
                 "elapsed_s": r.elapsed_s, "files": file_names(r), "defaults": self.defaults}
 
-    def summary(self) -> str:
-        """What ``oilgap study uncertainty`` prints: header (thermal, gamma, defaults),
-        the inputs with their sources, the percentile table, the Sobol' and tornado
-        table, the files written."""
+    def summary(self, defaults: bool = True) -> str:
+        """What ``oilgap study uncertainty`` prints: the percentiles first (p5, p50, p95),
+        the inputs with their sources, the Sobol' and tornado table, then the thermal
+        mode, gamma and the defaults (``defaults`` False leaves these out, ``-q``), the
+        files written."""
         r = self.raw
         thermal = thermal_description(self.case, r.thermal_mode, r.thermal_default,
                                       mode_why(self.case, r.spec, r.thermal_mode,
                                                r.thermal_default))
-        lines = [f"thermal     {thermal}", gamma_line(self.case), *defaults_lines(r.defaults),
-                 "", *result_lines(r)]
-        wrote = self.wrote()
-        return "\n".join(lines + ([""] + wrote if wrote else []))
+        body = [*wrapped(input_lines(r.spec)), "", *sobol_lines(r), "",
+                f"wall time {r.elapsed_s:.1f} s"]
+        return layout(statistics_lines(r), body, [f"thermal     {thermal}",
+                                                  gamma_line(self.case),
+                                                  *defaults_lines(r.defaults)],
+                      self.wrote(), defaults)
 
     @checked(ax=AX, kind=choice("histogram", "tornado", optional=False))
     def plot(self, ax: Any = None, kind: str = "histogram") -> Any:

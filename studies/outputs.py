@@ -41,6 +41,16 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
 each writes :data:`~oilgap.studies.io.provenance.PROVENANCE_NAME` (version, date, command,
 inputs with their SHA-256) when it starts writing."""
 
+REPORT_FILES: dict[str, dict[str, str]] = {
+    "evaluate": {"summary": "summary.md", "json": "evaluate.json",
+                 "table": "evaluate_regions.csv", "figure": "evaluate_power.png"},
+    "optimize": {"summary": "summary.md", "json": "optimize.json",
+                 "table": "optimize_designs.csv", "figure": "optimize_change.png",
+                 "case": "optimum.toml"},
+}
+"""The report folder of ``evaluate --report`` and ``optimize --report`` (role -> file)."""
+OUTPUTS.update({k: (*v.values(), PROVENANCE_NAME) for k, v in REPORT_FILES.items()})
+
 
 def result_folder(command: str, out: str | Path | None, force: bool = False,
                   resume: bool = False, folder: ResultFolder | None = None) -> Any:
@@ -73,4 +83,4 @@ def result_folder(command: str, out: str | Path | None, force: bool = False,
                         command=f"oilgap {command}", field="out", hint=hint)
 
 
-__all__ = ["OUTPUTS", "result_folder"]
+__all__ = ["OUTPUTS", "REPORT_FILES", "result_folder"]

@@ -65,6 +65,7 @@ from oilgap.model.errors import (
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.joint_loss import film_band, resolve_thermal_mode
+from oilgap.model.progress import report
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.multiobjective import arc_length_epsilons, hypervolume_2d
@@ -156,7 +157,10 @@ def _sweep(case: DesignCase, column: str, eps: np.ndarray, extra: dict, out_dir,
         grid[k] = v
     o = options
     chain = RunOptions(workers=1 if o.scheduler is None else (o.workers or 1),
-                       scheduler=o.scheduler, progress=o.progress, chunk_size=len(grid))
+                       scheduler=o.scheduler, chunk_size=len(grid),
+                       progress=False if o.scheduler is None else o.progress)
+    # one chunk: its rows report themselves in this process (optimize_chunk), the runner's
+    # bar per chunk would only jump from 0 to the end
     res = run_grid(grid, case, SweepSettings(mode="optimize", thermal=thermal), chain,
                    out_dir=out_dir, label=label)
     res["epsilon"] = eps
@@ -339,13 +343,18 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     points, torque_min_Nm = s.points, s.torque_min_Nm
     mode = resolve_thermal_mode(base, s.thermal)
     out = Path(out_dir) if out_dir is not None else None
+    task = "pareto: gap front, inertia front, designs, files"
+    report(task, 0, 4)
     t0 = time.perf_counter()
     gf = gap_front(base, points, torque_min_Nm, out / "grid_gap" if out else None,
                    options=o, thermal=mode)
     sweep_t = time.perf_counter() - t0
+    report(task, 1, 4)
     inf = inertia_front(base, points, torque_min_Nm, out / "grid_inertia" if out else None,
                         options=o, thermal=mode)
+    report(task, 2, 4)
     seeds = seed_points(base, mode)
+    report(task, 3, 4)
     ref = default_reference_point(base, seeds)
     ok = gf[gf["status"] == "ok"]
     hv = hypervolume_2d(ok[["delta_mm", "mean_power_W"]].to_numpy(), ref)
@@ -356,6 +365,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
                           thermal_default=s.thermal is None)
     if out is not None:
         result = replace(result, files=write_outputs(out, result, base))
+    report(task, 4, 4)
     return result
 
 

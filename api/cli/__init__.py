@@ -17,7 +17,8 @@ Messages on stderr go through the ``"oilgap"`` :mod:`logging` logger, configured
 here (:func:`configure_logging`; plain ``oilgap: ...`` lines): by default notes
 (INFO) and warnings; ``-q`` keeps errors and the warnings (every ``OilgapWarning``
 says something about the result: a fluid outside its trusted range, a default that
-changes a number) and drops the notes and the progress bars; ``-v`` adds debug lines
+changes a number) and drops the notes and the progress bars (tqdm on stderr, only on a
+terminal: :func:`oilgap.studies.progress.shown` around every command); ``-v`` adds debug lines
 (the command, the inputs read with their SHA-256, the library versions, the time
 taken; ``optimize -v`` shows IPOPT's iterations). Results go to stdout, never
 through the logger. ``oilgap --version`` prints ``oilgap X.Y.Z``.
@@ -46,6 +47,7 @@ from oilgap.studies.io.provenance import (
     oilgap_version,
     package_version,
 )
+from oilgap.studies.progress import shown
 
 __all__ = ["COMMANDS", "LOG", "build_parser", "configure_logging", "finite_float", "main"]
 
@@ -216,7 +218,8 @@ def _dispatch(args) -> int:
     try:
         command = importlib.import_module(COMMANDS[args.command])
         _resolve_oils(args)
-        code = int(command.run(args) or 0)
+        with shown(getattr(args, "progress", None)):  # bars on a terminal's stderr only
+            code = int(command.run(args) or 0)
         sys.stdout.flush()  # a closed pipe is found here, not at the interpreter's exit
         return code
     except BrokenPipeError:

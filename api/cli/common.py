@@ -35,8 +35,10 @@ def study_out(args: argparse.Namespace, study: str) -> Path:
 
 def show(view, args: argparse.Namespace) -> None:
     """Print a result view: its JSON document with ``--json``, else its summary (the
-    text the command prints)."""
-    print(view.to_json() if getattr(args, "json", False) else view.summary())
+    text the command prints: the answer first; ``-q`` leaves out the assumptions and
+    the defaults filled in)."""
+    print(view.to_json() if getattr(args, "json", False)
+          else view.summary(defaults=not getattr(args, "quiet", False)))
 
 
 def thermal_case(case: DesignCase, args: argparse.Namespace

@@ -24,11 +24,12 @@ def _loop(args: argparse.Namespace, folder: ResultFolder) -> int:
     est = Loop(args.case, oils=args.oils, margin=args.margin, effects=args.effects,
                base=getattr(args, "base", "eq6"), cv_by=args.cv_by)
     est.fit(args.data)
-    paths = est.report(args.out, figures=not args.no_figures, folder=folder)
+    paths = est.report(args.out, figures="none" if args.no_figures else args.figures,
+                       folder=folder)
     if args.json:
         print(est.to_json())
     else:
-        print(est.summary())
+        print(est.summary(defaults=not args.quiet))
         print(f"\nwrote {paths['json']}, {paths['report']}"
               + (f" and {len(paths['figures'])} figures" if paths["figures"] else ""))
     return 0

@@ -23,7 +23,7 @@ from pathlib import Path
 from oilgap._optimize import optimize_resolved, robust_resolved
 from oilgap._results_design import Optimization
 from oilgap.cli.common import load_case, thermal_case
-from oilgap.cli.outputs import solver_log_to_stderr
+from oilgap.cli.outputs import print_wrote, report_folder, solver_log_to_stderr
 from oilgap.model.errors import InputError, check_finite, check_positive
 from oilgap.model.io.serialize import dumps
 from oilgap.optim.design.session import MAX_STARTS
@@ -93,9 +93,20 @@ def _write(res: Optimization, args: argparse.Namespace):
     if not args.out:
         return None
     try:
-        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None))
+        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None),
+                               exact=True)  # every digit: evaluated again, the loss printed
     except OSError as e:
         raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
+
+
+def _solve(args: argparse.Namespace, limits: DesignLimits, robust: dict):
+    """The nominal (or ``--robust``) optimum of the case named on the command line."""
+    case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
+    log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
+    with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
+        if args.robust is not None:
+            return robust_resolved(case, mode, args.robust, robust, limits, args.verbose)
+        return optimize_resolved(case, mode, args.thermal is None, limits, args.verbose)
 
 
 def run(args: argparse.Namespace) -> int:
@@ -109,21 +120,19 @@ def run(args: argparse.Namespace) -> int:
     if args.out:  # before any computation: folder writable, no earlier file unless --force
         check_out_file(args.out, args.force)
     robust = _robust_keywords(args)
-    case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
-    log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
-    with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
-        if args.robust is not None:
-            res = robust_resolved(case, mode, args.robust, robust, limits, args.verbose)
-        else:
-            res = optimize_resolved(case, mode, args.thermal is None, limits, args.verbose)
+    with report_folder(args) as folder:  # checked and locked before computing
+        res = _solve(args, limits, robust)
+        files = res.report(args.report, folder=folder) if folder is not None else []
     out_path = _write(res, args)
     fig = _write_figure(res, args.figure) if getattr(args, "figure", None) else None
     if args.json:
         print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None,
-                     **({"figure": str(fig)} if fig else {})}))
+                     **({"figure": str(fig)} if fig else {}),
+                     **({"report": [str(f) for f in files]} if files else {})}))
     else:
-        print(res.summary())
+        print(res.summary(defaults=not args.quiet))
         for p in (out_path, fig):
             if p:
                 print(f"\nwrote {Path(p)}")
+        print_wrote(args, files)
     return 0

@@ -40,6 +40,25 @@ def out_folder(args: argparse.Namespace, out: str | Path, resume: bool = False
                         else "pass --force to replace them", run=getattr(args, "run", None))
 
 
+def report_folder(args: argparse.Namespace) -> contextlib.AbstractContextManager:
+    """The ``--report DIR`` folder of evaluate/optimize (not yet opened: use it as a context
+    manager before any computation; it yields None without ``--report``)."""
+    if not getattr(args, "report", None):
+        return contextlib.nullcontext(None)
+    return ResultFolder(args.report, OUTPUTS[args.command], force=getattr(args, "force", False),
+                        command=f"oilgap {args.command}", field="--report",
+                        hint="pass --force to replace them", run=getattr(args, "run", None))
+
+
+def print_wrote(args: argparse.Namespace, files: list) -> None:
+    """The ``wrote DIR/:`` lines of a report (nothing with ``--json``: one document on
+    stdout, or without files)."""
+    if files and not getattr(args, "json", False):
+        print(f"\nwrote {args.report}/:")
+        for f in files:
+            print(f"  {f}")
+
+
 def json_quiet(args: argparse.Namespace) -> contextlib.AbstractContextManager:
     """With ``--json``, what a solver prints goes to stderr while inside (stdout carries
     the JSON document alone); otherwise nothing changes."""

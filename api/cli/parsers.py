@@ -76,6 +76,13 @@ def add_force(p, what: str = "--out") -> None:
                    "to overwrite anything)")
 
 
+def add_report(p) -> None:
+    """The ``--report DIR`` option of evaluate and optimize."""
+    p.add_argument("--report", metavar="DIR", help="also write a report folder: summary.md "
+                   "(the answer, the tables, the figure, the defaults), the JSON, a CSV, a "
+                   "PNG and provenance.json (refused if DIR holds a report, unless --force)")
+
+
 def add_thermal_argument(p) -> None:
     """The one ``--thermal`` option of every command that reports a loss."""
     p.add_argument("--thermal", choices=THERMAL_MODES, default=None,
@@ -151,6 +158,8 @@ def add_evaluate(sub) -> None:
     p.add_argument("--sea-temp-c", type=finite_float, help="sea temperature [degC] of the "
                    "heat balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_report(p)
+    add_force(p, "--report")
     p.set_defaults(command="evaluate")
 
 
@@ -201,6 +210,8 @@ def add_optimize(sub) -> None:
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
     add_force(p)
+    add_report(p)
+    _progress(p)
     p.set_defaults(command="optimize")  # -v/--verbose (every command) shows IPOPT's log
 
 
@@ -387,6 +398,7 @@ def _add_uncertainty(ss) -> None:
     s.add_argument("--out", metavar="DIR", help="output folder (default out/uncertainty/)")
     add_force(s)
     add_thermal_argument(s)
+    _progress(s)
     s.set_defaults(command="study uncertainty")
 
 
@@ -427,6 +439,10 @@ def add_loop(sub) -> None:
                    "held out whole (default: run; e.g. gap_mm, oil; more than 10 groups: "
                    "grouped 10-fold)")
     p.add_argument("--no-figures", action="store_true", help="skip the figures")
+    p.add_argument("--figures", choices=("summary", "all"), default="summary",
+                   help="summary (default): every run's figures up to 24 runs, above that "
+                   "the 12 worst runs and a grid of small multiples; all: every run's")
+    _progress(p)
     p.set_defaults(command="loop")
 
 

@@ -24,7 +24,7 @@ from ..units import MM_TO_M, kelvin_to_celsius
 from .case_bearing import BEARING_TABLE, bearing_to_doc
 from .case_io import _GAS_CONSTANTS
 from .case_uncertainty import UNCERTAINTY_TABLE, uncertainty_to_doc
-from .serialize import toml_dumps
+from .serialize import SIGNIFICANT_DIGITS, toml_dumps
 
 
 def case_to_dict(case: DesignCase) -> dict:
@@ -131,7 +131,7 @@ def _csv_flag(oils_csv: str, name: str) -> bool:
     return bool(oil is not None and oil.polymer_thickened)
 
 
-def dumps_toml(doc: dict) -> str:
+def dumps_toml(doc: dict, digits: int = SIGNIFICANT_DIGITS) -> str:
     """The TOML text of a case document (:func:`oilgap.model.io.serialize.toml_dumps`).
 
     Parameters
@@ -139,13 +139,16 @@ def dumps_toml(doc: dict) -> str:
     doc : dict
         Scalars, tables (dicts) and arrays of tables (lists of dicts), values in
         the units of their keys (``T1_mm`` [mm]).
+    digits : int
+        Significant digits of the floats [-] (:data:`~oilgap.model.io.serialize.FULL_DIGITS`:
+        every digit, the file reads back to the same floats).
 
     Returns
     -------
     str
-        TOML text, floats rounded to 6 significant digits.
+        TOML text, floats rounded to ``digits`` significant digits (default 6).
     """
-    return toml_dumps(doc)
+    return toml_dumps(doc, digits)
 
 
 __all__ = ["case_to_dict", "dumps_toml"]

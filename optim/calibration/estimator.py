@@ -73,6 +73,7 @@ from oilgap.model.measured.data import (
     validate,
 )
 from oilgap.model.oils import Oil, read_oils_csv
+from oilgap.model.progress import report
 from oilgap.model.regions import joint_geometry
 
 from .baseline import BaselineFit, fit_baselines
@@ -216,6 +217,8 @@ class LoopEstimator:
             ``self``, with the learned attributes.
         """
         case, names = self._checked_options()
+        task = "loop: read, calibrate, search, evidence, intervals"  # progress, no print
+        report(task, 0, 5)
         self.case_, self.geometry_ = case, joint_geometry(case)
         self.data_ = data = self._as_data(data)
         # 1. oil-free baseline; oil-run samples with nu and rho
@@ -226,7 +229,9 @@ class LoopEstimator:
         model = self.forward_model_ = ForwardModel(s, case, data.oils,
                                                    film_wall=case_film_wall(case))
         self.law_without_T_ = replace(case.friction, gamma=0.0)
+        report(task, 1, 5)
         spec, base, stmt = self._calibrate(model, case)
+        report(task, 2, 5)
         # 4. residual structure of the calibration; its parameters against their ranges
         self.residual_before_ = residual_structure(s.viscous_W - base.pred, s)
         self.noise_W_ = sigma = self.residual_before_["noise_W"]
@@ -237,6 +242,7 @@ class LoopEstimator:
                              max_effects=self.max_effects, cv=self.cv,
                              has_time=bool(getattr(s, "has_time", True)))
         free = search_effects(model, spec, base, names, facts, sigma, opts)
+        report(task, 3, 5)
         search, self.findings_ = self._evidence(model, free, no_signal, names, facts, sigma,
                                                 opts)
         self.identifiability_ = self._identifiability(stmt, free)
@@ -246,6 +252,7 @@ class LoopEstimator:
             search.refitter, final, case_film_wall(case), self.margin)
         model.film_wall = search.refitter.model.film_wall = w
         self._store_final(search, final)
+        report(task, 4, 5)
         # 7. confidence intervals (jackknife over groups, log space for C and the scale)
         self._intervals(free, search, no_signal is not None)
         ci = effect_ci(search.spec, final.fit, final.after.folds, s, self.baselines_)
@@ -259,6 +266,7 @@ class LoopEstimator:
                                               search.implausible)
         self.confounded_forms_ = dict(CONFOUNDED_FORMS)
         self._tables(model, base, final)
+        report(task, 5, 5)
         return self
 
     def _calibrate(self, model: ForwardModel, case: DesignCase

@@ -36,6 +36,7 @@ import casadi as ca
 import numpy as np
 
 from oilgap.model.errors import InputError, SolverError
+from oilgap.model.progress import steps
 from oilgap.optim.interrupts import raise_if_interrupted
 
 from .variables import QUIET_OPTIONS, SOLVER_OPTIONS, SUCCESS_STATUSES, WARM_OPTIONS
@@ -361,7 +362,8 @@ def run_starts(solve_from: Callable[[np.ndarray, Any], Any], x_start: np.ndarray
     Returns
     -------
     object
-        The result of lowest ``power``.
+        The result of lowest ``power``; each start done is reported
+        (:func:`oilgap.model.progress.report`, task ``"optimize: starts"``).
 
     Raises
     ------
@@ -379,7 +381,7 @@ def run_starts(solve_from: Callable[[np.ndarray, Any], Any], x_start: np.ndarray
     lo, hi = np.asarray(lower), np.asarray(upper)
     pts = np.random.default_rng(seed).uniform(size=(starts - 1, lo.size))
     best, first_error = None, None
-    for k, x in enumerate([x_start, *(lo + pts * (hi - lo))]):
+    for k, x in enumerate(steps("optimize: starts", [x_start, *(lo + pts * (hi - lo))])):
         try:
             r = solve_from(x, lam if k == 0 else None)
         except SolverError as e:

@@ -20,6 +20,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import OilgapWarning, SolverError
 from oilgap.model.joint_loss import THERMAL_MODES
 from oilgap.model.oils import Oil, get_oil
+from oilgap.model.progress import report
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.lean import (
@@ -234,7 +235,9 @@ def optimize_chunk(base: DesignCase, rows: list[dict],
 
     The rows' structural parameters give the case (one DesignProblem per distinct
     case, built once); ``oil``, ``oil_temp_C``, ``depth_m`` and the
-    :data:`OPTIMIZE_COLUMNS` are parameters of each solve.
+    :data:`OPTIMIZE_COLUMNS` are parameters of each solve. Each row done is reported
+    (:func:`oilgap.model.progress.report`; drawn when the caller installed a reporter in
+    this process, as the command line does for a Pareto front's chain).
     """
     memo: dict = {}
     results: list[dict] = []
@@ -255,6 +258,7 @@ def optimize_chunk(base: DesignCase, rows: list[dict],
             pending.append(todo)
         except Exception as e:  # noqa: BLE001 - a failed point is a row, not a crash
             results.append(_error_row(e))
+        report("optimize: rows", i + 1, len(rows))  # in this process only (the fronts)
     lean = [k for k, todo in enumerate(pending) if todo is not None]
     recs = [results[solved[k]] for k in lean]
     _constant(recs, [pending[k] for k in lean])  # region 2 of every lean optimum at once

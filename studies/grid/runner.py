@@ -31,12 +31,10 @@ from __future__ import annotations
 import contextlib
 import math
 import os
-import sys
 import time
 import warnings
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
-from typing import IO
 
 import numpy as np
 import pandas as pd
@@ -64,30 +62,11 @@ from oilgap.studies.grid.store import (
 )
 from oilgap.studies.io.files import OutputError, atomic_to_csv, atomic_to_parquet
 from oilgap.studies.io.result_folder import FolderLock
+from oilgap.studies.progress import progress_bar
 from oilgap.studies.settings import DEFAULT_CHUNK_SECONDS, RunOptions, SweepSettings
 
 # --------------------------------------------------------------------------- progress
-
-
-def progress_bar(total: int, label: str = "sweep", enabled: bool | None = None,
-                 stream: IO[str] | None = None, initial: int = 0) -> tqdm:
-    """The progress bar of a run on stderr (tqdm [1]): bar, percent, count, points per
-    second, elapsed time and ETA; ``initial`` points already done (a resumed run).
-
-    ``enabled`` None: shown when ``stream`` (default stderr) is a terminal.
-
-    References
-    ----------
-    .. [1] C. da Costa-Luis et al., *tqdm: a fast, extensible progress meter*,
-       https://tqdm.github.io
-    """
-    stream = stream if stream is not None else sys.stderr
-    if enabled is None:
-        enabled = bool(getattr(stream, "isatty", lambda: False)())
-    return tqdm(total=max(int(total), 0), initial=int(initial), desc=f"oilgap {label}",
-                unit=" points", file=stream, disable=not enabled, mininterval=0.1,
-                dynamic_ncols=True, leave=True)
-
+# the bar is oilgap's one progress display (studies/progress.py), re-exported here
 
 # --------------------------------------------------------------------------- chunks
 

@@ -32,6 +32,14 @@ from matplotlib.gridspec import GridSpec
 
 PER_PAGE = 12
 """At most this many runs (panels) in one figure."""
+CAP = 2 * PER_PAGE
+"""Above this many runs the report summarises (:func:`figure_names` ``every=False``): the
+:data:`PER_PAGE` worst runs, and a grid of :data:`GRID_MAX` runs spread over all of them;
+every run's pages only on request (``--figures all``)."""
+GRID_MAX = 48
+"""At most this many small multiples in :data:`GRID`."""
+LEGEND_MAX = 40
+"""The residual-against-time figure names each run in its legend up to this many runs."""
 CYCLES = 2
 """The window of :func:`plot_windows` spans this many speed cycles."""
 
@@ -39,6 +47,7 @@ OVERVIEW = "measured_vs_model.png"
 WINDOW = "measured_vs_model_window.png"
 SPEED = "residual_vs_speed.png"
 TIME = "residual_vs_time.png"
+GRID = "measured_vs_model_grid.png"
 
 MODELS = {"without_T": ("case's law without T", "tab:red", "-", 0.7),
           "with_T": ("base model (calibrated, with T)", "tab:blue", "-", 1.0),
@@ -189,10 +198,19 @@ def pages(n_runs: int, per_page: int = PER_PAGE) -> list[list[int]]:
     return [list(range(i, min(i + size, n_runs))) for i in range(0, n_runs, size)]
 
 
-def figure_names(n_runs: int) -> list[str]:
+def summarised(n_runs: int, every: bool = False) -> bool:
+    """Whether the report draws the summary (more than :data:`CAP` runs, not ``every``)."""
+    return n_runs > CAP and not every
+
+
+def figure_names(n_runs: int, every: bool = False) -> list[str]:
     """The files of the loop's figures for ``n_runs`` runs, in the order they are
     written: overview (page 1), the two residual figures, the overview's further pages,
-    the windows (``_2``, ``_3``... for further pages)."""
+    the windows (``_2``, ``_3``... for further pages). Above :data:`CAP` runs and without
+    ``every``: overview and windows of the :data:`PER_PAGE` worst runs, the two residual
+    figures and the grid of small multiples (:data:`GRID`)."""
+    if summarised(n_runs, every):
+        return [OVERVIEW, SPEED, TIME, GRID, WINDOW]
     n = len(pages(n_runs))
     paged = [f"{WINDOW[:-4]}{'' if p == 0 else f'_{p + 1}'}.png" for p in range(n)]
     return [OVERVIEW, SPEED, TIME, *(f"{OVERVIEW[:-4]}_{p + 1}.png" for p in range(1, n)),
@@ -390,7 +408,7 @@ def plot_residuals(loop, against: str = "time", axes=None) -> np.ndarray:
             for i in range(len(c.run_names)):
                 m = c.run_code == i
                 ax.plot(c.time_s[m], res[m], lw=0.5, alpha=0.8, color=colors[i],
-                        label=c.run_label(i))
+                        label=c.run_label(i) if len(c.run_names) <= LEGEND_MAX else None)
             ax.set_xlabel(c.xlabel)
         else:
             ax.plot(c.speed_rpm, res, ".", ms=1, alpha=0.3, color="0.4")
@@ -404,10 +422,54 @@ def plot_residuals(loop, against: str = "time", axes=None) -> np.ndarray:
                      fontsize=9)
         ax.grid(alpha=0.25)
     axs[0].set_ylabel("measured - model [W]")
-    if against == "time":  # one legend for both panels, at the right
+    if against == "time" and len(c.run_names) <= LEGEND_MAX:  # one legend, at the right
         axs[1].legend(fontsize=7, loc="center left", bbox_to_anchor=(1.02, 0.5),
                       ncol=1 + len(c.run_names) // 25, title="run: oil, roughness, temperatures",
                       title_fontsize=7)
+    return axs
+
+
+def grid_runs(n_runs: int, most: int = GRID_MAX) -> list[int]:
+    """Up to ``most`` runs spread evenly over ``n_runs`` (first and last included)."""
+    if n_runs <= most:
+        return list(range(n_runs))
+    return sorted({round(i * (n_runs - 1) / (most - 1)) for i in range(most)})
+
+
+def plot_grid(loop, runs: Sequence[int] | None = None) -> np.ndarray:
+    """Small multiples: per run (default :func:`grid_runs` of all), the measured viscous
+    power [W] and the model after (with the accepted effects, else the base model)
+    against time [s], one y scale, no tick labels; each panel titled by its run.
+
+    Parameters
+    ----------
+    loop : LoopEstimator or LoopCurves
+        A fitted loop [-].
+    runs : sequence of int, optional
+        Indices into ``run_names`` [-].
+
+    Returns
+    -------
+    ndarray of Axes
+        One panel per run, on a new Agg figure laid out by hand (no tight layout: a
+        campaign's grid draws in a fraction of the time).
+    """
+    c = LoopCurves.of(loop)
+    runs = grid_runs(len(c.run_names)) if runs is None else list(runs)
+    ncols = min(8, max(1, len(runs)))
+    fig, axs, _ = panels(len(runs), ncols, None, (1.6, 1.1), sharey=True)
+    key = "with_effect" if "with_effect" in c.predictions else "with_T"
+    for ax, i in zip(axs, runs, strict=True):
+        m = c.run_code == i
+        ax.plot(c.time_s[m], c.measured_W[m], lw=0.4, color="0.5")
+        ax.plot(c.time_s[m], c.predictions[key][m], lw=0.6, color=MODELS[key][1])
+        ax.set_title(c.run_names[i], fontsize=6, pad=2)
+        ax.tick_params(labelleft=False, labelbottom=False, length=0)
+    fig.subplots_adjust(left=0.02, right=0.98, bottom=0.02, top=0.9, wspace=0.08,
+                        hspace=0.35)
+    fig.suptitle(f"Measured (grey) and {MODELS[key][0]} ({MODELS[key][1][4:]}) of "
+                 f"{len(runs)} of {len(c.run_names)} runs, evenly spread; one y scale",
+                 fontsize=9)
     return axs
 
 

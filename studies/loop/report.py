@@ -12,6 +12,10 @@ Tables and figures follow :mod:`oilgap.studies.reporting`. Figures (drawn by
   named in the legend.
 
 More than 12 runs: ``measured_vs_model_2.png``... and ``measured_vs_model_window_2.png``...
+More than :data:`~oilgap.studies.loop.figures.CAP` runs (a campaign): a summary instead
+(the overview and windows of the 12 worst runs by held-out error after, the residuals, and
+``measured_vs_model_grid.png``, small multiples of up to 48 runs spread over all);
+every run's pages with ``figures="all"`` (``oilgap loop --figures all``).
 """
 
 from __future__ import annotations
@@ -33,26 +37,20 @@ from oilgap.model.io.defaults import (
     study_default,
 )
 from oilgap.model.io.serialize import Exact, dumps
+from oilgap.model.io.text import layout, wrap
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.model_io import FittedModel
 from oilgap.optim.calibration.ranges import effective_scale
-from oilgap.studies.loop.figures import (
-    OVERVIEW,
-    SPEED,
-    TIME,
-    LoopCurves,
-    figure_names,
-    pages,
-    plot_overview,
-    plot_residuals,
-    plot_windows,
+from oilgap.studies.loop.figures import OVERVIEW, SPEED, TIME
+from oilgap.studies.loop.report_figures import (
+    figure_mode,
+    md_figures,
+    write_figures,
 )
-from oilgap.studies.reporting import markdown_rows, save_figure, write_text
+from oilgap.studies.reporting import markdown_rows, write_text
 
 FIGURES = (OVERVIEW, SPEED, TIME, f"{OVERVIEW[:-4]}_*.png")
 """The figures' files (names or glob patterns; :func:`figure_names` for a given loop)."""
-DPI = 110
-"""Resolution of the loop's figures [dots per inch]."""
 
 
 def _cell(x: float, width: int) -> str:
@@ -236,8 +234,10 @@ def oil_state_text(est: LoopEstimator) -> str | None:
             f"temperature ({'; '.join(how)}): one oil state per sample")
 
 
-def format_summary(est: LoopEstimator) -> str:
-    """What ``oilgap loop`` prints: data, calibration, error table, effects, before/after."""
+def format_summary(est: LoopEstimator, defaults: bool = True) -> str:
+    """What ``oilgap loop`` prints: the held-out error before and after and the effects
+    first, then data, calibration, error table, effects, before/after, then gamma and
+    the defaults (``defaults`` False leaves these out, ``-q``)."""
     d = est.data_
     c = est.calibration_
     ci = est.calibration_ci_
@@ -248,8 +248,6 @@ def format_summary(est: LoopEstimator) -> str:
     if d.ignored_columns:
         lines.append(f"            ignored columns: {', '.join(d.ignored_columns)}")
     lines += [f"            {n}" for n in getattr(d, "notes", ())]
-    lines.append(f"gamma       {gamma_text(est)}")
-    lines += defaults_lines(loop_defaults(est))
     for b in est.baselines_.values():
         lines.append(f"baseline    T = {b.roughness_T:g}: oil-free fit RMSE {b.rmse_W:.3f} W "
                      f"({b.n_samples} samples)" + ("; " + "; ".join(b.notes) if b.notes else ""))
@@ -303,34 +301,23 @@ def format_summary(est: LoopEstimator) -> str:
               f"noise level {est.noise_W_:.3f} W; held-out RMSE "
               + (f"falls by {100 * (1 - h['after'] / h['before']):.1f} %"
                  if h["after"] < h["before"] else "unchanged (no effect accepted)")]
-    return "\n".join(x for x in lines if x is not None)
+    return layout(_answer(est), [w for x in lines if x is not None  # tables < 100 wide
+                                 for y in x.split("\n") for w in wrap(y)],
+                  [f"gamma       {gamma_text(est)}", *defaults_lines(loop_defaults(est))],
+                  defaults=defaults)
 
 
-def _figure_runs(curves: LoopCurves, path: Path, runs: list[int], windows: bool) -> Path:
-    """The overview (whole runs) or the windows (a few cycles) of ``runs``, written."""
-    axs = (plot_windows if windows else plot_overview)(curves, runs)
-    return save_figure(axs[0].figure, path, DPI)
-
-
-def _figure_residuals(curves: LoopCurves, path: Path, against: str) -> Path:
-    """The residual before and after against time or speed, written."""
-    axs = plot_residuals(curves, against)
-    return save_figure(axs[0].figure, path, DPI)
-
-
-def _figures(est: LoopEstimator, out: Path) -> list[Path]:
-    """The figures of :func:`oilgap.studies.loop.figures.figure_names`, written into
-    ``out`` in that order (at most 12 runs a figure)."""
-    c = LoopCurves.of(est)
-    names = figure_names(len(c.run_names))
-    pg = pages(len(c.run_names))
-    paths = [_figure_runs(c, out / names[0], pg[0], False),
-             _figure_residuals(c, out / names[1], "speed"),
-             _figure_residuals(c, out / names[2], "time")]
-    more, windows = names[3:2 + len(pg)], names[2 + len(pg):]
-    paths += [_figure_runs(c, out / n, p, False) for n, p in zip(more, pg[1:], strict=True)]
-    paths += [_figure_runs(c, out / n, p, True) for n, p in zip(windows, pg, strict=True)]
-    return paths
+def _answer(est: LoopEstimator) -> list[str]:
+    """The loop's answer in two lines: the held-out error before and after, the effects
+    accepted."""
+    h = est.heldout_rmse_
+    fall = (f"falls by {100 * (1 - h['after'] / h['before']):.1f} %"
+            if h["after"] < h["before"] else "unchanged")
+    found = (", ".join(e.name for e in est.effects_) if est.effects_
+             else "none (no missing effect found)")
+    return [f"held-out RMSE {_num(h['before'])} W before -> {_num(h['after'])} W after "
+            f"({fall}; by {getattr(est, 'cv_by', 'run')}); noise level {est.noise_W_:.3f} W",
+            f"effects     {found}"]
 
 
 def _md_data(est: LoopEstimator) -> list[str]:
@@ -451,7 +438,7 @@ def _md_effects(est: LoopEstimator) -> list[str]:
     return parts
 
 
-def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
+def _md_errors(est: LoopEstimator, figures: bool | str = True) -> list[str]:
     """Report section: the errors before and after, overall and per run; the figures."""
     h, r = est.heldout_rmse_, est.rmse_
     return ["## Errors before and after", "",
@@ -466,10 +453,7 @@ def _md_errors(est: LoopEstimator, figures: bool = True) -> list[str]:
                                 f"{x['rmse_with_effect_W']:.3f}",
                                 f"{x['heldout_rmse_before_W']:.3f}",
                                 f"{x['heldout_rmse_after_W']:.3f}"] for x in est.per_run_]), "",
-            cv_sentence(est), "",
-            "## Figures", "", *((f"![{f}]({f})" for f in
-                                 figure_names(len(est.samples_.run_names))) if figures
-                                else ["Not drawn (`--no-figures`)."])]
+            cv_sentence(est), "", *md_figures(est, figure_mode(figures))]
 
 
 def cv_sentence(est: LoopEstimator) -> str:
@@ -493,8 +477,9 @@ def cv_sentence(est: LoopEstimator) -> str:
     return f"{text} ({cv['rule']}); 95 % intervals by the {cv['jackknife']}."
 
 
-def report_markdown(est: LoopEstimator, figures: bool = True) -> str:
-    """The ``report.md`` text (``figures``: the figures are drawn and linked)."""
+def report_markdown(est: LoopEstimator, figures: bool | str = True) -> str:
+    """The ``report.md`` text (``figures``: which figures are drawn and linked,
+    :func:`figure_mode`)."""
     parts = (_md_data(est) + _md_calibration(est) + _md_search(est) + _md_effects(est)
              + _md_errors(est, figures))
     return "\n".join(parts) + "\n"
@@ -535,11 +520,14 @@ def loop_json(est: LoopEstimator) -> dict:
     return doc
 
 
-def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) -> dict:
+def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool | str = True) -> dict:
     """Write the figures, ``report.md`` and last ``loop.json`` to ``out_dir`` (each file
     atomically; the documents that name the others come last, so a failure while
     drawing never leaves a report linking figures that do not exist); returns the
-    paths."""
+    paths. ``figures``: ``"summary"`` (or True: every run's figures up to
+    :data:`~oilgap.studies.loop.figures.CAP` runs, a summary above), ``"all"`` (every
+    run's, however many), ``"none"`` (or False)."""
+    mode = figure_mode(figures)
     out = Path(out_dir)
     try:
         out.mkdir(parents=True, exist_ok=True)
@@ -547,8 +535,8 @@ def write_report(est: LoopEstimator, out_dir: str | Path, figures: bool = True) 
         raise InputError("--out", str(out), f"cannot create the directory ({e.strerror})") \
             from None
     paths = {"json": out / "loop.json", "report": out / "report.md"}
-    paths["figures"] = _figures(est, out) if figures else []
-    text = report_markdown(est, figures)
+    paths["figures"] = write_figures(est, out, mode == "all") if mode != "none" else []
+    text = report_markdown(est, mode)
     doc = dumps(loop_json(est))  # 6 significant digits; the model block in full
     write_text(paths["report"], text)
     write_text(paths["json"], doc)

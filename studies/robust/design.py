@@ -43,6 +43,7 @@ import numpy as np
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning, SolverError
 from oilgap.model.evaluation import evaluate_case
+from oilgap.model.progress import report
 from oilgap.model.uncertain import UncertaintySpec, case_uncertainty
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.model.units import MM_TO_M
@@ -355,15 +356,20 @@ def robust_design(case: DesignCase, settings: RobustSettings | None = None,
     if mode == "bulk" and s.pareto_points:
         raise InputError("--pareto", s.pareto_points, "under thermal mode none only",
                          "optimize")
+    task = "robust optimize: nominal, N, 2N, Monte Carlo"
+    report(task, 0, 4)
     prob = DesignProblem(case, verbose=verbose, thermal=mode)
     nominal = prob.solve(starts=s.starts, seed=s.seed, **lim)
     x_nom = design_x(nominal)
+    report(task, 1, 4)
     t0 = time.perf_counter()
     rp = RobustDesignProblem(prob, spec.sample(s.scenarios, s.seed), s.statistic)
     build = time.perf_counter() - t0
     robust = rp.solve(x_nom, starts=s.starts, seed=s.seed, **lim)
+    report(task, 2, 4)
     rp2 = RobustDesignProblem(prob, spec.sample(2 * s.scenarios, s.seed), s.statistic)
     doubled = rp2.solve(robust.x_m, starts=s.starts, seed=s.seed, **lim)
+    report(task, 3, 4)
     machined = (prob.machined_rotor_groove_m, prob.machined_stator_groove_m)
     sample = spec.sample(s.mc_samples, s.seed + MC_SEED_OFFSET)
     mc_l = {k: monte_carlo(case, x, machined, sample, mode)
@@ -374,6 +380,7 @@ def robust_design(case: DesignCase, settings: RobustSettings | None = None,
     for row in front:  # each front point's p95 on the independent Monte Carlo too
         x = np.array([row[VARIABLE_LABELS[v][0]] for v in VARIABLES]) * MM_TO_M
         row["mc_p95_W"] = float(np.percentile(monte_carlo(case, x, machined, sample, mode), 95))
+    report(task, 4, 4)
     return RobustDesign(case=case, mode=mode, settings=s, spec=spec, nominal=nominal,
                         robust=robust,
                         doubled=doubled, at_nominal_W=at_nom,

@@ -48,6 +48,7 @@ from oilgap.model.io.defaults import (
     uncertainty_defaults,
 )
 from oilgap.model.joint_loss import resolve_thermal_mode
+from oilgap.model.progress import report
 from oilgap.model.thermal_modes import applies_film, film_counterpart
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.model.uncertain.distributions import UncertaintySpec, case_uncertainty
@@ -278,13 +279,17 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     mode, default = study_mode(case, spec, settings.thermal)
     nom = nominal_inputs(case)
     nominal = float(_loss(case, {n: np.array([nom[n]]) for n in spec.names}, mode)[0])
+    task = "uncertainty: samples, Sobol', files"
+    report(task, 0, 3)
     x = spec.sample(settings.samples, settings.seed)
     y = _loss(case, x, mode)
     samples = pd.DataFrame(x).assign(loss_W=y)
+    report(task, 1, 3)
     sobol = None
     if settings.sobol:
         sobol = sobol_indices(lambda u: _loss(case, spec.transform(u), mode), spec.names,
                               settings.sobol_samples, settings.seed, settings.confidence)
+    report(task, 2, 3)
     result = UncertaintyResult(
         case_name=case.name, spec=spec, settings=settings, thermal_mode=mode,
         thermal_default=default, nominal_W=nominal, samples=samples,
@@ -295,6 +300,7 @@ def run(out_dir: str | Path | None = None, case: DesignCase | None = None,
     if out_dir is not None:
         files = write_outputs(Path(out_dir), result)
         object.__setattr__(result, "files", files)
+    report(task, 3, 3)
     return result
 
 

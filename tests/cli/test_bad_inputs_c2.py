@@ -184,7 +184,9 @@ def test_loop_counts_override_text_names_gamma_and_predict_too(tmp_path, capsys,
     code, out, err = _run(capsys, ["loop", str(data), "--out", str(out_dir), "--no-figures"])
     assert code == 0
     lines = out.splitlines()
-    assert f"{len(df) - 3} oil samples" in lines[0] and "3 dropped" in lines[0]
+    at = next(i for i, x in enumerate(lines) if x.startswith("data "))  # after the answer
+    data_line = " ".join(x.strip() for x in lines[at:at + 3])  # wrapped at 100 characters
+    assert f"{len(df) - 3} oil samples" in data_line and "3 dropped" in data_line
     assert any(x.strip().startswith("dropped 3 x gap_mm is text") for x in lines)
     assert any(x.strip() == f"gap_mm empty in {len(df) - 3} of {len(df) - 3} oil rows: the "
                "case's region-1 clearance used there" for x in lines)

@@ -128,8 +128,8 @@ def test_optimize_out_is_stamped(tmp_path, capsys):
     assert first.startswith(f"# written by oilgap {version('oilgap')} on ")
     assert first.endswith(f"by: oilgap optimize --starts 1 --out {out} -q")
     assert second.startswith("name = ")
-    # 6 significant digits: no float noise in the file
-    assert not re.search(r"\d\.\d{7,}", out.read_text())
+    # every digit of the optimum (issue 26): tests/cli/test_answer_first.py evaluates the
+    # file again and finds the loss optimize printed
 
 
 # ---------------------------------------------------------------- one unit convention

@@ -59,9 +59,15 @@ def test_synth_then_loop(tmp_path, capsys):
 def test_loop_on_clean_data_says_so(tmp_path, capsys):
     data = tmp_path / "clean.csv"
     assert main(["synth", "--seed", "5", "--out", str(data), "--viscous"]) == 0
+    capsys.readouterr()  # the loop's stdout alone below
     assert main(["loop", str(data), "--out", str(tmp_path / "r"), "--no-figures"]) == 0
     text = capsys.readouterr().out
     assert "no missing effect found" in text
+    # the answer first (issue 26): the held-out error before -> after
+    held = json.loads((tmp_path / "r" / "loop.json").read_text())["heldout_rmse_W"]
+    assert text.startswith(f"held-out RMSE {held['before']:.4g} W before -> "
+                           f"{held['after']:.4g} W after")
+    assert text.splitlines()[1].startswith("effects     none")
     doc = json.loads((tmp_path / "r" / "loop.json").read_text())
     assert "loop.case" in text and "loop.margin = 0.1" in text  # the defaults header line
     assert doc["effects"] == [] and doc["heldout_rmse_W"]["before"] == \

@@ -41,6 +41,9 @@ def test_cli_json_report(capsys, tmp_path):
 def test_cli_text_names_defaults_and_stability(capsys):
     assert main(["optimize", "--robust", "p95", "--scenarios", "8", "--starts", "1"]) == 0
     text = capsys.readouterr().out
+    head = text.splitlines()[:5]  # the answer first (issue 26): p95 gain, price, design
+    assert head[0].startswith("p95 gain ") and any(x.startswith("price of robustness") for x
+                                                     in head)
     for s in ("N = 8, Sobol' seed 0 (default)", "uncertainty from: defaults", "nu40_factor",
               "price of robustness", "p95 gain", "stability            2N = 16", "CVaR",
               "same design"):  # the seed's vertex optimum: documented in optimizer.md

@@ -363,7 +363,7 @@ def test_a_crash_while_drawing_leaves_no_report_linking_missing_figures(tmp_path
     def crash(*args, **kwargs):
         raise ValueError("a bug while drawing")
 
-    monkeypatch.setattr("oilgap.studies.loop.report._figure_residuals", crash)
+    monkeypatch.setattr("oilgap.studies.loop.report_figures._figure_residuals", crash)
     out = tmp_path / "o"
     with pytest.raises(ValueError):  # a bug keeps its traceback; the folder is marked
         main(["loop", str(quick_loop), "--out", str(out)])

@@ -22,6 +22,11 @@ def test_seed_case_prints_percentiles_sobol_table_and_default_sources(tmp_path, 
     assert main(["study", "uncertainty", *SMALL, "--out", str(out)]) == 0
     text = capsys.readouterr().out
     assert "p5" in text and "p50" in text and "p95" in text
+    head = text.splitlines()[:5]  # the percentiles first (issue 26), as statistics.csv
+    stats = dict(line.split(",") for line in
+                 (out / "uncertainty_statistics.csv").read_text().splitlines()[1:])
+    assert head[0].startswith("mean loss over") and "p95" in head[1]
+    assert f"{float(stats['p95']):.3f} W" in head[2]
     assert "Sobol' indices (SALib" in text and "nu40_factor" in text and "gamma" in text
     assert "uncertainty.nu40_factor = uniform(low = 0.9, high = 1.1) (ISO 3448" in text
     assert "oilgap study smoothing" in text  # gamma's source

@@ -166,7 +166,7 @@ def test_loop_overview_and_windows_one_panel_per_run_with_legends(loop):
 
 
 def test_loop_report_writes_every_named_figure(loop, tmp_path, monkeypatch):
-    monkeypatch.setattr("oilgap.studies.loop.report.DPI", 20)  # small files, fast
+    monkeypatch.setattr("oilgap.studies.loop.report_figures.DPI", 20)  # small files, fast
     paths = write_report(loop, tmp_path)
     names = lf.figure_names(len(loop.samples_.run_names))
     assert [p.name for p in paths["figures"]] == names
@@ -180,5 +180,5 @@ def test_loop_report_writes_every_named_figure(loop, tmp_path, monkeypatch):
 def test_many_runs_go_on_several_pages():
     assert lf.pages(8) == [list(range(8))]
     assert [len(p) for p in lf.pages(30)] == [10, 10, 10]
-    names = lf.figure_names(30)
+    names = lf.figure_names(30, every=True)  # every run's pages (above 24 runs: on request)
     assert names.count("measured_vs_model_window_3.png") == 1 and len(names) == 3 + 2 + 3

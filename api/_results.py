@@ -25,6 +25,7 @@ from typing import Any
 from oilgap._checks import AX, FLAG, Arg, check_arg, checked
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import CaseEvaluation
+from oilgap.model.groove_band import GrooveBand, groove_band
 from oilgap.model.io.defaults import case_defaults as model_case_defaults
 from oilgap.model.io.defaults import defaults_block, gamma_fields, gamma_line
 from oilgap.model.io.serialize import dumps
@@ -258,10 +259,17 @@ def _film_notes(ev: CaseEvaluation) -> list[str]:
     return notes
 
 
-def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
+def format_evaluation(ev: CaseEvaluation, gamma: str | None = None,
+                      groove: GrooveBand | None = None, transition: str = "reynolds") -> str:
     """Human-readable table of an evaluation (``gamma``: the header line naming the groove
-    exponent and its source, :func:`~oilgap.cli.common.gamma_line`)."""
-    lines = _header(ev) + ([gamma] if gamma else []) + [
+    exponent and its source, :func:`~oilgap.cli.common.gamma_line`; ``groove``: the groove
+    band, :func:`~oilgap.model.groove_band.groove_band`; ``transition`` named when not the
+    default)."""
+    head = _header(ev)
+    if transition != "reynolds":
+        head = [h + f"; transition {transition} (exact Couette below Ta_c)"
+                if h.startswith("friction ") else h for h in head]
+    lines = head + ([gamma] if gamma else []) + [
         "",
         f"{'region':<14}{'R mm':>7}{'gap mm':>8}{'L mm':>7}{'T':>6}{'Re_peak':>10}"
         f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}{'Na_peak':>9}{'Na_eff':>8}"
@@ -285,6 +293,8 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None) -> str:
     lines += ["", f"{label} {ev.total_mean_power_W:.3f} W   ({share})"]
     if ev.film_band is not None:
         lines.append(f"film band                  {ev.film_band.line('.4g')}")
+    if groove is not None:
+        lines.append(f"groove band                {groove.line('.4g')}")
     if uses_balance(ev.thermal_mode):
         iso = ev.isothermal_total_mean_power_W
         change = (f"; the heating changes the loss by "
@@ -334,6 +344,16 @@ class Evaluation(ResultView):
     def __init__(self, raw: CaseEvaluation, case: DesignCase):
         self.raw = raw
         self.case = case
+        self._groove: tuple[GrooveBand | None] | None = None
+
+    @property
+    def groove_band(self) -> GrooveBand | None:
+        """The groove band beside the loss where region 1 is laminar (None elsewhere;
+        :func:`~oilgap.model.groove_band.groove_band`)."""
+        if self._groove is None:
+            self._groove = (groove_band(self.case, self.raw.thermal_mode, self.raw.depth_m,
+                                        self.raw.total_mean_power_W),)
+        return self._groove[0]
 
     @property
     def total_mean_power_W(self) -> float:
@@ -368,7 +388,9 @@ class Evaluation(ResultView):
     def to_dict(self) -> dict:
         """The ``oilgap evaluate --json`` document: the evaluation, gamma and its source,
         the defaults filled in."""
-        return {**self.raw.to_dict(), **gamma_fields(self.case), "defaults": self.defaults}
+        g = self.groove_band
+        return {**self.raw.to_dict(), **gamma_fields(self.case), "defaults": self.defaults,
+                "groove_band": None if g is None else g.to_dict()}
 
     def to_frame(self) -> Any:
         """One row per region (and rolling bearing), indexed by its name."""
@@ -376,7 +398,8 @@ class Evaluation(ResultView):
 
     def summary(self) -> str:
         """What ``oilgap evaluate`` prints."""
-        return format_evaluation(self.raw, gamma_line(self.case))
+        return format_evaluation(self.raw, gamma_line(self.case), self.groove_band,
+                                 self.case.friction.transition)
 
     def plot(self, ax: Any = None) -> Any:
         """Mean power of each region (and bearing) over the cycle, a bar each [W]."""

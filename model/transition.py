@@ -46,9 +46,16 @@ from __future__ import annotations
 import math
 from enum import StrEnum
 
+import numpy as np
+
 from . import _math as m
 from .errors import InputError
-from .taylor_couette import couette_moment_coefficient
+from .taylor_couette import (
+    REGIME_BOUNDARIES_RE,
+    REGIME_NAMES,
+    couette_moment_coefficient,
+    flow_regime,
+)
 
 
 class Transition(StrEnum):
@@ -331,3 +338,38 @@ def check_transition(transition: str, form: str, laminar_law: str,
         raise InputError("transition", transition, "\"taylor\" is exact Couette below Ta_c: "
                          f"it needs laminar_law = \"couette\" (not \"{laminar_law}\")", where)
     return transition
+
+
+def transition_regime(reynolds, gap_ratio, transition: str = "reynolds"):
+    """Regime name of each Reynolds number under a transition (numpy only).
+
+    ``"reynolds"``: Eq. 6's breaks (:func:`~oilgap.model.taylor_couette.flow_regime`).
+    ``"taylor"``: ``"laminar"`` below Re_c (:func:`critical_reynolds_number`), ``"laminar
+    with vortices"`` from Re_c to the larger of Re_c and Eq. 6's break at 500, Eq. 6's names
+    above.
+
+    Parameters
+    ----------
+    reynolds : float or array
+        Couette Reynolds number(s) [-].
+    gap_ratio : float
+        x = delta / R1 [-].
+    transition : {"reynolds", "taylor"}
+        The transition [-].
+
+    Returns
+    -------
+    ndarray of str
+        One regime name per Reynolds number.
+
+    References
+    ----------
+    Bilgen & Boulos [4]_; Esser & Grossmann [1]_.
+    """
+    names = flow_regime(reynolds)
+    if transition != Transition.TAYLOR:
+        return names
+    re = np.asarray(reynolds, dtype=float)
+    re_c = float(critical_reynolds_number(gap_ratio))
+    vortex = (re >= re_c) & (re < max(re_c, REGIME_BOUNDARIES_RE[1]))
+    return np.where(re < re_c, REGIME_NAMES[0], np.where(vortex, REGIME_NAMES[1], names))

@@ -11,6 +11,7 @@ import pandas as pd
 from oilgap._results import ResultView, case_defaults, new_axes
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import oil_state
+from oilgap.model.groove_band import GrooveBand, groove_band
 from oilgap.model.io.defaults import gamma_fields, gamma_line
 from oilgap.model.joint_loss import FilmBand
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, THERMAL_MODE_TEXT, ThermalMode
@@ -78,16 +79,19 @@ def _costs(res: DesignResult) -> list[str]:
     return lines
 
 
-def band_lines(bands: tuple | None) -> list[str]:
-    """The film band of the initial and optimal designs, one line each (none without)."""
-    if not bands:
-        return []
-    return [f"film band, {k} design: {b.line('.4g')}"
-            for k, b in zip(("initial", "optimal"), bands, strict=True) if b is not None]
+def band_lines(bands: tuple | None, grooves: tuple = ()) -> list[str]:
+    """The film band of the initial and optimal designs, one line each (none without), and
+    their groove bands where region 1 is laminar (:mod:`oilgap.model.groove_band`)."""
+    films = [f"film band, {k} design: {b.line('.4g')}"
+             for k, b in zip(("initial", "optimal"), bands or (), strict=True) if b is not None]
+    return films + [f"groove band, {k} design: {g.line('.4g')}"
+                    for k, g in zip(("initial", "optimal"), grooves, strict=False)
+                    if g is not None]
 
 
 def format_result(res: DesignResult, exact: tuple | None = None,
-                  thermal: str | None = None, bands: tuple | None = None) -> str:
+                  thermal: str | None = None, bands: tuple | None = None,
+                  grooves: tuple = ()) -> str:
     """Side-by-side table of the initial and optimal designs, with the multipliers
     (``thermal``: the header line naming the mode; ``bands``: the designs' film bands)."""
     prm = res.parameters
@@ -108,7 +112,7 @@ def format_result(res: DesignResult, exact: tuple | None = None,
         a, b = exact[0].total_mean_power_W, exact[1].total_mean_power_W
         lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>13}{_fmt(b):>13}"
                      f"{100 * (b - a) / a:>+9.1f} %  same, case's exact C_m (oilgap evaluate)")
-    lines += band_lines(bands)
+    lines += band_lines(bands, grooves)
     lines += ["", "active constraints and what they cost (d optimal power / d bound):"]
     return "\n".join(lines + _costs(res))
 
@@ -134,7 +138,7 @@ def _oil_lines(cmp: HeatingComparison) -> list[str]:
 
 
 def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
-                      bands: tuple | None = None) -> str:
+                      bands: tuple | None = None, grooves: tuple = ()) -> str:
     """The optimum with heating beside the one without, what changed, and the costs.
 
     ``exact``: (initial, optimal) OperatingTemperature of the heated designs with the
@@ -164,7 +168,7 @@ def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
     a, b, c = exact[0].mean_power_W, exact[1].mean_power_W, exact[2].total_mean_power_W
     lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>12}{_fmt(b):>12}{_change(a, b):>9}"
                  f"{_fmt(c):>12}{_change(c, b):>10}  same, case's exact C_m (oilgap evaluate)")
-    lines += band_lines(bands)
+    lines += band_lines(bands, grooves)
     lines += ["", f"active constraints with heating ({h.thermal_mode}) and what they cost "
               "(d optimal power / d bound):"] + _costs(h)
     act = cmp.active()
@@ -224,6 +228,21 @@ class Optimization(ResultView):
         self.exact = exact
         self.thermal_header = thermal_header
         self.limits = dict(limits or {})
+        self._grooves: tuple | None = None
+
+    @property
+    def groove_bands(self) -> tuple[GrooveBand | None, ...]:
+        """The groove bands of the initial and optimal designs (exact C_m; None where region
+        1 is not laminar or has no grooves; :func:`~oilgap.model.groove_band.groove_band`)."""
+        if self._grooves is None:
+            ex = self.exact
+            powers = ((ex[0].total_mean_power_W, ex[1].total_mean_power_W)
+                      if not isinstance(self.raw, HeatingComparison)
+                      else (ex[0].mean_power_W, ex[1].mean_power_W))
+            designs = (self.result.case, self.to_case())
+            self._grooves = tuple(groove_band(c, self.thermal_mode, mean_power_W=p)
+                                  for c, p in zip(designs, powers, strict=True))
+        return self._grooves
 
     @property
     def result(self) -> DesignResult:
@@ -314,6 +333,8 @@ class Optimization(ResultView):
                      **gamma_fields(res.case))
         for k, b in zip(("initial", "optimal"), self.bands, strict=False):
             d[k]["film_band"] = None if b is None else b.to_dict()
+        for k, g in zip(("initial", "optimal"), self.groove_bands, strict=True):
+            d[k]["groove_band"] = None if g is None else g.to_dict()
         d["defaults"] = self.defaults
         return d
 
@@ -332,9 +353,10 @@ class Optimization(ResultView):
         """What ``oilgap optimize`` prints (without the ``wrote`` line of ``--out``)."""
         if isinstance(self.raw, HeatingComparison):
             return with_gamma(format_comparison(self.raw, self.exact, self.thermal_header,
-                                                self.bands), self.raw.heated.case)
-        return with_gamma(format_result(self.raw, self.exact, self.thermal_header, self.bands),
-                          self.raw.case)
+                                                self.bands, self.groove_bands),
+                              self.raw.heated.case)
+        return with_gamma(format_result(self.raw, self.exact, self.thermal_header, self.bands,
+                                        self.groove_bands), self.raw.case)
 
     def plot(self, ax: Any = None) -> Any:
         """Change of each design quantity from the initial to the optimal design [%]."""

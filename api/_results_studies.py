@@ -27,6 +27,7 @@ from oilgap.studies.oil_grade.report import draw_heatmap, draw_vs_grade, result_
 from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
 from oilgap.studies.smoothing.case import NO_TABLE4, draw_case, saving_lines
 from oilgap.studies.smoothing.evidence import evidence_dict, evidence_lines
+from oilgap.studies.smoothing.laminar import LaminarShare, laminar_share
 from oilgap.studies.smoothing.report import draw_loss_vs_T, thermal_line
 
 
@@ -266,6 +267,15 @@ class Smoothing(StudyView):
                  out: str | Path | None = None):
         super().__init__(raw, case, out)
         self.plateau_tol = plateau_tol
+        self._laminar: LaminarShare | None = None
+
+    @property
+    def laminar_share(self) -> LaminarShare:
+        """How much of the modelled saving lies in laminar flow, where only the seed rig's
+        T^gamma supports it (:func:`oilgap.studies.smoothing.laminar.laminar_share`)."""
+        if self._laminar is None:
+            self._laminar = laminar_share(self.case, self.raw.table, self.raw.loss_vs_T)
+        return self._laminar
 
     def to_frame(self) -> pd.DataFrame:
         """Mean loss against roughness T, one row per (curve, T): ``T``,
@@ -286,7 +296,7 @@ class Smoothing(StudyView):
                 "seed_rig": r.seed_rig, "plateau_tol": self.plateau_tol, "fit": fit,
                 "plateau": records(r.plateau), "table4": records(r.table),
                 "fits_compared": records(r.checks), "files": file_names(r),
-                "defaults": self.defaults,
+                "defaults": self.defaults, "laminar_share": self.laminar_share.to_dict(),
                 **({} if r.film_evidence is None
                    else {"film_evidence": evidence_dict(r.film_evidence)})}
 
@@ -337,14 +347,15 @@ class Smoothing(StudyView):
             "", f"loss vs T: within {100 * self.plateau_tol:g} % of P(T=1) only for T <= "
             f"{pl['T_stop'].min():.2f}..{pl['T_stop'].max():.2f}; 4 -> 2 takes "
             f"{100 * pl['share_of_possible_saving_4_to_2'].mean():.0f} % of the possible "
-            "saving"]
+            "saving", self.laminar_share.line()]
 
     def _case_lines(self) -> list[str]:
         r = self.raw
         return [f"thermal     {r.thermal_mode}" + (f" (default: {DEFAULT_MODE_WHY})"
                                                    if r.thermal_default else ""),
                 gamma_line(self.case), *defaults_lines(r.defaults), "",
-                *saving_lines(self.case, r.plateau, r.thermal_mode), "", NO_TABLE4]
+                *saving_lines(self.case, r.plateau, r.thermal_mode),
+                self.laminar_share.line(), "", NO_TABLE4]
 
     def summary(self) -> str:
         """What ``oilgap study smoothing`` prints: on the seed rig the fit, Table 4, the

@@ -19,6 +19,7 @@ import pandas as pd
 from oilgap._checks import checked, choice
 from oilgap._results import ResultView, new_axes, raw_field
 from oilgap.model.case import DesignCase
+from oilgap.model.groove_band import GrooveBand, groove_band
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
@@ -186,8 +187,18 @@ class OilGrade(StudyView):
     def to_dict(self) -> dict:
         """The study's ``oil_grade.json`` document (thermal mode, recommendation, grades,
         mission, defaults) with gamma and the files written (``--json``)."""
+        g = self.groove_band
         return {**result_json(self.raw, self.case), **gamma_fields(self.case),
+                "groove_band": None if g is None else g.to_dict(),
                 "files": file_names(self.raw)}
+
+    @property
+    def groove_band(self) -> GrooveBand | None:
+        """The rated point's groove band where region 1 is laminar (None elsewhere;
+        :func:`~oilgap.model.groove_band.groove_band`)."""
+        if not hasattr(self, "_groove"):
+            self._groove = groove_band(self.case, self.raw.thermal_mode)
+        return self._groove
 
     def _table(self) -> list[str]:
         r = self.raw
@@ -214,6 +225,8 @@ class OilGrade(StudyView):
         if r.film_band is not None:
             lines += [f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
                       f"film band: {r.film_band.line()}", ""]
+        if self.groove_band is not None:
+            lines += [f"groove band at the rated point: {self.groove_band.line()}", ""]
         if r.recommended is not None:
             lines += [f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}", ""]
         lines += self._table()

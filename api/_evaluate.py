@@ -22,7 +22,7 @@ from pathlib import Path
 from oilgap._checks import CASE, FLAG, NAME, NUMBER, OILS, PATH, Arg, check_arg, checked, choice
 from oilgap._results import Evaluation
 from oilgap.model.case import DesignCase, OperatingPoint
-from oilgap.model.errors import InputError, check_finite
+from oilgap.model.errors import ArgumentError, InputError, check_finite
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import read_case_toml
 from oilgap.model.io.case_io import seed_case as _seed_case
@@ -274,7 +274,7 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             laminar_law: str | None = None, transition: str | None = None) -> Evaluation:
+             **keywords: str | None) -> Evaluation:
     """Evaluate a joint region by region over its duty cycle (``oilgap evaluate``).
 
     Parameters
@@ -295,16 +295,23 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         the evidence supports, :func:`~oilgap.model.joint_loss.default_thermal_mode`).
     sea_temp_C : float, optional
         Sea temperature of the heat balance [degC] (``bulk``/``full`` only).
-    laminar_law : {"couette", "bilgen-boulos"}, optional
-        Law below the critical Taylor number (default: the case's).
-    transition : {"reynolds", "taylor"}, optional
-        Where C_m leaves the laminar law (default: the case's; :func:`with_transition`).
+    **keywords
+        The friction's: ``laminar_law`` ({"couette", "bilgen-boulos"}: the law below the
+        critical Taylor number) and ``transition`` ({"reynolds", "taylor"}: where C_m leaves
+        the laminar law, :func:`with_transition`); default: the case's.
 
     Returns
     -------
     Evaluation
         ``.raw`` is the :class:`~oilgap.model.evaluation.CaseEvaluation`; powers [W].
     """
+    unknown = set(keywords) - {"laminar_law", "transition"}
+    if unknown:
+        raise ArgumentError(", ".join(sorted(unknown)), keywords[min(unknown)],
+                            "evaluate's keywords are case, "
+                            "oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C, laminar_law "
+                            "and transition")
+    laminar_law, transition = keywords.get("laminar_law"), keywords.get("transition")
     if laminar_law is not None and laminar_law not in LAMINAR_LAWS:
         raise InputError("laminar_law", laminar_law, f"one of {', '.join(LAMINAR_LAWS)} "
                          "(None: the case's)")

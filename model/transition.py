@@ -313,6 +313,8 @@ def check_transition(transition: str, form: str, laminar_law: str,
         The law's form and laminar law [-]: ``"taylor"`` applies to the Eq. 6 forms
         (``"bilgen-boulos"``, ``"smooth"``) with the Couette laminar law, which it replaces
         below Ta_c.
+    where : str
+        Where the value came from, for the message [-].
 
     Returns
     -------

@@ -346,7 +346,6 @@ class Evaluation(ResultView):
         self.case = case
         self._groove: tuple[GrooveBand | None] | None = None
 
-    @property
     def groove_band(self) -> GrooveBand | None:
         """The groove band beside the loss where region 1 is laminar (None elsewhere;
         :func:`~oilgap.model.groove_band.groove_band`)."""
@@ -388,7 +387,7 @@ class Evaluation(ResultView):
     def to_dict(self) -> dict:
         """The ``oilgap evaluate --json`` document: the evaluation, gamma and its source,
         the defaults filled in."""
-        g = self.groove_band
+        g = self.groove_band()
         return {**self.raw.to_dict(), **gamma_fields(self.case), "defaults": self.defaults,
                 "groove_band": None if g is None else g.to_dict()}
 
@@ -398,7 +397,7 @@ class Evaluation(ResultView):
 
     def summary(self) -> str:
         """What ``oilgap evaluate`` prints."""
-        return format_evaluation(self.raw, gamma_line(self.case), self.groove_band,
+        return format_evaluation(self.raw, gamma_line(self.case), self.groove_band(),
                                  self.case.friction.transition)
 
     def plot(self, ax: Any = None) -> Any:

@@ -230,7 +230,6 @@ class Optimization(ResultView):
         self.limits = dict(limits or {})
         self._grooves: tuple | None = None
 
-    @property
     def groove_bands(self) -> tuple[GrooveBand | None, ...]:
         """The groove bands of the initial and optimal designs (exact C_m; None where region
         1 is not laminar or has no grooves; :func:`~oilgap.model.groove_band.groove_band`)."""
@@ -333,7 +332,7 @@ class Optimization(ResultView):
                      **gamma_fields(res.case))
         for k, b in zip(("initial", "optimal"), self.bands, strict=False):
             d[k]["film_band"] = None if b is None else b.to_dict()
-        for k, g in zip(("initial", "optimal"), self.groove_bands, strict=True):
+        for k, g in zip(("initial", "optimal"), self.groove_bands(), strict=True):
             d[k]["groove_band"] = None if g is None else g.to_dict()
         d["defaults"] = self.defaults
         return d
@@ -353,10 +352,10 @@ class Optimization(ResultView):
         """What ``oilgap optimize`` prints (without the ``wrote`` line of ``--out``)."""
         if isinstance(self.raw, HeatingComparison):
             return with_gamma(format_comparison(self.raw, self.exact, self.thermal_header,
-                                                self.bands, self.groove_bands),
+                                                self.bands, self.groove_bands()),
                               self.raw.heated.case)
         return with_gamma(format_result(self.raw, self.exact, self.thermal_header, self.bands,
-                                        self.groove_bands), self.raw.case)
+                                        self.groove_bands()), self.raw.case)
 
     def plot(self, ax: Any = None) -> Any:
         """Change of each design quantity from the initial to the optimal design [%]."""

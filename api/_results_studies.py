@@ -187,12 +187,11 @@ class OilGrade(StudyView):
     def to_dict(self) -> dict:
         """The study's ``oil_grade.json`` document (thermal mode, recommendation, grades,
         mission, defaults) with gamma and the files written (``--json``)."""
-        g = self.groove_band
+        g = self.groove_band()
         return {**result_json(self.raw, self.case), **gamma_fields(self.case),
                 "groove_band": None if g is None else g.to_dict(),
                 "files": file_names(self.raw)}
 
-    @property
     def groove_band(self) -> GrooveBand | None:
         """The rated point's groove band where region 1 is laminar (None elsewhere;
         :func:`~oilgap.model.groove_band.groove_band`)."""
@@ -225,8 +224,8 @@ class OilGrade(StudyView):
         if r.film_band is not None:
             lines += [f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
                       f"film band: {r.film_band.line()}", ""]
-        if self.groove_band is not None:
-            lines += [f"groove band at the rated point: {self.groove_band.line()}", ""]
+        if self.groove_band() is not None:
+            lines += [f"groove band at the rated point: {self.groove_band().line()}", ""]
         if r.recommended is not None:
             lines += [f"recommended: {r.recommended}   runner-up: {r.runner_up or 'none'}", ""]
         lines += self._table()
@@ -282,7 +281,6 @@ class Smoothing(StudyView):
         self.plateau_tol = plateau_tol
         self._laminar: LaminarShare | None = None
 
-    @property
     def laminar_share(self) -> LaminarShare:
         """How much of the modelled saving lies in laminar flow, where only the seed rig's
         T^gamma supports it (:func:`oilgap.studies.smoothing.laminar.laminar_share`)."""
@@ -309,7 +307,7 @@ class Smoothing(StudyView):
                 "seed_rig": r.seed_rig, "plateau_tol": self.plateau_tol, "fit": fit,
                 "plateau": records(r.plateau), "table4": records(r.table),
                 "fits_compared": records(r.checks), "files": file_names(r),
-                "defaults": self.defaults, "laminar_share": self.laminar_share.to_dict(),
+                "defaults": self.defaults, "laminar_share": self.laminar_share().to_dict(),
                 **({} if r.film_evidence is None
                    else {"film_evidence": evidence_dict(r.film_evidence)})}
 
@@ -360,7 +358,7 @@ class Smoothing(StudyView):
             "", f"loss vs T: within {100 * self.plateau_tol:g} % of P(T=1) only for T <= "
             f"{pl['T_stop'].min():.2f}..{pl['T_stop'].max():.2f}; 4 -> 2 takes "
             f"{100 * pl['share_of_possible_saving_4_to_2'].mean():.0f} % of the possible "
-            "saving", self.laminar_share.line()]
+            "saving", self.laminar_share().line()]
 
     def _case_lines(self) -> list[str]:
         r = self.raw
@@ -368,7 +366,7 @@ class Smoothing(StudyView):
                                                    if r.thermal_default else ""),
                 gamma_line(self.case), *defaults_lines(r.defaults), "",
                 *saving_lines(self.case, r.plateau, r.thermal_mode),
-                self.laminar_share.line(), "", NO_TABLE4]
+                self.laminar_share().line(), "", NO_TABLE4]
 
     def summary(self) -> str:
         """What ``oilgap study smoothing`` prints: on the seed rig the fit, Table 4, the

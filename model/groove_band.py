@@ -97,14 +97,14 @@ class GrooveBand:
         -------
         dict
             ``theory_mean_power_W`` [W], ``change_pct`` [%], ``groove_factor`` (T^gamma)
-            [-], ``gamma`` [-], ``roughness_T`` [-], ``taylor_peak``, ``taylor_critical``
+            [-], ``gamma`` [-], ``roughness_T`` [-], ``Ta_peak``, ``Ta_critical``
             [-], ``evidence``.
         """
         return {"theory_mean_power_W": self.theory_mean_power_W,
                 "change_pct": self.change_pct,
                 "groove_factor": self.roughness_T ** self.gamma, "gamma": self.gamma,
-                "roughness_T": self.roughness_T, "taylor_peak": self.taylor_peak,
-                "taylor_critical": self.taylor_critical, "evidence": GROOVE_EVIDENCE}
+                "roughness_T": self.roughness_T, "Ta_peak": self.taylor_peak,
+                "Ta_critical": self.taylor_critical, "evidence": GROOVE_EVIDENCE}
 
 
 def region1_taylor(case: DesignCase, oil_temp_C: float | None = None,

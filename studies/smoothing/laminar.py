@@ -27,8 +27,8 @@ class LaminarShare:
     ----------
     rows : pandas.DataFrame
         One row per saving: ``what``, ``oil``, ``oil_temp_C`` [degC], ``depth_m`` [m],
-        ``saving_W`` [W] (positive: less loss smoothed), ``taylor_peak``,
-        ``taylor_critical`` [-], ``laminar`` (bool).
+        ``saving_W`` [W] (positive: less loss smoothed), ``Ta_peak``,
+        ``Ta_critical`` [-], ``laminar`` (bool).
     """
 
     rows: pd.DataFrame
@@ -73,7 +73,7 @@ def _row(case: DesignCase, what: str, oil: str, temp_C: float, depth_m: float,
          saving_W: float) -> dict:
     ta, ta_c = region1_taylor(_at(case, oil, temp_C, depth_m))
     return {"what": what, "oil": oil, "oil_temp_C": float(temp_C), "depth_m": float(depth_m),
-            "saving_W": float(saving_W), "taylor_peak": ta, "taylor_critical": ta_c,
+            "saving_W": float(saving_W), "Ta_peak": ta, "Ta_critical": ta_c,
             "laminar": bool(ta < ta_c)}
 
 

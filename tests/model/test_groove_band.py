@@ -25,7 +25,7 @@ def _evaluate_json(capsys, *argv):
 def test_groove_band_in_evaluate_json_where_laminar(capsys):
     doc = _evaluate_json(capsys)  # the seed's rated point: Re 27, Ta 5.5
     band = doc["groove_band"]
-    assert band["taylor_peak"] < band["taylor_critical"]
+    assert band["Ta_peak"] < band["Ta_critical"]
     # laminar Couette in region 1: its loss is proportional to T^gamma, so removing the
     # factor divides region 1 by 4^0.566 = 2.1916 (by hand) and leaves region 2 alone
     r1, r2 = (r["mean_power_W"] for r in doc["regions"])

@@ -25,7 +25,7 @@ from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_field
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade.report import draw_heatmap, draw_vs_grade, result_json
-from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
+from oilgap.studies.pareto import draw_gap_front, draw_inertia_front, marked_cases
 from oilgap.studies.smoothing.case import NO_TABLE4, draw_case, saving_lines
 from oilgap.studies.smoothing.evidence import evidence_dict, evidence_lines
 from oilgap.studies.smoothing.laminar import LaminarShare, laminar_share
@@ -110,7 +110,23 @@ class Pareto(StudyView):
                                     "mean_power_W": r.reference_point[1]},
                 "sweep_time_s": r.sweep_time_s, "designs": records(r.seeds),
                 "gap_front": records(r.gap_front), "inertia_front": records(r.inertia_front),
-                "files": file_names(r), "defaults": self.defaults}
+                "files": file_names(r), "defaults": self.defaults,
+                "groove_bands": {label: None if g is None else g.to_dict()
+                                 for label, g in self.groove_bands()}}
+
+    def groove_bands(self) -> list[tuple[str, GrooveBand | None]]:
+        """The marked designs' groove bands (label, band; None where region 1 is not
+        laminar or smooth; :func:`~oilgap.model.groove_band.groove_band`).
+
+        Returns
+        -------
+        list of tuple
+            (design label, GrooveBand or None), losses [W].
+        """
+        if not hasattr(self, "_grooves"):
+            self._grooves = [(label, groove_band(c, self.raw.thermal_mode))
+                             for label, c in marked_cases(self.case)]
+        return self._grooves
 
     def summary(self) -> str:
         """What ``oilgap study pareto`` prints: header (thermal, gamma, defaults), the
@@ -136,6 +152,8 @@ class Pareto(StudyView):
                   for _, s in r.seeds.iterrows()]
         lines += [f"  film band of {s['design']} (exact C_m {s['mean_power_exact_W']:.4g} W): "
                   f"{band_text(s)}" for _, s in r.seeds.iterrows()]
+        lines += [f"  groove band of {label}: {g.line()}" for label, g in self.groove_bands()
+                  if g is not None]
         bad = pd.concat([g[g["status"] != "ok"], i[i["status"] != "ok"]])
         if len(bad):
             lines.append(f"{len(bad)} points failed (rows kept with their error); first: "

@@ -386,9 +386,11 @@ class Evaluation(ResultView):
 
     def to_dict(self) -> dict:
         """The ``oilgap evaluate --json`` document: the evaluation, gamma and its source,
-        the defaults filled in."""
-        g = self.groove_band()
+        the defaults filled in, the groove band (``groove_band``, None where region 1 is not
+        laminar) and ``transition`` when it is not the default ``"reynolds"``."""
+        g, t = self.groove_band(), self.case.friction.transition
         return {**self.raw.to_dict(), **gamma_fields(self.case), "defaults": self.defaults,
+                **({} if t == "reynolds" else {"transition": t}),  # default: as before
                 "groove_band": None if g is None else g.to_dict()}
 
     def to_frame(self) -> Any:

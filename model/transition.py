@@ -128,7 +128,7 @@ def critical_taylor_number(gap_ratio):
     """Critical Taylor number ``Ta_c = Re_c x^0.5`` in the code's Ta (seed Eq. 3) [-].
 
     ``Ta_c = (2+x)^2 / (2 sqrt(4+3x) alpha^2)``: 41.30 for a narrow gap, 42.3 at the
-    seed's region 1 (x = 0.039), 47.1 at x = 0.2 (eta = 0.83).
+    seed's region 1 (x = 0.039), 46.6 at x = 0.2 (eta = 0.83).
 
     Parameters
     ----------

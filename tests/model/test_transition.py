@@ -172,3 +172,13 @@ def test_moment_coefficient_under_taylor_is_couette_times_groove_factor():
     law = FrictionLaw(transition="taylor", gamma=0.566)
     hand = 8 * (1 + x) ** 2 / ((2 + x) * re) * 4.0**0.566
     assert moment_coefficient(re, x, law, 4.0) == pytest.approx(hand, rel=1e-12)
+
+
+@pytest.mark.parametrize("x", [1e-3, 0.01, 0.227, 1.0])
+def test_torque_rises_through_onset_at_every_gap(x):
+    # a < 0 (Stuart-like onset, no dip below Couette) and G monotone from 0.2 to 300 Re_c
+    a, b = donnelly_simon_coefficients(x)
+    assert a < 0 < b
+    re = np.geomspace(0.2, 300, 2000) * critical_reynolds_number(x)
+    assert np.all(np.diff(taylor_cm(re, x) * re**2) > 0)
+    assert np.all(taylor_cm(re, x) >= couette_moment_coefficient(re, x) * (1 - 1e-12))

@@ -22,7 +22,7 @@ from pathlib import Path
 from oilgap._checks import CASE, FLAG, NAME, NUMBER, OILS, PATH, Arg, check_arg, checked, choice
 from oilgap._results import Evaluation
 from oilgap.model.case import DesignCase, OperatingPoint
-from oilgap.model.errors import InputError, check_finite
+from oilgap.model.errors import ArgumentError, InputError, check_finite
 from oilgap.model.evaluation import evaluate_case
 from oilgap.model.io.case_io import read_case_toml
 from oilgap.model.io.case_io import seed_case as _seed_case
@@ -30,6 +30,7 @@ from oilgap.model.joint_loss import resolve_thermal_mode, uses_balance
 from oilgap.model.oils import Oil, get_oil, oils_from_dict, read_oils_csv, with_builtin
 from oilgap.model.skin_friction import LAMINAR_LAWS
 from oilgap.model.thermal_modes import ThermalMode
+from oilgap.model.transition import TRANSITIONS
 from oilgap.studies.io.case_write import write_case_toml
 from oilgap.studies.io.files import check_out_file
 
@@ -176,6 +177,28 @@ def with_operating(case: DesignCase, oil: str | None = None,
     return case
 
 
+def with_transition(case: DesignCase, transition: str | None = None,
+                    name: str = "transition") -> DesignCase:
+    """``case`` with its ``[friction] transition`` replaced where given (``--transition``,
+    ``transition=``): ``"reynolds"`` (Eq. 6's switch by Re) or ``"taylor"`` (exact Couette
+    up to Ta_c, :mod:`oilgap.model.transition`).
+
+    Raises
+    ------
+    InputError
+        An unknown value, or ``"taylor"`` with a law it does not apply to; the message
+        names ``name``.
+    """
+    if transition is None:
+        return case
+    if transition not in TRANSITIONS:
+        raise InputError(name, transition, f"one of {', '.join(TRANSITIONS)} (None: the case's)")
+    try:
+        return replace(case, friction=replace(case.friction, transition=str(transition)))
+    except InputError as e:
+        raise InputError(name, transition, e.allowed) from None
+
+
 API_NAMES = {"thermal": "thermal", "oil_temp_C": "oil_temp_C", "sea_temp_C": "sea_temp_C",
              "balance": "thermal '{mode}'", "given": "thermal='none' or 'film'"}
 """How :func:`thermal_case` names the arguments in its messages (the command line passes
@@ -246,12 +269,12 @@ THERMAL = choice("none", "bulk", "film", "full")
 
 
 @checked(case=CASE, oil=NAME, oils=OILS, oil_temp_C=NUMBER, depth_m=NUMBER, thermal=THERMAL,
-         sea_temp_C=NUMBER, laminar_law=choice(*LAMINAR_LAWS))
+         sea_temp_C=NUMBER, laminar_law=choice(*LAMINAR_LAWS), transition=choice(*TRANSITIONS))
 def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             laminar_law: str | None = None) -> Evaluation:
+             **keywords: str | None) -> Evaluation:
     """Evaluate a joint region by region over its duty cycle (``oilgap evaluate``).
 
     Parameters
@@ -272,18 +295,28 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         the evidence supports, :func:`~oilgap.model.joint_loss.default_thermal_mode`).
     sea_temp_C : float, optional
         Sea temperature of the heat balance [degC] (``bulk``/``full`` only).
-    laminar_law : {"couette", "bilgen-boulos"}, optional
-        Law below the critical Taylor number (default: the case's).
+    **keywords
+        The friction's: ``laminar_law`` ({"couette", "bilgen-boulos"}: the law below the
+        critical Taylor number) and ``transition`` ({"reynolds", "taylor"}: where C_m leaves
+        the laminar law, :func:`with_transition`); default: the case's.
 
     Returns
     -------
     Evaluation
         ``.raw`` is the :class:`~oilgap.model.evaluation.CaseEvaluation`; powers [W].
     """
+    unknown = set(keywords) - {"laminar_law", "transition"}
+    if unknown:
+        raise ArgumentError(", ".join(sorted(unknown)), keywords[min(unknown)],
+                            "evaluate's keywords are case, "
+                            "oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C, laminar_law "
+                            "and transition")
+    laminar_law, transition = keywords.get("laminar_law"), keywords.get("transition")
     if laminar_law is not None and laminar_law not in LAMINAR_LAWS:
         raise InputError("laminar_law", laminar_law, f"one of {', '.join(LAMINAR_LAWS)} "
                          "(None: the case's)")
-    c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
+    c = with_transition(with_operating(as_case(case), oil, oils, oil_temp_C, depth_m),
+                        transition)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
     return evaluate_resolved(c, mode, thermal is None, laminar_law)
 
@@ -315,4 +348,5 @@ def evaluate_resolved(case: DesignCase, mode: ThermalMode, by_default: bool,
 
 
 __all__ = ["THERMAL", "OilTable", "as_case", "evaluate", "evaluate_resolved", "oil_catalogue",
-           "read_case", "read_oils", "seed_case", "thermal_case", "with_operating"]
+           "read_case", "read_oils", "seed_case", "thermal_case", "with_operating",
+           "with_transition"]

@@ -7,8 +7,8 @@ import warnings
 from pathlib import Path
 from typing import Any
 
-from oilgap._checks import CASE, NAME, NUMBER, OILS, checked
-from oilgap._evaluate import THERMAL, as_case, thermal_case, with_operating
+from oilgap._checks import CASE, NAME, NUMBER, OILS, checked, choice
+from oilgap._evaluate import THERMAL, as_case, thermal_case, with_operating, with_transition
 from oilgap._results_design import Optimization, thermal_line
 from oilgap._results_robust import RobustOptimization
 from oilgap.model.case import DesignCase
@@ -16,6 +16,7 @@ from oilgap.model.errors import ArgumentError, InputError, OilgapWarning
 from oilgap.model.joint_loss import film_band
 from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
+from oilgap.model.transition import TRANSITIONS
 from oilgap.optim.design import DesignProblem, compare_heating
 from oilgap.optim.design.robust import ROBUST_MODES, check_statistic
 from oilgap.studies.robust import RobustSettings, robust_design
@@ -23,7 +24,7 @@ from oilgap.studies.settings import DesignLimits
 
 
 @checked(case=CASE, oil=NAME, oils=OILS, oil_temp_C=NUMBER, depth_m=NUMBER, thermal=THERMAL,
-         sea_temp_C=NUMBER)
+         sea_temp_C=NUMBER, transition=choice(*TRANSITIONS))
 def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
@@ -44,6 +45,8 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         As :func:`oilgap._evaluate.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
     **keywords
+        ``transition``: ``"reynolds"`` or ``"taylor"``, where C_m leaves the laminar law
+        (default: the case's; :func:`oilgap._evaluate.with_transition`).
         ``robust``: ``"p95"``, ``"mean"`` or ``"mean+2sd"``: the robust design over
         scenarios of the case's uncertain inputs beside the nominal optimum (thermal modes
         ``none`` and ``bulk``; :func:`oilgap.studies.robust.robust_design`); then also
@@ -72,6 +75,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     """
     kw = dict(keywords)
     verbose = bool(kw.pop("verbose", False))
+    transition = kw.pop("transition", None)
     robust = kw.pop("robust", None)
     robust_kw = {k: kw.pop(k) for k in _ROBUST_KEYWORDS if k in kw}
     if robust is None and robust_kw:
@@ -82,11 +86,13 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     if unknown:
         raise ArgumentError(", ".join(sorted(unknown)), keywords[min(unknown)],
                             f"optimize's keywords are {', '.join(sorted(DesignLimits.names()))}"
-                            ", limits, verbose, robust, scenarios, seed, mc_samples and pareto")
+                            ", limits, verbose, robust, scenarios, seed, mc_samples, pareto "
+                            "and transition")
     if lim is not None and kw:
         raise ArgumentError("limits", lim, f"give limits or {', '.join(sorted(kw))}, not both")
     lim = lim if lim is not None else DesignLimits(**kw)
-    c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
+    c = with_transition(with_operating(as_case(case), oil, oils, oil_temp_C, depth_m),
+                        transition)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
     if robust is not None:
         return robust_resolved(c, mode, robust, robust_kw, lim, verbose)

@@ -26,6 +26,7 @@ from oilgap._checks import AX, FLAG, Arg, check_arg, checked
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import ArgumentError
 from oilgap.model.evaluation import CaseEvaluation
+from oilgap.model.groove_band import GrooveBand, groove_band
 from oilgap.model.io.defaults import case_defaults as model_case_defaults
 from oilgap.model.io.defaults import defaults_block, gamma_fields, gamma_line
 from oilgap.model.io.serialize import dumps
@@ -279,11 +280,18 @@ def _film_notes(ev: CaseEvaluation) -> list[str]:
 
 
 def format_evaluation(ev: CaseEvaluation, gamma: str | None = None,
-                      defaults: bool = True) -> str:
+                      defaults: bool = True, groove: GrooveBand | None = None,
+                      transition: str = "reynolds") -> str:
     """Human-readable text of an evaluation: the total first, the table, the notes, then
     the case, thermal mode, oil and friction (``gamma``: the line naming the groove
     exponent and its source, :func:`~oilgap.model.io.defaults.gamma_line`; ``defaults``
-    False leaves these last lines out, ``-q``)."""
+    False leaves these last lines out, ``-q``; ``groove``: the groove band,
+    :func:`~oilgap.model.groove_band.groove_band`; ``transition`` named when not the
+    default)."""
+    head = _header(ev)
+    if transition != "reynolds":
+        head = [h + f"; transition {transition} (exact Couette below Ta_c)"
+                if h.startswith("friction ") else h for h in head]
     lines = [
         f"{'region':<14}{'R mm':>7}{'gap mm':>8}{'L mm':>7}{'T':>6}{'Re_peak':>10}"
         f"{'Ta_peak':>10}{'Cm_peak':>11}{'mean W':>9}{'Na_peak':>9}{'Na_eff':>8}"
@@ -300,13 +308,14 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None,
             f"  {', '.join(r.regimes)}")
     lines += _bearing_rows(ev)
     notes = wrapped(_film_notes(ev) + _bearing_notes(ev))
-    return layout(_total_lines(ev), lines + [""] + notes,
-                  _header(ev) + ([gamma] if gamma else []), defaults=defaults)
+    return layout(_total_lines(ev, groove), lines + [""] + notes,
+                  head + ([gamma] if gamma else []), defaults=defaults)
 
 
-def _total_lines(ev: CaseEvaluation) -> list[str]:
-    """The answer: the total mean power and its shares, the film band, the loss without
-    the heat balance, the torque at the peak and the energy per cycle."""
+def _total_lines(ev: CaseEvaluation, groove: GrooveBand | None = None) -> list[str]:
+    """The answer: the total mean power and its shares, the film band, the groove band
+    (``groove``, where region 1 is laminar), the loss without the heat balance, the torque
+    at the peak and the energy per cycle."""
     parts = [(r.name, r.mean_power_W) for r in ev.regions]
     parts += [(f"rolling bearing {b.name}", b.mean_power_W) for b in ev.bearings]
     share = ", ".join(f"{n} {100 * p / ev.total_mean_power_W:.0f} %"
@@ -315,6 +324,8 @@ def _total_lines(ev: CaseEvaluation) -> list[str]:
     lines = [f"{label} {ev.total_mean_power_W:.3f} W   ({share})"]
     if ev.film_band is not None:
         lines.append(f"film band                  {ev.film_band.line('.4g')}")
+    if groove is not None:
+        lines.append(f"groove band                {groove.line('.4g')}")
     if uses_balance(ev.thermal_mode):
         iso = ev.isothermal_total_mean_power_W
         change = (f"; the heating changes the loss by "
@@ -362,6 +373,15 @@ class Evaluation(ResultView):
     def __init__(self, raw: CaseEvaluation, case: DesignCase):
         self.raw = raw
         self.case = case
+        self._groove: tuple[GrooveBand | None] | None = None
+
+    def groove_band(self) -> GrooveBand | None:
+        """The groove band beside the loss where region 1 is laminar (None elsewhere;
+        :func:`~oilgap.model.groove_band.groove_band`)."""
+        if self._groove is None:
+            self._groove = (groove_band(self.case, self.raw.thermal_mode, self.raw.depth_m,
+                                        self.raw.total_mean_power_W),)
+        return self._groove[0]
 
     @property
     def total_mean_power_W(self) -> float:
@@ -395,8 +415,12 @@ class Evaluation(ResultView):
 
     def to_dict(self) -> dict:
         """The ``oilgap evaluate --json`` document: the evaluation, gamma and its source,
-        the defaults filled in."""
-        return {**self.raw.to_dict(), **gamma_fields(self.case), "defaults": self.defaults}
+        the defaults filled in, the groove band (``groove_band``, None where region 1 is not
+        laminar) and ``transition`` when it is not the default ``"reynolds"``."""
+        g, t = self.groove_band(), self.case.friction.transition
+        return {**self.raw.to_dict(), **gamma_fields(self.case), "defaults": self.defaults,
+                **({} if t == "reynolds" else {"transition": t}),  # default: as before
+                "groove_band": None if g is None else g.to_dict()}
 
     def to_frame(self) -> Any:
         """One row per region (and rolling bearing), indexed by its name."""
@@ -405,7 +429,8 @@ class Evaluation(ResultView):
     def summary(self, defaults: bool = True) -> str:
         """What ``oilgap evaluate`` prints: the total first (``defaults`` False: without
         the case, thermal-mode, oil and gamma lines, ``-q``)."""
-        return format_evaluation(self.raw, gamma_line(self.case), defaults)
+        return format_evaluation(self.raw, gamma_line(self.case), defaults,
+                                 self.groove_band(), self.case.friction.transition)
 
     def plot(self, ax: Any = None) -> Any:
         """Mean power of each region (and bearing) over the cycle, a bar each [W]."""

@@ -11,6 +11,7 @@ import pandas as pd
 from oilgap._results import ResultView, case_defaults, new_axes
 from oilgap.model.case import DesignCase
 from oilgap.model.evaluation import oil_state
+from oilgap.model.groove_band import GrooveBand, groove_band
 from oilgap.model.io.defaults import gamma_fields, gamma_line
 from oilgap.model.io.text import layout, wrapped
 from oilgap.model.joint_loss import FilmBand
@@ -76,12 +77,14 @@ def _costs(res: DesignResult) -> list[str]:
     return lines
 
 
-def band_lines(bands: tuple | None) -> list[str]:
-    """The film band of the initial and optimal designs, one line each (none without)."""
-    if not bands:
-        return []
-    return [f"film band, {k} design: {b.line('.4g')}"
-            for k, b in zip(("initial", "optimal"), bands, strict=True) if b is not None]
+def band_lines(bands: tuple | None, grooves: tuple = ()) -> list[str]:
+    """The film band of the initial and optimal designs, one line each (none without), and
+    their groove bands where region 1 is laminar (:mod:`oilgap.model.groove_band`)."""
+    films = [f"film band, {k} design: {b.line('.4g')}"
+             for k, b in zip(("initial", "optimal"), bands or (), strict=True) if b is not None]
+    return films + [f"groove band, {k} design: {g.line('.4g')}"
+                    for k, g in zip(("initial", "optimal"), grooves, strict=False)
+                    if g is not None]
 
 
 def _answer(res: DesignResult, exact_initial: float, exact_optimal: float,
@@ -99,11 +102,12 @@ def _answer(res: DesignResult, exact_initial: float, exact_optimal: float,
 
 def format_result(res: DesignResult, exact: tuple | None = None,
                   thermal: str | None = None, bands: tuple | None = None,
-                  gamma: str | None = None, defaults: bool = True) -> str:
+                  gamma: str | None = None, defaults: bool = True,
+                  grooves: tuple = ()) -> str:
     """The optimum first, then the side-by-side table of the initial and optimal designs
     with the multipliers, then the case, mode, oil, gamma and solver lines (``thermal``:
-    the line naming the mode; ``bands``: the designs' film bands; ``defaults`` False
-    leaves the last lines out, ``-q``)."""
+    the line naming the mode; ``bands``: the designs' film bands; ``grooves``: their
+    groove bands; ``defaults`` False leaves the last lines out, ``-q``)."""
     prm = res.parameters
     i, o = res.initial.to_dict(), res.optimal.to_dict()
     lines = [f"{'quantity':<24}{'initial':>13}{'optimal':>13}{'change':>11}  meaning"]
@@ -114,7 +118,7 @@ def format_result(res: DesignResult, exact: tuple | None = None,
         a, b = exact[0].total_mean_power_W, exact[1].total_mean_power_W
         lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>13}{_fmt(b):>13}"
                      f"{100 * (b - a) / a:>+9.1f} %  same, case's exact C_m (oilgap evaluate)")
-    lines += wrapped(band_lines(bands))
+    lines += wrapped(band_lines(bands, grooves))
     lines += ["", "active constraints and what they cost (d optimal power / d bound):"]
     head = [f"case        {res.case.name}"] + ([thermal] if thermal else []) + [
         f"oil         {prm.oil} at {prm.oil_temp_C:g} degC, {prm.depth_m:g} m: "
@@ -150,10 +154,10 @@ def _oil_lines(cmp: HeatingComparison) -> list[str]:
 
 def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
                       bands: tuple | None = None, gamma: str | None = None,
-                      defaults: bool = True) -> str:
+                      defaults: bool = True, grooves: tuple = ()) -> str:
     """The optimum with heating first, then beside the one without, what changed, and the
     costs, then the case, mode, oil, gamma and solver lines (``defaults`` False leaves
-    these out, ``-q``).
+    these out, ``-q``; ``grooves``: the designs' groove bands).
 
     ``exact``: (initial, optimal) OperatingTemperature of the heated designs with the
     case's exact C_m, and the isothermal optimum's CaseEvaluation; ``bands``: the
@@ -183,7 +187,7 @@ def format_comparison(cmp: HeatingComparison, exact: tuple, thermal: str,
     a, b, c = exact[0].mean_power_W, exact[1].mean_power_W, exact[2].total_mean_power_W
     lines.append(f"{'mean_power_exact_W':<24}{_fmt(a):>12}{_fmt(b):>12}{_change(a, b):>9}"
                  f"{_fmt(c):>12}{_change(c, b):>10}  same, case's exact C_m (oilgap evaluate)")
-    lines += wrapped(band_lines(bands))
+    lines += wrapped(band_lines(bands, grooves))
     lines += ["", f"active constraints with heating ({h.thermal_mode}) and what they cost "
               "(d optimal power / d bound):"] + wrapped(_costs(h))
     prose = []
@@ -249,6 +253,20 @@ class Optimization(ResultView):
         self.exact = exact
         self.thermal_header = thermal_header
         self.limits = dict(limits or {})
+        self._grooves: tuple | None = None
+
+    def groove_bands(self) -> tuple[GrooveBand | None, ...]:
+        """The groove bands of the initial and optimal designs (exact C_m; None where region
+        1 is not laminar or has no grooves; :func:`~oilgap.model.groove_band.groove_band`)."""
+        if self._grooves is None:
+            ex = self.exact
+            powers = ((ex[0].total_mean_power_W, ex[1].total_mean_power_W)
+                      if not isinstance(self.raw, HeatingComparison)
+                      else (ex[0].mean_power_W, ex[1].mean_power_W))
+            designs = (self.result.case, self.to_case())
+            self._grooves = tuple(groove_band(c, self.thermal_mode, mean_power_W=p)
+                                  for c, p in zip(designs, powers, strict=True))
+        return self._grooves
 
     @property
     def result(self) -> DesignResult:
@@ -339,6 +357,8 @@ class Optimization(ResultView):
                      **gamma_fields(res.case))
         for k, b in zip(("initial", "optimal"), self.bands, strict=False):
             d[k]["film_band"] = None if b is None else b.to_dict()
+        for k, g in zip(("initial", "optimal"), self.groove_bands(), strict=True):
+            d[k]["groove_band"] = None if g is None else g.to_dict()
         d["defaults"] = self.defaults
         return d
 
@@ -359,9 +379,10 @@ class Optimization(ResultView):
         lines, ``-q``)."""
         if isinstance(self.raw, HeatingComparison):
             return format_comparison(self.raw, self.exact, self.thermal_header, self.bands,
-                                     gamma_line(self.raw.heated.case), defaults)
+                                     gamma_line(self.raw.heated.case), defaults,
+                                     self.groove_bands())
         return format_result(self.raw, self.exact, self.thermal_header, self.bands,
-                             gamma_line(self.raw.case), defaults)
+                             gamma_line(self.raw.case), defaults, self.groove_bands())
 
     def plot(self, ax: Any = None) -> Any:
         """Change of each design quantity from the initial to the optimal design [%]."""

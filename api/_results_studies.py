@@ -19,15 +19,17 @@ import pandas as pd
 from oilgap._checks import checked, choice
 from oilgap._results import ResultView, new_axes, raw_field
 from oilgap.model.case import DesignCase
+from oilgap.model.groove_band import GrooveBand, groove_band
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import defaults_block, defaults_lines, gamma_fields, gamma_line
 from oilgap.model.io.text import layout, wrap, wrapped
 from oilgap.model.thermal_modes import DEFAULT_MODE_WHY, uses_balance
 from oilgap.studies.grid.evaluate import band_text, thermal_description
 from oilgap.studies.oil_grade.report import draw_heatmap, draw_vs_grade, result_json
-from oilgap.studies.pareto import draw_gap_front, draw_inertia_front
+from oilgap.studies.pareto import draw_gap_front, draw_inertia_front, marked_cases
 from oilgap.studies.smoothing.case import NO_TABLE4, draw_case, saving_lines
 from oilgap.studies.smoothing.evidence import evidence_dict, evidence_lines
+from oilgap.studies.smoothing.laminar import LaminarShare, laminar_share
 from oilgap.studies.smoothing.report import draw_loss_vs_T, thermal_line
 
 
@@ -109,7 +111,23 @@ class Pareto(StudyView):
                                     "mean_power_W": r.reference_point[1]},
                 "sweep_time_s": r.sweep_time_s, "designs": records(r.seeds),
                 "gap_front": records(r.gap_front), "inertia_front": records(r.inertia_front),
-                "files": file_names(r), "defaults": self.defaults}
+                "files": file_names(r), "defaults": self.defaults,
+                "groove_bands": {label: None if g is None else g.to_dict()
+                                 for label, g in self.groove_bands()}}
+
+    def groove_bands(self) -> list[tuple[str, GrooveBand | None]]:
+        """The marked designs' groove bands (label, band; None where region 1 is not
+        laminar or smooth; :func:`~oilgap.model.groove_band.groove_band`).
+
+        Returns
+        -------
+        list of tuple
+            (design label, GrooveBand or None), losses [W].
+        """
+        if not hasattr(self, "_grooves"):
+            self._grooves = [(label, groove_band(c, self.raw.thermal_mode))
+                             for label, c in marked_cases(self.case)]
+        return self._grooves
 
     def summary(self, defaults: bool = True) -> str:
         """What ``oilgap study pareto`` prints: the fronts first, the designs, then the
@@ -136,6 +154,8 @@ class Pareto(StudyView):
         lines += wrapped(f"  film band of {s['design']} (exact C_m "
                          f"{s['mean_power_exact_W']:.4g} W): {band_text(s)}"
                          for _, s in r.seeds.iterrows())
+        lines += wrapped(f"  groove band of {label}: {band.line()}"
+                         for label, band in self.groove_bands() if band is not None)
         bad = pd.concat([g[g["status"] != "ok"], i[i["status"] != "ok"]])
         if len(bad):
             lines += wrap(f"{len(bad)} points failed (rows kept with their error); first: "
@@ -188,8 +208,17 @@ class OilGrade(StudyView):
     def to_dict(self) -> dict:
         """The study's ``oil_grade.json`` document (thermal mode, recommendation, grades,
         mission, defaults) with gamma and the files written (``--json``)."""
+        g = self.groove_band()
         return {**result_json(self.raw, self.case), **gamma_fields(self.case),
+                "groove_band": None if g is None else g.to_dict(),
                 "files": file_names(self.raw)}
+
+    def groove_band(self) -> GrooveBand | None:
+        """The rated point's groove band where region 1 is laminar (None elsewhere;
+        :func:`~oilgap.model.groove_band.groove_band`)."""
+        if not hasattr(self, "_groove"):
+            self._groove = groove_band(self.case, self.raw.thermal_mode)
+        return self._groove
 
     def _table(self) -> list[str]:
         r = self.raw
@@ -217,6 +246,8 @@ class OilGrade(StudyView):
         if r.film_band is not None:
             answer.append(f"rated point {self.case.oil.name}: {r.film_band.mean_power_W:.4g} W; "
                           f"film band: {r.film_band.line()}")
+        if self.groove_band() is not None:
+            answer.append(f"groove band at the rated point: {self.groove_band().line()}")
         lines = self._table()
         lines += ["", *wrap(f"mission: {r.mission_source}; " + ", ".join(
             f"{m.depth_m:g} m/{'sea ' if axis == 'sea' else ''}{m.oil_temp_C:g} degC/"
@@ -272,6 +303,14 @@ class Smoothing(StudyView):
                  out: str | Path | None = None):
         super().__init__(raw, case, out)
         self.plateau_tol = plateau_tol
+        self._laminar: LaminarShare | None = None
+
+    def laminar_share(self) -> LaminarShare:
+        """How much of the modelled saving lies in laminar flow, where only the seed rig's
+        T^gamma supports it (:func:`oilgap.studies.smoothing.laminar.laminar_share`)."""
+        if self._laminar is None:
+            self._laminar = laminar_share(self.case, self.raw.table, self.raw.loss_vs_T)
+        return self._laminar
 
     def to_frame(self) -> pd.DataFrame:
         """Mean loss against roughness T, one row per (curve, T): ``T``,
@@ -292,7 +331,7 @@ class Smoothing(StudyView):
                 "seed_rig": r.seed_rig, "plateau_tol": self.plateau_tol, "fit": fit,
                 "plateau": records(r.plateau), "table4": records(r.table),
                 "fits_compared": records(r.checks), "files": file_names(r),
-                "defaults": self.defaults,
+                "defaults": self.defaults, "laminar_share": self.laminar_share().to_dict(),
                 **({} if r.film_evidence is None
                    else {"film_evidence": evidence_dict(r.film_evidence)})}
 
@@ -343,7 +382,7 @@ class Smoothing(StudyView):
             f"loss vs T: within {100 * self.plateau_tol:g} % of P(T=1) only for T <= "
             f"{pl['T_stop'].min():.2f}..{pl['T_stop'].max():.2f}; 4 -> 2 takes "
             f"{100 * pl['share_of_possible_saving_4_to_2'].mean():.0f} % of the possible "
-            "saving")]
+            "saving"), *wrap(self.laminar_share().line())]
         head = [f"thermal     {thermal_line(f, r.thermal_default)}",
                 f"{gamma_line(seed_case())}; this study fits its own above",
                 *defaults_lines(r.defaults)]
@@ -355,7 +394,8 @@ class Smoothing(StudyView):
         head = [f"thermal     {r.thermal_mode}" + (f" (default: {DEFAULT_MODE_WHY})"
                                                    if r.thermal_default else ""),
                 gamma_line(self.case), *defaults_lines(r.defaults)]
-        return layout(saving_lines(self.case, r.plateau, r.thermal_mode), wrap(NO_TABLE4),
+        return layout(saving_lines(self.case, r.plateau, r.thermal_mode)
+                      + wrap(self.laminar_share().line()), wrap(NO_TABLE4),
                       head, self.wrote(), defaults)
 
     def summary(self, defaults: bool = True) -> str:

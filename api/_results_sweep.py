@@ -18,6 +18,7 @@ import pandas as pd
 from oilgap._results import ResultView, new_axes
 from oilgap._results_studies import records, wrote_lines
 from oilgap.model.case import DesignCase
+from oilgap.model.groove_band import GrooveBand, groove_band
 from oilgap.model.io.defaults import gamma_fields, gamma_line
 from oilgap.model.joint_loss import FilmBand, film_band, operating_temperature, uses_balance
 from oilgap.studies.grid.evaluate import thermal_description
@@ -97,6 +98,20 @@ class Sweep(ResultView):
             self._band = film_band(self.case, self.thermal_mode, mean_power_W=self.base()[0])
         return self._band
 
+    def groove_band(self) -> GrooveBand | None:
+        """The base case's groove band where its region 1 is laminar (None elsewhere;
+        :func:`~oilgap.model.groove_band.groove_band`).
+
+        Returns
+        -------
+        GrooveBand or None
+            The loss at groove factor 1 beside T^gamma [W].
+        """
+        if not hasattr(self, "_groove"):
+            self._groove = groove_band(self.case, self.thermal_mode,
+                                       mean_power_W=self.base()[0])
+        return self._groove
+
     def _counts(self) -> tuple[pd.DataFrame, pd.DataFrame, int, int]:
         r, a = self.raw, self.raw.attrs
         return (r[r["status"] == "ok"], r[r["status"] != "ok"], a.get("computed", len(r)),
@@ -119,7 +134,9 @@ class Sweep(ResultView):
                 "ok": len(ok), "failed": len(bad), "computed": computed, "reused": reused,
                 "elapsed_s": self.elapsed_s, "backend": a.get("backend"),
                 "base_mean_power_W": self.base()[0],
-                "base_film_band": self.band().to_dict(), "results": records(self.raw),
+                "base_film_band": self.band().to_dict(),
+                "base_groove_band": None if self.groove_band() is None
+                else self.groove_band().to_dict(), "results": records(self.raw),
                 "files": [str(f) for f in self.files], "defaults": self.defaults}
 
     def summary(self, defaults: bool = True) -> str:
@@ -140,6 +157,8 @@ class Sweep(ResultView):
             lines.append(f"mean power {ok['mean_power_W'].min():.3f} .. "
                          f"{ok['mean_power_W'].max():.3f} W (base case {self.base()[0]:.3f} W)")
         lines.append(f"film band of the base case: {self.band().line()}")
+        if self.groove_band() is not None:
+            lines.append(f"groove band of the base case: {self.groove_band().line()}")
         return "\n".join(lines + wrote_lines(self.out, self.files))
 
     def summary_markdown(self) -> str:
@@ -159,6 +178,8 @@ class Sweep(ResultView):
                  f"{computed} computed this run, {reused} taken from "
                  f"{self.out}/points_{self.mode}.csv; {self.elapsed_s:.2f} s.", "",
                  f"Film band of the base case: {self.band().line()}."]
+        if self.groove_band() is not None:
+            lines += ["", f"Groove band of the base case: {self.groove_band().line()}."]
         if len(ok):
             best = ok.loc[ok["mean_power_W"].idxmin()]
             worst = ok.loc[ok["mean_power_W"].idxmax()]

@@ -55,8 +55,9 @@ from .joint_loss import (
 from .oil_properties import seawater_gauge_pressure
 from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
-from .taylor_couette import couette_reynolds, flow_regime, taylor_number
+from .taylor_couette import couette_reynolds, taylor_number
 from .thermal_modes import ThermalMode
+from .transition import transition_regime
 from .units import celsius_to_kelvin, m2_s_to_cst, m_to_mm, rad_s_to_rpm
 from .viscous_loss import viscous_torque, weighted_mean
 
@@ -386,7 +387,7 @@ def _region_result(case: DesignCase, region, p_mean: float, nu, rho, b, film,
     tq = float(viscous_torque(float(region_power(region, w_peak, nu, rho, case.friction)),
                               w_peak)) * peak.applied(apply_film)
     re_nodes = couette_reynolds(nodes, R, gap, nu)
-    visited = set(flow_regime(re_nodes[weights > 0]))
+    visited = set(transition_regime(re_nodes[weights > 0], gap / R, case.friction.transition))
     regimes = tuple(r for r in ("laminar", "laminar with vortices",
                                 "turbulent with vortices", "turbulent") if r in visited)
     return RegionResult(

@@ -23,11 +23,8 @@ law (Eq. 7) and the groove-roughness law (Eq. 8):
   between the cylinders dissipates less than laminar Couette flow (Helmholtz's
   minimum-dissipation theorem: the circular Couette field is also the Stokes
   flow for these boundary values), so Eq. 6 values below it are unphysical.
-  Below the critical Taylor number at narrow gaps (x < ~0.05) this is the
-  exact Couette torque throughout the Eq. 6 laminar range. Unlike a hard
-  switch at Ta = 41.3 (where Eq. 6 jumps up to 50 % above Couette), the max
-  is continuous wherever Eq. 6 is and keeps the loss rising with viscosity.
-  Laminar law ``"bilgen-boulos"`` uses Eq. 6 as it stands.
+  Laminar law ``"bilgen-boulos"`` uses Eq. 6 as it stands. ``transition = "taylor"``
+  keeps exact Couette up to Ta_c(eta) instead (:mod:`oilgap.model.transition`).
 
 All functions accept floats, numpy arrays and CasADi symbols.
 
@@ -55,6 +52,7 @@ from . import _math as m
 from .errors import InputError, check_finite, check_positive
 from .io.inputs import check_physical
 from .taylor_couette import REGIME_BOUNDARIES_RE, couette_moment_coefficient
+from .transition import Transition, check_transition, taylor_cm, taylor_cm_smooth
 
 BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))
 """(C, beta) of the four branches of seed Eq. 6; each is multiplied by (delta/R)^0.3 [1]."""
@@ -162,8 +160,7 @@ def power_law_cm(reynolds, gap_ratio, C, alpha, beta):
 
     References
     ----------
-    Seed paper (Eq. 7) [3]; each branch of Bilgen & Boulos [1]
-    is one instance.
+    Seed paper (Eq. 7) [3]; each branch of Bilgen & Boulos [1] is one instance.
     """
     return C * gap_ratio**alpha * reynolds**beta
 
@@ -241,8 +238,7 @@ def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
 
     References
     ----------
-    Bilgen & Boulos [1]; Pyrhönen et al. [2];
-    seed paper (Eq. 6) [3].
+    Bilgen & Boulos [1]; Pyrhönen et al. [2]; seed paper (Eq. 6) [3].
     """
     if np.ndim(reynolds) and not m.is_symbolic(reynolds, gap_ratio, alpha):
         k = np.zeros(np.shape(reynolds), np.intp)  # numpy: each point's own branch only,
@@ -284,8 +280,7 @@ def bilgen_boulos_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH, alpha=BILGE
 
     References
     ----------
-    Bilgen & Boulos [1];
-    seed paper (Eqs. 6-7) [3].
+    Bilgen & Boulos [1]; seed paper (Eqs. 6-7) [3].
     """
     ln_re = m.log(reynolds)
     ln_x = m.log(gap_ratio)
@@ -428,8 +423,7 @@ def branches_cm(reynolds, gap_ratio, C=BRANCH_C, alpha=BRANCH_ALPHA, beta=BRANCH
 
     References
     ----------
-    Bilgen & Boulos [1] (the default branches);
-    seed paper (Eqs. 6-7) [3].
+    Bilgen & Boulos [1] (the default branches); seed paper (Eqs. 6-7) [3].
     """
     ln_re = m.log(reynolds)
     ln_x = m.log(gap_ratio)
@@ -464,6 +458,9 @@ class FrictionLaw:
         C_k [-], alpha_k [-] and beta_k [-] of the ``"branches"`` form, one per branch,
         of equal length (default: the four branches of Eq. 6, alpha_k = 0.3); the
         scale and T^gamma apply to it as to Eq. 6.
+    transition : {"reynolds", "taylor"}
+        Where C_m leaves the laminar law: Eq. 6's switch by Re (default) or exact Couette
+        up to Ta_c (:func:`~oilgap.model.transition.taylor_cm`; Eq. 6 forms only).
 
     Raises
     ------
@@ -482,9 +479,11 @@ class FrictionLaw:
     branch_C: tuple[float, ...] = BRANCH_C
     branch_alpha: tuple[float, ...] = BRANCH_ALPHA
     branch_beta: tuple[float, ...] = BRANCH_BETA
+    transition: Literal["reynolds", "taylor"] = "reynolds"
 
     def __post_init__(self):
         where = "friction"
+        check_transition(self.transition, self.form, self.laminar_law, where)
         if self.form not in FORMS:
             raise InputError("form", self.form, f"allowed: {', '.join(FORMS)}", where)
         if self.laminar_law not in LAMINAR_LAWS:
@@ -593,6 +592,8 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
         couette, smooth = law.laminar_law == LaminarLaw.COUETTE, law.form == FrictionForm.SMOOTH
         cm = ((couette_law_cm_smooth if smooth else couette_law_cm) if couette
               else (bilgen_boulos_cm_smooth if smooth else bilgen_boulos_cm))
+        if law.transition == Transition.TAYLOR:
+            cm = taylor_cm_smooth if smooth else taylor_cm
         base = law.scale * cm(re, gap_ratio, alpha=law.alpha)
     if isinstance(law.gamma, (int, float)) and law.gamma == 0.0:
         return base

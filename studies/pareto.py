@@ -114,6 +114,19 @@ def _problem(case: DesignCase, thermal: str) -> DesignProblem:
     return DesignProblem(case) if thermal == "none" else DesignProblem(case, thermal=thermal)
 
 
+def marked_cases(case: DesignCase | None = None) -> list[tuple[str, DesignCase]]:
+    """The designs marked on the fronts as (label, case): the seed joint (T = 4) and the
+    smoothed seed (T = 2) under the case's friction transition on the seed case, else the
+    case's own design."""
+    if not is_seed_case(case):
+        return [(design_label(case), case)]
+    pair = [seed_case(False), seed_case(True)]
+    if case is not None:  # the seed under the case's transition
+        pair = [replace(c, friction=replace(c.friction, transition=case.friction.transition))
+                for c in pair]
+    return list(zip(SEED_LABELS, pair, strict=True))
+
+
 def seed_points(case: DesignCase | None = None, thermal: str = "none") -> pd.DataFrame:
     """The designs marked on the fronts, in the fronts' objective space.
 
@@ -128,10 +141,10 @@ def seed_points(case: DesignCase | None = None, thermal: str = "none") -> pd.Dat
     if not is_seed_case(case):
         p = _problem(case, thermal)
         return pd.DataFrame([_marked(p, case, p.x_case_m, design_label(case), thermal)])
-    grooved, smoothed = seed_case(False), seed_case(True)
-    prob = _problem(grooved, thermal)
+    marked = marked_cases(case)
+    prob = _problem(marked[0][1], thermal)
     rows = []
-    for label, c in (("seed (T = 4)", grooved), ("smoothed seed (T = 2)", smoothed)):
+    for label, c in marked:
         r1 = c.region1
         x = np.array([r1.T2, r1.gap, r1.T2 - r1.T1, r1.T4 - r1.T3, r1.length])
         rows.append(_marked(prob, c, x, label, thermal))

@@ -25,12 +25,14 @@ def seed_fingerprints() -> tuple[str, str]:
 
 def is_seed_case(case: DesignCase | None) -> bool:
     """True for None (the seed by default) and for the seed joint, grooved or smoothed
-    (its document but for the name and a ``[thermal]`` table: geometry, oil, operating
-    point, cycle, motor, bounds)."""
+    (its document but for the name, a ``[thermal]`` table and ``[friction] transition``:
+    geometry, oil, operating point, cycle, motor, bounds)."""
     if case is None:
         return True
     if case.thermal is not None:
         case = replace(case, thermal=None)
+    if case.friction.transition != "reynolds":  # the seed rig under either transition
+        case = replace(case, friction=replace(case.friction, transition="reynolds"))
     return case_fingerprint(case) in seed_fingerprints()
 
 

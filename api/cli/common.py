@@ -6,8 +6,8 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from oilgap._evaluate import as_case, with_operating, with_transition
 from oilgap._evaluate import thermal_case as api_thermal_case
-from oilgap._evaluate import with_operating
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError
 from oilgap.model.io.case_io import read_case_toml, seed_case
@@ -16,7 +16,7 @@ from oilgap.model.thermal_modes import ThermalMode
 
 def load_case(args: argparse.Namespace) -> DesignCase:
     """The case named on the command line (or the seed), with --oil/--oils, --temp-c and
-    --depth-m applied (:func:`oilgap._evaluate.with_operating`). Shared by the
+    --depth-m (:func:`oilgap._evaluate.with_operating`) and --transition applied. Shared by the
     subcommands that take a CASE."""
     if args.case and getattr(args, "smoothed", False):
         raise InputError("--smoothed", True, f"not with CASE {args.case!r}: --smoothed picks "
@@ -24,8 +24,15 @@ def load_case(args: argparse.Namespace) -> DesignCase:
                          "drop one (a case's roughness is its [region1] T1_mm..T4_mm)")
     case = read_case_toml(args.case) if args.case else seed_case(getattr(args, "smoothed",
                                                                          False))
-    return with_operating(case, getattr(args, "oil", None), getattr(args, "oils", None),
+    case = with_operating(case, getattr(args, "oil", None), getattr(args, "oils", None),
                           getattr(args, "temp_c", None), getattr(args, "depth_m", None))
+    return with_transition(case, getattr(args, "transition", None), "--transition")
+
+
+def study_case(args: argparse.Namespace) -> DesignCase:
+    """The case of a study command (CASE or the seed) with ``--transition`` applied."""
+    return with_transition(as_case(getattr(args, "case", None)),
+                           getattr(args, "transition", None), "--transition")
 
 
 def study_out(args: argparse.Namespace, study: str) -> Path:

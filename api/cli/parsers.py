@@ -95,6 +95,15 @@ def add_thermal_argument(p) -> None:
                    "docs/thermal.md#evidence)")
 
 
+def add_transition_argument(p) -> None:
+    """``--transition``: where C_m leaves the laminar law (every command that takes a case)."""
+    p.add_argument("--transition", choices=("reynolds", "taylor"),
+                   help="where the vortex branch starts: Eq. 6's switch by Reynolds number "
+                   "or exact Couette up to the critical Taylor number of the gap's radius "
+                   "ratio (default: the case's [friction] transition, else reynolds; "
+                   "docs/model.md#transition)")
+
+
 def add_verbosity(p, top: bool = False) -> None:
     """The global ``-v``/``-q`` (on the main parser and every subparser, so that they go
     before or after the command; a subparser's copy sets nothing unless given)."""
@@ -155,6 +164,7 @@ def add_evaluate(sub) -> None:
     p.add_argument("--smoothed", action="store_true",
                    help="without CASE: the seed joint smoothed with epoxy (T = 2)")
     add_thermal_argument(p)
+    add_transition_argument(p)
     p.add_argument("--sea-temp-c", type=finite_float, help="sea temperature [degC] of the "
                    "heat balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
@@ -195,6 +205,7 @@ def add_optimize(sub) -> None:
     p.add_argument("--smoothed", action="store_true",
                    help="without CASE: start from the seed joint smoothed with epoxy (T = 2)")
     add_thermal_argument(p)
+    add_transition_argument(p)
     p.add_argument("--sea-temp-c", metavar="X", help="sea temperature [degC] of the heat "
                    "balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--robust", metavar="STAT", help="robust design: minimise p95 (its CVaR "
@@ -252,6 +263,7 @@ def _add_smoothing(ss) -> None:
                       "gamma and the runs' effective oil temperatures; then loss against T.")
     s.add_argument("case", nargs="?", metavar="CASE.toml", help="design case (default: the "
                    "seed rig and Table 4; a case: what smoothing its grooves would save)")
+    add_transition_argument(s)
     s.add_argument("--out", metavar="DIR", help="output folder (default out/smoothing/)")
     add_force(s)
     s.add_argument("--method", choices=("per-oil", "shared", "heat-balance"), default=None,
@@ -294,6 +306,7 @@ def _add_pareto(ss) -> None:
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
     _scheduler(s)
     add_thermal_argument(s)
+    add_transition_argument(s)
     _progress(s)
     s.set_defaults(command="study pareto")
 
@@ -331,6 +344,7 @@ def _add_oil_grade(ss) -> None:
     s.add_argument("--workers", type=positive_int, help="processes (default: all cores)")
     _scheduler(s)
     add_thermal_argument(s)
+    add_transition_argument(s)
     _progress(s)
     s.set_defaults(command="study oil-grade")
 
@@ -368,6 +382,7 @@ def _add_sweep(ss) -> None:
                    help="recompute points stored as failed (implies --resume; not with "
                    "--force)")
     add_thermal_argument(s)
+    add_transition_argument(s)
     _progress(s)
     s.set_defaults(command="study sweep")
 
@@ -399,6 +414,7 @@ def _add_uncertainty(ss) -> None:
     add_force(s)
     add_thermal_argument(s)
     _progress(s)
+    add_transition_argument(s)
     s.set_defaults(command="study uncertainty")
 
 

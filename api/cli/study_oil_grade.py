@@ -7,9 +7,8 @@ from __future__ import annotations
 
 import argparse
 
-from oilgap._evaluate import as_case
 from oilgap._studies import oil_grade
-from oilgap.cli.common import show, study_out
+from oilgap.cli.common import show, study_case, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InfeasibleError
 from oilgap.studies.oil_grade.study import read_mission_csv
@@ -27,7 +26,7 @@ def _temp_range(args: argparse.Namespace) -> tuple[float, float] | None:
 
 def run(args: argparse.Namespace) -> int:
     """``oilgap study oil-grade``: grade table and recommendation; exit 3 if none passes."""
-    case = as_case(args.case)
+    case = study_case(args)
     mission = read_mission_csv(args.mission) if args.mission else None
     settings = OilGradeSettings(thermal=args.thermal, nu_min_cSt=args.nu_min_cst,
                                 nu_max_cSt=args.nu_max_cst, iso_tolerance=args.iso_tolerance,

@@ -7,16 +7,15 @@ from __future__ import annotations
 
 import argparse
 
-from oilgap._evaluate import as_case
 from oilgap._studies import pareto
-from oilgap.cli.common import show, study_out
+from oilgap.cli.common import show, study_case, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.studies.settings import ParetoSettings, RunOptions
 
 
 def run(args: argparse.Namespace) -> int:
     """``oilgap study pareto``: the two fronts; returns the exit code."""
-    case = as_case(args.case)
+    case = study_case(args)
     out = study_out(args, "pareto")
     settings = ParetoSettings(points=args.points, torque_min_Nm=args.torque_min_nm,
                               thermal=args.thermal)  # refused before the folder is locked

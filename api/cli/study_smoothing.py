@@ -10,9 +10,8 @@ import argparse
 
 import numpy as np
 
-from oilgap._evaluate import as_case
 from oilgap._studies import smoothing
-from oilgap.cli.common import show, study_out
+from oilgap.cli.common import show, study_case, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InputError
 from oilgap.studies.settings import SmoothingSettings
@@ -45,7 +44,7 @@ def _t_values(args: argparse.Namespace, t_max_default: float = 5.0) -> np.ndarra
 def run(args: argparse.Namespace) -> int:
     """``oilgap study smoothing [CASE]``: fit, Table 4, loss vs T on the seed rig; on a
     case, what smoothing its grooves would save. Returns the exit code."""
-    case = as_case(getattr(args, "case", None))
+    case = study_case(args)
     seed = is_seed_case(case)
     T = (_t_values(args) if seed else None if args.t_max is None and args.t_min == 1.0
          and args.t_step == 0.05 else _t_values(args, float(case.region1.roughness)))

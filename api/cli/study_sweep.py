@@ -10,7 +10,7 @@ import logging
 import sys
 
 from oilgap._studies import resume_conflict, sweep
-from oilgap.cli.common import show, study_out
+from oilgap.cli.common import show, study_case, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InputError
 from oilgap.studies.grid.runner import SweepInterrupted
@@ -54,7 +54,8 @@ def interrupted_line(e: SweepInterrupted) -> str:
 def _sweep(args: argparse.Namespace, out, folder: ResultFolder) -> int:
     """The sweep inside its locked result folder."""
     with json_quiet(args):
-        r = sweep(args.grid, args.case, out=out, oils=args.oils, folder=folder,
+        case = study_case(args) if getattr(args, "transition", None) else args.case
+        r = sweep(args.grid, case, out=out, oils=args.oils, folder=folder,
                   settings=SweepSettings(mode=args.mode, thermal=args.thermal,
                                          retry_failed=args.retry_failed),
                   options=RunOptions(workers=args.workers, scheduler=args.scheduler,

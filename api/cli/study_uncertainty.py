@@ -7,9 +7,8 @@ from __future__ import annotations
 
 import argparse
 
-from oilgap._evaluate import as_case
 from oilgap._uncertainty import uncertainty
-from oilgap.cli.common import show, study_out
+from oilgap.cli.common import show, study_case, study_out
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.studies.settings import UncertaintySettings
 
@@ -17,7 +16,7 @@ from oilgap.studies.settings import UncertaintySettings
 def run(args: argparse.Namespace) -> int:
     """``oilgap study uncertainty``: percentiles, tornado, Sobol' indices; returns the exit
     code."""
-    case = as_case(args.case)
+    case = study_case(args)
     settings = UncertaintySettings(samples=args.samples, sobol_samples=args.sobol_samples,
                                    seed=args.seed, thermal=args.thermal,
                                    confidence=args.confidence, sobol=not args.no_sobol)

@@ -63,7 +63,8 @@ _TABLES = {
     "operating": {"depth_m", "oil_temp_C"},
     "duty_cycle": {"kind", "peak_speed_rpm", "frequency_hz", "duration_s", "sample_interval_s",
                    "csv"},
-    "friction": {"form", "laminar_law", "gamma", "scale", "C", "alpha", "beta", *BRANCH_KEYS},
+    "friction": {"form", "laminar_law", "transition", "gamma", "scale", "C", "alpha", "beta",
+                 *BRANCH_KEYS},
     "motor": {"remanence_T", "magnet_thickness_mm", "recoil_permeability", "slot_count",
               "slot_opening_mm", "saturation_factor", "electric_loading_A_per_m",
               "winding_factor", "shaft_bore_radius_mm", "rotor_density_kg_m3",
@@ -178,7 +179,7 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
 def _friction_value(key: str, value, fd: dict):
     """One ``[friction]`` value checked: the branch arrays element by element (form
     ``"branches"`` only), the others as text or a finite number."""
-    if key in ("form", "laminar_law"):
+    if key in ("form", "laminar_law", "transition"):
         return str(value)
     if key not in BRANCH_KEYS:
         return check_finite(key, value, "friction")

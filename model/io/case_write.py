@@ -62,6 +62,8 @@ def case_to_dict(case: DesignCase) -> dict:
                        "scale": f.scale, "C": f.C, "alpha": f.alpha, "beta": f.beta}
     if f.form == "branches":
         doc["friction"].update({k: list(getattr(f, k)) for k in BRANCH_KEYS})
+    if f.transition != "reynolds":  # the default is left out: written cases stay as they were
+        doc["friction"]["transition"] = f.transition
     md = {}
     for fl in fields(case.motor):
         key = MOTOR_FIELD_TO_KEY.get(fl.name, fl.name)

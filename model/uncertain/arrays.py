@@ -321,6 +321,9 @@ def joint_loss_arrays(case: DesignCase, inputs: Mapping[str, Any], mode=None,
     flat = {k: np.ascontiguousarray(a).reshape(-1) for k, a in arrs.items()}
     if not flat:
         flat = {"nu40_factor": np.ones(n)}
+    if "groove_exponent_scale" in flat:  # gamma x scale: the rows' gamma (apply_inputs')
+        g0 = flat.get("gamma", np.full(n, float(case.friction.gamma)))
+        flat["gamma"] = g0 * flat.pop("groove_exponent_scale")
     model = row_model(case, mode, "gamma" in flat, "film_strength" in flat)
     out = _run_blocks(case, mode, model, flat, n, max(1, int(block_rows)), threads, strict)
     out[~np.isfinite(out)] = np.nan

@@ -73,6 +73,7 @@ RANGES: dict[str, tuple[float, float]] = {
     "depth_m": (0.0, 11000.0),
     "gamma": (0.0, 3.0), "friction_scale": (0.0, math.inf), "film_strength": (0.0, math.inf),
     "bearing_drag_scale": (0.0, math.inf), "peak_speed_rpm": (0.0, math.inf),
+    "groove_exponent_scale": (0.0, 1.0),
 }
 """Where each input may lie [its unit]: a distribution reaching outside is refused
 (:meth:`Distribution.reach`)."""

@@ -9,8 +9,8 @@ input                           unit   acts on
 ``nu40_factor``                 [-]    factor on the oil's nu at 40 degC alone (ISO 3448's grade
                                        tolerance): its Walther line rebuilt through (f nu40, nu100)
                                        (:mod:`oilgap.model.uncertain.grade`); nominal 1
-``nu100_factor``                [-]    factor on the oil's nu at 100 degC (its viscosity index), the
-                                       Walther line rebuilt the same way; nominal 1
+``nu100_factor``                [-]    factor on the oil's nu at 100 degC (its viscosity index),
+                                       the Walther line rebuilt the same way; nominal 1
 ``nu_factor_all_temperatures``  [-]    one factor on the viscosity at every state (the Walther
                                        line shifted, :class:`~oilgap.model.fluids.ScaledFluid`);
                                        nominal 1
@@ -24,6 +24,9 @@ input                           unit   acts on
                                        under the ``film``/``full`` thermal modes only)
 ``bearing_drag_scale``          [-]    factor on the bearing's SKF drag terms; nominal 1
 ``peak_speed_rpm``              [rpm]  the duty cycle's peak speed (every speed scaled alike)
+``groove_exponent_scale``       [-]    factor 0..1 on gamma: 0 is creeping-flow theory's groove
+                                       factor 1 (Helmholtz-Korteweg), 1 the seed rig's T^gamma (the
+                                       groove band, :mod:`oilgap.model.groove_band`); nominal 1
 =============================== ====== ============================================================
 
 :func:`apply_inputs` is the scalar reference path: a copy of the case with the given
@@ -89,6 +92,9 @@ INPUTS: dict[str, InputInfo] = {i.name: i for i in (
     InputInfo(name="film_strength", unit="-", title="film heating strength s"),
     InputInfo(name="bearing_drag_scale", unit="-", title="bearing drag factor", factor=True),
     InputInfo(name="peak_speed_rpm", unit="rpm", title="duty cycle's peak speed"),
+    InputInfo(name="groove_exponent_scale", unit="-",
+              title="groove exponent scale (0 creeping-flow theory, 1 the rig's T^gamma)",
+              factor=True),
 )}
 """The uncertain inputs, in their order of tables [-]."""
 
@@ -118,6 +124,7 @@ def nominal_inputs(case: DesignCase) -> dict[str, float]:
         "film_strength": 1.0 if th is None or th.film_strength is None else th.film_strength,
         "bearing_drag_scale": 1.0,
         "peak_speed_rpm": float(rad_s_to_rpm(case.duty_cycle.peak_omega_rad_s)),
+        "groove_exponent_scale": 1.0,
     }
 
 
@@ -186,6 +193,12 @@ def apply_inputs(case: DesignCase, values: Mapping[str, float]) -> DesignCase:
     law = case.friction
     if "gamma" in v:
         law = replace(law, gamma=v["gamma"])
+    if "groove_exponent_scale" in v:  # over the groove band: gamma x 0..1
+        g = v["groove_exponent_scale"]
+        if not 0.0 <= g <= 1.0:
+            raise InputError("groove_exponent_scale", g, "0..1 (0: groove factor 1 of "
+                             "creeping-flow theory, 1: the seed rig's T^gamma)", "scenario")
+        law = replace(law, gamma=law.gamma * g)
     if "friction_scale" in v:
         law = (replace(law, C=law.C * v["friction_scale"]) if law.form == "power-law"
                else replace(law, scale=law.scale * v["friction_scale"]))

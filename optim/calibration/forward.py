@@ -365,11 +365,11 @@ class ForwardModel:
     def _law_powers(self, law: FrictionLaw, state=None) -> list[np.ndarray]:
         """Region powers at the samples' speed and a kept oil state [W]. The law's scale
         (C of the power law) and T^gamma multiply the power (Eq. 8 [1]), so the rest of
-        it, its shape, is evaluated once per (form, laminar law, alpha, beta, oil state)
-        and kept (the last few)."""
+        it, its shape, is evaluated once per (form, laminar law, transition, alpha, beta,
+        oil state) and kept (the last few)."""
         unit = replace(law, scale=1.0, C=1.0, gamma=0.0)
-        key = (unit.form, unit.laminar_law, unit.alpha, unit.beta, unit.branch_C,
-               unit.branch_alpha, unit.branch_beta, state)
+        key = (unit.form, unit.laminar_law, unit.transition, unit.alpha, unit.beta,
+               unit.branch_C, unit.branch_alpha, unit.branch_beta, state)
         if key not in self._shapes:
             s = self.samples
             st = self.measured if state is None else self._lags[state]

@@ -128,7 +128,8 @@ def fluid_from_dict(doc: dict):
 
 def _law_to_dict(law: FrictionLaw) -> dict:
     return encode({f.name: getattr(law, f.name) for f in fields(law)
-                 if law.form == "branches" or f.name not in BRANCH_KEYS})
+                   if (law.form == "branches" or f.name not in BRANCH_KEYS)
+                   and (f.name != "transition" or law.transition != "reynolds")})
 
 
 def _baseline_to_dict(b: BaselineFit) -> dict:

@@ -43,6 +43,7 @@ import numpy as np
 from oilgap.model.effects import EFFECTS, PLAUSIBLE, RigFacts
 from oilgap.model.errors import InputError
 from oilgap.model.skin_friction import BRANCH_KEYS, FORMS, FRICTION_RANGES, LAMINAR_LAWS
+from oilgap.model.transition import TRANSITIONS
 
 from .baseline import BASELINE_TEMP_TERMS, BASELINE_TERMS
 from .forward import TAYLOR_SHAPES
@@ -67,7 +68,8 @@ OPTIONAL = {"shapes": dict, "baselines": list, "fluids": dict, "pressure_gauge_P
             "has_time": bool, "cv_by": str, "thermal_mode": str, "fitted_range": dict}
 """Keys a model block may hold, with their JSON type."""
 
-LAW_KEYS = ("form", "laminar_law", "gamma", "scale", "C", "alpha", "beta") + BRANCH_KEYS
+LAW_KEYS = ("form", "laminar_law", "gamma", "scale", "C", "alpha", "beta") + BRANCH_KEYS + (
+    "transition",)
 """Keys of a friction law."""
 
 BRANCH_RANGE = {"branch_C": "C", "branch_alpha": "alpha", "branch_beta": "beta"}
@@ -89,7 +91,7 @@ _TYPE_TEXT = {str: "a string", int: "an integer", float: "a finite number", dict
               list: "an array", bool: "true or false"}
 
 
-_TEXT_KEYS = ("name", "source", "outside", "kind", "form", "laminar_law")
+_TEXT_KEYS = ("name", "source", "outside", "kind", "form", "laminar_law", "transition")
 
 
 def encode(x: Any) -> Any:
@@ -304,8 +306,9 @@ def _check_law(path: str, law: Any) -> None:
         if k not in LAW_KEYS:
             raise _bad(f"{path}.{k}", v, f"not a key of a friction law; allowed: "
                        f"{', '.join(LAW_KEYS)}")
-    for k, allowed in (("form", FORMS), ("laminar_law", LAMINAR_LAWS)):
-        if law.get(k) not in allowed:
+    for k, allowed in (("form", FORMS), ("laminar_law", LAMINAR_LAWS),
+                       ("transition", TRANSITIONS)):
+        if law.get(k, allowed[0] if k == "transition" else None) not in allowed:
             raise _bad(f"{path}.{k}", law.get(k, "missing"), f"one of {', '.join(allowed)}")
     for k in ("gamma", "scale", "C", "alpha", "beta"):
         if k not in law:

@@ -35,6 +35,7 @@ from oilgap.studies.reporting import (
     write_text,
 )
 from oilgap.studies.settings import INLINE, SweepSettings
+from oilgap.studies.smoothing.laminar import laminar_share
 
 WHERE = "smoothing study"
 T_STEP = 0.05
@@ -163,6 +164,7 @@ def _write(out: Path, case: DesignCase, curve: pd.DataFrame, saving: pd.DataFram
     write_text(md, "\n".join([
         f"# Smoothing the grooves of {case.name}", "",
         *[f"{line}." for line in saving_lines(case, saving, mode)], "",
+        "L" + laminar_share(case, None, curve).line()[1:] + ".", "",
         markdown_table(curve.iloc[pick][["T", "oil_temp_C", "mean_power_W", "dP_dT_W"]], 3),
         "", NO_TABLE4 + ".", "", *defaults_markdown(defaults)]) + "\n")
     files.append(md)

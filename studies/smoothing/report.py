@@ -19,6 +19,7 @@ from oilgap.studies.reporting import (
     write_text,
 )
 from oilgap.studies.smoothing.fit import T_GROOVED, T_SMOOTHED, SmoothingFit
+from oilgap.studies.smoothing.laminar import laminar_share
 
 if TYPE_CHECKING:
     from oilgap.studies.smoothing.study import SmoothingResult
@@ -268,6 +269,8 @@ def write_outputs(out: Path, result: SmoothingResult, base: DesignCase) -> tuple
     draw_loss_vs_T(curves, plateau, fit, ax)
     files.append(save_figure(fig, out / "smoothing_loss_vs_T.png"))
     md = out / "summary.md"
-    write_text(md, summary_markdown(table, fit, checks, plateau, base, run_temps, default))
+    share = laminar_share(base, table, curves).line()
+    write_text(md, summary_markdown(table, fit, checks, plateau, base, run_temps, default)
+               .rstrip("\n") + f"\n\n{share[0].upper()}{share[1:]}.\n")
     files.append(md)
     return tuple(files)

@@ -121,6 +121,7 @@ def test_each_input_alone_moves_the_loss_as_the_scalar_path(cases, name):
                        "depth_m": [500.0, 6000.0], "gamma": [0.4, 0.6],
                        "friction_scale": [0.8, 1.2], "film_strength": [0.2, 0.7],
                        "bearing_drag_scale": [0.5, 2.0], "peak_speed_rpm": [2000.0, 4000.0],
+                       "groove_exponent_scale": [0.0, 0.5],
                        }[name])
     assert nominal_inputs(case)[name] not in values
     mode = "full" if name == "film_strength" else "bulk"

@@ -1,6 +1,6 @@
 """``og.progress_bars()``: the command line's progress bars around façade calls.
 
-The computing layers report their progress (:mod:`oilgap.model.progress`); the command
+The computing layers report their progress (:mod:`oilgap.optim.progress`); the command
 line draws it on a terminal (:func:`oilgap.studies.progress.shown`). In Python nothing
 is drawn unless asked::
 

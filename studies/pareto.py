@@ -65,7 +65,7 @@ from oilgap.model.errors import (
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.joint_loss import film_band, resolve_thermal_mode
-from oilgap.model.progress import report
+from oilgap.optim.progress import report
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.multiobjective import arc_length_epsilons, hypervolume_2d

@@ -1,7 +1,7 @@
 """The one progress display of oilgap: tqdm bars on stderr, shown only on a terminal.
 
 :func:`progress_bar` is the bar (the grid runner's, :mod:`oilgap.studies.grid.runner`);
-:class:`Bars` turns the reports of the computing layers (:func:`oilgap.model.progress.report`:
+:class:`Bars` turns the reports of the computing layers (:func:`oilgap.optim.progress.report`:
 a task, steps done, steps in all) into one such bar per task; :func:`shown` installs it
 for a run (the command line wraps every command in it; ``og.progress_bars()`` in Python).
 Nothing is drawn when stderr is not a terminal (piped, redirected, a test's capture)
@@ -24,7 +24,7 @@ from typing import IO
 
 from tqdm import tqdm
 
-from oilgap.model.progress import reporting
+from oilgap.optim.progress import reporting
 
 MIN_SECONDS = 1.0
 """A task's bar appears once it has run this long [s] (short tasks draw nothing)."""
@@ -62,7 +62,7 @@ def is_terminal(stream) -> bool:
 
 
 class Bars:
-    """A reporter (:data:`oilgap.model.progress.Reporter`): one :func:`progress_bar` per
+    """A reporter (:data:`oilgap.optim.progress.Reporter`): one :func:`progress_bar` per
     task, drawn on ``stream`` once the task has run :data:`MIN_SECONDS` and removed when
     it is done. A daemon thread (:meth:`start`) redraws the bars every
     :data:`TICK_SECONDS`, so that a long step shows its elapsed time moving.

@@ -228,7 +228,19 @@ def _columns(z):
 class Predictor:
     """A root's predictor fitted on solved rows: ``ln(T - T_b)`` and the local exponent
     beta at the root, least squares on a quadratic surface of the rows' values and their
-    logs (standardised)."""
+    logs (standardised).
+
+    Parameters
+    ----------
+    features : ndarray
+        The solved rows' values, one row each, one column per feature.
+    tb : ndarray
+        Each row's base temperature T_b of the balance [degC].
+    temps : ndarray
+        Each row's root, the steady oil temperature [degC].
+    beta : ndarray
+        Each row's local exponent of the loss at its root, -d ln P / dT [1/K].
+    """
 
     def __init__(self, features, tb, temps, beta):
         z, self.center, self.scale = _standard(features)

@@ -154,7 +154,18 @@ def carried_text(fluid, temp_C: float, bands: dict[str, tuple[float, float]],
 
 
 def has_walther_line(fluid) -> bool:
-    """True for an oil (or a scaled oil) with a Walther line [-]."""
+    """Whether a fluid has a Walther line that ``nu40_factor`` can rebuild.
+
+    Parameters
+    ----------
+    fluid : Fluid
+        An oil, a scaled oil, a gas or a property table.
+
+    Returns
+    -------
+    bool
+        True for an oil (or a scaled oil) with a Walther line (ASTM D341).
+    """
     return isinstance(fluid.base if isinstance(fluid, ScaledFluid) else fluid, Oil)
 
 

@@ -73,7 +73,7 @@ from oilgap.model.measured.data import (
     validate,
 )
 from oilgap.model.oils import Oil, read_oils_csv
-from oilgap.model.progress import report
+from oilgap.optim.progress import report
 from oilgap.model.regions import joint_geometry
 
 from .baseline import BaselineFit, fit_baselines

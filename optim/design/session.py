@@ -36,7 +36,7 @@ import casadi as ca
 import numpy as np
 
 from oilgap.model.errors import InputError, SolverError
-from oilgap.model.progress import steps
+from oilgap.optim.progress import steps
 from oilgap.optim.interrupts import raise_if_interrupted
 
 from .variables import QUIET_OPTIONS, SOLVER_OPTIONS, SUCCESS_STATUSES, WARM_OPTIONS
@@ -363,7 +363,7 @@ def run_starts(solve_from: Callable[[np.ndarray, Any], Any], x_start: np.ndarray
     -------
     object
         The result of lowest ``power``; each start done is reported
-        (:func:`oilgap.model.progress.report`, task ``"optimize: starts"``).
+        (:func:`oilgap.optim.progress.report`, task ``"optimize: starts"``).
 
     Raises
     ------

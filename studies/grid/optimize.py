@@ -20,7 +20,7 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import OilgapWarning, SolverError
 from oilgap.model.joint_loss import THERMAL_MODES
 from oilgap.model.oils import Oil, get_oil
-from oilgap.model.progress import report
+from oilgap.optim.progress import report
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.lean import (
@@ -236,7 +236,7 @@ def optimize_chunk(base: DesignCase, rows: list[dict],
     The rows' structural parameters give the case (one DesignProblem per distinct
     case, built once); ``oil``, ``oil_temp_C``, ``depth_m`` and the
     :data:`OPTIMIZE_COLUMNS` are parameters of each solve. Each row done is reported
-    (:func:`oilgap.model.progress.report`; drawn when the caller installed a reporter in
+    (:func:`oilgap.optim.progress.report`; drawn when the caller installed a reporter in
     this process, as the command line does for a Pareto front's chain).
     """
     memo: dict = {}

@@ -14,7 +14,7 @@ import math
 from pathlib import Path
 
 from oilgap.model.errors import InputError
-from oilgap.model.progress import steps
+from oilgap.optim.progress import steps
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.studies.io.files import atomic_savefig
 from oilgap.studies.loop.figures import (

@@ -43,7 +43,7 @@ import numpy as np
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning, SolverError
 from oilgap.model.evaluation import evaluate_case
-from oilgap.model.progress import report
+from oilgap.optim.progress import report
 from oilgap.model.uncertain import UncertaintySpec, case_uncertainty
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.model.units import MM_TO_M

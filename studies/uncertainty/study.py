@@ -48,7 +48,7 @@ from oilgap.model.io.defaults import (
     uncertainty_defaults,
 )
 from oilgap.model.joint_loss import resolve_thermal_mode
-from oilgap.model.progress import report
+from oilgap.optim.progress import report
 from oilgap.model.thermal_modes import applies_film, film_counterpart
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.model.uncertain.distributions import UncertaintySpec, case_uncertainty

@@ -17,7 +17,7 @@ import pytest
 
 from oilgap.cli import main
 from oilgap.model.io.text import WIDTH, layout, wrap
-from oilgap.model.progress import report, reporting, steps
+from oilgap.optim.progress import report, reporting, steps
 
 GOLDEN = Path(__file__).parents[1] / "golden" / "data"
 

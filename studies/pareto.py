@@ -65,10 +65,10 @@ from oilgap.model.errors import (
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.io.defaults import Default, case_defaults, defaults_markdown, study_default
 from oilgap.model.joint_loss import film_band, resolve_thermal_mode
-from oilgap.optim.progress import report
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.multiobjective import arc_length_epsilons, hypervolume_2d
+from oilgap.optim.progress import report
 from oilgap.studies.grid.evaluate import band_text, evaluate_cases, thermal_description
 from oilgap.studies.grid.optimize import solve_design_point
 from oilgap.studies.grid.runner import run_grid

@@ -164,7 +164,7 @@ def has_walther_line(fluid) -> bool:
     Returns
     -------
     bool
-        True for an oil (or a scaled oil) with a Walther line (ASTM D341).
+        True for an oil (or a scaled oil) with a Walther line (ASTM D341) [-].
     """
     return isinstance(fluid.base if isinstance(fluid, ScaledFluid) else fluid, Oil)
 

@@ -73,8 +73,8 @@ from oilgap.model.measured.data import (
     validate,
 )
 from oilgap.model.oils import Oil, read_oils_csv
-from oilgap.optim.progress import report
 from oilgap.model.regions import joint_geometry
+from oilgap.optim.progress import report
 
 from .baseline import BaselineFit, fit_baselines
 from .film_wall import case_film_wall, wall_identifiability

@@ -36,8 +36,8 @@ import casadi as ca
 import numpy as np
 
 from oilgap.model.errors import InputError, SolverError
-from oilgap.optim.progress import steps
 from oilgap.optim.interrupts import raise_if_interrupted
+from oilgap.optim.progress import steps
 
 from .variables import QUIET_OPTIONS, SOLVER_OPTIONS, SUCCESS_STATUSES, WARM_OPTIONS
 

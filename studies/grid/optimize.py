@@ -20,7 +20,6 @@ from oilgap.model.case import DesignCase
 from oilgap.model.errors import OilgapWarning, SolverError
 from oilgap.model.joint_loss import THERMAL_MODES
 from oilgap.model.oils import Oil, get_oil
-from oilgap.optim.progress import report
 from oilgap.model.units import MM_TO_M
 from oilgap.optim.design import DesignProblem
 from oilgap.optim.design.lean import (
@@ -30,6 +29,7 @@ from oilgap.optim.design.lean import (
     optimal_case,
     solve_lean,
 )
+from oilgap.optim.progress import report
 from oilgap.studies.grid.columns import OPERATING_COLUMNS, OPTIMIZE_COLUMNS
 from oilgap.studies.grid.evaluate import evaluate_arrays
 from oilgap.studies.grid.schema import apply_params, is_missing

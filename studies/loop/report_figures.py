@@ -14,8 +14,8 @@ import math
 from pathlib import Path
 
 from oilgap.model.errors import InputError
-from oilgap.optim.progress import steps
 from oilgap.optim.calibration.estimator import LoopEstimator
+from oilgap.optim.progress import steps
 from oilgap.studies.io.files import atomic_savefig
 from oilgap.studies.loop.figures import (
     GRID,

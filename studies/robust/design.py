@@ -43,7 +43,6 @@ import numpy as np
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InputError, OilgapWarning, SolverError
 from oilgap.model.evaluation import evaluate_case
-from oilgap.optim.progress import report
 from oilgap.model.uncertain import UncertaintySpec, case_uncertainty
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.model.units import MM_TO_M
@@ -58,6 +57,7 @@ from oilgap.optim.design.robust import (
 from oilgap.optim.design.scenarios import design_case
 from oilgap.optim.design.session import check_starts
 from oilgap.optim.design.variables import VARIABLE_LABELS, VARIABLES
+from oilgap.optim.progress import report
 from oilgap.studies.settings import DEFAULT_STARTS
 
 DEFAULT_SCENARIOS = 64

@@ -48,12 +48,12 @@ from oilgap.model.io.defaults import (
     uncertainty_defaults,
 )
 from oilgap.model.joint_loss import resolve_thermal_mode
-from oilgap.optim.progress import report
 from oilgap.model.thermal_modes import applies_film, film_counterpart
 from oilgap.model.uncertain.arrays import joint_loss_arrays
 from oilgap.model.uncertain.distributions import UncertaintySpec, case_uncertainty
 from oilgap.model.uncertain.grade import carried_text, has_walther_line
 from oilgap.model.uncertain.inputs import INPUTS, nominal_inputs
+from oilgap.optim.progress import report
 from oilgap.studies.settings import (
     DEFAULT_SOBOL_SAMPLES,
     DEFAULT_UNCERTAINTY_SAMPLES,

@@ -455,6 +455,10 @@ class DesignCase:
         The uncertain inputs' joint law (``[uncertainty]``), if given; None: the documented
         defaults (:func:`oilgap.model.uncertain.distributions.case_uncertainty`). It
         enters no nominal number.
+    linear : oilgap.model.linear.drive.LinearDrive or None
+        The linear actuator's screw, rod, guide and passages (``[drive] kind =
+        "linear"``, docs/linear-joint.md); None: a rotary joint. The duty cycle is then
+        the motor's speed ``2 pi v/lead`` of the rod's velocity.
     """
 
     name: str
@@ -473,6 +477,7 @@ class DesignCase:
     gamma_source: str = field(default="given", compare=False)
     defaults: tuple = field(default=(), compare=False)
     uncertainty: Any = field(default=None, compare=False)
+    linear: Any = None
 
     def __post_init__(self):
         if self.bounds is None:

@@ -46,7 +46,7 @@ import casadi as ca
 import numpy as np
 
 from . import _math as m
-from .bearing.friction import bearing_mean_power
+from .elements import joint_elements
 from .errors import InputError
 from .film_cycle import FilmHeating, film_heating_for
 from .oil_properties import seawater_gauge_pressure
@@ -88,6 +88,9 @@ class OperatingTemperature:
     bearing_mean_power_W : float
         The rolling bearing's part of ``mean_power_W`` (:func:`bearing_mean_power_at`) [W];
         0 without a bearing.
+    element_mean_powers_W : tuple of float
+        Every element's part (:func:`~oilgap.model.elements.joint_elements`: the bearing,
+        then a linear drive's screw, rod guide and passages) [W]; empty without elements.
     """
 
     mode: str
@@ -96,6 +99,7 @@ class OperatingTemperature:
     mean_power_W: float
     region_mean_powers_W: tuple[float, ...] = ()
     bearing_mean_power_W: float = 0.0
+    element_mean_powers_W: tuple[float, ...] = ()
 
 
 def default_thermal_mode(case: DesignCase) -> str:
@@ -257,7 +261,9 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         the design NLP passes region 1 with symbolic geometry, a sweep regions whose
         R, delta, L, T have shape (n, 1)).
     include_bearing : bool, optional
-        Add the case's rolling bearing (``case.bearing``,
+        Add the case's elements (:func:`~oilgap.model.elements.joint_elements`: the rolling
+        bearing and a linear drive's screw, rod guide and passages, each at the bulk
+        oil state, no film factor) -- the rolling bearing (``case.bearing``,
         :func:`~oilgap.model.bearing.bearing_mean_power` at the bulk viscosity, no film
         factor) when it has one (default: when ``regions`` is None, i.e. the whole
         joint; a caller passing its own regions says whether they stand for the joint).
@@ -293,9 +299,49 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
     regions = joint_regions(case) if regions is None else regions
     total = sum(region_mean_power(r, nodes, weights, nu, rho, case.friction, film, b)
                 for r in regions)
-    if include_bearing and case.bearing is not None:
-        total = total + bearing_mean_power(case.bearing, nodes, weights, nu)
+    if include_bearing:
+        for element in joint_elements(case):
+            total = total + element.mean_power(nodes, weights, nu, rho)
     return total
+
+
+def element_mean_powers_at(case: DesignCase, oil_temp_C, depth_m: float | None = None
+                           ) -> np.ndarray:
+    """Mean power [W] of each of the case's elements over the duty cycle at bulk
+    temperature(s), numpy only (:func:`~oilgap.model.elements.joint_elements`; the same
+    under every thermal mode: the elements take the bulk oil state, no film factor).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (``bearing``, ``linear``, oil, duty cycle, depth).
+    oil_temp_C : float or array
+        Bulk oil temperature(s) [degC].
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+
+    Returns
+    -------
+    ndarray
+        Shape ``np.shape(oil_temp_C) + (n_elements,)`` [W].
+
+    References
+    ----------
+    :func:`oilgap.model.bearing.bearing_mean_power` (SKF or Palmgren);
+    :mod:`oilgap.model.linear.elements` (docs/linear-joint.md).
+    """
+    t = np.asarray(oil_temp_C, dtype=float)
+    elements = joint_elements(case)
+    if not elements:
+        return np.zeros(t.shape + (0,))
+    d = case.operating.depth_m if depth_m is None else depth_m
+    nu, _, rho = case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
+    nodes, weights = case.duty_cycle.speed_distribution()
+    nu = np.broadcast_to(np.asarray(nu, dtype=float), t.shape)[..., None]
+    rho = np.broadcast_to(np.asarray(rho, dtype=float), t.shape)[..., None]
+    cols = [np.asarray(e.mean_power(nodes, weights, nu, rho), dtype=float).reshape(t.shape)
+            for e in elements]
+    return np.stack(cols, -1)
 
 
 def bearing_mean_power_at(case: DesignCase, oil_temp_C, depth_m: float | None = None):
@@ -325,12 +371,8 @@ def bearing_mean_power_at(case: DesignCase, oil_temp_C, depth_m: float | None = 
     t = np.asarray(oil_temp_C, dtype=float)
     if case.bearing is None:
         return np.zeros(t.shape) if t.ndim else 0.0
-    d = case.operating.depth_m if depth_m is None else depth_m
-    nu, _, _ = case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
-    nodes, weights = case.duty_cycle.speed_distribution()
-    nu = np.broadcast_to(np.asarray(nu, dtype=float), t.shape)[..., None]
-    p = np.asarray(bearing_mean_power(case.bearing, nodes, weights, nu), dtype=float)
-    return p.reshape(t.shape) if t.ndim else float(p)
+    p = element_mean_powers_at(case, t, depth_m)[..., 0]  # the bearing is the first
+    return p if t.ndim else float(p)
 
 
 def _stacked_regions(case: DesignCase) -> Region:
@@ -384,14 +426,15 @@ def _balance(case: DesignCase, mode: str, depth_m: float | None
              ) -> tuple[float, np.ndarray]:
     """``T = T_sea + R (P(T) + Q)`` by :func:`~oilgap.model.thermal.joint_steady_temperature`
     (the one solver of the lumped balance), with the losses per region at the root (and
-    the bearing's as a last column when the case has one: its heat is in P)."""
+    the elements' as last columns, the bearing first: their heat is in P)."""
     stacked = _stacked_regions(case)
+    has_elements = bool(joint_elements(case))
 
     def power_at(ts):
         p = _stacked_powers(case, ts, mode, depth_m, stacked)
-        if case.bearing is None:
+        if not has_elements:
             return p
-        return np.concatenate([p, bearing_mean_power_at(case, ts, depth_m)[..., None]], -1)
+        return np.concatenate([p, element_mean_powers_at(case, ts, depth_m)], -1)
 
     temps, powers = joint_steady_temperature(power_at, case.thermal, 1,
                                              case.oil.trusted_range_C)
@@ -440,11 +483,13 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
         return OperatingTemperature(
             mode, t, None, float(joint_mean_power(case, t, mode, depth_m)),
             tuple(float(v) for v in region_mean_powers(case, t, mode, depth_m)),
-            float(bearing_mean_power_at(case, t, depth_m)))
+            float(bearing_mean_power_at(case, t, depth_m)),
+            tuple(float(v) for v in element_mean_powers_at(case, t, depth_m)))
     t, powers = _balance(case, mode, depth_m)
+    els = tuple(float(v) for v in powers[nreg:])
     return OperatingTemperature(mode, float(t), float(case.thermal.sea_temp_C),
                                 float(powers.sum()), tuple(float(v) for v in powers[:nreg]),
-                                float(powers[nreg:].sum()))
+                                els[0] if case.bearing is not None else 0.0, els)
 
 
 @dataclass(frozen=True)

@@ -109,6 +109,9 @@ class LinearDrive:
         The motor's top speed [rad/s] (optimize's constraint); None: none.
     compensator : Compensator or None
         The compensator's volume check; None: none.
+    design_bounds : tuple or None
+        (lo, hi) [m] of the lead, the guide clearance and the passage diameter, the
+        design NLP's bounds; None: x[0.5, 2] of the values given.
     """
 
     lead_m: float
@@ -128,6 +131,7 @@ class LinearDrive:
     required_force_N: float | None = None
     max_motor_speed_rad_s: float | None = None
     compensator: Compensator | None = None
+    design_bounds: tuple | None = None
 
     def __post_init__(self):
         if self.screw_type not in SCREW_TYPES:

@@ -127,8 +127,8 @@ def linear_drive_from(doc: dict) -> LinearDrive:
     comp = None
     if "compensator" in doc:
         ct = _table(doc, "compensator")
-        comp = Compensator(capacity_m3=_num(ct, "capacity_mL", "compensator") * 1e-6,
-                           oil_volume_m3=_num(ct, "oil_volume_mL", "compensator") * 1e-6,
+        comp = Compensator(capacity_m3=_num(ct, "capacity_mL", "compensator") / 1e6,
+                           oil_volume_m3=_num(ct, "oil_volume_mL", "compensator") / 1e6,
                            temp_min_C=_num(ct, "temp_min_C", "compensator"),
                            temp_max_C=_num(ct, "temp_max_C", "compensator"))
     count = pa.get("count", 1)

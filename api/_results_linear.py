@@ -46,3 +46,111 @@ def linear_rows(ev: CaseEvaluation) -> list[str]:
                  f" bar; the guide clearance would carry {100 * s.guide_leakage_share_peak:.2g}"
                  " % of the flow at that dp (taken through the passages)")
     return lines
+
+
+class LinearOptimization:
+    """A linear actuator's optimum beside the case as given (``og.optimize`` on a linear
+    case): the design variables, the loss by element of both under the thermal mode
+    (evaluated exactly, :func:`oilgap.model.evaluation.evaluate_case`), the constraints.
+
+    Parameters
+    ----------
+    design : oilgap.optim.design.linear.LinearDesign
+        The NLP's optimum.
+    case : DesignCase
+        The case as given.
+    mode : str
+        The thermal mode the designs are evaluated under.
+    header : str
+        The thermal-mode line.
+    """
+
+    def __init__(self, design, case, mode: str, header: str):
+        from oilgap.model.evaluation import evaluate_case
+        from oilgap.optim.design.linear import linear_design_case
+        self.design = design
+        self.case = case
+        self.optimum_case = linear_design_case(case, design.x_mm)
+        self.header = header
+        self.initial = evaluate_case(case, thermal=mode)
+        self.optimum = evaluate_case(self.optimum_case, thermal=mode)
+
+    def to_case(self):
+        """The optimum as a case (``--out`` writes it).
+
+        Returns
+        -------
+        DesignCase
+            The case with the optimum's lead, clearances, passage and motor gap.
+        """
+        return self.optimum_case
+
+    @staticmethod
+    def _elements(ev: CaseEvaluation) -> dict:
+        out = {("motor gap" if i == 0 else r.name): r.mean_power_W
+               for i, r in enumerate(ev.regions)}
+        if ev.bearings:
+            out["motor bearing"] = sum(b.mean_power_W for b in ev.bearings)
+        out.update({e.name: e.mean_power_W for e in ev.linear_elements})
+        out["total"] = ev.total_mean_power_W
+        return out
+
+    def to_dict(self) -> dict:
+        """Plain-dict form (``--json``): variables [mm], losses by element [W], constraints.
+
+        Returns
+        -------
+        dict
+            ``variables`` (name -> initial, optimum, lower, upper [mm]),
+            ``loss_by_element_W`` (``initial``, ``optimum``), ``oil_temp_C``,
+            ``constraints`` (name -> value, limit, unit, sense), ``nlp``.
+        """
+        from oilgap.optim.design.linear import LINEAR_VARIABLES
+        d = self.design
+        return {
+            "thermal_mode": self.optimum.thermal_mode,
+            "variables": {k: {"initial": float(a), "optimum": float(b), "lower": float(lo),
+                              "upper": float(hi)}
+                          for k, a, b, lo, hi in zip(LINEAR_VARIABLES, d.x0_mm, d.x_mm,
+                                                     d.lower_mm, d.upper_mm, strict=True)},
+            "loss_by_element_W": {"initial": self._elements(self.initial),
+                                  "optimum": self._elements(self.optimum)},
+            "oil_temp_C": {"initial": self.initial.oil_temp_C,
+                           "optimum": self.optimum.oil_temp_C},
+            "constraints": {k: {"value": v[0], "limit": v[1], "unit": v[2], "sense": v[3]}
+                            for k, v in d.constraints.items()},
+            "nlp": {"mode": d.nlp_mode, "iterations": d.iterations,
+                    "mean_power_W": d.mean_power_W},
+        }
+
+    def summary(self) -> str:
+        """The optimum first, then the design variables, the loss by element and the
+        constraints.
+
+        Returns
+        -------
+        str
+            Text.
+        """
+        from oilgap.optim.design.linear import LINEAR_VARIABLES
+        d, a, b = self.design, self._elements(self.initial), self._elements(self.optimum)
+        lines = [f"optimum     {b['total']:.4g} W mean over the cycle (as given "
+                 f"{a['total']:.4g} W, {100 * (b['total'] / a['total'] - 1):+.0f} %)",
+                 f"case        {self.case.name}", self.header,
+                 f"oil         {self.optimum.oil} at {self.optimum.oil_temp_C:.2f} degC "
+                 f"(as given {self.initial.oil_temp_C:.2f} degC)", "",
+                 f"{'variable':<26}{'as given':>10}{'optimum':>10}{'bounds':>18}"]
+        for k, x0, x, lo, hi in zip(LINEAR_VARIABLES, d.x0_mm, d.x_mm, d.lower_mm,
+                                    d.upper_mm, strict=True):
+            at = " (at bound)" if min(x - lo, hi - x) <= 1e-6 * max(hi, 1e-9) else ""
+            lines.append(f"{k:<26}{x0:>10.4g}{x:>10.4g}{f'[{lo:.4g}, {hi:.4g}]':>18}{at}")
+        lines += ["", f"{'element':<26}{'as given W':>12}{'optimum W':>12}"]
+        lines += [f"{k:<26}{a[k]:>12.4f}{b[k]:>12.4f}" for k in a]
+        lines += ["", "constraints at the optimum"]
+        for k, (v, lim, unit, sense) in d.constraints.items():
+            shown = (v * 1e6, lim * 1e6, "mL") if unit == "m^3" else (v, lim, unit)
+            lines.append(f"  {k:<34}{shown[0]:>10.4g} {sense} {shown[1]:.4g} {shown[2]}")
+        lines.append(f"NLP: thermal {d.nlp_mode} (film/full solved without the film factor, "
+                     f"then evaluated under the mode), smooth C_m, {d.iterations} IPOPT "
+                     "iterations; the motor's radius and length as given")
+        return "\n".join(lines)

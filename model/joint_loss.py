@@ -240,7 +240,8 @@ def mode_film(case: DesignCase, mode: str, temp_K, pressure_gauge_Pa):
 
 
 def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | None = None,
-                     regions=None, include_bearing: bool | None = None):
+                     regions=None, include_bearing: bool | None = None, *,
+                     speed_scale=None, design: dict | None = None):
     """Mean loss [W] of all regions (and the rolling bearing) over the duty cycle at a
     bulk temperature.
 
@@ -269,6 +270,14 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         joint; a caller passing its own regions says whether they stand for the joint).
         Its result must broadcast like the regions' means: one bearing term per
         temperature, not per region.
+    speed_scale : float or CasADi symbol, optional
+        Factor on the duty cycle's motor speeds [-] (the linear design NLP: a lead
+        changed from the case's to ``lead`` turns the motor ``lead0/lead`` times as
+        fast for the same rod cycle); default: none.
+    design : dict, optional
+        The linear drive's design variables [m] passed to
+        :func:`~oilgap.model.elements.joint_elements` (``lead_m``,
+        ``guide_clearance_m``, ``passage_diameter_m``); default: the case's.
 
     Returns
     -------
@@ -282,8 +291,8 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
     """
     d = case.operating.depth_m if depth_m is None else depth_m
     p = seawater_gauge_pressure(d)
-    symbolic = m.is_symbolic(oil_temp_C)
-    t = oil_temp_C if symbolic else np.asarray(oil_temp_C, dtype=float)
+    symbolic = m.is_symbolic(oil_temp_C, speed_scale)
+    t = oil_temp_C if m.is_symbolic(oil_temp_C) else np.asarray(oil_temp_C, dtype=float)
     t_k = celsius_to_kelvin(t)
     nu, _, rho = case.oil.properties(t_k, p)
     nodes, weights = case.duty_cycle.speed_distribution()
@@ -294,13 +303,15 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         shape = np.broadcast_shapes(np.shape(nu), np.shape(rho), np.shape(b))
         nu, rho = (np.broadcast_to(v, shape)[..., None] for v in (nu, rho))
         b = None if b is None else np.broadcast_to(b, shape)[..., None]
+    if speed_scale is not None:
+        nodes = nodes * speed_scale
     if include_bearing is None:
         include_bearing = regions is None
     regions = joint_regions(case) if regions is None else regions
     total = sum(region_mean_power(r, nodes, weights, nu, rho, case.friction, film, b)
                 for r in regions)
     if include_bearing:
-        for element in joint_elements(case):
+        for element in joint_elements(case, **(design or {})):
             total = total + element.mean_power(nodes, weights, nu, rho)
     return total
 

@@ -10,7 +10,7 @@ from typing import Any
 from oilgap._checks import CASE, NAME, NUMBER, OILS, checked
 from oilgap._evaluate import THERMAL, as_case, thermal_case, with_operating
 from oilgap._results_design import Optimization, thermal_line
-from oilgap._results_linear import LinearOptimization
+from oilgap._results_linear import LinearOptimization, LinearRobustOptimization
 from oilgap._results_robust import RobustOptimization
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import ArgumentError, InputError, OilgapWarning
@@ -19,6 +19,7 @@ from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
 from oilgap.optim.design import DesignProblem, compare_heating
 from oilgap.optim.design.linear import solve_linear_design
+from oilgap.optim.design.linear_robust import solve_linear_robust
 from oilgap.optim.design.robust import ROBUST_MODES, check_statistic
 from oilgap.studies.robust import RobustSettings, robust_design
 from oilgap.studies.settings import DesignLimits
@@ -169,9 +170,12 @@ def robust_resolved(case: DesignCase, mode: str, statistic: str, kw: dict, lim: 
         The robust and nominal designs side by side; powers [W].
     """
     check_statistic(statistic)
-    if case.linear is not None:
-        raise InputError("--robust", statistic, "a rotary joint: the robust design of a "
-                         "linear actuator is not built yet (docs/linear-joint.md)", "optimize")
+    if case.linear is not None:  # the linear robust NLP (thermal none)
+        if str(mode) != "none":
+            raise InputError("--robust", statistic, "thermal none for a linear actuator (give "
+                             "--thermal none; its robust NLP has no heat balance)", "optimize")
+        return LinearRobustOptimization(solve_linear_robust(
+            case, statistic, kw.get("scenarios"), kw.get("seed"), verbose), case)
     if str(mode) not in ROBUST_MODES:
         raise InputError("--robust", statistic, f"thermal modes none and bulk only (here "
                          f"{mode}: give --thermal none or bulk)", "optimize")

@@ -7,6 +7,8 @@ passages, each with its share of the total, then the drive's peak numbers
 
 from __future__ import annotations
 
+import numpy as np
+
 from oilgap.model.evaluation import CaseEvaluation
 
 
@@ -153,4 +155,80 @@ class LinearOptimization:
         lines.append(f"NLP: thermal {d.nlp_mode} (film/full solved without the film factor, "
                      f"then evaluated under the mode), smooth C_m, {d.iterations} IPOPT "
                      "iterations; the motor's radius and length as given")
+        return "\n".join(lines)
+
+
+class LinearRobustOptimization:
+    """The robust linear design beside the nominal one (``optimize --robust`` on a linear
+    case, :func:`oilgap.optim.design.linear_robust.solve_linear_robust`).
+
+    Parameters
+    ----------
+    res : oilgap.optim.design.linear_robust.LinearRobustDesign
+        The solve.
+    case : DesignCase
+        The case as given.
+    """
+
+    def __init__(self, res, case):
+        from oilgap.optim.design.linear import linear_design_case
+        self.res = res
+        self.case = case
+        self.optimum_case = linear_design_case(case, res.robust.x_mm)
+
+    def to_case(self):
+        """The robust optimum as a case (``--out``).
+
+        Returns
+        -------
+        DesignCase
+            The case with the robust design.
+        """
+        return self.optimum_case
+
+    def _stats(self, key: str) -> dict:
+        v = np.asarray(self.res.losses_W[key])
+        return {"p5_W": float(np.percentile(v, 5)), "p50_W": float(np.percentile(v, 50)),
+                "p95_W": float(np.percentile(v, 95)), "mean_W": float(v.mean())}
+
+    def to_dict(self) -> dict:
+        """Plain-dict form (``--json``).
+
+        Returns
+        -------
+        dict
+            ``statistic``, ``scenarios``, the two designs [mm] and their loss statistics
+            over the scenarios [W], the constraints at the robust optimum.
+        """
+        from oilgap.optim.design.linear import LINEAR_VARIABLES
+        r = self.res
+        return {"statistic": r.statistic, "scenarios": r.scenarios, "thermal_mode": "none",
+                "robust": {"design_mm": dict(zip(LINEAR_VARIABLES, map(float, r.robust.x_mm),
+                                                 strict=True)), **self._stats("robust")},
+                "nominal": {"design_mm": dict(zip(LINEAR_VARIABLES, map(float, r.nominal.x_mm),
+                                                  strict=True)), **self._stats("nominal")},
+                "constraints": {k: {"value": v[0], "limit": v[1], "unit": v[2], "sense": v[3]}
+                                for k, v in r.robust.constraints.items()}}
+
+    def summary(self) -> str:
+        """The robust optimum's statistic first, then both designs side by side.
+
+        Returns
+        -------
+        str
+            Text.
+        """
+        from oilgap.optim.design.linear import LINEAR_VARIABLES
+        r, a, b = self.res, self._stats("robust"), self._stats("nominal")
+        lines = [f"robust optimum ({r.statistic} over {r.scenarios} scenarios, thermal none): "
+                 f"p95 {a['p95_W']:.4g} W, mean {a['mean_W']:.4g} W (nominal optimum: p95 "
+                 f"{b['p95_W']:.4g} W, mean {b['mean_W']:.4g} W)",
+                 f"case        {self.case.name}", "",
+                 f"{'variable':<26}{'robust':>10}{'nominal':>10}"]
+        lines += [f"{k:<26}{x:>10.4g}{y:>10.4g}" for k, x, y in
+                  zip(LINEAR_VARIABLES, r.robust.x_mm, r.nominal.x_mm, strict=True)]
+        lines += ["", "constraints at the robust optimum"]
+        for k, (v, lim, unit, sense) in r.robust.constraints.items():
+            shown = (v * 1e6, lim * 1e6, "mL") if unit == "m^3" else (v, lim, unit)
+            lines.append(f"  {k:<34}{shown[0]:>10.4g} {sense} {shown[1]:.4g} {shown[2]}")
         return "\n".join(lines)

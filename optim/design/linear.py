@@ -136,7 +136,7 @@ def _to_y(x_mm):
     return np.where(_LOG, np.log(np.maximum(x_mm, 1e-300)), x_mm)
 
 
-def _check_compensator(case: DesignCase) -> tuple[float, float] | None:
+def check_compensator(case: DesignCase) -> tuple[float, float] | None:
     c = case.linear.compensator
     if c is None:
         return None
@@ -151,7 +151,7 @@ def _check_compensator(case: DesignCase) -> tuple[float, float] | None:
     return need, c.capacity_m3
 
 
-def _expressions(case: DesignCase, x, temp_C, mode: str):
+def design_expressions(case: DesignCase, x, temp_C, mode: str):
     """(loss [W], rod force [N], motor speed at v_max [rad/s], passage velocity [m/s])."""
     d, r1 = case.linear, case.region1
     lead, c, dp, delta, d_r, d_s = x
@@ -167,6 +167,37 @@ def _expressions(case: DesignCase, x, temp_C, mode: str):
     speed = 2.0 * math.pi * v_max / lead
     vel = d.rod_area_m2 * v_max / (max(d.passage_count, 1) * 0.25 * math.pi * dp**2)
     return loss, force, speed, vel
+
+
+def constraint_rows(d, force, speed, vel) -> tuple[list, list]:
+    """The NLP's inequality rows ``g >= 0`` (logs of ratios) and their report entries.
+
+    Parameters
+    ----------
+    d : LinearDrive
+        The drive (limits).
+    force, speed, vel : CasADi expression
+        Rod force [N], motor speed at the peak rod velocity [rad/s], passage velocity
+        [m/s] (:func:`design_expressions`).
+
+    Returns
+    -------
+    g : list
+        Rows, each >= 0 when its constraint holds.
+    names : list
+        (name, expression, limit, unit, sense) of each row.
+    """
+    g, names = [], []
+    if d.required_force_N is not None:
+        g.append(ca.log(force / d.required_force_N))
+        names.append(("rod force", force, d.required_force_N, "N", ">="))
+    if d.max_motor_speed_rad_s is not None:
+        g.append(ca.log(d.max_motor_speed_rad_s / speed))
+        names.append(("motor speed at peak rod velocity", speed, d.max_motor_speed_rad_s,
+                      "rad/s", "<="))
+    g.append(ca.log(d.passage_velocity_limit_m_s / vel))
+    names.append(("passage velocity", vel, d.passage_velocity_limit_m_s, "m/s", "<="))
+    return g, names
 
 
 def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = False
@@ -203,7 +234,7 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
     if case.linear is None:
         raise InputError("drive.kind", "rotary", '"linear" for this design problem', "optimize")
     refuse_dashpot(case)
-    comp = _check_compensator(case)
+    comp = check_compensator(case)
     nlp_mode = "bulk" if uses_balance(mode) else "none"
     case_s = replace(case, friction=case.friction.smooth())
     d = case.linear
@@ -211,17 +242,8 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
     x = [ca.exp(y[i]) * MM_TO_M if _LOG[i] else y[i] * MM_TO_M for i in range(6)]
     q = ca.SX.sym("t") if nlp_mode == "bulk" else None
     temp = q * TEMP_SCALE_K if q is not None else float(case.operating.oil_temp_C)
-    loss, force, speed, vel = _expressions(case_s, x, temp, nlp_mode)
-    g, lbg, names = [], [], []
-    if d.required_force_N is not None:
-        g.append(ca.log(force / d.required_force_N))
-        names.append(("rod force", force, d.required_force_N, "N", ">="))
-    if d.max_motor_speed_rad_s is not None:
-        g.append(ca.log(d.max_motor_speed_rad_s / speed))
-        names.append(("motor speed at peak rod velocity", speed, d.max_motor_speed_rad_s,
-                      "rad/s", "<="))
-    g.append(ca.log(d.passage_velocity_limit_m_s / vel))
-    names.append(("passage velocity", vel, d.passage_velocity_limit_m_s, "m/s", "<="))
+    loss, force, speed, vel = design_expressions(case_s, x, temp, nlp_mode)
+    g, names = constraint_rows(d, force, speed, vel)
     lbg = [0.0] * len(g)
     ubg = [ca.inf] * len(g)
     lo, hi = linear_bounds(case)

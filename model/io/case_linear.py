@@ -335,3 +335,47 @@ def linear_to_doc(drive: LinearDrive) -> dict[str, dict]:
                               "oil_volume_mL": c.oil_volume_m3 * 1e6,
                               "temp_min_C": c.temp_min_C, "temp_max_C": c.temp_max_C}
     return doc
+
+
+def linear_defaults(doc: dict, drive: LinearDrive) -> list:
+    """The linear keys the reader filled in, each with its value and source.
+
+    Parameters
+    ----------
+    doc : dict
+        The parsed TOML of a linear case.
+    drive : LinearDrive
+        The drive read from it.
+
+    Returns
+    -------
+    list of oilgap.model.io.defaults.Default
+        ``screw.f0``, ``screw.efficiency``, ``rod.eccentricity``, ``passages.count``,
+        ``passages.max_velocity_m_s``, the design bounds and the rod sine's keys left out.
+    """
+    from .defaults import Default
+    out = []
+    rows = (("screw", "f0", drive.screw_f0, "-", f"a submerged {drive.screw_type} nut, "
+             "Palmgren's f0 of a submerged bearing (recalled; docs/linear-joint.md)"),
+            ("screw", "efficiency", drive.screw_efficiency, "-",
+             f"catalogue range of a {drive.screw_type} screw (recalled)"),
+            ("rod", "eccentricity", drive.eccentricity, "-", "a concentric rod"),
+            ("passages", "count", drive.passage_count, "-", "one passage"),
+            ("passages", "max_velocity_m_s", drive.passage_velocity_limit_m_s, "m/s",
+             "return-line practice (recalled)"))
+    for table, key, value, unit, source in rows:
+        if key not in doc.get(table, {}):
+            out.append(Default(f"{table}.{key}", value, unit, source))
+    for (lo, hi), table, key in zip(drive.design_bounds or (), ("screw", "rod", "passages"),
+                                    ("lead", "guide_clearance", "diameter"), strict=False):
+        for k, v, what in ((f"{key}_min_mm", lo, "0.5"), (f"{key}_max_mm", hi, "2")):
+            if k not in doc.get(table, {}):
+                out.append(Default(f"{table}.{k}", v / MM_TO_M, "mm",
+                                   f"{what} x the case's {key.replace('_', ' ')}"))
+    dcd = doc.get("duty_cycle", {})
+    if dcd.get("kind", "csv" if "csv" in dcd else "sine") == "sine":
+        for k, v, unit in (("frequency_hz", 0.05, "Hz"), ("duration_s", 300.0, "s"),
+                           ("sample_interval_s", 0.2, "s")):
+            if k not in dcd:
+                out.append(Default(f"duty_cycle.{k}", v, unit, "the seed joint's sine"))
+    return out

@@ -232,3 +232,61 @@ class LinearRobustOptimization:
             shown = (v * 1e6, lim * 1e6, "mL") if unit == "m^3" else (v, lim, unit)
             lines.append(f"  {k:<34}{shown[0]:>10.4g} {sense} {shown[1]:.4g} {shown[2]}")
         return "\n".join(lines)
+
+
+class LeadFront:
+    """The lead-loss front of a linear actuator (``oilgap study pareto`` on a linear
+    case, :func:`oilgap.studies.linear_lead.lead_front`).
+
+    Parameters
+    ----------
+    df : DataFrame
+        One row per lead.
+    case_name : str
+        The case.
+    thermal_mode : str
+        The mode.
+    out : Path or None
+        The folder written.
+    """
+
+    def __init__(self, df, case_name: str, thermal_mode: str, out):
+        self.df = df
+        self.case_name = case_name
+        self.thermal_mode = thermal_mode
+        self.out = out
+
+    def summary(self) -> str:
+        """The best lead first, then the front.
+
+        Returns
+        -------
+        str
+            Text.
+        """
+        from oilgap.studies.linear_lead import summary_text
+        text = summary_text(self.df, self.case_name) + f"thermal {self.thermal_mode}\n"
+        return text + (f"\nwrote {self.out}/" if self.out else "")
+
+    def to_dict(self) -> dict:
+        """``{thermal_mode, rows, out}`` (rows as records).
+
+        Returns
+        -------
+        dict
+            The front.
+        """
+        rows = self.df.astype(object).where(self.df.notna(), None).to_dict("records")
+        return {"thermal_mode": self.thermal_mode, "rows": rows,
+                "out": None if self.out is None else str(self.out)}
+
+    def to_json(self) -> str:
+        """:meth:`to_dict` as JSON.
+
+        Returns
+        -------
+        str
+            JSON text.
+        """
+        from oilgap.model.io.serialize import dumps
+        return dumps(self.to_dict())

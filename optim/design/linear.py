@@ -200,8 +200,8 @@ def constraint_rows(d, force, speed, vel) -> tuple[list, list]:
     return g, names
 
 
-def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = False
-                        ) -> LinearDesign:
+def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = False,
+                        lead_mm: float | None = None) -> LinearDesign:
     """Solve the linear design NLP of a case (module docstring).
 
     Parameters
@@ -212,6 +212,8 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
         Thermal mode; ``film``/``full`` are solved as ``none``/``bulk``.
     verbose : bool
         Print IPOPT's iterations.
+    lead_mm : float, optional
+        Hold the lead at this value [mm] (the lead-loss front); default: a variable.
 
     Returns
     -------
@@ -247,6 +249,8 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
     lbg = [0.0] * len(g)
     ubg = [ca.inf] * len(g)
     lo, hi = linear_bounds(case)
+    if lead_mm is not None:
+        lo[0] = hi[0] = float(lead_mm)
     x0 = np.clip(linear_design_vector(case), lo, hi)
     z, lbx, ubx, z0 = y, _to_y(lo), _to_y(hi), _to_y(x0)
     if q is not None:

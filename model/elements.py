@@ -35,7 +35,9 @@ class BearingElement:
     Attributes
     ----------
     spec : BearingSpec
-        The bearing.
+        The bearing [SI].
+    name : str
+        ``"bearing"`` [-].
     """
 
     spec: BearingSpec

@@ -494,13 +494,15 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
         return OperatingTemperature(
             mode, t, None, float(joint_mean_power(case, t, mode, depth_m)),
             tuple(float(v) for v in region_mean_powers(case, t, mode, depth_m)),
-            float(bearing_mean_power_at(case, t, depth_m)),
-            tuple(float(v) for v in element_mean_powers_at(case, t, depth_m)))
+            bearing_mean_power_W=float(bearing_mean_power_at(case, t, depth_m)),
+            element_mean_powers_W=tuple(float(v) for v in element_mean_powers_at(
+                case, t, depth_m)))
     t, powers = _balance(case, mode, depth_m)
     els = tuple(float(v) for v in powers[nreg:])
     return OperatingTemperature(mode, float(t), float(case.thermal.sea_temp_C),
                                 float(powers.sum()), tuple(float(v) for v in powers[:nreg]),
-                                els[0] if case.bearing is not None else 0.0, els)
+                                bearing_mean_power_W=els[0] if case.bearing is not None
+                                else 0.0, element_mean_powers_W=els)
 
 
 @dataclass(frozen=True)

@@ -350,8 +350,9 @@ def linear_defaults(doc: dict, drive: LinearDrive) -> list:
     Returns
     -------
     list of oilgap.model.io.defaults.Default
-        ``screw.f0``, ``screw.efficiency``, ``rod.eccentricity``, ``passages.count``,
-        ``passages.max_velocity_m_s``, the design bounds and the rod sine's keys left out.
+        ``screw.f0`` [-], ``screw.efficiency`` [-], ``rod.eccentricity`` [-],
+        ``passages.count`` [-], ``passages.max_velocity_m_s`` [m/s], the design bounds
+        [mm] and the rod sine's keys [Hz, s] left out.
     """
     from .defaults import Default
     out = []

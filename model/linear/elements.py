@@ -52,6 +52,8 @@ class ScrewElement:
         Screw pitch diameter d_m [m].
     f0 : float
         Palmgren factor [-].
+    name : str
+        ``"screw"`` [-].
     """
 
     pitch_diameter_m: Any
@@ -87,6 +89,8 @@ class RodGuideElement:
         Rod diameter, guide length and radial clearance [m].
     eccentricity : float
         e/c [-].
+    name : str
+        ``"rod guide"`` [-].
     """
 
     lead_m: Any
@@ -128,6 +132,8 @@ class PassagesElement:
         Number of passages [-] (>= 1).
     diameter_m, length_m : float or CasADi symbol
         Passage diameter and length [m].
+    name : str
+        ``"passages"`` [-].
     """
 
     lead_m: Any

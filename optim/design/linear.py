@@ -137,6 +137,23 @@ def _to_y(x_mm):
 
 
 def check_compensator(case: DesignCase) -> tuple[float, float] | None:
+    """The compensator's need and capacity [m^3], refused when the need is larger.
+
+    Parameters
+    ----------
+    case : DesignCase
+        A linear case.
+
+    Returns
+    -------
+    tuple of float or None
+        (volume needed, capacity) [m^3]; None without ``[compensator]``.
+
+    Raises
+    ------
+    InfeasibleError
+        The displaced volume plus the oil's expansion exceeds the capacity.
+    """
     c = case.linear.compensator
     if c is None:
         return None
@@ -152,7 +169,27 @@ def check_compensator(case: DesignCase) -> tuple[float, float] | None:
 
 
 def design_expressions(case: DesignCase, x, temp_C, mode: str):
-    """(loss [W], rod force [N], motor speed at v_max [rad/s], passage velocity [m/s])."""
+    """The NLP's loss and constraint quantities of a design.
+
+    Parameters
+    ----------
+    case : DesignCase
+        A linear case (its friction law as the NLP uses it).
+    x : sequence of 6 (float or CasADi symbol)
+        lead, guide clearance, passage diameter, motor gap, rotor and stator groove
+        depths [m].
+    temp_C : float or CasADi symbol
+        Bulk oil temperature [degC].
+    mode : str
+        ``"none"`` or ``"bulk"``.
+
+    Returns
+    -------
+    tuple
+        Mean loss [W] (:func:`~oilgap.model.joint_loss.joint_mean_power`), rod force
+        capability [N], motor speed at the peak rod velocity [rad/s], peak passage
+        velocity [m/s].
+    """
     d, r1 = case.linear, case.region1
     lead, c, dp, delta, d_r, d_s = x
     region1 = rotor_stator_region(r1.T2, delta, d_r, d_s, r1.length)

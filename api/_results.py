@@ -320,6 +320,8 @@ def evaluation_rows(ev: CaseEvaluation) -> list[dict]:
     rows += [{"region": f"rolling bearing {b.name}", "kind": f"rolling bearing ({b.model})",
               "mean_power_W": b.mean_power_W, "torque_peak_Nm": b.torque_peak_Nm}
              for b in ev.bearings]
+    rows += [{"region": e.name, "kind": "linear drive element", "mean_power_W": e.mean_power_W}
+             for e in ev.linear_elements]
     return rows
 
 

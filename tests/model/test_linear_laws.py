@@ -24,7 +24,7 @@ from oilgap.model.linear.laws import (
 MU, V, L = 0.1, 0.1, 0.03  # Pa s, m/s, m
 
 
-def _couette_by_finite_differences(r_i, r_o, n=400):
+def _couette_by_finite_differences(r_i, r_o, n=200):
     """Second method: solve (1/r) d/dr (r du/dr) = 0, u(r_i) = V, u(r_o) = 0, by central
     differences, and take the wall shear at r_i by a one-sided second-order difference."""
     r = np.linspace(r_i, r_o, n)

@@ -174,6 +174,11 @@ def robust_resolved(case: DesignCase, mode: str, statistic: str, kw: dict, lim: 
         if str(mode) != "none":
             raise InputError("--robust", statistic, "thermal none for a linear actuator (give "
                              "--thermal none; its robust NLP has no heat balance)", "optimize")
+        extra = [k for k in ("pareto", "mc_samples") if kw.get(k) is not None]
+        if extra:
+            raise InputError(f"--{extra[0].replace('_', '-')}", kw[extra[0]], "not for a "
+                             "linear actuator (its robust design takes --scenarios and "
+                             "--seed)", "optimize")
         return LinearRobustOptimization(solve_linear_robust(
             case, statistic, kw.get("scenarios"), kw.get("seed"), verbose), case)
     if str(mode) not in ROBUST_MODES:

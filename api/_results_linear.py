@@ -186,6 +186,31 @@ class LinearRobustOptimization:
         """
         return self.optimum_case
 
+    def plot(self, ax=None):
+        """The scenarios' losses at the robust and the nominal optimum, sorted.
+
+        Parameters
+        ----------
+        ax : matplotlib Axes, optional
+            Where to draw (default: a new figure).
+
+        Returns
+        -------
+        matplotlib Axes
+            Loss [W] against the scenarios' rank.
+        """
+        import matplotlib.pyplot as plt
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6, 4))
+        for key in ("robust", "nominal"):
+            v = np.sort(np.asarray(self.res.losses_W[key]))
+            ax.plot(np.arange(1, len(v) + 1) / len(v), v, marker=".", label=key)
+        ax.set_xlabel("share of scenarios [-]")
+        ax.set_ylabel("mean loss over the cycle [W]")
+        ax.set_title(f"{self.res.statistic} over {self.res.scenarios} scenarios")
+        ax.legend()
+        return ax
+
     def _stats(self, key: str) -> dict:
         v = np.asarray(self.res.losses_W[key])
         return {"p5_W": float(np.percentile(v, 5)), "p50_W": float(np.percentile(v, 50)),

@@ -21,7 +21,13 @@ from ..errors import InputError
 from ..oil_properties import seawater_gauge_pressure
 from ..units import celsius_to_kelvin, rad_s_to_rpm
 from .elements import linear_elements
-from .laws import annulus_leakage, dashpot_force, hagen_poiseuille_pressure_drop, rod_velocity
+from .laws import (
+    annulus_leakage,
+    dashpot_force,
+    hagen_poiseuille_pressure_drop,
+    motor_speed,
+    rod_velocity,
+)
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from ..case import DesignCase
@@ -226,5 +232,49 @@ def peak_rod_velocity(case: DesignCase) -> float:
     return float(rod_velocity(case.duty_cycle.peak_omega_rad_s, case.linear.lead_m))
 
 
-__all__ = ["LinearElementResult", "LinearSummary", "compensator_volume",
-           "linear_element_results", "peak_rod_velocity", "refuse_dashpot"]
+__all__ = ["ROD_VELOCITY_COLUMN", "LinearElementResult", "LinearSummary",
+           "compensator_volume", "linear_element_results", "peak_rod_velocity",
+           "refuse_dashpot", "rod_rows_as_motor_speed"]
+
+
+ROD_VELOCITY_COLUMN = "rod_velocity_m_s"
+"""Rig-data column of a linear actuator's rod velocity [m/s] (signed)."""
+
+
+def rod_rows_as_motor_speed(df, drive: LinearDrive):
+    """Rig data of a linear actuator with the motor's speed from the rod's velocity.
+
+    ``speed_rpm = 60 v / lead`` (one screw turn per lead) replaces the column
+    :data:`ROD_VELOCITY_COLUMN`; data without it is returned as it is.
+
+    Parameters
+    ----------
+    df : pandas.DataFrame
+        The rows (``rod_velocity_m_s`` [m/s]).
+    drive : LinearDrive
+        The drive (lead [m]).
+
+    Returns
+    -------
+    pandas.DataFrame
+        A copy with ``speed_rpm`` [rpm] in place of ``rod_velocity_m_s``.
+
+    Raises
+    ------
+    InputError
+        Both ``speed_rpm`` and ``rod_velocity_m_s`` given.
+
+    References
+    ----------
+    :func:`~oilgap.model.linear.laws.motor_speed`.
+    """
+    if ROD_VELOCITY_COLUMN not in df.columns:
+        return df
+    if "speed_rpm" in df.columns:
+        raise InputError("columns", "speed_rpm and rod_velocity_m_s", "one of them: the "
+                         "motor's speed follows from the rod's (60 v/lead)", "rig data")
+    out = df.copy()
+    v = out.pop(ROD_VELOCITY_COLUMN)
+    out.insert(list(df.columns).index(ROD_VELOCITY_COLUMN), "speed_rpm",
+               rad_s_to_rpm(motor_speed(v.astype(float), drive.lead_m)))
+    return out

@@ -21,8 +21,12 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from .bearing.friction import BearingSpec, bearing_mean_power
 from .linear.elements import linear_elements
+from .oil_properties import seawater_gauge_pressure
+from .units import celsius_to_kelvin
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from .case import DesignCase
@@ -77,6 +81,45 @@ def joint_elements(case: DesignCase, **design: Any) -> tuple:
     if linear is not None:
         out += linear_elements(linear, **design)
     return out
+
+
+def element_mean_powers_at(case: DesignCase, oil_temp_C, depth_m: float | None = None
+                           ) -> np.ndarray:
+    """Mean power [W] of each of the case's elements over the duty cycle at bulk
+    temperature(s), numpy only (:func:`~oilgap.model.elements.joint_elements`; the same
+    under every thermal mode: the elements take the bulk oil state, no film factor).
+
+    Parameters
+    ----------
+    case : DesignCase
+        The case (``bearing``, ``linear``, oil, duty cycle, depth).
+    oil_temp_C : float or array
+        Bulk oil temperature(s) [degC].
+    depth_m : float, optional
+        Sea depth [m] (default: the case's).
+
+    Returns
+    -------
+    ndarray
+        Shape ``np.shape(oil_temp_C) + (n_elements,)`` [W].
+
+    References
+    ----------
+    :func:`oilgap.model.bearing.bearing_mean_power` (SKF or Palmgren);
+    :mod:`oilgap.model.linear.elements` (docs/linear-joint.md).
+    """
+    t = np.asarray(oil_temp_C, dtype=float)
+    elements = joint_elements(case)
+    if not elements:
+        return np.zeros(t.shape + (0,))
+    d = case.operating.depth_m if depth_m is None else depth_m
+    nu, _, rho = case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
+    nodes, weights = case.duty_cycle.speed_distribution()
+    nu = np.broadcast_to(np.asarray(nu, dtype=float), t.shape)[..., None]
+    rho = np.broadcast_to(np.asarray(rho, dtype=float), t.shape)[..., None]
+    cols = [np.asarray(e.mean_power(nodes, weights, nu, rho), dtype=float).reshape(t.shape)
+            for e in elements]
+    return np.stack(cols, -1)
 
 
 def element_names(case: DesignCase) -> tuple[str, ...]:

@@ -46,7 +46,7 @@ import casadi as ca
 import numpy as np
 
 from . import _math as m
-from .elements import joint_elements
+from .elements import element_mean_powers_at, joint_elements
 from .errors import InputError
 from .film_cycle import FilmHeating, film_heating_for
 from .oil_properties import seawater_gauge_pressure
@@ -314,45 +314,6 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         for element in joint_elements(case, **(design or {})):
             total = total + element.mean_power(nodes, weights, nu, rho)
     return total
-
-
-def element_mean_powers_at(case: DesignCase, oil_temp_C, depth_m: float | None = None
-                           ) -> np.ndarray:
-    """Mean power [W] of each of the case's elements over the duty cycle at bulk
-    temperature(s), numpy only (:func:`~oilgap.model.elements.joint_elements`; the same
-    under every thermal mode: the elements take the bulk oil state, no film factor).
-
-    Parameters
-    ----------
-    case : DesignCase
-        The case (``bearing``, ``linear``, oil, duty cycle, depth).
-    oil_temp_C : float or array
-        Bulk oil temperature(s) [degC].
-    depth_m : float, optional
-        Sea depth [m] (default: the case's).
-
-    Returns
-    -------
-    ndarray
-        Shape ``np.shape(oil_temp_C) + (n_elements,)`` [W].
-
-    References
-    ----------
-    :func:`oilgap.model.bearing.bearing_mean_power` (SKF or Palmgren);
-    :mod:`oilgap.model.linear.elements` (docs/linear-joint.md).
-    """
-    t = np.asarray(oil_temp_C, dtype=float)
-    elements = joint_elements(case)
-    if not elements:
-        return np.zeros(t.shape + (0,))
-    d = case.operating.depth_m if depth_m is None else depth_m
-    nu, _, rho = case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
-    nodes, weights = case.duty_cycle.speed_distribution()
-    nu = np.broadcast_to(np.asarray(nu, dtype=float), t.shape)[..., None]
-    rho = np.broadcast_to(np.asarray(rho, dtype=float), t.shape)[..., None]
-    cols = [np.asarray(e.mean_power(nodes, weights, nu, rho), dtype=float).reshape(t.shape)
-            for e in elements]
-    return np.stack(cols, -1)
 
 
 def bearing_mean_power_at(case: DesignCase, oil_temp_C, depth_m: float | None = None):

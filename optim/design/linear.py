@@ -313,6 +313,13 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
                               status=out.status, last_iterate=last)
     if out.status not in SUCCESS_STATUSES or not np.all(np.isfinite(out.x)):
         raise solver_failure(out.status, out.iterations, last, "the linear design NLP")
+    return _design_result(case, z, out, xs, lo, hi, loss, names, comp, q is not None,
+                          nlp_mode)
+
+
+def _design_result(case, z, out, xs, lo, hi, loss, names, comp, balance: bool,
+                   nlp_mode: str) -> LinearDesign:
+    """The :class:`LinearDesign` of a solve: the loss and constraints at the optimum."""
     parts = ca.Function("parts", [z], [ca.vertcat(loss, *[n[1] for n in names])])
     vals = np.asarray(parts(out.x)).ravel()
     rpm = 30.0 / math.pi  # rad/s -> rpm at the edge
@@ -323,7 +330,7 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
         cons["compensator volume"] = (comp[0], comp[1], "m^3", "<=")
     return LinearDesign(x_mm=xs, x0_mm=linear_design_vector(case), lower_mm=lo, upper_mm=hi,
                         mean_power_W=float(vals[0]),
-                        oil_temp_C=float(out.x[6] * TEMP_SCALE_K) if q is not None
+                        oil_temp_C=float(out.x[6] * TEMP_SCALE_K) if balance
                         else float(case.operating.oil_temp_C),
                         constraints=cons, nlp_mode=nlp_mode, iterations=out.iterations)
 

@@ -134,3 +134,17 @@ def test_a_position_csv_gives_the_velocity(doc, tmp_path):
     case = case_from_dict({**d, "duty_cycle": {"kind": "csv", "csv": str(p)}}, tmp_path)
     v_peak = case.duty_cycle.peak_omega_rad_s * 0.005 / (2 * math.pi)
     assert v_peak == pytest.approx(0.02 * math.pi, rel=1e-5)
+
+
+@pytest.mark.parametrize("mode", ["none", "bulk"])
+def test_the_vectorised_rows_reach_the_linear_elements(mode):
+    from oilgap.model.uncertain import apply_inputs
+    from oilgap.model.uncertain.arrays import joint_loss_arrays
+    case = read_case_toml(EXAMPLE)
+    factors = np.array([0.9, 1.0, 1.1])
+    rows = joint_loss_arrays(case, {"nu40_factor": factors}, mode)
+    scalar = [operating_temperature(apply_inputs(case, {"nu40_factor": f}), mode).mean_power_W
+              for f in factors]
+    assert rows == pytest.approx(scalar, rel=1e-12)
+    assert rows[1] == pytest.approx(og.evaluate(case, thermal=mode).raw.total_mean_power_W,
+                                    rel=1e-9)

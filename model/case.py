@@ -484,6 +484,9 @@ class DesignCase:
             object.__setattr__(self, "bounds", DesignBounds.around(self.region1))
         check_motor_fits(self)
         check_bearing_fits(self)
+        if self.linear is not None:  # no bypass: a dashpot, refused with its force
+            from .linear.report import refuse_dashpot
+            refuse_dashpot(self)
         if self.mission:
             total = sum(s.fraction for s in self.mission)
             if abs(total - 1.0) > 1e-6:

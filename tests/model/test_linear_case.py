@@ -84,9 +84,18 @@ def test_text_prints_the_loss_by_element(capsys):
 
 
 def test_a_drive_without_passages_is_refused_as_a_dashpot(doc):
-    case = _case(doc, passages={"count": 0})
+    # refused when the case is made: no command (evaluate, optimize, studies) sees it
     with pytest.raises(InputError, match=r"passages\.count.*dashpot of [0-9.e+]+ N"):
-        og.evaluate(case)
+        _case(doc, passages={"count": 0})
+    # the force: 6 pi mu L R^3 v / c^3 with mu of the case's oil, L 30 mm, R 10 mm,
+    # c 0.05 mm, v 0.1 m/s
+    case = read_case_toml(EXAMPLE)
+    mu = oil_state(case)[1]
+    with pytest.raises(InputError) as e:
+        _case(doc, passages={"count": 0})
+    force = float(str(e.value).split("dashpot of ")[1].split(" N")[0])
+    assert force == pytest.approx(6 * math.pi * mu * 0.03 * 0.01**3 * 0.1 / 0.05e-3**3,
+                                  rel=1e-3)
 
 
 def test_a_dashpot_exits_2_with_one_line(capsys, tmp_path):

@@ -152,9 +152,9 @@ class LinearOptimization:
         for k, (v, lim, unit, sense) in d.constraints.items():
             shown = (v * 1e6, lim * 1e6, "mL") if unit == "m^3" else (v, lim, unit)
             lines.append(f"  {k:<34}{shown[0]:>10.4g} {sense} {shown[1]:.4g} {shown[2]}")
-        lines.append(f"NLP: thermal {d.nlp_mode} (film/full solved without the film factor, "
-                     f"then evaluated under the mode), smooth C_m, {d.iterations} IPOPT "
-                     "iterations; the motor's radius and length as given")
+        lines.append(f"NLP: thermal {d.nlp_mode}, smooth C_m, {d.iterations} IPOPT "
+                     "iterations; the motor's radius and length as given; the losses above "
+                     "are the evaluation's (exact C_m)")
         return "\n".join(lines)
 
 

@@ -9,10 +9,10 @@ with the motor's radius R and length L as the case gives them. The objective is 
 joint's mean loss over the rod's duty cycle, :func:`~oilgap.model.joint_loss.joint_mean_power`
 (the one composition: region 1 built from (R, delta, d_r, d_s, L), region 2, the bearing,
 the screw, the rod guide and the passages) with the motor's speeds scaled by
-``lead0/lead`` (the same rod cycle at another lead) and the smooth C_m. Under ``bulk``
-the oil temperature is a variable with the balance ``T = T_sea + R_th (P + Q)`` an equality
-(every element's heat in it); ``film``/``full`` are solved as ``none``/``bulk`` and the
-optimum evaluated under the mode asked (the film factor is not in this NLP).
+``lead0/lead`` (the same rod cycle at another lead) and the smooth C_m. Under ``bulk`` and
+``full`` the oil temperature is a variable with the balance ``T = T_sea + R_th (P + Q)`` an
+equality (every element's heat in it); under ``film``/``full`` the film factor applies to
+the motor gap, as in the evaluation.
 
 Constraints: the rod force ``2 pi eta T_mag/lead >= F_req`` (``[drive] required_force_N``;
 T_mag the motor's torque capability, :func:`~oilgap.model.motor.motor_torque`), the
@@ -75,7 +75,7 @@ class LinearDesign:
     constraints : dict
         Name -> (value, limit, unit) at the optimum.
     nlp_mode : str
-        The mode the NLP was solved under (``none`` or ``bulk``).
+        The thermal mode the NLP was solved under.
     iterations : int
         IPOPT iterations.
     """
@@ -246,7 +246,8 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
     case : DesignCase
         A linear case (``case.linear``).
     mode : str
-        Thermal mode; ``film``/``full`` are solved as ``none``/``bulk``.
+        Thermal mode (``film``/``full``: the film factor on the motor gap, at the bulk
+        temperature of the balance under ``full``).
     verbose : bool
         Print IPOPT's iterations.
     lead_mm : float, optional
@@ -274,12 +275,12 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
         raise InputError("drive.kind", "rotary", '"linear" for this design problem', "optimize")
     refuse_dashpot(case)
     comp = check_compensator(case)
-    nlp_mode = "bulk" if uses_balance(mode) else "none"
+    nlp_mode = str(mode)
     case_s = replace(case, friction=case.friction.smooth())
     d = case.linear
     y = ca.SX.sym("y", 6)
     x = [ca.exp(y[i]) * MM_TO_M if _LOG[i] else y[i] * MM_TO_M for i in range(6)]
-    q = ca.SX.sym("t") if nlp_mode == "bulk" else None
+    q = ca.SX.sym("t") if uses_balance(nlp_mode) else None
     temp = q * TEMP_SCALE_K if q is not None else float(case.operating.oil_temp_C)
     loss, force, speed, vel = design_expressions(case_s, x, temp, nlp_mode)
     g, names = constraint_rows(d, force, speed, vel)
@@ -297,7 +298,7 @@ def solve_linear_design(case: DesignCase, mode: str = "none", verbose: bool = Fa
         lbg.append(0.0)
         ubg.append(0.0)
         z = ca.vertcat(y, q)
-        t0 = operating_temperature(case, "bulk").oil_temp_C / TEMP_SCALE_K
+        t0 = operating_temperature(case, nlp_mode).oil_temp_C / TEMP_SCALE_K
         lbx, ubx = np.append(lbx, -6.0), np.append(ubx, 30.0)
         z0 = np.append(z0, t0)
     session = SolverSession("oilgap_linear_design",

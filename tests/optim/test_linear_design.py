@@ -110,3 +110,12 @@ def test_robust_p95_runs_and_keeps_the_constraints(case, optimum):
     assert len(r.losses_W["robust"]) == 4
     assert np.percentile(r.losses_W["robust"], 95) <= np.percentile(
         r.losses_W["nominal"], 95) * (1 + 1e-6)
+
+
+@pytest.mark.parametrize("mode", ["bulk", "full"])
+def test_the_balance_modes_solve_the_balance_in_the_nlp(case, mode):
+    d = solve_linear_design(case, mode)
+    ev = og.evaluate(linear_design_case(case, d.x_mm), thermal=mode).raw
+    # the NLP's oil temperature is the design's balance (the smooth C_m beside the exact)
+    assert d.oil_temp_C == pytest.approx(ev.oil_temp_C, abs=0.02)
+    assert d.mean_power_W == pytest.approx(ev.total_mean_power_W, rel=5e-3)

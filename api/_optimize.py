@@ -171,16 +171,16 @@ def robust_resolved(case: DesignCase, mode: str, statistic: str, kw: dict, lim: 
     """
     check_statistic(statistic)
     if case.linear is not None:  # the linear robust NLP (thermal none)
-        if str(mode) != "none":
-            raise InputError("--robust", statistic, "thermal none for a linear actuator (give "
-                             "--thermal none; its robust NLP has no heat balance)", "optimize")
+        if str(mode) not in ROBUST_MODES:
+            raise InputError("--robust", statistic, f"thermal modes none and bulk only (here "
+                             f"{mode}: give --thermal none or bulk)", "optimize")
         extra = [k for k in ("pareto", "mc_samples") if kw.get(k) is not None]
         if extra:
             raise InputError(f"--{extra[0].replace('_', '-')}", kw[extra[0]], "not for a "
                              "linear actuator (its robust design takes --scenarios and "
                              "--seed)", "optimize")
         return LinearRobustOptimization(solve_linear_robust(
-            case, statistic, kw.get("scenarios"), kw.get("seed"), verbose), case)
+            case, statistic, kw.get("scenarios"), kw.get("seed"), verbose, str(mode)), case)
     if str(mode) not in ROBUST_MODES:
         raise InputError("--robust", statistic, f"thermal modes none and bulk only (here "
                          f"{mode}: give --thermal none or bulk)", "optimize")

@@ -227,7 +227,8 @@ class LinearRobustOptimization:
         """
         from oilgap.optim.design.linear import LINEAR_VARIABLES
         r = self.res
-        return {"statistic": r.statistic, "scenarios": r.scenarios, "thermal_mode": "none",
+        return {"statistic": r.statistic, "scenarios": r.scenarios,
+                "thermal_mode": r.robust.nlp_mode,
                 "robust": {"design_mm": dict(zip(LINEAR_VARIABLES, map(float, r.robust.x_mm),
                                                  strict=True)), **self._stats("robust")},
                 "nominal": {"design_mm": dict(zip(LINEAR_VARIABLES, map(float, r.nominal.x_mm),
@@ -245,7 +246,8 @@ class LinearRobustOptimization:
         """
         from oilgap.optim.design.linear import LINEAR_VARIABLES
         r, a, b = self.res, self._stats("robust"), self._stats("nominal")
-        lines = [f"robust optimum ({r.statistic} over {r.scenarios} scenarios, thermal none): "
+        lines = [f"robust optimum ({r.statistic} over {r.scenarios} scenarios, thermal "
+                 f"{r.robust.nlp_mode}): "
                  f"p95 {a['p95_W']:.4g} W, mean {a['mean_W']:.4g} W (nominal optimum: p95 "
                  f"{b['p95_W']:.4g} W, mean {b['mean_W']:.4g} W)",
                  f"case        {self.case.name}", "",

@@ -1,5 +1,5 @@
 """Robust design of a linear actuator: the linear design NLP over scenarios of the
-uncertain inputs (``oilgap optimize --robust`` on a linear case, thermal ``none``).
+uncertain inputs (``oilgap optimize --robust`` on a linear case, thermal ``none`` or ``bulk``).
 
 The scenarios are quasi-random draws of the case's ``[uncertainty]`` (or the documented
 defaults, :func:`oilgap.model.uncertain.distributions.case_uncertainty`), each applied by
@@ -15,7 +15,9 @@ composition) of its case. The statistic:
 
 The constraints are the nominal case's (force, speed, passage velocity; they do not
 depend on the oil). The nominal optimum (:func:`.linear.solve_linear_design`) is solved
-too, and both designs' empirical p5/p50/p95 over the scenarios are reported.
+too, and both designs' empirical p5/p50/p95 over the scenarios are reported, each
+scenario's loss at a design by the evaluation's path (exact C_m, its own balance under
+``bulk``).
 
 References
 ----------
@@ -32,6 +34,7 @@ import numpy as np
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import InfeasibleError, InputError
+from oilgap.model.joint_loss import operating_temperature, uses_balance
 from oilgap.model.linear.report import refuse_dashpot
 from oilgap.model.uncertain.distributions import case_uncertainty
 from oilgap.model.uncertain.inputs import apply_inputs
@@ -40,12 +43,14 @@ from oilgap.model.units import MM_TO_M
 from .linear import (
     _LOG,
     LINEAR_VARIABLES,
+    TEMP_SCALE_K,
     LinearDesign,
     _to_y,
     check_compensator,
     constraint_rows,
     design_expressions,
     linear_bounds,
+    linear_design_case,
     linear_design_vector,
     solve_linear_design,
 )
@@ -95,10 +100,53 @@ def _statistic(stat: str, losses, n: int):
     return f, [t, s], ([-ca.inf] + [0.0] * n, [ca.inf] * (n + 1)), rows
 
 
+def _scenario_losses(cases, x, mode: str):
+    """Each scenario's loss expression, and under a balance mode its temperature variable
+    and the balance row ``T_i - T_sea,i - R (l_i + Q) = 0`` [K]."""
+    losses, temps, rows = [], [], []
+    for c in cases:
+        cs = replace(c, friction=c.friction.smooth())
+        if uses_balance(mode):
+            q = ca.SX.sym("t")
+            loss = design_expressions(cs, x, q * TEMP_SCALE_K, mode)[0]
+            th = c.thermal
+            rows.append(q * TEMP_SCALE_K - th.sea_temp_C - th.resistance_K_W
+                        * (loss + th.other_heat_W))
+            temps.append(q)
+        else:
+            loss = design_expressions(cs, x, float(c.operating.oil_temp_C), mode)[0]
+        losses.append(loss)
+    return losses, temps, rows
+
+
+def _exact_losses(cases, x_mm, mode: str) -> np.ndarray:
+    """Each scenario's loss at a design, by the evaluation's path (exact C_m) [W]."""
+    return np.array([operating_temperature(linear_design_case(c, x_mm), mode).mean_power_W
+                     for c in cases])
+
+
+def _robust_design(case, y, xs, lo, hi, names, comp, mode: str, iterations: int,
+                   lr: np.ndarray) -> LinearDesign:
+    """The robust optimum as a :class:`~.linear.LinearDesign`, its constraints evaluated."""
+    each = ca.Function("each", [y], [ca.vertcat(*[n_[1] for n_ in names])])
+    cons_r = np.asarray(each(_to_y(xs))).ravel()
+    rpm = 30.0 / np.pi
+    cons = {nm[0]: ((float(v) * rpm, float(nm[2]) * rpm, "rpm", nm[4]) if nm[3] == "rad/s"
+                    else (float(v), float(nm[2]), nm[3], nm[4]))
+            for nm, v in zip(names, cons_r, strict=True)}
+    if comp is not None:
+        cons["compensator volume"] = (comp[0], comp[1], "m^3", "<=")
+    robust = LinearDesign(x_mm=xs, x0_mm=linear_design_vector(case), lower_mm=lo,
+                          upper_mm=hi, mean_power_W=float(np.mean(lr)),
+                          oil_temp_C=float(case.operating.oil_temp_C), constraints=cons,
+                          nlp_mode=mode, iterations=iterations)
+    return robust
+
+
 def solve_linear_robust(case: DesignCase, statistic: str = "p95",
                         scenarios: int | None = None, seed: int | None = None,
-                        verbose: bool = False) -> LinearRobustDesign:
-    """The robust linear design (module docstring), thermal ``none``.
+                        verbose: bool = False, mode: str = "none") -> LinearRobustDesign:
+    """The robust linear design (module docstring), thermal ``none`` or ``bulk``.
 
     Parameters
     ----------
@@ -112,6 +160,9 @@ def solve_linear_robust(case: DesignCase, statistic: str = "p95",
         Seed of the draws (default 0).
     verbose : bool
         IPOPT's iterations.
+    mode : str
+        ``"none"`` or ``"bulk"`` (each scenario's own balance as an equality, its
+        temperature a variable).
 
     Returns
     -------
@@ -136,23 +187,26 @@ def solve_linear_robust(case: DesignCase, statistic: str = "p95",
     cases = [apply_inputs(case, {k: float(v[i]) for k, v in draws.items()}) for i in range(n)]
     y = ca.SX.sym("y", 6)
     x = [ca.exp(y[i]) * MM_TO_M if _LOG[i] else y[i] * MM_TO_M for i in range(6)]
-    losses = [design_expressions(replace(c, friction=c.friction.smooth()), x,
-                                 float(c.operating.oil_temp_C), "none")[0] for c in cases]
+    losses, temps, balance = _scenario_losses(cases, x, mode)
     _, force, speed, vel = design_expressions(replace(case, friction=case.friction.smooth()),
                                               x, float(case.operating.oil_temp_C), "none")
     g, names = constraint_rows(case.linear, force, speed, vel)
     f, extra, (elo, ehi), rows = _statistic(statistic, losses, n)
     lo, hi = linear_bounds(case)
-    nominal = solve_linear_design(case, "none", verbose)
-    z = ca.vertcat(y, *extra)
-    z0 = np.concatenate([_to_y(np.clip(nominal.x_mm, lo, hi)),
-                         ([float(np.max(np.asarray(ca.Function("l", [y], [ca.vertcat(*losses)])(
-                             _to_y(nominal.x_mm)))))] + [0.0] * n) if extra else []])
+    nominal = solve_linear_design(case, mode, verbose)
+    z = ca.vertcat(y, *temps, *extra)
+    t0 = [operating_temperature(linear_design_case(c, nominal.x_mm), mode).oil_temp_C
+          / TEMP_SCALE_K for c in cases] if temps else []
+    l0 = _exact_losses(cases, nominal.x_mm, mode)
+    z0 = np.concatenate([_to_y(np.clip(nominal.x_mm, lo, hi)), t0,
+                         ([float(l0.max())] + [0.0] * n) if extra else []])
+    ng = len(g) + len(rows)
     session = SolverSession("oilgap_linear_robust", {"x": z, "p": ca.SX.sym("p", 0), "f": f,
-                                                     "g": ca.vertcat(*g, *rows)}, verbose)
-    out = session.solve(z0, [], np.concatenate([_to_y(lo), elo]),
-                        np.concatenate([_to_y(hi), ehi]), [0.0] * (len(g) + len(rows)),
-                        [ca.inf] * (len(g) + len(rows)))
+                                                     "g": ca.vertcat(*g, *rows, *balance)},
+                            verbose)
+    out = session.solve(z0, [], np.concatenate([_to_y(lo), [-6.0] * len(temps), elo]),
+                        np.concatenate([_to_y(hi), [30.0] * len(temps), ehi]),
+                        [0.0] * (ng + len(balance)), [ca.inf] * ng + [0.0] * len(balance))
     xs = np.clip(np.where(_LOG, np.exp(out.x[:6]), out.x[:6]), lo, hi)
     last = dict(zip(LINEAR_VARIABLES, xs, strict=True))
     if out.status == "Infeasible_Problem_Detected":
@@ -160,18 +214,7 @@ def solve_linear_robust(case: DesignCase, statistic: str = "p95",
                               status=out.status, last_iterate=last)
     if out.status not in SUCCESS_STATUSES:
         raise solver_failure(out.status, out.iterations, last, "the linear robust NLP")
-    each = ca.Function("each", [y], [ca.vertcat(*losses), ca.vertcat(*[n_[1] for n_ in names])])
-    lr, cons_r = (np.asarray(v).ravel() for v in each(_to_y(xs)))
-    ln = np.asarray(each(_to_y(nominal.x_mm))[0]).ravel()
-    rpm = 30.0 / np.pi
-    cons = {nm[0]: ((float(v) * rpm, float(nm[2]) * rpm, "rpm", nm[4]) if nm[3] == "rad/s"
-                    else (float(v), float(nm[2]), nm[3], nm[4]))
-            for nm, v in zip(names, cons_r, strict=True)}
-    if comp is not None:
-        cons["compensator volume"] = (comp[0], comp[1], "m^3", "<=")
-    robust = LinearDesign(x_mm=xs, x0_mm=linear_design_vector(case), lower_mm=lo,
-                          upper_mm=hi, mean_power_W=float(np.mean(lr)),
-                          oil_temp_C=float(case.operating.oil_temp_C), constraints=cons,
-                          nlp_mode="none", iterations=out.iterations)
+    lr = _exact_losses(cases, xs, mode)
+    robust = _robust_design(case, y, xs, lo, hi, names, comp, str(mode), out.iterations, lr)
     return LinearRobustDesign(statistic=statistic, robust=robust, nominal=nominal,
-                              losses_W={"robust": lr, "nominal": ln}, scenarios=n)
+                              losses_W={"robust": lr, "nominal": l0}, scenarios=n)

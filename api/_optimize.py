@@ -10,6 +10,7 @@ from typing import Any
 from oilgap._checks import CASE, NAME, NUMBER, OILS, checked, choice
 from oilgap._evaluate import THERMAL, as_case, thermal_case, with_operating, with_transition
 from oilgap._results_design import Optimization, thermal_line
+from oilgap._results_linear import LinearOptimization, LinearRobustOptimization
 from oilgap._results_robust import RobustOptimization
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import ArgumentError, InputError, OilgapWarning
@@ -18,6 +19,8 @@ from oilgap.model.oils import Oil
 from oilgap.model.thermal_modes import ThermalMode
 from oilgap.model.transition import TRANSITIONS
 from oilgap.optim.design import DesignProblem, compare_heating
+from oilgap.optim.design.linear import solve_linear_design
+from oilgap.optim.design.linear_robust import solve_linear_robust
 from oilgap.optim.design.robust import ROBUST_MODES, check_statistic
 from oilgap.studies.robust import RobustSettings, robust_design
 from oilgap.studies.settings import DesignLimits
@@ -125,6 +128,9 @@ def optimize_resolved(case: DesignCase, mode: ThermalMode, by_default: bool,
     """
     starts, lim = limits.starts, limits.constraints()
     header = thermal_line(mode, by_default)
+    if case.linear is not None:  # the linear actuator's NLP (oilgap.optim.design.linear)
+        return LinearOptimization(solve_linear_design(case, str(mode), verbose), case,
+                                  str(mode), header)
     if mode == ThermalMode.NONE:
         res = DesignProblem(case, verbose=verbose, thermal=mode).solve(starts=starts, **lim)
         with warnings.catch_warnings():
@@ -170,6 +176,17 @@ def robust_resolved(case: DesignCase, mode: str, statistic: str, kw: dict, lim: 
         The robust and nominal designs side by side; powers [W].
     """
     check_statistic(statistic)
+    if case.linear is not None:  # the linear robust NLP (thermal none)
+        if str(mode) not in ROBUST_MODES:
+            raise InputError("--robust", statistic, f"thermal modes none and bulk only (here "
+                             f"{mode}: give --thermal none or bulk)", "optimize")
+        extra = [k for k in ("pareto", "mc_samples") if kw.get(k) is not None]
+        if extra:
+            raise InputError(f"--{extra[0].replace('_', '-')}", kw[extra[0]], "not for a "
+                             "linear actuator (its robust design takes --scenarios and "
+                             "--seed)", "optimize")
+        return LinearRobustOptimization(solve_linear_robust(
+            case, statistic, kw.get("scenarios"), kw.get("seed"), verbose, str(mode)), case)
     if str(mode) not in ROBUST_MODES:
         raise InputError("--robust", statistic, f"thermal modes none and bulk only (here "
                          f"{mode}: give --thermal none or bulk)", "optimize")

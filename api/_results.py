@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 from oilgap._checks import AX, FLAG, Arg, check_arg, checked
+from oilgap._results_linear import linear_rows
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import ArgumentError
 from oilgap.model.evaluation import CaseEvaluation
@@ -306,7 +307,7 @@ def format_evaluation(ev: CaseEvaluation, gamma: str | None = None,
             f"{r.mean_power_W:>9.3f}{r.nahme_peak:>9.3g}{r.nahme_effective_peak:>8.3g}"
             f"{r.film_factor_steady_peak:>8.3f}{r.film_factor_applied_peak:>8.3f}{rise:>8}"
             f"  {', '.join(r.regimes)}")
-    lines += _bearing_rows(ev)
+    lines += _bearing_rows(ev) + linear_rows(ev)
     notes = wrapped(_film_notes(ev) + _bearing_notes(ev))
     return layout(_total_lines(ev, groove), lines + [""] + notes,
                   head + ([gamma] if gamma else []), defaults=defaults)
@@ -318,9 +319,11 @@ def _total_lines(ev: CaseEvaluation, groove: GrooveBand | None = None) -> list[s
     at the peak and the energy per cycle."""
     parts = [(r.name, r.mean_power_W) for r in ev.regions]
     parts += [(f"rolling bearing {b.name}", b.mean_power_W) for b in ev.bearings]
+    parts += [(e.name, e.mean_power_W) for e in ev.linear_elements]
     share = ", ".join(f"{n} {100 * p / ev.total_mean_power_W:.0f} %"
                       for n, p in parts) if ev.total_mean_power_W > 0 else ""
-    label = "total mean power          " if ev.bearings else "total mean viscous power  "
+    label = ("total mean power          " if ev.bearings or ev.linear
+             else "total mean viscous power  ")
     lines = [f"{label} {ev.total_mean_power_W:.3f} W   ({share})"]
     if ev.film_band is not None:
         lines.append(f"film band                  {ev.film_band.line('.4g')}")
@@ -354,6 +357,8 @@ def evaluation_rows(ev: CaseEvaluation) -> list[dict]:
     rows += [{"region": f"rolling bearing {b.name}", "kind": f"rolling bearing ({b.model})",
               "mean_power_W": b.mean_power_W, "torque_peak_Nm": b.torque_peak_Nm}
              for b in ev.bearings]
+    rows += [{"region": e.name, "kind": "linear drive element", "mean_power_W": e.mean_power_W}
+             for e in ev.linear_elements]
     return rows
 
 

@@ -19,6 +19,7 @@ import pandas as pd
 
 from oilgap._checks import CASE, FLAG, GRID, MISSION, OILS, OUT, Arg, checked
 from oilgap._evaluate import as_case, oil_catalogue
+from oilgap._results_linear import LeadFront
 from oilgap._results_studies import OilGrade, Pareto, Smoothing
 from oilgap._results_sweep import Sweep, write_sweep_outputs
 from oilgap.model.case import DesignCase
@@ -112,11 +113,28 @@ def pareto(case: DesignCase | str | Path | None = None, *, out: str | Path | Non
     """
     base = as_case(case)
     settings, options = split_keywords(keywords, ParetoSettings)
+    if base.linear is not None:  # a linear actuator: the lead-loss front
+        return _lead_front(base, settings, out, force, folder)
     with result_folder("study pareto", out, force, folder=folder) as f:
         _begin(f, base)
         r = pareto_study.run(out, base, settings, options)
         _note(f, r.thermal_mode, r.thermal_default)
     return Pareto(r, base, _out(out))
+
+
+def _lead_front(base: DesignCase, settings: ParetoSettings, out, force: bool,
+                folder: ResultFolder | None) -> LeadFront:
+    """``study pareto`` of a linear actuator: :mod:`oilgap.studies.linear_lead`."""
+    from oilgap.model.joint_loss import resolved_mode
+    from oilgap.studies.linear_lead import lead_front, write_lead_front
+    mode = resolved_mode(base, settings.thermal)
+    with result_folder("study pareto", out, force, folder=folder) as f:
+        _begin(f, base)
+        df = lead_front(base, settings.points, str(mode))
+        if out is not None:
+            write_lead_front(df, out, base.name)
+        _note(f, str(mode), settings.thermal is None)
+    return LeadFront(df, base.name, str(mode), _out(out))
 
 
 def _mission(mission: Any) -> Any:

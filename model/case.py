@@ -24,7 +24,12 @@ from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 from .bearing.friction import BearingSpec
-from .case_limits import (
+from .duty_cycle import DutyCycle
+from .errors import InputError, check_positive, check_range
+from .film_heating import WALL_CONDITIONS
+from .fluids import Fluid
+from .io.inputs import check_physical
+from .io.limits import (
     MAX_GAP_RATIO,
     MAX_LENGTH_M,
     MAX_RADIUS_M,
@@ -41,11 +46,6 @@ from .case_limits import (
     check_size,
     in_mm,
 )
-from .duty_cycle import DutyCycle
-from .errors import InputError, check_positive, check_range
-from .film_heating import WALL_CONDITIONS
-from .fluids import Fluid
-from .io.inputs import check_physical
 from .skin_friction import FrictionLaw, groove_roughness
 from .units import MM_TO_M
 
@@ -296,7 +296,7 @@ class DesignBounds:
     @classmethod
     def around(cls, region1: RotorStatorClearance) -> DesignBounds:
         """Default bounds: gap x[0.5, 2], radius x[0.9, 1.1], length x[0.8, 1.2] of the given,
-        within the limits of :mod:`~oilgap.model.case_limits` (the gap from 1 um to the
+        within the limits of :mod:`~oilgap.model.io.limits` (the gap from 1 um to the
         smallest radius, the radius at most 2 m, the length at most 5 m).
 
         Parameters
@@ -473,6 +473,10 @@ class DesignCase:
         The uncertain inputs' joint law (``[uncertainty]``), if given; None: the documented
         defaults (:func:`oilgap.model.uncertain.distributions.case_uncertainty`). It
         enters no nominal number.
+    linear : oilgap.model.linear.drive.LinearDrive or None
+        The linear actuator's screw, rod, guide and passages (``[drive] kind =
+        "linear"``, docs/linear-joint.md); None: a rotary joint. The duty cycle is then
+        the motor's speed ``2 pi v/lead`` of the rod's velocity.
     """
 
     name: str
@@ -491,12 +495,16 @@ class DesignCase:
     gamma_source: str = field(default="given", compare=False)
     defaults: tuple = field(default=(), compare=False)
     uncertainty: Any = field(default=None, compare=False)
+    linear: Any = None
 
     def __post_init__(self):
         if self.bounds is None:
             object.__setattr__(self, "bounds", DesignBounds.around(self.region1))
         check_motor_fits(self)
         check_bearing_fits(self)
+        if self.linear is not None:  # no bypass: a dashpot, refused with its force
+            from .linear.report import refuse_dashpot
+            refuse_dashpot(self)
         if self.mission:
             total = sum(s.fraction for s in self.mission)
             if abs(total - 1.0) > 1e-6:

@@ -52,6 +52,12 @@ from .joint_loss import (
     resolved_mode,
     uses_balance,
 )
+from .linear.report import (
+    LinearElementResult,
+    LinearSummary,
+    linear_element_results,
+    refuse_dashpot,
+)
 from .oil_properties import seawater_gauge_pressure
 from .regions import joint_regions, region_mean_power, region_power
 from .skin_friction import moment_coefficient
@@ -228,6 +234,12 @@ class CaseEvaluation:
     film_band : FilmBand or None
         The same design under the opposite film choice
         (:func:`~oilgap.model.joint_loss.film_band`); None when not computed.
+    linear_elements : tuple of LinearElementResult
+        A linear actuator's screw, rod guide and passages at the bulk oil state
+        (:mod:`oilgap.model.linear.report`); empty for a rotary joint.
+    linear : LinearSummary or None
+        A linear actuator's lead, peak rod velocity and motor speed, passage flow
+        numbers; None for a rotary joint.
     """
 
     case_name: str
@@ -252,6 +264,8 @@ class CaseEvaluation:
     bearings: tuple[BearingResult, ...] = ()
     film_applied: bool = False
     film_band: FilmBand | None = None
+    linear_elements: tuple[LinearElementResult, ...] = ()
+    linear: LinearSummary | None = None
 
     def to_dict(self) -> dict:
         """Plain-dict form (the ``--json`` output).
@@ -276,6 +290,8 @@ class CaseEvaluation:
                          for b in self.bearings]
         if not self.bearings:
             del d["bearings"]
+        if self.linear is None:  # a rotary joint's document is what it was
+            del d["linear_elements"], d["linear"]
         return d
 
 
@@ -513,6 +529,8 @@ class _Computed:
     bearings: tuple[BearingResult, ...]
     total_W: float
     isothermal_W: float
+    linear_rows: tuple = ()
+    linear: LinearSummary | None = None
 
     def evaluation(self, case: DesignCase, mode: str, by_default: bool, depth_m: float,
                    band) -> CaseEvaluation:
@@ -531,7 +549,8 @@ class _Computed:
             total_mean_power_W=total, isothermal_total_mean_power_W=self.isothermal_W,
             viscous_torque_peak_Nm=sum(r.torque_peak_Nm for r in rows),
             cycle_energy_J=total * cycle.duration_s, bearings=self.bearings,
-            film_applied=applies_film(mode), film_band=band)
+            film_applied=applies_film(mode), film_band=band, linear_elements=self.linear_rows,
+            linear=self.linear)
 
 
 def _computed(case: DesignCase, mode: str, t_case: float, d: float) -> _Computed:
@@ -546,7 +565,9 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float) -> _Computed
                             for r, p in zip(regions, means, strict=True))
             bearings = () if case.bearing is None else (bearing_result(case, case.bearing,
                                                                        nu, rho),)
-            total = sum(r.mean_power_W for r in results + bearings)
+            lin_rows, lin = ((), None) if case.linear is None else linear_element_results(
+                case, nu, rho)
+            total = sum(r.mean_power_W for r in results + bearings + lin_rows)
             iso = total if mode == ThermalMode.NONE else float(
                 joint_mean_power(case, t_case, ThermalMode.NONE.value, d))
     except (OverflowError, ZeroDivisionError) as e:
@@ -557,7 +578,8 @@ def _computed(case: DesignCase, mode: str, t_case: float, d: float) -> _Computed
         raise SolverError(f"the total loss is not finite ({total:g} W, isothermal {iso:g} W); "
                           "the result is not reported")
     return _Computed(oil_temp_C=t, nu_m2_s=nu, rho_kg_m3=rho, regions=results,
-                     bearings=bearings, total_W=total, isothermal_W=iso)
+                     bearings=bearings, total_W=total, isothermal_W=iso, linear_rows=lin_rows,
+                     linear=lin)
 
 
 def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
@@ -632,6 +654,7 @@ def evaluate_case(case: DesignCase, oil_temp_C: float | None = None,
         raise InputError("oil_temp_C", oil_temp_C, f"not given under thermal mode '{mode}': "
                          "the heat balance sets the oil temperature (change [thermal] "
                          "sea_temp_C, or choose thermal 'none' or 'film')")
+    refuse_dashpot(case)
     c = _computed(case, mode, t_case, d)
     at = case if oil_temp_C is None else replace(
         case, operating=replace(case.operating, oil_temp_C=t_case))

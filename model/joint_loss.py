@@ -46,7 +46,7 @@ import casadi as ca
 import numpy as np
 
 from . import _math as m
-from .bearing.friction import bearing_mean_power
+from .elements import element_mean_powers_at, joint_elements
 from .errors import InputError
 from .film_cycle import FilmHeating, film_heating_for
 from .oil_properties import seawater_gauge_pressure
@@ -88,6 +88,9 @@ class OperatingTemperature:
     bearing_mean_power_W : float
         The rolling bearing's part of ``mean_power_W`` (:func:`bearing_mean_power_at`) [W];
         0 without a bearing.
+    element_mean_powers_W : tuple of float
+        Every element's part (:func:`~oilgap.model.elements.joint_elements`: the bearing,
+        then a linear drive's screw, rod guide and passages) [W]; empty without elements.
     """
 
     mode: str
@@ -96,6 +99,7 @@ class OperatingTemperature:
     mean_power_W: float
     region_mean_powers_W: tuple[float, ...] = ()
     bearing_mean_power_W: float = 0.0
+    element_mean_powers_W: tuple[float, ...] = ()
 
 
 def default_thermal_mode(case: DesignCase) -> str:
@@ -236,7 +240,8 @@ def mode_film(case: DesignCase, mode: str, temp_K, pressure_gauge_Pa):
 
 
 def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | None = None,
-                     regions=None, include_bearing: bool | None = None):
+                     regions=None, include_bearing: bool | None = None, *,
+                     speed_scale=None, design: dict | None = None):
     """Mean loss [W] of all regions (and the rolling bearing) over the duty cycle at a
     bulk temperature.
 
@@ -257,12 +262,22 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         the design NLP passes region 1 with symbolic geometry, a sweep regions whose
         R, delta, L, T have shape (n, 1)).
     include_bearing : bool, optional
-        Add the case's rolling bearing (``case.bearing``,
+        Add the case's elements (:func:`~oilgap.model.elements.joint_elements`: the rolling
+        bearing and a linear drive's screw, rod guide and passages, each at the bulk
+        oil state, no film factor) -- the rolling bearing (``case.bearing``,
         :func:`~oilgap.model.bearing.bearing_mean_power` at the bulk viscosity, no film
         factor) when it has one (default: when ``regions`` is None, i.e. the whole
         joint; a caller passing its own regions says whether they stand for the joint).
         Its result must broadcast like the regions' means: one bearing term per
         temperature, not per region.
+    speed_scale : float or CasADi symbol, optional
+        Factor on the duty cycle's motor speeds [-] (the linear design NLP: a lead
+        changed from the case's to ``lead`` turns the motor ``lead0/lead`` times as
+        fast for the same rod cycle); default: none.
+    design : dict, optional
+        The linear drive's design variables [m] passed to
+        :func:`~oilgap.model.elements.joint_elements` (``lead_m``,
+        ``guide_clearance_m``, ``passage_diameter_m``); default: the case's.
 
     Returns
     -------
@@ -276,8 +291,8 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
     """
     d = case.operating.depth_m if depth_m is None else depth_m
     p = seawater_gauge_pressure(d)
-    symbolic = m.is_symbolic(oil_temp_C)
-    t = oil_temp_C if symbolic else np.asarray(oil_temp_C, dtype=float)
+    symbolic = m.is_symbolic(oil_temp_C, speed_scale)
+    t = oil_temp_C if m.is_symbolic(oil_temp_C) else np.asarray(oil_temp_C, dtype=float)
     t_k = celsius_to_kelvin(t)
     nu, _, rho = case.oil.properties(t_k, p)
     nodes, weights = case.duty_cycle.speed_distribution()
@@ -288,13 +303,16 @@ def joint_mean_power(case: DesignCase, oil_temp_C, mode: str, depth_m: float | N
         shape = np.broadcast_shapes(np.shape(nu), np.shape(rho), np.shape(b))
         nu, rho = (np.broadcast_to(v, shape)[..., None] for v in (nu, rho))
         b = None if b is None else np.broadcast_to(b, shape)[..., None]
+    if speed_scale is not None:
+        nodes = nodes * speed_scale
     if include_bearing is None:
         include_bearing = regions is None
     regions = joint_regions(case) if regions is None else regions
     total = sum(region_mean_power(r, nodes, weights, nu, rho, case.friction, film, b)
                 for r in regions)
-    if include_bearing and case.bearing is not None:
-        total = total + bearing_mean_power(case.bearing, nodes, weights, nu)
+    if include_bearing:
+        for element in joint_elements(case, **(design or {})):
+            total = total + element.mean_power(nodes, weights, nu, rho)
     return total
 
 
@@ -325,12 +343,8 @@ def bearing_mean_power_at(case: DesignCase, oil_temp_C, depth_m: float | None = 
     t = np.asarray(oil_temp_C, dtype=float)
     if case.bearing is None:
         return np.zeros(t.shape) if t.ndim else 0.0
-    d = case.operating.depth_m if depth_m is None else depth_m
-    nu, _, _ = case.oil.properties(celsius_to_kelvin(t), seawater_gauge_pressure(d))
-    nodes, weights = case.duty_cycle.speed_distribution()
-    nu = np.broadcast_to(np.asarray(nu, dtype=float), t.shape)[..., None]
-    p = np.asarray(bearing_mean_power(case.bearing, nodes, weights, nu), dtype=float)
-    return p.reshape(t.shape) if t.ndim else float(p)
+    p = element_mean_powers_at(case, t, depth_m)[..., 0]  # the bearing is the first
+    return p if t.ndim else float(p)
 
 
 def _stacked_regions(case: DesignCase) -> Region:
@@ -384,14 +398,15 @@ def _balance(case: DesignCase, mode: str, depth_m: float | None
              ) -> tuple[float, np.ndarray]:
     """``T = T_sea + R (P(T) + Q)`` by :func:`~oilgap.model.thermal.joint_steady_temperature`
     (the one solver of the lumped balance), with the losses per region at the root (and
-    the bearing's as a last column when the case has one: its heat is in P)."""
+    the elements' as last columns, the bearing first: their heat is in P)."""
     stacked = _stacked_regions(case)
+    has_elements = bool(joint_elements(case))
 
     def power_at(ts):
         p = _stacked_powers(case, ts, mode, depth_m, stacked)
-        if case.bearing is None:
+        if not has_elements:
             return p
-        return np.concatenate([p, bearing_mean_power_at(case, ts, depth_m)[..., None]], -1)
+        return np.concatenate([p, element_mean_powers_at(case, ts, depth_m)], -1)
 
     temps, powers = joint_steady_temperature(power_at, case.thermal, 1,
                                              case.oil.trusted_range_C)
@@ -440,11 +455,15 @@ def operating_temperature(case: DesignCase, mode: str | None = None,
         return OperatingTemperature(
             mode, t, None, float(joint_mean_power(case, t, mode, depth_m)),
             tuple(float(v) for v in region_mean_powers(case, t, mode, depth_m)),
-            float(bearing_mean_power_at(case, t, depth_m)))
+            bearing_mean_power_W=float(bearing_mean_power_at(case, t, depth_m)),
+            element_mean_powers_W=tuple(float(v) for v in element_mean_powers_at(
+                case, t, depth_m)))
     t, powers = _balance(case, mode, depth_m)
+    els = tuple(float(v) for v in powers[nreg:])
     return OperatingTemperature(mode, float(t), float(case.thermal.sea_temp_C),
                                 float(powers.sum()), tuple(float(v) for v in powers[:nreg]),
-                                float(powers[nreg:].sum()))
+                                bearing_mean_power_W=els[0] if case.bearing is not None
+                                else 0.0, element_mean_powers_W=els)
 
 
 @dataclass(frozen=True)

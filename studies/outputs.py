@@ -24,6 +24,7 @@ OUTPUTS: dict[str, tuple[str, ...]] = {
     "study pareto": ("pareto_gap.csv", "pareto_inertia.csv", "pareto_seeds.csv",
                      "pareto_design.csv",
                      "pareto_gap.png", "pareto_inertia.png", "summary.md",
+                     "lead_front.csv", "lead_front.png",  # a linear actuator's front
                      *store_files("grid_gap/"), *store_files("grid_inertia/"), PROVENANCE_NAME),
     "study oil-grade": ("oil_grade_table.csv", "oil_grade_envelope.csv",
                         "oil_grade_rated.csv", "oil_grade_isothermal_table.csv",

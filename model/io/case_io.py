@@ -44,6 +44,7 @@ from ..oils import Oil, get_oil, read_oils_csv, with_builtin
 from ..skin_friction import BRANCH_KEYS, FrictionLaw, check_friction_ranges
 from ..units import MM_TO_M, celsius_to_kelvin
 from .case_bearing import BEARING_TABLE, bearing_from_doc
+from .case_linear import LINEAR_TABLES, drive_kind, linear_drive_from, linear_duty_cycle
 from .case_uncertainty import UNCERTAINTY_TABLE, uncertainty_from_doc
 from .defaults import reader_defaults
 from .inputs import cell_for_message, file_kind, read_input_text
@@ -143,8 +144,11 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         raise InputError("case", doc, "must be a TOML table")
     allowed_top = _TOP_KEYS | set(_TABLES) | set(_ARRAY_TABLES) | {BEARING_TABLE,
                                                                    UNCERTAINTY_TABLE}
-    _check_keys(doc, allowed_top, "")
+    _check_keys(doc, allowed_top | set(LINEAR_TABLES), "")
+    linear = linear_drive_from(doc) if drive_kind(doc) == "linear" else None
     for t in _TABLES:
+        if linear is not None and t == "duty_cycle":  # the rod's cycle: linear_duty_cycle
+            continue
         if t in doc and not isinstance(doc[t], dict):
             raise InputError(t, doc[t], "must be a table [" + t + "]", "case TOML")
         _check_keys(doc.get(t, {}), _TABLES[t], t)
@@ -155,7 +159,8 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
 
     opd = doc.get("operating", {})
     operating = OperatingPoint(**{k: check_finite(k, v, "operating") for k, v in opd.items()})
-    duty = _duty_cycle_from(dict(doc.get("duty_cycle", {})), base_dir)
+    duty = (_duty_cycle_from(dict(doc.get("duty_cycle", {})), base_dir) if linear is None
+            else linear_duty_cycle(doc.get("duty_cycle", {}), linear, base_dir))
 
     fd = doc.get("friction", {})
     friction = check_friction_ranges(FrictionLaw(**{k: _friction_value(k, v, fd)
@@ -173,7 +178,7 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         friction=friction, motor=motor, bounds=bounds, mission=tuple(mission), oils_csv=oils_csv,
         thermal=thermal, bearing=bearing_from_doc(doc), gamma_source=gamma_source,
         defaults=reader_defaults(doc, bounds, motor, thermal=thermal),
-        uncertainty=uncertainty_from_doc(doc))
+        uncertainty=uncertainty_from_doc(doc), linear=linear)
 
 
 def _friction_value(key: str, value, fd: dict):

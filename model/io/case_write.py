@@ -23,6 +23,7 @@ from ..skin_friction import BRANCH_KEYS
 from ..units import MM_TO_M, kelvin_to_celsius
 from .case_bearing import BEARING_TABLE, bearing_to_doc
 from .case_io import _GAS_CONSTANTS
+from .case_linear import linear_to_doc
 from .case_uncertainty import UNCERTAINTY_TABLE, uncertainty_to_doc
 from .serialize import SIGNIFICANT_DIGITS, toml_dumps
 
@@ -83,6 +84,8 @@ def case_to_dict(case: DesignCase) -> dict:
         doc[BEARING_TABLE] = bearing_to_doc(case.bearing)
     if case.uncertainty is not None:  # only when given, like [bearing]
         doc[UNCERTAINTY_TABLE] = uncertainty_to_doc(case.uncertainty)
+    if case.linear is not None:  # [drive] kind = "linear": its tables (docs/linear-joint.md)
+        doc.update(linear_to_doc(case.linear))
     if case.mission:
         doc["mission"] = [{"depth_m": s.depth_m, s.temp_key: s.oil_temp_C,
                            "fraction": s.fraction} for s in case.mission]

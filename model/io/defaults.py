@@ -164,7 +164,12 @@ def reader_defaults(doc: Mapping[str, Any], bounds: DesignBounds, motor: Motor,
         if k not in opd:
             out.append(Default(f"operating.{k}", float(getattr(OperatingPoint(), k)), unit,
                                f"{SEED_SOURCE} rated point"))
-    out += _duty_defaults(doc.get("duty_cycle", {}))
+    drive = doc.get("drive", {})
+    if isinstance(drive, dict) and drive.get("kind") == "linear":  # the rod's cycle
+        from .case_linear import linear_defaults, linear_drive_from
+        out += linear_defaults(doc, linear_drive_from(doc))
+    else:
+        out += _duty_defaults(doc.get("duty_cycle", {}))
     fd = doc.get("friction", {})
     for k in ("form", "laminar_law"):
         if k not in fd:

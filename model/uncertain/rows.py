@@ -39,6 +39,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from ..bearing.friction import bearing_mean_power, bearing_moment_terms
+from ..elements import BearingElement, joint_elements
 from ..fluids import ScaledFluid
 from ..joint_loss import case_film
 from ..oil_properties import (
@@ -207,7 +208,9 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     regions : ndarray
         Shape (len(idx), regions) [W], region 1 first.
     bearing : ndarray
-        Shape (len(idx),) [W]; zeros without a bearing.
+        Shape (len(idx),) [W]: the bearing's and every other element's
+        (:func:`~oilgap.model.elements.joint_elements`: a linear drive's screw, rod guide
+        and passages); zeros without elements.
 
     References
     ----------
@@ -242,8 +245,14 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
         out[:, j] = mean
     spec = model.case.bearing
     if spec is None:
-        return out, np.zeros(len(t_k))
-    return out, _bearing(spec, nodes, model.weights, nu_c, _at(rows.drag_scale, idx))
+        bearing = np.zeros(len(t_k))
+    else:
+        bearing = _bearing(spec, nodes, model.weights, nu_c, _at(rows.drag_scale, idx))
+    for element in joint_elements(model.case):  # a linear drive's screw, rod guide, passages
+        if not isinstance(element, BearingElement):
+            bearing = bearing + np.broadcast_to(np.asarray(element.mean_power(
+                nodes, model.weights, nu_c, rho_c), dtype=float), bearing.shape)
+    return out, bearing
 
 
 def _oil(model: RowModel, rows: RowValues, t_k, p, idx):

@@ -64,6 +64,8 @@ from oilgap.model.case import DesignCase
 from oilgap.model.effects import CONFOUNDED_FORMS, EFFECTS, RigFacts
 from oilgap.model.errors import InputError, NotFittedError
 from oilgap.model.io.case_io import seed_case
+from oilgap.model.io.tables import read_table
+from oilgap.model.linear.report import rod_rows_as_motor_speed
 from oilgap.model.measured.data import (
     MeasuredData,
     Samples,
@@ -373,10 +375,16 @@ class LoopEstimator:
         if isinstance(data, MeasuredData):
             return data
         oils = self.oils
+        drive = getattr(self.case, "linear", None)
+        if isinstance(data, (str, Path)) and drive is not None:  # rod_velocity_m_s rows
+            cat = read_oils_csv(oils) if isinstance(oils, (str, Path)) else oils
+            return validate(rod_rows_as_motor_speed(read_table(data), drive), cat, str(data))
         if isinstance(data, (str, Path)):
             return load_measured(data, oils)
         if isinstance(data, pd.DataFrame):
             cat = read_oils_csv(oils) if isinstance(oils, (str, Path)) else oils
+            if drive is not None:
+                data = rod_rows_as_motor_speed(data, drive)
             return validate(data, cat, "data frame")
         raise InputError("data", type(data).__name__, "a path, a pandas DataFrame or "
                          "MeasuredData is required")

@@ -38,6 +38,7 @@ from oilgap.model.effects import (
     first_order_lag,
     taylor_feature,
 )
+from oilgap.model.elements import BearingElement, joint_elements
 from oilgap.model.measured.data import TEMP_STEP_K, Samples
 from oilgap.model.oil_state import (
     OilState,
@@ -186,6 +187,8 @@ class ForwardModel:
         self._features: dict[tuple, np.ndarray] = {}  # (effect, lag state key) -> feature
         self._film_start: dict[float, tuple] = {}  # lag -> (c, last film temperature [K])
         self._film_rise: dict[float, np.ndarray] = {}  # lag -> its rise over the base per c [W]
+        self.fixed_elements = tuple(e for e in joint_elements(case)  # a linear drive's
+                                    if not isinstance(e, BearingElement))
 
     @property
     def film_theory_K_W(self) -> float:
@@ -395,7 +398,16 @@ class ForwardModel:
         array
             Sum of :meth:`region_powers` [W].
         """
-        return sum(self.region_powers(law))
+        return self._with_fixed(sum(self.region_powers(law)), self.samples.nu_m2_s,
+                                self.samples.density_kg_m3)
+
+    def _with_fixed(self, total, nu, rho):
+        """``total`` plus the linear drive's elements (screw, rod guide, passages) at the
+        samples' motor speed and the oil state (nu, rho) [W]; ``total`` as it is for a
+        rotary joint (:func:`~oilgap.model.elements.joint_elements`)."""
+        for e in self.fixed_elements:
+            total = total + e.power(self.samples.omega, nu, rho)
+        return total
 
     def _power_derivatives(self, law: FrictionLaw) -> tuple[np.ndarray, np.ndarray]:
         """dP/dt [W/s] along the record and dP/dT [W/K] (NaN without a temperature law)."""
@@ -544,6 +556,7 @@ class ForwardModel:
             pw = self._thinned_powers(law, ctx, math.sqrt(lam2))
         for p in pw:
             total = total + p
+        total = self._with_fixed(total, state.nu_m2_s, state.density_kg_m3)
         for name, c in coefs.items():
             if name in EXACT_FORMS or c == 0.0:
                 continue

@@ -42,6 +42,7 @@ from oilgap.model.fluids import GasFluid
 from oilgap.model.io.case_io import case_from_dict
 from oilgap.model.io.case_write import case_to_dict
 from oilgap.model.io.inputs import file_kind
+from oilgap.model.linear.report import rod_rows_as_motor_speed
 from oilgap.model.measured.data import (
     MeasuredData,
     add_kinematics,
@@ -389,6 +390,8 @@ class FittedModel:
         else:
             raise InputError("data", type(data).__name__, "a path, a pandas DataFrame or "
                              "MeasuredData is required")
+        if getattr(self.case, "linear", None) is not None:  # rod_velocity_m_s -> speed_rpm
+            df = rod_rows_as_motor_speed(df, self.case.linear)
         return validate(df, cat, source, purpose="predict"), df.index, cat
 
     def predict_table(self, data, stage: str = "with_effect", oils: dict | None = None,

@@ -64,9 +64,9 @@ import numpy as np
 
 from oilgap.model.bearing import bearing_mean_power
 from oilgap.model.case import DesignCase, OperatingPoint
-from oilgap.model.case_limits import check_slot_pitch
 from oilgap.model.errors import InputError, SolverError
 from oilgap.model.evaluation import oil_state
+from oilgap.model.io.limits import check_slot_pitch
 from oilgap.model.joint_loss import resolved_mode
 from oilgap.model.motor import motor_torque, rotor_inertia
 from oilgap.model.regions import joint_regions, region_mean_power

@@ -35,7 +35,8 @@ from oilgap.studies.settings import OilGradeSettings, ParetoSettings, Uncertaint
 from oilgap.studies.uncertainty import run as uncertainty_run
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
-INPUTS = ("my_joint.toml", "mission.csv", "rig_runs.csv", "rig_new_points.csv")
+INPUTS = ("my_joint.toml", "mission.csv", "rig_runs.csv", "rig_new_points.csv",
+          "linear_joint.toml")
 CELL_TIMEOUT_S = 120
 LINE = re.compile(r"^(?P<key>[^:\n]+): (?P<value>[-+]?\d[\d.eE+-]*|[A-Za-z]\w*)\b", re.M)
 
@@ -73,7 +74,8 @@ def test_notebooks_are_saved_without_outputs():
     names = sorted(p.name for p in EXAMPLES.glob("*.ipynb"))
     assert names == ["01_my_joint_evaluate_optimize.ipynb", "02_pareto_gap_inertia.ipynb",
                      "03_oil_grade_for_a_mission.ipynb", "04_rig_data_loop_predict.ipynb",
-                     "05_uncertainty.ipynb", "06_plan_rig.ipynb"]
+                     "05_uncertainty.ipynb", "06_plan_rig.ipynb",
+                     "07_linear_actuator.ipynb"]
     for name in names:
         nb = nbformat.read(EXAMPLES / name, as_version=4)
         nbformat.validate(nb)
@@ -177,3 +179,14 @@ def test_06_plan_rig(tmp_path, monkeypatch):
     for tag, ev in (("plan", r.plan), ("naive", r.naive)):
         width = ev.interval["gamma"][1] - ev.interval["gamma"][0]
         assert number(found, f"loop gamma width {tag}") < 2.5 * width
+
+
+def test_07_linear_actuator(tmp_path, monkeypatch):
+    from oilgap.optim.design.linear import linear_design_case, solve_linear_design
+    found = execute("07_linear_actuator.ipynb", tmp_path, monkeypatch)
+    c = read_case_toml(EXAMPLES / "linear_joint.toml")
+    d = solve_linear_design(c, "none")
+    printed(found, "mean loss as designed", evaluate_case(c, thermal="none").total_mean_power_W)
+    printed(found, "mean loss optimized",
+            evaluate_case(linear_design_case(c, d.x_mm), thermal="none").total_mean_power_W)
+    printed(found, "lead optimized", d.x_mm[0])

@@ -7,13 +7,13 @@ from __future__ import annotations
 import pytest
 
 from oilgap.model.case import MissionSegment, OperatingPoint, ThermalSpec
-from oilgap.model.case_limits import MAX_INPUT_TEMP_C, check_celsius
 from oilgap.model.duty_cycle import MIN_PEAK_SPEED_RPM, check_peak_speed
 from oilgap.model.errors import InputError
 from oilgap.model.fluid_table import MAX_TABLE_NU_CST, TableFluid
 from oilgap.model.io.case_io import case_from_dict, seed_case
 from oilgap.model.io.case_write import case_to_dict
 from oilgap.model.io.inputs import file_kind
+from oilgap.model.io.limits import MAX_INPUT_TEMP_C, check_celsius
 
 
 def test_a_temperature_above_the_flash_point_is_refused_with_the_kelvin_hint():

@@ -19,10 +19,10 @@ from __future__ import annotations
 import math
 from typing import Any
 
-from .errors import InputError, check_range
-from .motor import motor_torque
-from .thermal import MAX_OIL_TEMP_C
-from .units import MM_TO_M, ZERO_CELSIUS_K
+from ..errors import InputError, check_range
+from ..motor import motor_torque
+from ..thermal import MAX_OIL_TEMP_C
+from ..units import MM_TO_M, ZERO_CELSIUS_K
 
 MAX_SLOT_COUNT = 1000
 """Most stator slots [-]: the largest hydro generators have a few hundred."""

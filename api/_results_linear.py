@@ -125,9 +125,9 @@ class LinearOptimization:
                     "mean_power_W": d.mean_power_W},
         }
 
-    def summary(self) -> str:
+    def summary(self, defaults: bool = True) -> str:
         """The optimum first, then the design variables, the loss by element and the
-        constraints.
+        constraints (``defaults`` False leaves out the case, thermal and oil lines, ``-q``).
 
         Returns
         -------
@@ -138,9 +138,9 @@ class LinearOptimization:
         d, a, b = self.design, self._elements(self.initial), self._elements(self.optimum)
         lines = [f"optimum     {b['total']:.4g} W mean over the cycle (as given "
                  f"{a['total']:.4g} W, {100 * (b['total'] / a['total'] - 1):+.0f} %)",
-                 f"case        {self.case.name}", self.header,
-                 f"oil         {self.optimum.oil} at {self.optimum.oil_temp_C:.2f} degC "
-                 f"(as given {self.initial.oil_temp_C:.2f} degC)", "",
+                 *([f"case        {self.case.name}", self.header,
+                    f"oil         {self.optimum.oil} at {self.optimum.oil_temp_C:.2f} degC "
+                    f"(as given {self.initial.oil_temp_C:.2f} degC)"] if defaults else []), "",
                  f"{'variable':<26}{'as given':>10}{'optimum':>10}{'bounds':>18}"]
         for k, x0, x, lo, hi in zip(LINEAR_VARIABLES, d.x0_mm, d.x_mm, d.lower_mm,
                                     d.upper_mm, strict=True):
@@ -236,8 +236,9 @@ class LinearRobustOptimization:
                 "constraints": {k: {"value": v[0], "limit": v[1], "unit": v[2], "sense": v[3]}
                                 for k, v in r.robust.constraints.items()}}
 
-    def summary(self) -> str:
-        """The robust optimum's statistic first, then both designs side by side.
+    def summary(self, defaults: bool = True) -> str:
+        """The robust optimum's statistic first, then both designs side by side (``defaults``
+        False leaves out the case line, ``-q``).
 
         Returns
         -------
@@ -250,7 +251,7 @@ class LinearRobustOptimization:
                  f"{r.robust.nlp_mode}): "
                  f"p95 {a['p95_W']:.4g} W, mean {a['mean_W']:.4g} W (nominal optimum: p95 "
                  f"{b['p95_W']:.4g} W, mean {b['mean_W']:.4g} W)",
-                 f"case        {self.case.name}", "",
+                 *([f"case        {self.case.name}"] if defaults else []), "",
                  f"{'variable':<26}{'robust':>10}{'nominal':>10}"]
         lines += [f"{k:<26}{x:>10.4g}{y:>10.4g}" for k, x, y in
                   zip(LINEAR_VARIABLES, r.robust.x_mm, r.nominal.x_mm, strict=True)]
@@ -283,8 +284,9 @@ class LeadFront:
         self.thermal_mode = thermal_mode
         self.out = out
 
-    def summary(self) -> str:
-        """The best lead first, then the front.
+    def summary(self, defaults: bool = True) -> str:
+        """The best lead first, then the front, then the thermal mode (``defaults`` False
+        leaves it out, ``-q``).
 
         Returns
         -------
@@ -292,7 +294,8 @@ class LeadFront:
             Text.
         """
         from oilgap.studies.linear_lead import summary_text
-        text = summary_text(self.df, self.case_name) + f"thermal {self.thermal_mode}\n"
+        text = summary_text(self.df, self.case_name) + (f"thermal {self.thermal_mode}\n"
+                                                         if defaults else "")
         return text + (f"\nwrote {self.out}/" if self.out else "")
 
     def to_dict(self) -> dict:

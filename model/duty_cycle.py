@@ -43,7 +43,7 @@ SAMPLES_REASON = ("a day sampled every 10 ms is 8.6e6 samples; a longer record o
                   "costs memory, resample it")
 
 MAX_SPEED_RPM = 100_000.0
-"""Largest |speed| of a duty cycle [rpm]: above the fastest electric machines
+"""Largest ``|speed|`` of a duty cycle [rpm]: above the fastest electric machines
 (high-speed spindles and turbo-compressor drives reach ~1e5 rpm); a larger number is a
 unit slip (rad/s x 100, rpm x 60)."""
 
@@ -63,7 +63,7 @@ def check_peak_speed(value: Any, where: str = "duty_cycle") -> float:
     Parameters
     ----------
     value : Any
-        The peak |speed| as written [rpm].
+        The peak ``|speed|`` as written [rpm].
     where : str
         Where it came from, for the message [-].
 

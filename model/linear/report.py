@@ -153,7 +153,7 @@ def linear_element_results(case: DesignCase, nu_m2_s: float, rho_kg_m3: float
 
     References
     ----------
-    White [1]_; :mod:`.elements`.
+    White [1]_; :mod:`oilgap.model.linear.elements`.
     """
     d: LinearDrive = case.linear
     nodes, weights = case.duty_cycle.speed_distribution()

@@ -9,7 +9,7 @@ Stages (each its own module, called in this order by :class:`LoopEstimator`):
 * :mod:`.least_squares`: nonlinear least squares, one-step folds.
 * :mod:`.ranges`: the physical range of each calibrated parameter; findings.
 * :mod:`.residuals`: noise level and structure of a residual.
-* :mod:`.candidates`: library effects as candidate regression columns.
+* :mod:`oilgap.optim.calibration.candidates`: library effects as candidate regression columns.
 * :mod:`.folds`: the cross-validation folds (whole groups; one per group up to 10,
   grouped 10-fold above) and the scheme stated in the report.
 * :mod:`.selection`: sign-constrained lasso, box least squares, cross-validation

@@ -20,7 +20,8 @@ stages of this package in order:
 4. Residual analysis of the calibrated model: binned structure, autocorrelation,
    the noise level from successive differences (:mod:`.residuals`).
 5. Effect search over the library of :mod:`oilgap.model.effects` (:mod:`.search`):
-   candidate columns (:mod:`.candidates`), the sign-constrained lasso path and
+   candidate columns (:mod:`oilgap.optim.calibration.candidates`), the sign-constrained
+   lasso path and
    cross-validated forward selection (:mod:`.selection`; folds of whole runs,
    leave-one-run-out up to 10 runs, grouped 10-fold above: :mod:`.folds`): each effect must
    lower the held-out RMSE by the margin (default 10 %), and the effects kept

@@ -1,6 +1,6 @@
 """Stage 5-6 of the calibration: the effect search, with the plausibility of each fit.
 
-Candidate columns (:mod:`.candidates`), the linearised selection
+Candidate columns (:mod:`oilgap.optim.calibration.candidates`), the linearised selection
 (:mod:`.selection`) and the nonlinear refit (:mod:`.refit`), repeated while an
 accepted effect's fitted coefficient is outside its plausible range
 (:attr:`oilgap.model.effects.Effect.plausible`): such an effect is reported as

@@ -7,11 +7,11 @@ the scalar reference path :func:`~oilgap.model.uncertain.apply_inputs`; scenario
 l_i(x) is the linear design NLP's objective (:func:`.linear.design_expressions`, the one
 composition) of its case. The statistic:
 
-``mean``       the mean of l_i;
-``mean+2sd``   mean plus twice the sample standard deviation;
-``p95``        the CVaR surrogate at 0.95: ``t + sum_i s_i/(N (1 - 0.95))`` with
-               ``s_i >= l_i - t``, ``s_i >= 0`` (Rockafellar & Uryasev [1]_), as the
-               rotary robust NLP.
+* ``mean``: the mean of l_i;
+* ``mean+2sd``: mean plus twice the sample standard deviation;
+* ``p95``: the CVaR surrogate at 0.95: ``t + sum_i s_i/(N (1 - 0.95))`` with
+  ``s_i >= l_i - t``, ``s_i >= 0`` (Rockafellar & Uryasev [1]_), as the rotary robust
+  NLP.
 
 The constraints are the nominal case's (force, speed, passage velocity; they do not
 depend on the oil). The nominal optimum (:func:`.linear.solve_linear_design`) is solved

@@ -45,7 +45,7 @@ SINGULAR_TOL = 1e-6
 identified [-] (a relative sd above 1000 times the parameters' own scale)."""
 
 CONFOUNDED_COS = 0.99
-"""|cosine| between two parameters' Jacobian columns above which they are confounded."""
+"""``|cosine|`` between two parameters' Jacobian columns above which they are confounded."""
 
 CONDITION_INDEX = 30.0
 """Condition index ``sqrt(lambda_max / lambda)`` of the correlation-scaled information above
@@ -234,7 +234,7 @@ def confounding(M: np.ndarray, names: tuple[str, ...]) -> dict:
     -------
     dict
         ``uninformed``: parameters with zero information (their column vanishes on every
-        run); ``pairs``: (a, b, cosine) with |cosine| > :data:`CONFOUNDED_COS`;
+        run); ``pairs``: (a, b, cosine) with ``|cosine|`` > :data:`CONFOUNDED_COS`;
         ``directions``: per eigenvalue of the correlation-scaled matrix whose condition
         index exceeds :data:`CONDITION_INDEX`, the eigenvalue [-], the condition index
         [-] and the loadings above 0.3 [-].

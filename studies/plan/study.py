@@ -1,7 +1,7 @@
 """Plan a rig campaign: the optimal plan and the naive plan of the same size, compared.
 
 1. Every candidate run (:func:`~.candidates.candidate_runs`) is simulated and its Fisher
-   information taken from the loop's forward model (:mod:`.candidates`).
+   information taken from the loop's forward model (:mod:`oilgap.studies.plan.candidates`).
 2. The design's parameters are the base law's free ones and the effects the candidates
    can tell from them (an effect confounded with the base on *every* candidate, e.g. an
    end disc that scales like the annulus, cannot be planned for and is reported).

@@ -2,7 +2,8 @@
 
 :mod:`.friction` (``BearingSpec``, the bearing's moments, power, torque and cycle mean in
 SI, validity; its public names are re-exported here),
-:mod:`oilgap.model.bearing.laws` (the published laws in catalogue units), :mod:`.catalogue` (designations, product rows, the ``[bearing]``
+:mod:`oilgap.model.bearing.laws` (the published laws in catalogue units), :mod:`.catalogue`
+(designations, product rows, the ``[bearing]``
 table to a spec) and :mod:`.band` (every published model at one oil state).
 """
 

@@ -2,7 +2,8 @@
 
 :mod:`.library` (the library ``EFFECTS`` and the one builder of an ``EffectContext``),
 :mod:`oilgap.model.effects.laws` (the effects' physical laws) and :mod:`.plausibility`
-(each coefficient's plausible range with its basis). The library's public names, the laws and ranges it
+(each coefficient's plausible range with its basis). The library's public names, the laws and
+ranges it
 re-exports among them, are importable from here (``from oilgap.model.effects import
 EFFECTS``).
 """

@@ -4,7 +4,8 @@ A motor turns a ball or roller screw; the nut drives a rod that slides in a guid
 the oil the rod displaces flows through compensation passages. The motor (region 1 and
 its rolling bearing) runs at ``omega = 2 pi v / lead``; :class:`LinearDrive` holds what
 the linear elements (:mod:`oilgap.model.linear.elements`) need besides the oil state
-and that speed. SI inside; the case file's keys carry units (``lead_mm``), :mod:`oilgap.model.io.case_linear`
+and that speed. SI inside; the case file's keys carry units (``lead_mm``),
+:mod:`oilgap.model.io.case_linear`
 reads them.
 
 References

@@ -3,7 +3,8 @@
 The problem is linearised at the calibration: the residual ``r`` is regressed
 on the calibration's Jacobian (free, unpenalised) and the candidate columns
 (:mod:`oilgap.optim.calibration.candidates`), each scaled to unit RMS. The
-sign-constrained lasso path [1] ranks the effects; cross-validation on per-fold Gram matrices (folds of
+sign-constrained lasso path [1] ranks the effects; cross-validation on per-fold Gram matrices
+(folds of
 whole runs, :mod:`.folds`: one per run up to 10 runs, grouped 10-fold above)
 judges supports exactly and fast (:class:`LeaveOneRunOutSelector`,
 inner problems by :func:`box_lstsq` [3]). Forward selection adds the effect

@@ -32,7 +32,9 @@ stages of this package in order:
    again (evidence for an effect it absorbed).
 6. Refit with the accepted effects (nonlinear, all parameters), errors before
    and after in-sample and on held-out groups (:mod:`.refit`); a fold that
-   cannot identify a parameter holds it at its all-data value.
+   cannot identify a parameter holds it at its prior (the published or case value),
+   never at the all-data fit, and is refitted in full: no information from the
+   held-out group enters that fold's fit.
 7. Each parameter and coefficient with a jackknife-over-folds 95 % confidence
    interval (C and the scale in log space), widened by the baseline's error
    (:mod:`.uncertainty`).
@@ -288,13 +290,14 @@ class LoopEstimator:
                                                 free.final.accepted)
 
     def _identifiability(self, stmt: dict, free: EffectSearch) -> dict:
-        """Per-parameter statements, with the folds that held a parameter at its value."""
+        """Per-parameter statements, with the folds that held a parameter at its prior."""
         out = identifiability(stmt, free.spec, free.base)
         held = free.final.before.held
+        prior = free.spec.prior_values()
         for k in free.spec.free:
             n = sum(k in h for h in held)
             if n:
-                out[k] = (f"{out[k]}; held at the all-data value in {n} of {len(held)} "
+                out[k] = (f"{out[k]}; held at its prior {prior[k]:.4g} in {n} of {len(held)} "
                           "cross-validation folds (their training data cannot identify it)")
         return out
 

@@ -48,7 +48,11 @@ from oilgap.model.oil_state import (
 )
 from oilgap.model.oils import Oil, normalize_oil_name
 from oilgap.model.regions import JointGeometry, joint_geometry, region_power
-from oilgap.model.skin_friction import FrictionLaw, groove_roughness_factor
+from oilgap.model.skin_friction import (
+    FrictionLaw,
+    couette_floor_applies,
+    groove_roughness_factor,
+)
 from oilgap.model.units import celsius_to_kelvin
 
 from .film_wall import case_film_theory_K_W
@@ -69,6 +73,9 @@ SPEED_STEP = 1e-4
 SHAPE_CACHE = 4
 """Law shapes whose region powers a forward model keeps (each is regions x samples)."""
 
+COUETTE_ONLY = FrictionLaw(form="smooth", laminar_law="couette", scale=1e-12)
+"""A law evaluated as exact laminar Couette everywhere: its scaled Eq. 6 lies below the
+Couette floor of :func:`oilgap.model.skin_friction.moment_coefficient` at every Re."""
 
 OIL_STATE_READERS = ("bearing_ball_churning", "end_face_disc", "oil_inertia",
                      "shear_thinning", "taylor_vortex_onset")
@@ -379,9 +386,35 @@ class ForwardModel:
             self._shapes[key] = [region_power(r, s.omega, nu, rho, unit)
                                  for r in self.geometry.regions]
         k = law.C if law.form == "power-law" else law.scale
-        return [p * (k if law.gamma == 0.0 else k * groove_roughness_factor(r.roughness_T,
-                                                                             law.gamma))
-                for r, p in zip(self.geometry.regions, self._shapes[key], strict=True)]
+        shapes = [k * p for p in self._shapes[key]]
+        if couette_floor_applies(law):  # a scale < 1 stops at exact Couette (issue 27)
+            shapes = [np.maximum(p, f) for p, f in zip(shapes, self._couette_powers(state),
+                                                       strict=True)]
+        return [p if law.gamma == 0.0 else p * groove_roughness_factor(r.roughness_T, law.gamma)
+                for r, p in zip(self.geometry.regions, shapes, strict=True)]
+
+    def _couette_powers(self, state=None) -> list[np.ndarray]:
+        """Region powers of exact laminar Couette flow, the floor of every law [W] (kept)."""
+        key = ("couette floor", state)
+        if key not in self._shapes:
+            st = self.measured if state is None else self._lags[state]
+            if len(self._shapes) >= SHAPE_CACHE:
+                self._shapes.pop(next(iter(self._shapes)))
+            self._shapes[key] = [region_power(r, self.samples.omega, st.nu_m2_s,
+                                              st.density_kg_m3, COUETTE_ONLY)
+                                 for r in self.geometry.regions]
+        return self._shapes[key]
+
+    def couette_power(self) -> np.ndarray:
+        """Viscous power of exact laminar Couette flow in every region [W] per sample: the
+        least any clearance flow of this geometry dissipates (Helmholtz-Korteweg).
+
+        Returns
+        -------
+        array
+            Sum over the regions [W].
+        """
+        return sum(self._couette_powers())
 
     def base_power(self, law: FrictionLaw) -> np.ndarray:
         """Viscous power of all regions [W] per sample, no effect.

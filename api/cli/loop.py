@@ -22,7 +22,7 @@ def run(args: argparse.Namespace) -> int:
 def _loop(args: argparse.Namespace, folder: ResultFolder) -> int:
     """The loop inside its locked result folder."""
     est = Loop(args.case, oils=args.oils, margin=args.margin, effects=args.effects,
-               base=getattr(args, "base", "eq6"), cv_by=args.cv_by)
+               base=getattr(args, "base", "auto"), cv_by=args.cv_by)
     est.fit(args.data)
     paths = est.report(args.out, figures=not args.no_figures, folder=folder)
     if args.json:

@@ -331,3 +331,46 @@ def explained_findings(before: list[Finding], after: list[Finding], values_after
                            message=f"{f.message}; refitted with {', '.join(accepted)} it is "
                                    f"{now}, within its range: the accepted effects explain it"))
     return out
+
+
+BELOW_COUETTE_RATIO = 0.95
+"""Median measured / Couette-minimum power below which the data lie below the floor [-]."""
+
+
+def below_couette_finding(y: np.ndarray, couette_W: np.ndarray, noise_W: float
+                          ) -> Finding | None:
+    """A finding if the measured loss lies below the exact Couette loss of the geometry.
+
+    No flow in the clearance dissipates less than laminar Couette flow
+    (Helmholtz-Korteweg minimum dissipation), and the calibrated law never goes below
+    it (:func:`oilgap.model.skin_friction.couette_floor_applies`). Data below it say
+    the oil-free baseline took too much away or the oil was warmer (thinner) than the
+    temperature recorded. The test: over the samples whose Couette loss stands above
+    three noise levels, the median of measured / Couette is below
+    :data:`BELOW_COUETTE_RATIO`.
+
+    Parameters
+    ----------
+    y : array
+        Measured viscous power [W].
+    couette_W : array
+        Exact laminar Couette power of the rig's regions at each sample [W].
+    noise_W : float
+        Noise level [W].
+
+    Returns
+    -------
+    Finding or None
+        Kind "below couette" (value: the median ratio [-]); None otherwise.
+    """
+    sel = np.isfinite(couette_W) & (couette_W > 3.0 * max(noise_W, 0.0)) & (couette_W > 0)
+    if sel.sum() < 3:
+        return None
+    ratio = float(np.median(y[sel] / couette_W[sel]))
+    if ratio >= BELOW_COUETTE_RATIO:
+        return None
+    return Finding(kind="below couette", parameter="scale", value=ratio,
+                   message=f"the data lie below the Couette minimum: check the baseline or the "
+                           f"temperature (measured / exact laminar Couette loss, median "
+                           f"{ratio:.3g} over {int(sel.sum())} samples; no clearance flow "
+                           "dissipates less, so the calibrated law stops at Couette)")

@@ -36,6 +36,7 @@ from oilgap.model.io.serialize import Exact, dumps
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.model_io import FittedModel
 from oilgap.optim.calibration.ranges import effective_scale
+from oilgap.studies.loop.base_table import base_markdown, base_summary_lines
 from oilgap.studies.loop.figures import (
     OVERVIEW,
     SPEED,
@@ -256,7 +257,8 @@ def format_summary(est: LoopEstimator) -> str:
     par = ", ".join(f"{k} = {_num(c[k])}{_ci_text(ci[k])}" for k in c)
     lines += [f"calibration with T ({_base_text(est)}): {par}",
               f"            without T: the case's law ({est.law_without_T_.form}, laminar "
-              f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted", "",
+              f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted",
+              *base_summary_lines(est), "",
               "error table (RMSE of the viscous power by oil and roughness)", error_table(est),
               ""]
     lines += [f"finding     {f.message}" + (f"\n            {f.evidence}"
@@ -377,7 +379,7 @@ def _md_calibration(est: LoopEstimator) -> list[str]:
                                                  if isinstance(ci[k], list) else "fixed"),
                              _range_text(ranges, k),
                              identifiability(est).get(k, "")]
-                            for k in c]), ""]
+                            for k in c]), "", *base_markdown(est, markdown_rows)]
     parts += [f"Possible unit mistake: {h}." for h in unit_hints(est)]
     nid = not_identifiable(est)
     if nid:

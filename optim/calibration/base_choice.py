@@ -1,0 +1,229 @@
+"""Stage 3b of the calibration: the base law chosen by its honest held-out error.
+
+Each candidate base (:data:`BASE_CANDIDATES`: Eq. 6 with one shared gap exponent,
+``branches`` with each regime's own C_k, alpha_k, beta_k, a free power law) is
+decided (:func:`.spec.decide_spec`), fitted on all oil runs and cross-validated on
+the loop's folds (:mod:`.folds`), each fold refitted with only its training groups
+and the parameters it cannot identify at their priors (:mod:`.refit`). They are
+compared on the held-out **log**-RMSE, ``sqrt(mean(ln(P_heldout / P_measured)^2))``:
+a law's job is the shape of C_m across regimes, and the power of a campaign spans
+decades (it grows as omega^3), so an RMSE in W would judge only the fastest points.
+The best is kept unless a simpler candidate (fewer free parameters) comes within
+the parsimony margin (the effect selection's, default 10 %) of it: the most complex
+base must earn its place out of sample, as an effect must [1].
+
+A candidate is a :class:`BaseCandidate`: a base form and a hook on the rig case
+(:attr:`BaseCandidate.case_of`), so a law option of the case (a transition rule of
+the friction law, say) enters as one more candidate without changing this stage.
+
+References
+----------
+.. [1] M. Stone, "Cross-validatory choice and assessment of statistical
+   predictions", J. R. Stat. Soc. B 36:111-147, 1974.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from oilgap.model.case import DesignCase
+from oilgap.model.errors import SolverError
+
+from .forward import ForwardModel
+from .least_squares import ModelFit, check_alpha, fit_model, initial_guess
+from .refit import Refitter
+from .spec import BaseSpec, decide_spec
+
+
+def _same_case(case: DesignCase) -> DesignCase:
+    return case
+
+
+@dataclass(frozen=True, kw_only=True)
+class BaseCandidate:
+    """One base law the loop may choose.
+
+    Parameters
+    ----------
+    name : str
+        Name in the report and in ``loop.json`` (``"eq6"``, ``"branches"``, ...).
+    base : {"eq6", "branches", "power-law"}
+        The base form (:data:`.spec.BASES`).
+    case_of : callable
+        Rig case -> the case this candidate is fitted on (default: as it is); the hook
+        for a law option of the case's ``[friction]``.
+    """
+
+    name: str
+    base: str
+    case_of: Callable[[DesignCase], DesignCase] = field(default=_same_case)
+
+
+AUTO_BASE = "auto"
+"""The ``base`` that lets the held-out error choose among :data:`BASE_CANDIDATES`."""
+
+BASE_CANDIDATES = (BaseCandidate(name="eq6", base="eq6"),
+                   BaseCandidate(name="branches", base="branches"),
+                   BaseCandidate(name="power-law", base="power-law"))
+"""The candidate bases of ``base = "auto"`` (the default), in order of preference at a tie."""
+
+
+@dataclass
+class BaseTrial:
+    """One candidate base fitted and cross-validated.
+
+    Attributes
+    ----------
+    candidate : BaseCandidate
+    spec : BaseSpec or None
+    fit : ModelFit or None
+    stmt : dict
+        Identifiability statements.
+    heldout_pred : array or None
+        Each sample predicted by the fold without its group [W].
+    log_rmse, heldout_log_rmse : float
+        In-sample and held-out log-RMSE [-] (NaN if the fit failed).
+    rmse_W, heldout_rmse_W : float
+        The same in W.
+    error : str
+        Why the candidate could not be fitted ("" if it was).
+    """
+
+    candidate: BaseCandidate
+    spec: BaseSpec | None
+    fit: ModelFit | None
+    stmt: dict
+    heldout_pred: np.ndarray | None
+    log_rmse: float
+    heldout_log_rmse: float
+    rmse_W: float
+    heldout_rmse_W: float
+    error: str = ""
+
+    @property
+    def n_free(self) -> int:
+        """Free parameters of the base [-] (its complexity)."""
+        return len(self.spec.free) if self.spec is not None else 0
+
+    def row(self, chosen: str) -> dict:
+        """The trial as a row of the report's table and of ``loop.json`` ``base_selection``."""
+        return {"base": self.candidate.name, "free_parameters": self.n_free,
+                "log_rmse": self.log_rmse, "heldout_log_rmse": self.heldout_log_rmse,
+                "rmse_W": self.rmse_W, "heldout_rmse_W": self.heldout_rmse_W,
+                "chosen": self.candidate.name == chosen, **({"error": self.error}
+                                                            if self.error else {})}
+
+
+def log_rmse(y: np.ndarray, pred: np.ndarray) -> float:
+    """Root mean square of ``ln(pred / y)`` over the samples where both are positive [-].
+
+    Parameters
+    ----------
+    y, pred : arrays
+        Measured and model power [W].
+
+    Returns
+    -------
+    float
+        Log-RMSE [-] (NaN if no sample qualifies).
+    """
+    ok = (y > 0) & (pred > 0) & np.isfinite(pred)
+    return float(np.sqrt(np.mean(np.log(pred[ok] / y[ok]) ** 2))) if ok.any() else float("nan")
+
+
+def fit_base(model: ForwardModel, case: DesignCase, base: str) -> tuple[BaseSpec, ModelFit, dict]:
+    """Decide and fit one base on all oil runs (the loop's stage 3).
+
+    Parameters
+    ----------
+    model : ForwardModel
+    case : DesignCase
+        Rig case (its friction law: laminar law, gamma).
+    base : str
+        Base form.
+
+    Returns
+    -------
+    (BaseSpec, ModelFit, dict)
+        Specification, fit and identifiability statements.
+    """
+    spec, stmt = decide_spec(model.samples, model.geometry, case, base)
+    spec, stmt = check_alpha(model, spec, stmt)
+    return spec, fit_model(model, spec, initial_guess(model, spec)), stmt
+
+
+def try_base(model: ForwardModel, case: DesignCase, cand: BaseCandidate, cv: str) -> BaseTrial:
+    """Fit one candidate and cross-validate it on the loop's folds.
+
+    Parameters
+    ----------
+    model : ForwardModel
+    case : DesignCase
+    cand : BaseCandidate
+    cv : {"one-step", "full"}
+        Fold refits (as the loop's).
+
+    Returns
+    -------
+    BaseTrial
+    """
+    y = model.samples.viscous_W
+    try:
+        spec, fit, stmt = fit_base(model, cand.case_of(case), cand.base)
+        ho = Refitter(model, spec, {}, cv).leave_one_run_out((), fit.x, None, fit).pred
+    except SolverError as e:
+        nan = float("nan")
+        return BaseTrial(cand, None, None, {}, None, nan, nan, nan, nan, error=str(e))
+    return BaseTrial(cand, spec, fit, stmt, ho, log_rmse(y, fit.pred), log_rmse(y, ho),
+                     float(np.sqrt(np.mean((fit.pred - y) ** 2))),
+                     float(np.sqrt(np.mean((ho - y) ** 2))))
+
+
+def choose(trials: list[BaseTrial], margin: float) -> BaseTrial:
+    """The base kept: the least held-out log-RMSE, or a simpler one within ``margin``.
+
+    Parameters
+    ----------
+    trials : list of BaseTrial
+        In order of preference at a tie.
+    margin : float
+        A more complex base must lower the held-out log-RMSE by this share [-].
+
+    Returns
+    -------
+    BaseTrial
+    """
+    ok = [t for t in trials if np.isfinite(t.heldout_log_rmse)]
+    if not ok:
+        raise SolverError("no candidate base law could be fitted: "
+                          + "; ".join(f"{t.candidate.name}: {t.error}" for t in trials))
+    best = min(t.heldout_log_rmse for t in ok)
+    near = [t for t in ok if t.heldout_log_rmse * (1.0 - margin) <= best]
+    return min(near, key=lambda t: (t.n_free, ok.index(t)))
+
+
+def select_base(model: ForwardModel, case: DesignCase, margin: float, cv: str,
+                candidates: tuple[BaseCandidate, ...] = BASE_CANDIDATES
+                ) -> tuple[BaseTrial, list[dict]]:
+    """Fit every candidate base, keep the one the held-out error supports.
+
+    Parameters
+    ----------
+    model : ForwardModel
+    case : DesignCase
+    margin : float
+        Parsimony margin [-].
+    cv : {"one-step", "full"}
+    candidates : tuple of BaseCandidate
+
+    Returns
+    -------
+    (BaseTrial, list of dict)
+        The chosen trial and the comparison table (one row per candidate).
+    """
+    trials = [try_base(model, case, c, cv) for c in candidates]
+    chosen = choose(trials, margin)
+    return chosen, [t.row(chosen.candidate.name) for t in trials]

@@ -29,7 +29,7 @@ import numpy as np
 from .candidates import Candidates
 from .folds import cv_folds
 from .forward import ForwardModel
-from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold
+from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold, rescale_level
 from .selection import Selection
 from .spec import LOG_PARAMS, fold_spec
 from .steps import SelectionStep
@@ -165,8 +165,9 @@ class Refitter:
         sub = spec.holding({k: prior[k] for k in hold})
         keep = [spec.free.index(k) for k in sub.free]
         sc = np.array([self.feature_scale[n] for n in names])
-        f = fit_model(self.model.subset(train), sub, x_all[keep], tuple(names), theta, sc,
-                      full=self.model)
+        on = self.model.subset(train)
+        x0 = rescale_level(on, sub, x_all[keep]) if hold else x_all[keep]  # level to the prior
+        f = fit_model(on, sub, x0, tuple(names), theta, sc, full=self.model)
         x = x_all.copy()
         x[keep] = f.x
         for k in hold:

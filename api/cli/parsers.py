@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from oilgap.cli.model_option import add_model_option
 from oilgap.model.thermal_modes import THERMAL_MODES
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
 from oilgap.studies.settings import (
@@ -149,6 +150,7 @@ def add_evaluate(sub) -> None:
     p.add_argument("--sea-temp-c", type=finite_float, help="sea temperature [degC] of the "
                    "heat balance (overrides [thermal] sea_temp_C; --thermal bulk or full)")
     p.add_argument("--json", action="store_true", help="print one JSON object")
+    add_model_option(p)  # --model loop.json (issue 25)
     p.set_defaults(command="evaluate")
 
 
@@ -199,6 +201,7 @@ def add_optimize(sub) -> None:
     p.add_argument("--out", metavar="CASE_OPT.toml",
                    help="write the optimal design as a case TOML (oilgap evaluate reads it)")
     add_force(p)
+    add_model_option(p)  # --model loop.json (issue 25)
     p.set_defaults(command="optimize")  # -v/--verbose (every command) shows IPOPT's log
 
 
@@ -263,6 +266,7 @@ def _add_smoothing(ss) -> None:
     s.add_argument("--film-evidence", action="store_true",
                    help="seed rig: also fit the film strength s in [0, 1] with the rig's "
                    "heat balance T = T0 + R P (docs/thermal.md#evidence)")
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study smoothing")
 
 
@@ -282,6 +286,7 @@ def _add_pareto(ss) -> None:
     _scheduler(s)
     add_thermal_argument(s)
     _progress(s)
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study pareto")
 
 
@@ -319,6 +324,7 @@ def _add_oil_grade(ss) -> None:
     _scheduler(s)
     add_thermal_argument(s)
     _progress(s)
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study oil-grade")
 
 
@@ -356,6 +362,7 @@ def _add_sweep(ss) -> None:
                    "--force)")
     add_thermal_argument(s)
     _progress(s)
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study sweep")
 
 

@@ -5,9 +5,13 @@ Each candidate base (:data:`BASE_CANDIDATES`: Eq. 6 with one shared gap exponent
 decided (:func:`.spec.decide_spec`), fitted on all oil runs and cross-validated on
 the loop's folds (:mod:`.folds`), each fold refitted with only its training groups
 and the parameters it cannot identify at their priors (:mod:`.refit`). They are
-compared on the held-out **log**-RMSE, ``sqrt(mean(ln(P_heldout / P_measured)^2))``:
-a law's job is the shape of C_m across regimes, and the power of a campaign spans
-decades (it grows as omega^3), so an RMSE in W would judge only the fastest points.
+compared on the held-out **log**-RMSE, ``sqrt(mean(ln(P_heldout / P_measured)^2))``
+over the samples whose measured power stands above :data:`NOISE_FLOOR` noise levels
+(the successive-difference noise of the simplest candidate's residual,
+:func:`.residuals.residual_structure`; below it the logarithm measures the noise and
+the baseline, not the law): a law's job is the shape of C_m across regimes, and the
+power of a campaign spans decades (it grows as omega^3), so an RMSE in W would judge
+only the fastest points.
 The best is kept unless a simpler candidate (fewer free parameters) comes within
 the parsimony margin (the effect selection's, default 10 %) of it: the most complex
 base must earn its place out of sample, as an effect must [1].
@@ -35,6 +39,7 @@ from oilgap.model.errors import SolverError
 from .forward import ForwardModel
 from .least_squares import ModelFit, check_alpha, fit_model, initial_guess
 from .refit import Refitter
+from .residuals import residual_structure
 from .spec import BaseSpec, decide_spec
 
 
@@ -62,6 +67,9 @@ class BaseCandidate:
     case_of: Callable[[DesignCase], DesignCase] = field(default=_same_case)
 
 
+NOISE_FLOOR = 3.0
+"""Noise levels a measured power must exceed to enter the log score [-]."""
+
 AUTO_BASE = "auto"
 """The ``base`` that lets the held-out error choose among :data:`BASE_CANDIDATES`."""
 
@@ -85,7 +93,8 @@ class BaseTrial:
     heldout_pred : array or None
         Each sample predicted by the fold without its group [W].
     log_rmse, heldout_log_rmse : float
-        In-sample and held-out log-RMSE [-] (NaN if the fit failed).
+        In-sample and held-out log-RMSE [-] (NaN if the fit failed), over the
+        ``scored`` samples above the noise (all positive ones when ``scored`` is 0).
     rmse_W, heldout_rmse_W : float
         The same in W.
     error : str
@@ -102,6 +111,7 @@ class BaseTrial:
     rmse_W: float
     heldout_rmse_W: float
     error: str = ""
+    scored: int = 0
 
     @property
     def n_free(self) -> int:
@@ -113,6 +123,7 @@ class BaseTrial:
         return {"base": self.candidate.name, "free_parameters": self.n_free,
                 "log_rmse": self.log_rmse, "heldout_log_rmse": self.heldout_log_rmse,
                 "rmse_W": self.rmse_W, "heldout_rmse_W": self.heldout_rmse_W,
+                "scored_samples": self.scored,
                 "chosen": self.candidate.name == chosen, **({"error": self.error}
                                                             if self.error else {})}
 
@@ -225,5 +236,16 @@ def select_base(model: ForwardModel, case: DesignCase, margin: float, cv: str,
         The chosen trial and the comparison table (one row per candidate).
     """
     trials = [try_base(model, case, c, cv) for c in candidates]
+    y = model.samples.viscous_W
+    first = next((t for t in trials if t.fit is not None), None)
+    if first is not None:  # the log scores on the samples above the noise
+        noise = float(residual_structure(y - first.fit.pred, model.samples)["noise_W"])
+        sel = y > NOISE_FLOOR * noise
+        if sel.sum() >= 3:
+            for t in trials:
+                if t.fit is not None:
+                    t.log_rmse = log_rmse(y[sel], t.fit.pred[sel])
+                    t.heldout_log_rmse = log_rmse(y[sel], t.heldout_pred[sel])
+                    t.scored = int(sel.sum())
     chosen = choose(trials, margin)
     return chosen, [t.row(chosen.candidate.name) for t in trials]

@@ -146,20 +146,19 @@ def auto_fit(rig, air3):
     return LoopEstimator(case=rig, cv_by="gap_mm", effects=[]).fit(air3)
 
 
-def test_loop_heldout_equals_an_outside_leave_one_gap_out(auto_fit, air3):
+def test_loop_heldout_equals_an_outside_leave_one_gap_out(rig, air3):
     y = columns(air3)[3]
-    rows = {r["base"]: r for r in auto_fit.base_selection_}
-    eq6 = outside_loo(air3, eq6_law, [0.0, 0.3])
-    assert rows["eq6"]["heldout_rmse_W"] == pytest.approx(rmse(eq6 - y), rel=0.10)
-    assert rows["eq6"]["heldout_log_rmse"] == pytest.approx(
-        rmse(np.log(eq6 / y)), rel=0.10)
 
     def power_law(p):
         return FrictionLaw(form="power-law", C=math.exp(p[0]), alpha=p[1], beta=p[2])
 
-    pl = outside_loo(air3, power_law, [math.log(0.1), 0.3, -0.3])
-    assert rows["power-law"]["heldout_log_rmse"] == pytest.approx(rmse(np.log(pl / y)),
-                                                                  rel=0.10)
+    for base, law_of, p0 in (("eq6", eq6_law, [0.0, 0.3]),
+                             ("power-law", power_law, [math.log(0.1), 0.3, -0.3])):
+        est = LoopEstimator(case=rig, base=base, cv_by="gap_mm", effects=[]).fit(air3)
+        ours = est.heldout_pred_["before"]
+        theirs = outside_loo(air3, law_of, p0)
+        assert est.heldout_rmse_["before"] == pytest.approx(rmse(theirs - y), rel=0.10)
+        assert rmse(np.log(ours / y)) == pytest.approx(rmse(np.log(theirs / y)), rel=0.10)
 
 
 def test_base_chosen_by_held_out_error_meets_the_target(auto_fit, air3):
@@ -170,8 +169,9 @@ def test_base_chosen_by_held_out_error_meets_the_target(auto_fit, air3):
     assert len(chosen) == 1 and chosen[0]["base"] == auto_fit.base_
     best = min(r["heldout_log_rmse"] for r in rows)
     assert chosen[0]["heldout_log_rmse"] * 0.9 <= best     # the parsimony margin
-    pooled = rmse(np.log(auto_fit.heldout_pred_["before"] / y))
-    assert pooled == pytest.approx(chosen[0]["heldout_log_rmse"], rel=1e-9)
+    # scored above three noise levels (the low-speed points of a rig are noise in log)
+    assert 3 <= chosen[0]["scored_samples"] <= len(y)
+    pooled = rmse(np.log(auto_fit.heldout_pred_["before"] / y))   # every sample
     assert pooled <= 0.08
     doc = auto_fit.to_dict()
     assert doc["base"] == auto_fit.base_ and doc["base_selection"]["requested"] == "auto"

@@ -47,7 +47,8 @@ def with_model(case: DesignCase, model: str | Path | None
     ----------
     case : DesignCase
     model : path or None
-        A ``loop.json`` (checked against its schema; refused with one line otherwise).
+        A ``loop.json`` (checked against its schema; refused with one line otherwise);
+        None: the case's own ``[calibration] model``, if any.
 
     Returns
     -------
@@ -56,9 +57,11 @@ def with_model(case: DesignCase, model: str | Path | None
         the model's fitted domain an :class:`~oilgap.model.errors.OilgapWarning` names
         each variable with both ranges.
     """
+    model = model if model is not None else case.calibration_model
     if model is None:
         return case, None
-    cal = replace(calibrate_case(case, read_model(model)), provenance=model_provenance(model))
+    plain = replace(case, calibration_model=None)  # the reference is resolved once, here
+    cal = replace(calibrate_case(plain, read_model(model)), provenance=model_provenance(model))
     for line in cal.domain:
         warnings.warn(OilgapWarning(f"--model {model}: the case lies outside the model's "
                                     f"domain: {line}"), stacklevel=2)

@@ -104,7 +104,11 @@ def as_case(case: DesignCase | str | Path | None = None) -> DesignCase:
     if isinstance(case, DesignCase):
         return case
     check_arg("case", case, CASE)
-    return read_case_toml(case)
+    read = read_case_toml(case)
+    if read.calibration_model is None:
+        return read
+    from oilgap._calibrated import with_model  # a [calibration] model, folded in once
+    return with_model(read, None)[0]
 
 
 class OilTable(dict):

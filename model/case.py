@@ -455,6 +455,10 @@ class DesignCase:
         The uncertain inputs' joint law (``[uncertainty]``), if given; None: the documented
         defaults (:func:`oilgap.model.uncertain.distributions.case_uncertainty`). It
         enters no nominal number.
+    calibration_model : str or None
+        A calibrated loop model (``[calibration] model``: the path of a ``loop.json``)
+        the commands fold into the case before computing (``oilgap.api``'s
+        ``with_model``); None: the case's own laws.
     """
 
     name: str
@@ -473,6 +477,7 @@ class DesignCase:
     gamma_source: str = field(default="given", compare=False)
     defaults: tuple = field(default=(), compare=False)
     uncertainty: Any = field(default=None, compare=False)
+    calibration_model: str | None = field(default=None, compare=False)
 
     def __post_init__(self):
         if self.bounds is None:

@@ -23,6 +23,7 @@ from pathlib import Path
 from oilgap._optimize import optimize_resolved, robust_resolved
 from oilgap._results_design import Optimization
 from oilgap.cli.common import load_case, thermal_case
+from oilgap.cli.model_option import apply_model, model_record, report_model
 from oilgap.cli.outputs import solver_log_to_stderr
 from oilgap.model.errors import InputError, check_finite, check_positive
 from oilgap.model.io.serialize import dumps
@@ -108,6 +109,7 @@ def run(args: argparse.Namespace) -> int:
         check_out_file(args.out, args.force)
     robust = _robust_keywords(args)
     case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
+    case, cal = apply_model(case, args)
     log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
     with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
         if args.robust is not None:
@@ -118,9 +120,11 @@ def run(args: argparse.Namespace) -> int:
     fig = _write_figure(res, args.figure) if getattr(args, "figure", None) else None
     if args.json:
         print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None,
-                     **({"figure": str(fig)} if fig else {})}))
+                     **({"figure": str(fig)} if fig else {}),
+                     **({"model": model_record(cal)} if cal is not None else {})}))
     else:
         print(res.summary())
+        report_model(cal)  # the model used, the given design's loss with and without it
         for p in (out_path, fig):
             if p:
                 print(f"\nwrote {Path(p)}")

@@ -428,6 +428,9 @@ def add_loop(sub) -> None:
                    "power-law = a free C (delta/R)^alpha Re^beta T^gamma; "
                    "branches = Eq. 6's branches, each C_k (delta/R)^alpha_k Re^beta_k freed "
                    "where the data identify it")
+    p.add_argument("--write-case", metavar="CASE.toml", help="also write the rig case with "
+                   "the fitted model folded in by reference ([calibration] model = the "
+                   "loop.json): evaluate CASE.toml equals evaluate RIG --model loop.json")
     p.add_argument("--cv-by", metavar="COLUMN", default="run",
                    help="cross-validation groups: the values of this column of DATA, each "
                    "held out whole (default: run; e.g. gap_mm, oil; more than 10 groups: "

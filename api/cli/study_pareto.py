@@ -10,6 +10,7 @@ import argparse
 from oilgap._evaluate import as_case
 from oilgap._studies import pareto
 from oilgap.cli.common import show, study_out
+from oilgap.cli.model_option import apply_model, report_model
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.studies.settings import ParetoSettings, RunOptions
 
@@ -17,6 +18,7 @@ from oilgap.studies.settings import ParetoSettings, RunOptions
 def run(args: argparse.Namespace) -> int:
     """``oilgap study pareto``: the two fronts; returns the exit code."""
     case = as_case(args.case)
+    case, cal = apply_model(case, args)  # --model loop.json (issue 25)
     out = study_out(args, "pareto")
     with out_folder(args, out) as folder, json_quiet(args):  # locked before computing
         r = pareto(case, out=out, folder=folder,
@@ -25,4 +27,5 @@ def run(args: argparse.Namespace) -> int:
                    options=RunOptions(workers=args.workers, scheduler=args.scheduler,
                                       progress=args.progress))
     show(r, args)
+    report_model(cal, getattr(args, "json", False))
     return 0

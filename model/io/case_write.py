@@ -81,6 +81,8 @@ def case_to_dict(case: DesignCase) -> dict:
         doc[BEARING_TABLE] = bearing_to_doc(case.bearing)
     if case.uncertainty is not None:  # only when given, like [bearing]
         doc[UNCERTAINTY_TABLE] = uncertainty_to_doc(case.uncertainty)
+    if case.calibration_model is not None:  # a calibrated loop model, by reference
+        doc["calibration"] = {"model": case.calibration_model}
     if case.mission:
         doc["mission"] = [{"depth_m": s.depth_m, "oil_temp_C": s.oil_temp_C,
                            "fraction": s.fraction} for s in case.mission]

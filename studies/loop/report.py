@@ -254,8 +254,12 @@ def format_summary(est: LoopEstimator) -> str:
     for b in est.baselines_.values():
         lines.append(f"baseline    T = {b.roughness_T:g}: oil-free fit RMSE {b.rmse_W:.3f} W "
                      f"({b.n_samples} samples)" + ("; " + "; ".join(b.notes) if b.notes else ""))
+    stage = "with T"
+    if est.effects_:  # the model saved in loop.json: the refit with its effects (issue 25)
+        c, ci = est.calibration_after_, est.calibration_after_ci_
+        stage = "refitted with the effects (the saved model)"
     par = ", ".join(f"{k} = {_num(c[k])}{_ci_text(ci[k])}" for k in c)
-    lines += [f"calibration with T ({_base_text(est)}): {par}",
+    lines += [f"calibration {stage} ({_base_text(est)}): {par}",
               f"            without T: the case's law ({est.law_without_T_.form}, laminar "
               f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted",
               *base_summary_lines(est), "",

@@ -6,14 +6,19 @@ warning; ``--model`` on optimize and the studies' parsers."""
 import json
 import sys
 import warnings
+from dataclasses import replace
 from pathlib import Path
 
+import numpy as np
+import pandas as pd
 import pytest
 
 from oilgap._calibrated import with_model
-from oilgap._evaluate import as_case, evaluate
+from oilgap._evaluate import as_case, evaluate, with_operating
+from oilgap._loop import predict
 from oilgap.cli import main
 from oilgap.cli.parsers import build_parser
+from oilgap.model.duty_cycle import DutyCycle
 from oilgap.model.errors import OilgapWarning
 from oilgap.optim.calibration.calibrated_case import calibrate_case
 from oilgap.optim.calibration.model_io import load_model
@@ -84,3 +89,19 @@ def test_rig_only_and_design_effects_are_named(looped):
 def test_model_option_on_every_design_command(argv):
     args = build_parser().parse_args([*argv, "--model", "m/loop.json"])
     assert args.model == "m/loop.json"
+
+
+def test_predict_at_a_rig_point_equals_evaluate_with_model(looped):
+    # one steady rig point: air at 20 degC, 1 atm, smooth walls, the rig's own gap, 6000 rpm
+    model = looped / "o" / "loop.json"
+    row = pd.DataFrame({"speed_rpm": [6000.0], "temp_C": [20.0], "oil": ["air"],
+                        "roughness_T": [1.0]})
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OilgapWarning)
+        p = float(predict(model, row)["predicted_viscous_power_W"].iloc[0])
+        rig = as_case(looped / "rig.toml")
+        case = with_operating(rig, "air", None, 20.0, 0.0)   # the rig point: sea level
+        w = 6000.0 * np.pi / 30.0
+        case = replace(case, duty_cycle=DutyCycle(np.arange(8.0), np.full(8, w), "constant"))
+        e = evaluate(with_model(case, model)[0]).total_mean_power_W
+    assert abs(p - e) <= 1e-12 * abs(p)

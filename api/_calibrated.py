@@ -69,7 +69,7 @@ def with_model(case: DesignCase, model: str | Path | None
 
 
 def model_lines(cal: CalibratedCase | None, calibrated_W: float | None = None,
-                uncalibrated_W: float | None = None) -> list[str]:
+                uncalibrated_W: float | None = None, what: str = "loss") -> list[str]:
     """The lines every output prints about the model it used (empty without one).
 
     Parameters
@@ -77,6 +77,8 @@ def model_lines(cal: CalibratedCase | None, calibrated_W: float | None = None,
     cal : CalibratedCase or None
     calibrated_W, uncalibrated_W : float, optional
         The loss with the model and without it [W] (printed side by side).
+    what : str
+        What that loss is (e.g. "the given design's loss").
 
     Returns
     -------
@@ -91,7 +93,7 @@ def model_lines(cal: CalibratedCase | None, calibrated_W: float | None = None,
     out += [f"            not carried: {n}: {why}" for n, why in cal.not_carried]
     out += [f"            outside the model's domain: {d}" for d in cal.domain]
     if calibrated_W is not None and uncalibrated_W is not None:
-        out.append(f"            loss {calibrated_W:.4g} W calibrated, {uncalibrated_W:.4g} W "
+        out.append(f"            {what} {calibrated_W:.4g} W calibrated, {uncalibrated_W:.4g} W "
                    "uncalibrated (the case's own law)")
     return out
 

@@ -34,13 +34,15 @@ def base_loss_W(case: DesignCase) -> float:
 def report_model(cal: CalibratedCase | None, json_mode: bool = False,
                  calibrated_W: float | None = None, uncalibrated_W: float | None = None
                  ) -> None:
-    """Print the model's lines (text) after a command's output; nothing without a model."""
-    if cal is None:
+    """Print the model's lines (text) after a command's output; nothing without a model.
+    Without the two losses given: the given case's, evaluated with and without the model."""
+    if cal is None or json_mode:
         return
+    what = "loss"
     if calibrated_W is None:
         calibrated_W, uncalibrated_W = base_loss_W(cal.case), base_loss_W(cal.uncalibrated)
-    if not json_mode:
-        print("\n".join(model_lines(cal, calibrated_W, uncalibrated_W)))
+        what = "the given case's loss"
+    print("\n".join(model_lines(cal, calibrated_W, uncalibrated_W, what)))
 
 
 __all__ = ["add_model_option", "apply_model", "model_record", "report_model"]

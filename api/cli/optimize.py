@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+from dataclasses import replace
 from pathlib import Path
 
 from oilgap._optimize import optimize_resolved, robust_resolved
@@ -88,11 +89,16 @@ def _write_figure(res, path: str) -> Path:
     return Path(path)
 
 
-def _write(res: Optimization, args: argparse.Namespace):
+def _write(res: Optimization, args: argparse.Namespace, cal=None):
     if not args.out:
         return None
+    case = res.to_case()
+    if cal is not None:  # the optimum keeps its calibrated model, by reference (every digit)
+        case = replace(case, friction=cal.uncalibrated.friction,
+                       thermal=cal.uncalibrated.thermal,
+                       calibration_model=str(Path(cal.provenance["path"]).resolve()))
     try:
-        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None))
+        return write_case_toml(case, args.out, run=getattr(args, "run", None))
     except OSError as e:
         raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
 
@@ -116,7 +122,7 @@ def run(args: argparse.Namespace) -> int:
             res = robust_resolved(case, mode, args.robust, robust, limits, args.verbose)
         else:
             res = optimize_resolved(case, mode, args.thermal is None, limits, args.verbose)
-    out_path = _write(res, args)
+    out_path = _write(res, args, cal)
     fig = _write_figure(res, args.figure) if getattr(args, "figure", None) else None
     if args.json:
         print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None,

@@ -94,6 +94,7 @@ from .ranges import (
     parameter_findings,
 )
 from .refit import CV_MODES, FinalModel, heldout_gains, rmse
+from .residual_story import describe_residual
 from .residuals import residual_structure, unexplained_structure
 from .results import (
     candidate_statuses,
@@ -357,6 +358,9 @@ class LoopEstimator:
                               "after": rmse(y - final.after.pred)}
         self.residual_after_ = residual_structure(y - final.fit.pred, s)
         self.unexplained_ = unexplained_structure(self.residual_after_)
+        if self.unexplained_:  # where it sits, how it scales, what it points to (issue 25)
+            self.unexplained_["described"] = describe_residual(
+                y - final.fit.pred, s, self.residual_after_["noise_W"])
         self.table3_ = table3_rows(s, self.pred_["without_T"], self.pred_["with_T"])
         self.per_run_ = per_run_rows(s, self.pred_, final, self.table3_)
 

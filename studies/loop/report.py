@@ -299,6 +299,8 @@ def format_summary(est: LoopEstimator) -> str:
             lines.append(f"  {x['name']}: {x['status']}")
     if est.unexplained_:
         lines.append("unexplained: " + est.unexplained_["description"])
+        lines += [f"            {t}" for t in est.unexplained_.get("described", {}).get(
+            "text", [])]
     h = est.heldout_rmse_
     r = est.rmse_
     held = f"held-out (by {getattr(est, 'cv_by', 'run')})"[:21]
@@ -453,7 +455,9 @@ def _md_effects(est: LoopEstimator) -> list[str]:
     else:
         parts += ["**No missing effect found.**", ""]
     if est.unexplained_:
-        parts += ["### Unexplained structure", "", est.unexplained_["description"] + ".", ""]
+        parts += ["### Unexplained structure", "", est.unexplained_["description"] + ".", "",
+                  *[f"- {t}" for t in est.unexplained_.get("described", {}).get("text", [])],
+                  ""]
     return parts
 
 

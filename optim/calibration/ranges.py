@@ -194,6 +194,26 @@ def _finding(name: str, value: float, shown: str, rng: ParamRange,
                    basis=rng.basis, source=rng.source, message=txt, held_at=held)
 
 
+MOVED = 0.05
+"""Relative change from its prior (at least 0.1 absolute x this) above which a parameter
+counts as moved in a scale finding [-]."""
+
+
+def _scale_text(spec: BaseSpec, vals: dict, model: ForwardModel, fit: ModelFit) -> str:
+    """A scale finding that names everything that moved from its prior (issue 25): with
+    alpha or gamma moved too, the scale alone is not the loss's level on these data."""
+    prior = spec.prior_values()
+    moved = [f"{j} = {vals[j]:.3g} (prior {prior[j]:.3g})" for j in spec.free
+             if j != "scale" and abs(vals[j] - prior[j]) > MOVED * max(abs(prior[j]), 0.1)]
+    text = f"the scale is {vals['scale']:.3g}x the published law"
+    if not moved:
+        return text
+    eff = effective_scale(model, fit.law, spec.laminar_law)
+    level = (f"; on these data the loss is {eff:.3g}x the published law's "
+             f"({'below' if eff < 1 else 'above'} it)" if np.isfinite(eff) else "")
+    return f"{text}, with {', '.join(moved)} moved as well{level}"
+
+
 def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> list[Finding]:
     """Findings on a calibration: parameters outside their range or on their box.
 
@@ -236,7 +256,7 @@ def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> li
         rng = PARAM_RANGES[kind]
         v = vals[k]
         if not rng.low <= v <= rng.high:
-            shown = (f"the scale is {v:.3g}x the published law" if k == "scale"
+            shown = (_scale_text(spec, vals, model, fit) if k == "scale"
                      else f"{k} = {v:.3g}")
             f = _finding(kind, v, shown, rng, rng.high if v > rng.high else rng.low)
             out.append(replace(f, parameter=k))

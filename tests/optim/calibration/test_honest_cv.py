@@ -210,3 +210,15 @@ def test_data_below_couette_is_a_finding(rig):
     x, w, re, y = columns(df)
     floor = power(couette_cm(re, x), w)
     assert np.all(est.pred_["with_T"] >= floor * (1 - 1e-9))   # the model stops at Couette
+
+
+def test_a_scale_finding_names_what_moved_with_it(rig):
+    # Eq. 6 at 0.5x with alpha 0.15 on three gaps: the scale leaves its range 0.7..1.4 and
+    # alpha moved too, so the finding says where the loss is against the published law
+    truth = FrictionLaw(form="smooth", laminar_law="couette", alpha=0.15, scale=0.5)
+    df = air_frame(lambda re, x: moment_coefficient(re, x, truth), (0.009, 0.02, 0.039))
+    est = LoopEstimator(case=rig, base="eq6", cv_by="gap_mm", effects=[]).fit(df)
+    f = next(f for f in est.findings_ if f.parameter == "scale")
+    assert f.message.startswith(f"the scale is {est.calibration_['scale']:.3g}x the published "
+                                "law, with alpha = ")
+    assert "(prior 0.3) moved as well; on these data the loss is" in f.message

@@ -10,6 +10,7 @@ import warnings
 from dataclasses import replace
 from datetime import UTC, datetime
 from pathlib import Path
+from typing import Any
 
 from oilgap.model.case import DesignCase
 from oilgap.model.errors import OilgapWarning
@@ -39,16 +40,16 @@ def model_provenance(path: str | Path) -> dict:
                     f"{data.get('kind', '?')})", "base": doc.get("base", "?")}
 
 
-def with_model(case: DesignCase, model: str | Path | None
+def with_model(case: DesignCase, model: Any
                ) -> tuple[DesignCase, CalibratedCase | None]:
     """The case with the calibrated model of ``model`` folded in (unchanged without one).
 
     Parameters
     ----------
     case : DesignCase
-    model : path or None
-        A ``loop.json`` (checked against its schema; refused with one line otherwise);
-        None: the case's own ``[calibration] model``, if any.
+    model : path, FittedModel, fitted og.Loop or None
+        A ``loop.json`` (checked against its schema; refused with one line otherwise) or
+        a model in memory; None: the case's own ``[calibration] model``, if any.
 
     Returns
     -------
@@ -61,7 +62,12 @@ def with_model(case: DesignCase, model: str | Path | None
     if model is None:
         return case, None
     plain = replace(case, calibration_model=None)  # the reference is resolved once, here
-    cal = replace(calibrate_case(plain, read_model(model)), provenance=model_provenance(model))
+    if isinstance(model, (str, Path)):
+        fitted, pv = read_model(model), model_provenance(model)
+    else:  # a FittedModel or a fitted og.Loop, in memory
+        fitted = model.fitted_model() if hasattr(model, "fitted_model") else model
+        pv = {"path": "(in memory)", "fitted": "-", "data": "-", "base": "-"}
+    cal = replace(calibrate_case(plain, fitted), provenance=pv)
     for line in cal.domain:
         warnings.warn(OilgapWarning(f"--model {model}: the case lies outside the model's "
                                     f"domain: {line}"), stacklevel=2)

@@ -18,8 +18,21 @@ from __future__ import annotations
 
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
-from oilgap._checks import CASE, FLAG, NAME, NUMBER, OILS, PATH, Arg, check_arg, checked, choice
+from oilgap._checks import (
+    CASE,
+    FLAG,
+    MODEL,
+    NAME,
+    NUMBER,
+    OILS,
+    PATH,
+    Arg,
+    check_arg,
+    checked,
+    choice,
+)
 from oilgap._results import Evaluation
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.errors import InputError, check_finite
@@ -250,12 +263,12 @@ THERMAL = choice("none", "bulk", "film", "full")
 
 
 @checked(case=CASE, oil=NAME, oils=OILS, oil_temp_C=NUMBER, depth_m=NUMBER, thermal=THERMAL,
-         sea_temp_C=NUMBER, laminar_law=choice(*LAMINAR_LAWS))
+         sea_temp_C=NUMBER, laminar_law=choice(*LAMINAR_LAWS), model=MODEL)
 def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             laminar_law: str | None = None) -> Evaluation:
+             laminar_law: str | None = None, model: Any = None) -> Evaluation:
     """Evaluate a joint region by region over its duty cycle (``oilgap evaluate``).
 
     Parameters
@@ -278,6 +291,9 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
         Sea temperature of the heat balance [degC] (``bulk``/``full`` only).
     laminar_law : {"couette", "bilgen-boulos"}, optional
         Law below the critical Taylor number (default: the case's).
+    model : path, FittedModel or fitted og.Loop, optional
+        A calibrated loop model folded into the case (``--model``;
+        :func:`oilgap._calibrated.with_model`).
 
     Returns
     -------
@@ -289,6 +305,9 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
                          "(None: the case's)")
     c = with_operating(as_case(case), oil, oils, oil_temp_C, depth_m)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
+    if model is not None:
+        from oilgap._calibrated import with_model
+        c = with_model(c, model)[0]
     return evaluate_resolved(c, mode, thermal is None, laminar_law)
 
 

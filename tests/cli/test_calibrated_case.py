@@ -105,3 +105,14 @@ def test_predict_at_a_rig_point_equals_evaluate_with_model(looped):
         case = replace(case, duty_cycle=DutyCycle(np.arange(8.0), np.full(8, w), "constant"))
         e = evaluate(with_model(case, model)[0]).total_mean_power_W
     assert abs(p - e) <= 1e-12 * abs(p)
+
+
+def test_facade_model_keyword_is_the_same_fold(looped):
+    import oilgap as og
+
+    d = looped
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", OilgapWarning)
+        a = og.evaluate(d / "rig.toml", model=d / "o" / "loop.json").total_mean_power_W
+        b = og.evaluate(d / "cal.toml").total_mean_power_W
+    assert abs(a - b) <= 1e-12 * abs(a)

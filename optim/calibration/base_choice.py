@@ -29,7 +29,7 @@ References
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -148,6 +148,45 @@ def log_rmse(y: np.ndarray, pred: np.ndarray) -> float:
     return float(np.sqrt(np.mean(np.log(pred[ok] / y[ok]) ** 2))) if ok.any() else float("nan")
 
 
+LAMINAR_SHARE = 0.5
+"""Power-weighted share of the samples at the Couette floor above which the fitted scale is
+bounded below where the floor starts [-]: there a smaller scale cannot lower the loss (the
+floor holds it), and a fit left free would run the scale to nothing (issue 27 item 4)."""
+
+
+FLOOR_WITHIN = 0.9
+"""A sample is at the Couette floor when its Couette loss is at least this share of the
+law's at scale 1 [-] (the smooth form's max lies up to a few % above Couette)."""
+
+
+def laminar_share(model: ForwardModel, spec: BaseSpec) -> tuple[float, float]:
+    """Power-weighted share of the samples whose loss at the published level (scale 1) is
+    exact Couette flow [-] (0 without the Couette laminar law), and the least scale that
+    keeps every one of them at or above Couette [-].
+
+    Parameters
+    ----------
+    model : ForwardModel
+    spec : BaseSpec
+
+    Returns
+    -------
+    (float, float)
+        ``sum(P at the floor) / sum(P)`` [-] and ``max(P_Couette / P)`` over those samples.
+    """
+    if spec.laminar_law != "couette" or "scale" not in spec.free:
+        return 0.0, 0.0
+    law = spec.law(spec.start({**spec.prior_values(), **spec.fixed, "scale": 1.0}))
+    p = model.base_power(replace(law, gamma=0.0))
+    cc = model.couette_power()
+    tot = float(np.sum(np.abs(p)))
+    at_floor = (cc >= FLOOR_WITHIN * p) & (p > 0)  # the smooth max: a few % above Couette
+    if tot <= 0 or not at_floor.any():
+        return 0.0, 0.0
+    return (float(np.sum(np.abs(p)[at_floor]) / tot),
+            min(1.0, float(np.max(cc[at_floor] / p[at_floor]))))
+
+
 def fit_base(model: ForwardModel, case: DesignCase, base: str) -> tuple[BaseSpec, ModelFit, dict]:
     """Decide and fit one base on all oil runs (the loop's stage 3).
 
@@ -166,6 +205,12 @@ def fit_base(model: ForwardModel, case: DesignCase, base: str) -> tuple[BaseSpec
     """
     spec, stmt = decide_spec(model.samples, model.geometry, case, base)
     spec, stmt = check_alpha(model, spec, stmt)
+    share, floor = laminar_share(model, spec)
+    if share >= LAMINAR_SHARE:  # the Couette floor governs: no scale takes the loss below it
+        spec = replace(spec, scale_min=floor)
+        stmt = {**stmt, "scale": f"{stmt.get('scale', 'identified')}; bounded below by "
+                f"{floor:.4g}: {100 * share:.0f} % of the power is at the exact Couette "
+                "floor, which no calibration goes below"}
     return spec, fit_model(model, spec, initial_guess(model, spec)), stmt
 
 

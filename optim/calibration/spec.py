@@ -248,6 +248,10 @@ class BaseSpec:
         case's gamma (0 on smooth walls), the base form's default
         (:meth:`prior_values`). A cross-validation fold holds what it cannot
         identify here.
+    scale_min : float
+        Lowest scale the fit may take [-] (0: the numerical box only; where the Couette
+        floor governs the data, the scale at which it starts:
+        :func:`.base_choice.laminar_share`).
     """
 
     free: tuple[str, ...]
@@ -255,6 +259,7 @@ class BaseSpec:
     base: str = "power-law"
     laminar_law: str = field(default="couette")
     prior: dict = field(default_factory=dict)
+    scale_min: float = 0.0
 
     def prior_values(self) -> dict:
         """Every parameter's prior [-] (:attr:`prior`, else the published start value).
@@ -342,8 +347,11 @@ class BaseSpec:
         (lo, hi) : arrays
             Bounds of the solver's unknowns [-].
         """
-        return (np.array([PARAM_LIMITS[k][0] for k in self.free]),
-                np.array([PARAM_LIMITS[k][1] for k in self.free]))
+        lo = np.array([PARAM_LIMITS[k][0] for k in self.free])
+        if self.scale_min > 0 and "scale" in self.free:  # the Couette floor (issue 27)
+            i = self.free.index("scale")
+            lo[i] = max(lo[i], math.log(self.scale_min))
+        return lo, np.array([PARAM_LIMITS[k][1] for k in self.free])
 
     def at_limit(self, x: np.ndarray) -> list[str]:
         """Free parameters that sit on their numerical box (not identified by the data).
@@ -357,7 +365,8 @@ class BaseSpec:
         -------
         list of str
         """
-        lo, hi = self.bounds()
+        lo = np.array([PARAM_LIMITS[k][0] for k in self.free])  # the box, not the floor
+        hi = np.array([PARAM_LIMITS[k][1] for k in self.free])
         tol = 1e-6 * (hi - lo)
         return [k for k, v, a, b, t in zip(self.free, x, lo, hi, tol, strict=True)
                 if v <= a + t or v >= b - t]
@@ -375,7 +384,8 @@ class BaseSpec:
         BaseSpec
         """
         return BaseSpec(tuple(k for k in self.free if k not in values),
-                        {**self.fixed, **values}, self.base, self.laminar_law, self.prior)
+                        {**self.fixed, **values}, self.base, self.laminar_law, self.prior,
+                        self.scale_min)
 
 
 def cv_groups(s: Samples) -> np.ndarray:

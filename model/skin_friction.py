@@ -54,6 +54,7 @@ from . import _math as m
 from .errors import InputError, check_finite, check_positive
 from .io.inputs import check_physical
 from .taylor_couette import REGIME_BOUNDARIES_RE, couette_moment_coefficient
+from .taylor_couette import couette_floor_applies as floored
 
 BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))
 """(C, beta) of the four branches of seed Eq. 6; each is multiplied by (delta/R)^0.3 [1]."""
@@ -556,29 +557,6 @@ def check_friction_ranges(law: FrictionLaw, where: str = "friction") -> Friction
     return law
 
 
-def couette_floor_applies(law: FrictionLaw) -> bool:
-    """Whether :func:`moment_coefficient` floors ``law`` at the exact Couette C_m.
-
-    A calibration scale below 1 on a law with the Couette laminar law would take the
-    laminar loss below exact Couette, the minimum for the geometry [4]; such a law is
-    evaluated as ``max(C_m,Couette, scale C_m,form)`` (issue 27 item 4). At scale >= 1
-    the form is already at or above Couette, so nothing changes (bit for bit).
-
-    Parameters
-    ----------
-    law : FrictionLaw
-        Form, laminar law and scale [-].
-
-    Returns
-    -------
-    bool
-        True for the Couette laminar law, a form other than the power law, and a
-        numeric scale below 1.
-    """
-    return (law.laminar_law == LaminarLaw.COUETTE and law.form != FrictionForm.POWER_LAW
-            and isinstance(law.scale, (int, float)) and law.scale < 1.0)
-
-
 def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
     """Moment coefficient C_m [-] of a clearance under ``law`` (seed Eqs. 6-8).
 
@@ -597,9 +575,7 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
     -------
     float, array or CasADi expression
         ``scale * C_m,form(Re, x) * T^gamma`` [-] (no scale for the power law; the
-        ``"branches"`` form takes the Couette law into its smooth maximum); with the
-        Couette laminar law never below ``C_m,Couette T^gamma`` whatever the scale
-        (:func:`couette_floor_applies`).
+        ``"branches"`` form takes the Couette law into its smooth maximum).
 
     References
     ----------
@@ -618,8 +594,7 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
         cm = ((couette_law_cm_smooth if smooth else couette_law_cm) if couette
               else (bilgen_boulos_cm_smooth if smooth else bilgen_boulos_cm))
         base = law.scale * cm(re, gap_ratio, alpha=law.alpha)
-    if couette_floor_applies(law):  # a scale < 1 never takes the loss below Couette
-        base = m.fmax(base, couette_moment_coefficient(re, gap_ratio))
+    base = m.fmax(base, couette_moment_coefficient(re, gap_ratio)) if floored(law) else base
     if isinstance(law.gamma, (int, float)) and law.gamma == 0.0:
         return base
     return base * groove_roughness_factor(roughness_T, law.gamma)

@@ -48,11 +48,8 @@ from oilgap.model.oil_state import (
 )
 from oilgap.model.oils import Oil, normalize_oil_name
 from oilgap.model.regions import JointGeometry, joint_geometry, region_power
-from oilgap.model.skin_friction import (
-    FrictionLaw,
-    couette_floor_applies,
-    groove_roughness_factor,
-)
+from oilgap.model.skin_friction import FrictionLaw, groove_roughness_factor
+from oilgap.model.taylor_couette import couette_floor_applies
 from oilgap.model.units import celsius_to_kelvin
 
 from .film_wall import case_film_theory_K_W

@@ -363,7 +363,7 @@ def below_couette_finding(y: np.ndarray, couette_W: np.ndarray, noise_W: float
 
     No flow in the clearance dissipates less than laminar Couette flow
     (Helmholtz-Korteweg minimum dissipation), and the calibrated law never goes below
-    it (:func:`oilgap.model.skin_friction.couette_floor_applies`). Data below it say
+    it (:func:`oilgap.model.taylor_couette.couette_floor_applies`). Data below it say
     the oil-free baseline took too much away or the oil was warmer (thinner) than the
     temperature recorded. The test: over the samples whose Couette loss stands above
     three noise levels, the median of measured / Couette is below

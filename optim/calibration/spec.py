@@ -249,9 +249,8 @@ class BaseSpec:
         (:meth:`prior_values`). A cross-validation fold holds what it cannot
         identify here.
     scale_min : float
-        Lowest scale the fit may take [-] (0: the numerical box only; where the Couette
-        floor governs the data, the scale at which it starts:
-        :func:`.base_choice.laminar_share`).
+        Lowest scale the fit may take [-] (0: the box only; where the Couette floor
+        governs, the scale it starts at: :func:`.base_choice.laminar_share`).
     """
 
     free: tuple[str, ...]

@@ -39,6 +39,9 @@ NO_DESIGN_TERM = {
     "seal_coulomb_friction": "the design model has no seal term",
     "bearing_ball_churning": "the library's Palmgren churning is another law than the "
                              "case's SKF bearing drag",
+    "bearing_ball_drag": "a factor on the rig's bearing drag (SKF's V_M term); the design's "
+                         "bearing is another one: set its [bearing] drag_scale by hand if it "
+                         "is the same bearing",
     "end_face_disc": "the design model has no end-face disc term",
     "taylor_vortex_onset": "the design model has no Taylor-vortex excess term",
     "shear_thinning": "the design model takes the oil as Newtonian",

@@ -149,8 +149,8 @@ def log_rmse(y: np.ndarray, pred: np.ndarray) -> float:
 
 
 LAMINAR_SHARE = 0.5
-"""Power-weighted share of the samples at the Couette floor above which the fitted scale is
-bounded below where the floor starts [-]: there a smaller scale cannot lower the loss (the
+"""Power-weighted share of the samples at the Couette floor above which a fitted scale below
+where the floor starts is bounded there [-]: a smaller scale cannot lower the loss (the
 floor holds it), and a fit left free would run the scale to nothing (issue 27 item 4)."""
 
 
@@ -205,13 +205,16 @@ def fit_base(model: ForwardModel, case: DesignCase, base: str) -> tuple[BaseSpec
     """
     spec, stmt = decide_spec(model.samples, model.geometry, case, base)
     spec, stmt = check_alpha(model, spec, stmt)
+    fit = fit_model(model, spec, initial_guess(model, spec))
     share, floor = laminar_share(model, spec)
-    if share >= LAMINAR_SHARE:  # the Couette floor governs: no scale takes the loss below it
+    if share >= LAMINAR_SHARE and spec.values(fit.x).get("scale", 1.0) < floor:
+        # the fit wants to go below the Couette floor, which governs the data: bounded there
         spec = replace(spec, scale_min=floor)
         stmt = {**stmt, "scale": f"{stmt.get('scale', 'identified')}; bounded below by "
                 f"{floor:.4g}: {100 * share:.0f} % of the power is at the exact Couette "
                 "floor, which no calibration goes below"}
-    return spec, fit_model(model, spec, initial_guess(model, spec)), stmt
+        fit = fit_model(model, spec, initial_guess(model, spec))
+    return spec, fit, stmt
 
 
 def try_base(model: ForwardModel, case: DesignCase, cand: BaseCandidate, cv: str) -> BaseTrial:

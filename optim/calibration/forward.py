@@ -383,12 +383,14 @@ class ForwardModel:
             self._shapes[key] = [region_power(r, s.omega, nu, rho, unit)
                                  for r in self.geometry.regions]
         k = law.C if law.form == "power-law" else law.scale
-        shapes = [k * p for p in self._shapes[key]]
+        g = [1.0 if law.gamma == 0.0 else groove_roughness_factor(r.roughness_T, law.gamma)
+             for r in self.geometry.regions]
+        out = [p * (k if law.gamma == 0.0 else k * gi)
+               for gi, p in zip(g, self._shapes[key], strict=True)]
         if couette_floor_applies(law):  # a scale < 1 stops at exact Couette (issue 27)
-            shapes = [np.maximum(p, f) for p, f in zip(shapes, self._couette_powers(state),
-                                                       strict=True)]
-        return [p if law.gamma == 0.0 else p * groove_roughness_factor(r.roughness_T, law.gamma)
-                for r, p in zip(self.geometry.regions, shapes, strict=True)]
+            out = [np.maximum(p, f * gi) for p, f, gi in zip(
+                out, self._couette_powers(state), g, strict=True)]
+        return out
 
     def _couette_powers(self, state=None) -> list[np.ndarray]:
         """Region powers of exact laminar Couette flow, the floor of every law [W] (kept)."""

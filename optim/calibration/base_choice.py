@@ -201,7 +201,7 @@ def fit_base(model: ForwardModel, case: DesignCase, base: str) -> tuple[BaseSpec
     Returns
     -------
     (BaseSpec, ModelFit, dict)
-        Specification, fit and identifiability statements.
+        Specification, fit (its prediction in W [W]) and identifiability statements.
     """
     spec, stmt = decide_spec(model.samples, model.geometry, case, base)
     spec, stmt = check_alpha(model, spec, stmt)
@@ -231,6 +231,7 @@ def try_base(model: ForwardModel, case: DesignCase, cand: BaseCandidate, cv: str
     Returns
     -------
     BaseTrial
+        Its fit, held-out predictions [W] and errors (log [-], RMSE [W]).
     """
     y = model.samples.viscous_W
     try:

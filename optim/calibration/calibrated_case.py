@@ -100,13 +100,14 @@ def case_conditions(case: DesignCase) -> dict[str, tuple[float, float]]:
     Parameters
     ----------
     case : DesignCase
+        The design case (SI inside).
 
     Returns
     -------
     dict
-        ``abs_speed_rpm`` (0 to the duty cycle's peak), ``temp_C``, ``nu_cSt`` (at the
-        oil temperature and depth), ``gap_mm`` and ``roughness_T`` of region 1 -> (low,
-        high).
+        ``abs_speed_rpm`` [rpm] (0 to the duty cycle's peak), ``temp_C`` [degC], ``nu_cSt``
+        [cSt] (at the oil temperature and depth), ``gap_mm`` [mm] and ``roughness_T`` [-]
+        of region 1 -> (low, high).
     """
     r1 = joint_geometry(case).regions[0]
     peak = float(abs(case.duty_cycle.omega_rad_s).max()) * 30.0 / 3.141592653589793
@@ -163,6 +164,8 @@ def calibrate_case(case: DesignCase, model: FittedModel, stage: str = "with_effe
     Returns
     -------
     CalibratedCase
+        The case with the model's law (C_m [-]) and film strength s [-] in it, what was
+        not carried, and the domain warnings.
     """
     law = model.laws[stage]
     carried = [_law_text(law)]

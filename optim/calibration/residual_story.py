@@ -160,7 +160,21 @@ def how_it_scales(res: np.ndarray, s: Samples) -> dict:
 
 
 def mechanism(where: dict, scaling: dict) -> str:
-    """One sentence on the mechanism the residual's signature points to."""
+    """One sentence on the mechanism the residual's signature points to.
+
+    Parameters
+    ----------
+    where : dict
+        :func:`where_it_sits` (shares [-] by oil, run, roughness).
+    scaling : dict
+        :func:`how_it_scales` (exponents of |omega|, nu, rho [-] with intervals).
+
+    Returns
+    -------
+    str
+        The oil a residual concentrates in, or the nearest signature of
+        :data:`SIGNATURES` within two standard errors, or that none matches.
+    """
     oil = where["by"]["oil"]
     if len(oil["groups"]) > 1 and oil["groups"][0]["share"] >= OIL_SHARE:
         g = oil["groups"][0]

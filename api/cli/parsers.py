@@ -421,10 +421,10 @@ def add_loop(sub) -> None:
     p.add_argument("--margin", type=finite_float, default=0.10,
                    help="held-out RMSE fall an effect must bring (default 0.10)")
     p.add_argument("--effects", metavar="NAME,...", help="consider only these library effects")
-    p.add_argument("--base", choices=("auto", "eq6", "power-law", "branches"), default="auto",
-                   help="base model: auto = each of eq6, branches, power-law fitted and the "
-                   "one of least held-out log-RMSE kept, a simpler one within --margin "
-                   "preferred (default); eq6 = the design tool's Eq. 6 x scale x T^gamma; "
+    p.add_argument("--base", choices=("eq6", "auto", "power-law", "branches"), default="eq6",
+                   help="base model: eq6 = the design tool's Eq. 6 x scale x T^gamma "
+                   "(default); auto = eq6 and branches fitted and the one of least held-out "
+                   "log-RMSE kept, the simpler within --margin; "
                    "power-law = a free C (delta/R)^alpha Re^beta T^gamma; "
                    "branches = Eq. 6's branches, each C_k (delta/R)^alpha_k Re^beta_k freed "
                    "where the data identify it")

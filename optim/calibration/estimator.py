@@ -141,12 +141,12 @@ class LoopEstimator:
         groups: one per group up to :data:`.folds.MAX_FOLDS` groups
         (leave-one-run-out), grouped 10-fold cross-validation above
         (:mod:`.folds`).
-    base : {"auto", "eq6", "power-law", "branches"}
-        Base model. ``"auto"`` (default): each candidate of
+    base : {"eq6", "auto", "power-law", "branches"}
+        Base model (default ``"eq6"``). ``"auto"``: each candidate of
         :data:`.base_choice.BASE_CANDIDATES` is fitted and cross-validated, and the
         one of least held-out log-RMSE kept unless a simpler one comes within
         ``margin`` of it (:mod:`.base_choice`; the table in ``base_selection_``).
-        Otherwise forced: the design tool's Eq. 6 regime structure (smooth form, the
+        The default ``"eq6"`` is the design tool's Eq. 6 regime structure (smooth form, the
         case's laminar law) times one scale and T^gamma (default), a free
         power law C (delta/R)^alpha Re^beta T^gamma, or Eq. 6's branches each with
         its own C_k, alpha_k, beta_k, freed only where the data identify them
@@ -198,7 +198,7 @@ class LoopEstimator:
     def __init__(self, case: DesignCase | None = None, oils: dict[str, Oil] | str | Path |
                  None = None, margin: float = DEFAULT_MARGIN,
                  min_explained: float = DEFAULT_MIN_EXPLAINED, effects=None,
-                 max_effects: int = 3, cv: str = "one-step", base: str = "auto",
+                 max_effects: int = 3, cv: str = "one-step", base: str = "eq6",
                  cv_by: str = "run"):
         self.case = case
         self.oils = oils

@@ -143,7 +143,7 @@ def air3():
 
 @pytest.fixture(scope="module")
 def auto_fit(rig, air3):
-    return LoopEstimator(case=rig, cv_by="gap_mm", effects=[]).fit(air3)
+    return LoopEstimator(case=rig, cv_by="gap_mm", base="auto", effects=[]).fit(air3)
 
 
 def test_loop_heldout_equals_an_outside_leave_one_gap_out(rig, air3):
@@ -177,10 +177,12 @@ def test_base_chosen_by_held_out_error_meets_the_target(auto_fit, air3):
     assert doc["base"] == auto_fit.base_ and doc["base_selection"]["requested"] == "auto"
 
 
-def test_forced_base_skips_the_comparison(rig, air3):
-    est = LoopEstimator(case=rig, cv_by="gap_mm", base="eq6", effects=[]).fit(air3)
+def test_default_base_skips_the_comparison_and_meets_the_target(rig, air3):
+    est = LoopEstimator(case=rig, cv_by="gap_mm", effects=[]).fit(air3)   # the default: eq6
     assert est.base_ == "eq6" and est.base_selection_ == []
     assert "base_selection" not in est.to_dict()
+    y = columns(air3)[3]
+    assert rmse(np.log(est.heldout_pred_["before"] / y)) <= 0.08
 
 
 def test_couette_floor_under_any_scale():

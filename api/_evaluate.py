@@ -18,8 +18,21 @@ from __future__ import annotations
 
 from dataclasses import replace
 from pathlib import Path
+from typing import Any
 
-from oilgap._checks import CASE, FLAG, NAME, NUMBER, OILS, PATH, Arg, check_arg, checked, choice
+from oilgap._checks import (
+    CASE,
+    FLAG,
+    MODEL,
+    NAME,
+    NUMBER,
+    OILS,
+    PATH,
+    Arg,
+    check_arg,
+    checked,
+    choice,
+)
 from oilgap._results import Evaluation
 from oilgap.model.case import DesignCase, OperatingPoint
 from oilgap.model.errors import ArgumentError, InputError, check_finite
@@ -105,7 +118,11 @@ def as_case(case: DesignCase | str | Path | None = None) -> DesignCase:
     if isinstance(case, DesignCase):
         return case
     check_arg("case", case, CASE)
-    return read_case_toml(case)
+    read = read_case_toml(case)
+    if read.calibration_model is None:
+        return read
+    from oilgap._calibrated import with_model  # a [calibration] model, folded in once
+    return with_model(read, None)[0]
 
 
 class OilTable(dict):
@@ -269,12 +286,13 @@ THERMAL = choice("none", "bulk", "film", "full")
 
 
 @checked(case=CASE, oil=NAME, oils=OILS, oil_temp_C=NUMBER, depth_m=NUMBER, thermal=THERMAL,
-         sea_temp_C=NUMBER, laminar_law=choice(*LAMINAR_LAWS), transition=choice(*TRANSITIONS))
+         sea_temp_C=NUMBER, laminar_law=choice(*LAMINAR_LAWS), transition=choice(*TRANSITIONS),
+         model=MODEL)
 def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             **keywords: str | None) -> Evaluation:
+             **keywords: Any) -> Evaluation:
     """Evaluate a joint region by region over its duty cycle (``oilgap evaluate``).
 
     Parameters
@@ -298,26 +316,32 @@ def evaluate(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     **keywords
         The friction's: ``laminar_law`` ({"couette", "bilgen-boulos"}: the law below the
         critical Taylor number) and ``transition`` ({"reynolds", "taylor"}: where C_m leaves
-        the laminar law, :func:`with_transition`); default: the case's.
+        the laminar law, :func:`with_transition`); default: the case's. ``model`` (a
+        ``loop.json`` path, a FittedModel or a fitted og.Loop): a calibrated loop model
+        folded into the case (``--model``; :func:`oilgap._calibrated.with_model`).
 
     Returns
     -------
     Evaluation
         ``.raw`` is the :class:`~oilgap.model.evaluation.CaseEvaluation`; powers [W].
     """
-    unknown = set(keywords) - {"laminar_law", "transition"}
+    unknown = set(keywords) - {"laminar_law", "transition", "model"}
     if unknown:
         raise ArgumentError(", ".join(sorted(unknown)), keywords[min(unknown)],
                             "evaluate's keywords are case, "
-                            "oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C, laminar_law "
-                            "and transition")
+                            "oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C, laminar_law, "
+                            "transition and model")
     laminar_law, transition = keywords.get("laminar_law"), keywords.get("transition")
+    model = keywords.get("model")
     if laminar_law is not None and laminar_law not in LAMINAR_LAWS:
         raise InputError("laminar_law", laminar_law, f"one of {', '.join(LAMINAR_LAWS)} "
                          "(None: the case's)")
     c = with_transition(with_operating(as_case(case), oil, oils, oil_temp_C, depth_m),
                         transition)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
+    if model is not None:
+        from oilgap._calibrated import with_model
+        c = with_model(c, model)[0]
     return evaluate_resolved(c, mode, thermal is None, laminar_law)
 
 

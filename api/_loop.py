@@ -190,7 +190,9 @@ class Loop(LoopEstimator, ResultView):
         Library effects to consider (default: all).
     margin : float
         Held-out RMSE fall an effect must bring [-].
-    base : {"eq6", "power-law", "branches"}
+    base : {"eq6", "auto", "power-law", "branches"}
+        Base law (default ``"eq6"``); ``"auto"`` chooses by held-out error (the table in
+        ``base_selection_``).
     cv_by : str
         Column whose values are the groups of leave-one-group-out validation.
     min_explained : float

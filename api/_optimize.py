@@ -7,7 +7,8 @@ import warnings
 from pathlib import Path
 from typing import Any
 
-from oilgap._checks import CASE, NAME, NUMBER, OILS, checked, choice
+from oilgap._calibrated import with_model
+from oilgap._checks import CASE, MODEL, NAME, NUMBER, OILS, checked, choice
 from oilgap._evaluate import THERMAL, as_case, thermal_case, with_operating, with_transition
 from oilgap._results_design import Optimization, thermal_line
 from oilgap._results_linear import LinearOptimization, LinearRobustOptimization
@@ -27,12 +28,12 @@ from oilgap.studies.settings import DesignLimits
 
 
 @checked(case=CASE, oil=NAME, oils=OILS, oil_temp_C=NUMBER, depth_m=NUMBER, thermal=THERMAL,
-         sea_temp_C=NUMBER, transition=choice(*TRANSITIONS))
+         sea_temp_C=NUMBER, transition=choice(*TRANSITIONS), model=MODEL)
 def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = None,
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             **keywords: Any) -> Optimization | RobustOptimization:
+             model: Any = None, **keywords: Any) -> Optimization | RobustOptimization:
     """The region-1 geometry (R, delta, groove fill, L) of least mean power under the
     motor's torque, the rotor inertia and the case's bounds (``oilgap optimize``).
 
@@ -47,6 +48,9 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C
         As :func:`oilgap._evaluate.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
+    model : path, FittedModel or fitted og.Loop, optional
+        A calibrated loop model folded into the case (``--model``;
+        :func:`oilgap._calibrated.with_model`).
     **keywords
         ``transition``: ``"reynolds"`` or ``"taylor"``, where C_m leaves the laminar law
         (default: the case's; :func:`oilgap._evaluate.with_transition`).
@@ -97,6 +101,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     c = with_transition(with_operating(as_case(case), oil, oils, oil_temp_C, depth_m),
                         transition)
     c, mode = thermal_case(c, thermal, oil_temp_C, sea_temp_C)  # the one resolution
+    c = with_model(c, model)[0] if model is not None else c
     if robust is not None:
         return robust_resolved(c, mode, robust, robust_kw, lim, verbose)
     return optimize_resolved(c, mode, thermal is None, lim, verbose)

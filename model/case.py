@@ -477,6 +477,10 @@ class DesignCase:
         The linear actuator's screw, rod, guide and passages (``[drive] kind =
         "linear"``, docs/linear-joint.md); None: a rotary joint. The duty cycle is then
         the motor's speed ``2 pi v/lead`` of the rod's velocity.
+    calibration_model : str or None
+        A calibrated loop model (``[calibration] model``: the path of a ``loop.json``)
+        the commands fold into the case before computing (``oilgap.api``'s
+        ``with_model``); None: the case's own laws.
     """
 
     name: str
@@ -496,6 +500,7 @@ class DesignCase:
     defaults: tuple = field(default=(), compare=False)
     uncertainty: Any = field(default=None, compare=False)
     linear: Any = None
+    calibration_model: str | None = field(default=None, compare=False)
 
     def __post_init__(self):
         if self.bounds is None:

@@ -52,6 +52,7 @@ from . import _math as m
 from .errors import InputError, check_finite, check_positive
 from .io.inputs import check_physical
 from .taylor_couette import REGIME_BOUNDARIES_RE, couette_moment_coefficient
+from .taylor_couette import couette_floor_applies as floored
 from .transition import Transition, check_transition, taylor_cm, taylor_cm_smooth
 
 BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2))
@@ -315,8 +316,7 @@ def couette_law_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     References
     ----------
     White, *Viscous Fluid Flow*, sec. 3-2.3 (circular Couette flow); Helmholtz and
-    Korteweg [4]; Bilgen & Boulos [1];
-    seed paper (Eq. 6) [3].
+    Korteweg [4]; Bilgen & Boulos [1]; seed paper (Eq. 6) [3].
     """
     return m.fmax(couette_moment_coefficient(reynolds, gap_ratio),
                   bilgen_boulos_cm(reynolds, gap_ratio, alpha))
@@ -349,8 +349,7 @@ def couette_law_cm_smooth(reynolds, gap_ratio, width=SMOOTH_WIDTH,
 
     References
     ----------
-    As :func:`couette_law_cm` (Helmholtz and Korteweg [4], Bilgen & Boulos [1],
-    seed paper (Eq. 6) [3]).
+    As :func:`couette_law_cm` (Helmholtz, Korteweg [4], Bilgen & Boulos [1], Eq. 6 [3]).
     """
     ln_cc = m.log(couette_moment_coefficient(reynolds, gap_ratio))
     ln_bb = m.log(bilgen_boulos_cm_smooth(reynolds, gap_ratio, width, alpha))
@@ -595,6 +594,7 @@ def moment_coefficient(reynolds, gap_ratio, law: FrictionLaw, roughness_T=1.0):
         if law.transition == Transition.TAYLOR:
             cm = taylor_cm_smooth if smooth else taylor_cm
         base = law.scale * cm(re, gap_ratio, alpha=law.alpha)
+    base = m.fmax(base, couette_moment_coefficient(re, gap_ratio)) if floored(law) else base
     if isinstance(law.gamma, (int, float)) and law.gamma == 0.0:
         return base
     return base * groove_roughness_factor(roughness_T, law.gamma)

@@ -169,3 +169,23 @@ def couette_moment_coefficient(reynolds, gap_ratio):
     """
     x = gap_ratio
     return 8.0 * (1.0 + x) ** 2 / ((2.0 + x) * reynolds)
+
+
+def couette_floor_applies(law) -> bool:
+    """Whether a friction law is floored at exact Couette by
+    :func:`oilgap.model.skin_friction.moment_coefficient`: the Couette laminar law, a form
+    with a scale, and a numeric scale below 1 (issue 27 item 4: no calibration takes the
+    laminar loss below Couette, the least any flow of the geometry dissipates; at scale
+    >= 1 nothing changes, bit for bit).
+
+    Parameters
+    ----------
+    law : FrictionLaw
+        Its ``laminar_law``, ``form`` and ``scale`` [-].
+
+    Returns
+    -------
+    bool
+    """
+    return (law.laminar_law == "couette" and law.form != "power-law"
+            and isinstance(law.scale, (int, float)) and law.scale < 1.0)

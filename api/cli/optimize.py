@@ -18,11 +18,13 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+from dataclasses import replace
 from pathlib import Path
 
 from oilgap._optimize import optimize_resolved, robust_resolved
 from oilgap._results_design import Optimization
 from oilgap.cli.common import load_case, thermal_case
+from oilgap.cli.model_option import apply_model, model_record, report_model
 from oilgap.cli.outputs import print_wrote, report_folder, solver_log_to_stderr
 from oilgap.model.errors import InputError, check_finite, check_positive
 from oilgap.model.io.serialize import dumps
@@ -89,24 +91,31 @@ def _write_figure(res, path: str) -> Path:
     return Path(path)
 
 
-def _write(res: Optimization, args: argparse.Namespace):
+def _write(res: Optimization, args: argparse.Namespace, cal=None):
     if not args.out:
         return None
+    case = res.to_case()
+    if cal is not None:  # the optimum keeps its calibrated model, by reference (every digit)
+        case = replace(case, friction=cal.uncalibrated.friction,
+                       thermal=cal.uncalibrated.thermal,
+                       calibration_model=str(Path(cal.provenance["path"]).resolve()))
     try:
-        return write_case_toml(res.to_case(), args.out, run=getattr(args, "run", None),
+        return write_case_toml(case, args.out, run=getattr(args, "run", None),
                                exact=True)  # every digit: evaluated again, the loss printed
     except OSError as e:
         raise InputError("--out", args.out, f"cannot be written ({e.strerror})") from None
 
 
 def _solve(args: argparse.Namespace, limits: DesignLimits, robust: dict):
-    """The nominal (or ``--robust``) optimum of the case named on the command line."""
+    """The nominal (or ``--robust``) optimum of the case named on the command line
+    (``--model`` folded in), and the calibrated model (None without ``--model``)."""
     case, mode = thermal_case(load_case(args), args)  # the one resolution, named as given
+    case, cal = apply_model(case, args)
     log = solver_log_to_stderr() if args.verbose else contextlib.nullcontext()
     with log:  # IPOPT's log on stderr: stdout carries the result (--json) alone
         if args.robust is not None:
-            return robust_resolved(case, mode, args.robust, robust, limits, args.verbose)
-        return optimize_resolved(case, mode, args.thermal is None, limits, args.verbose)
+            return robust_resolved(case, mode, args.robust, robust, limits, args.verbose), cal
+        return optimize_resolved(case, mode, args.thermal is None, limits, args.verbose), cal
 
 
 def run(args: argparse.Namespace) -> int:
@@ -121,16 +130,18 @@ def run(args: argparse.Namespace) -> int:
         check_out_file(args.out, args.force)
     robust = _robust_keywords(args)
     with report_folder(args) as folder:  # checked and locked before computing
-        res = _solve(args, limits, robust)
+        res, cal = _solve(args, limits, robust)
         files = res.report(args.report, folder=folder) if folder is not None else []
-    out_path = _write(res, args)
+    out_path = _write(res, args, cal)
     fig = _write_figure(res, args.figure) if getattr(args, "figure", None) else None
     if args.json:
         print(dumps({**res.to_dict(), "out": str(out_path) if out_path else None,
                      **({"figure": str(fig)} if fig else {}),
-                     **({"report": [str(f) for f in files]} if files else {})}))
+                     **({"report": [str(f) for f in files]} if files else {}),
+                     **({"model": model_record(cal)} if cal is not None else {})}))
     else:
         print(res.summary(defaults=not args.quiet))
+        report_model(cal)  # the model used, the given design's loss with and without it
         for p in (out_path, fig):
             if p:
                 print(f"\nwrote {Path(p)}")

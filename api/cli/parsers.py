@@ -12,6 +12,7 @@ from __future__ import annotations
 import argparse
 import math
 
+from oilgap.cli.model_option import add_model_option
 from oilgap.cli.plan_args import add_plan, add_synth_plan
 from oilgap.model.thermal_modes import THERMAL_MODES
 from oilgap.studies.grid.columns import OPTIMIZE_COLUMNS, PARAM_COLUMNS
@@ -170,6 +171,7 @@ def add_evaluate(sub) -> None:
     p.add_argument("--json", action="store_true", help="print one JSON object")
     add_report(p)
     add_force(p, "--report")
+    add_model_option(p)  # --model loop.json (issue 25)
     p.set_defaults(command="evaluate")
 
 
@@ -223,6 +225,7 @@ def add_optimize(sub) -> None:
     add_force(p)
     add_report(p)
     _progress(p)
+    add_model_option(p)  # --model loop.json (issue 25)
     p.set_defaults(command="optimize")  # -v/--verbose (every command) shows IPOPT's log
 
 
@@ -288,6 +291,7 @@ def _add_smoothing(ss) -> None:
     s.add_argument("--film-evidence", action="store_true",
                    help="seed rig: also fit the film strength s in [0, 1] with the rig's "
                    "heat balance T = T0 + R P (docs/thermal.md#evidence)")
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study smoothing")
 
 
@@ -308,6 +312,7 @@ def _add_pareto(ss) -> None:
     add_thermal_argument(s)
     add_transition_argument(s)
     _progress(s)
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study pareto")
 
 
@@ -346,6 +351,7 @@ def _add_oil_grade(ss) -> None:
     add_thermal_argument(s)
     add_transition_argument(s)
     _progress(s)
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study oil-grade")
 
 
@@ -384,6 +390,7 @@ def _add_sweep(ss) -> None:
     add_thermal_argument(s)
     add_transition_argument(s)
     _progress(s)
+    add_model_option(s)  # --model loop.json (issue 25)
     s.set_defaults(command="study sweep")
 
 
@@ -445,11 +452,16 @@ def add_loop(sub) -> None:
     p.add_argument("--margin", type=finite_float, default=0.10,
                    help="held-out RMSE fall an effect must bring (default 0.10)")
     p.add_argument("--effects", metavar="NAME,...", help="consider only these library effects")
-    p.add_argument("--base", choices=("eq6", "power-law", "branches"), default="eq6",
+    p.add_argument("--base", choices=("eq6", "auto", "power-law", "branches"), default="eq6",
                    help="base model: eq6 = the design tool's Eq. 6 x scale x T^gamma "
-                   "(default); power-law = a free C (delta/R)^alpha Re^beta T^gamma; "
+                   "(default); auto = eq6 and branches fitted and the one of least held-out "
+                   "log-RMSE kept, the simpler within --margin; "
+                   "power-law = a free C (delta/R)^alpha Re^beta T^gamma; "
                    "branches = Eq. 6's branches, each C_k (delta/R)^alpha_k Re^beta_k freed "
                    "where the data identify it")
+    p.add_argument("--write-case", metavar="CASE.toml", help="also write the rig case with "
+                   "the fitted model folded in by reference ([calibration] model = the "
+                   "loop.json): evaluate CASE.toml equals evaluate RIG --model loop.json")
     p.add_argument("--cv-by", metavar="COLUMN", default="run",
                    help="cross-validation groups: the values of this column of DATA, each "
                    "held out whole (default: run; e.g. gap_mm, oil; more than 10 groups: "

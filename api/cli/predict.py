@@ -47,6 +47,24 @@ def _summary(table: pd.DataFrame) -> list[str]:
     return [f"  {n:>6}  {r}" for r, n in notes.items()]
 
 
+MEASURED = (("viscous_power_W", "predicted_viscous_power_W"), ("power_W", "predicted_power_W"))
+"""(measured column, predicted column) pairs scored when the input has the measured one."""
+
+
+def error_lines(table: pd.DataFrame) -> list[str]:
+    """RMSE and bias (predicted - measured) [W] where the input carries measured power."""
+    out = []
+    for meas, pred in MEASURED:
+        if meas not in table or pred not in table:
+            continue
+        d = (pd.to_numeric(table[pred], errors="coerce")
+             - pd.to_numeric(table[meas], errors="coerce")).dropna()
+        if len(d):
+            out.append(f"error       {meas}: RMSE {float((d * d).mean()) ** 0.5:.4g} W, bias "
+                       f"{float(d.mean()):+.4g} W (predicted - measured) over {len(d)} rows")
+    return out
+
+
 def run(args: argparse.Namespace) -> int:
     """Predict the rows of DATA and write them with the predictions; returns the exit code."""
     out = check_out_file(args.out, args.force, suffixes=OUT_SUFFIXES)
@@ -55,7 +73,7 @@ def run(args: argparse.Namespace) -> int:
     write_table(res, out)
     print(f"predicted {res.attrs['predicted']} of {len(res)} rows ({args.stage}: "
           f"{', '.join(res.attrs['columns'])}); wrote {out}")
-    for line in _summary(res):
+    for line in _summary(res) + error_lines(res):
         print(line)
     film = ""
     if "film_strength" in res.attrs:

@@ -9,6 +9,7 @@ import argparse
 
 from oilgap._studies import oil_grade
 from oilgap.cli.common import show, study_case, study_out
+from oilgap.cli.model_option import apply_model, report_model
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InfeasibleError
 from oilgap.studies.oil_grade.study import read_mission_csv
@@ -27,6 +28,7 @@ def _temp_range(args: argparse.Namespace) -> tuple[float, float] | None:
 def run(args: argparse.Namespace) -> int:
     """``oilgap study oil-grade``: grade table and recommendation; exit 3 if none passes."""
     case = study_case(args)
+    case, cal = apply_model(case, args)  # --model loop.json (issue 25)
     mission = read_mission_csv(args.mission) if args.mission else None
     settings = OilGradeSettings(thermal=args.thermal, nu_min_cSt=args.nu_min_cst,
                                 nu_max_cSt=args.nu_max_cst, iso_tolerance=args.iso_tolerance,
@@ -40,6 +42,7 @@ def run(args: argparse.Namespace) -> int:
                       options=RunOptions(workers=args.workers, scheduler=args.scheduler,
                                          progress=args.progress))
     show(r, args)
+    report_model(cal, getattr(args, "json", False))
     if r.recommended is None:
         raise InfeasibleError("no oil grade meets both the lubrication limit "
                               f"({args.nu_min_cst:g} cSt) and the cold-start limit "

@@ -9,6 +9,7 @@ import argparse
 
 from oilgap._studies import pareto
 from oilgap.cli.common import show, study_case, study_out
+from oilgap.cli.model_option import apply_model, report_model
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.studies.settings import ParetoSettings, RunOptions
 
@@ -16,6 +17,7 @@ from oilgap.studies.settings import ParetoSettings, RunOptions
 def run(args: argparse.Namespace) -> int:
     """``oilgap study pareto``: the two fronts; returns the exit code."""
     case = study_case(args)
+    case, cal = apply_model(case, args)  # --model loop.json (issue 25)
     out = study_out(args, "pareto")
     settings = ParetoSettings(points=args.points, torque_min_Nm=args.torque_min_nm,
                               thermal=args.thermal)  # refused before the folder is locked
@@ -24,4 +26,5 @@ def run(args: argparse.Namespace) -> int:
                    options=RunOptions(workers=args.workers, scheduler=args.scheduler,
                                       progress=args.progress))
     show(r, args)
+    report_model(cal, getattr(args, "json", False))
     return 0

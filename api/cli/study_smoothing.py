@@ -12,6 +12,7 @@ import numpy as np
 
 from oilgap._studies import smoothing
 from oilgap.cli.common import show, study_case, study_out
+from oilgap.cli.model_option import apply_model, report_model
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InputError
 from oilgap.studies.settings import SmoothingSettings
@@ -45,6 +46,7 @@ def run(args: argparse.Namespace) -> int:
     """``oilgap study smoothing [CASE]``: fit, Table 4, loss vs T on the seed rig; on a
     case, what smoothing its grooves would save. Returns the exit code."""
     case = study_case(args)
+    case, cal = apply_model(case, args)  # --model loop.json (issue 25)
     seed = is_seed_case(case)
     T = (_t_values(args) if seed else None if args.t_max is None and args.t_min == 1.0
          and args.t_step == 0.05 else _t_values(args, float(case.region1.roughness)))
@@ -59,4 +61,5 @@ def run(args: argparse.Namespace) -> int:
                                      film_evidence=getattr(args, "film_evidence", False))
         r = smoothing(case, out=out, folder=folder, settings=settings)
     show(r, args)
+    report_model(cal, getattr(args, "json", False))
     return 0

@@ -9,8 +9,10 @@ import argparse
 import logging
 import sys
 
+from oilgap._evaluate import as_case
 from oilgap._studies import resume_conflict, sweep
 from oilgap.cli.common import show, study_case, study_out
+from oilgap.cli.model_option import apply_model, report_model
 from oilgap.cli.outputs import json_quiet, out_folder
 from oilgap.model.errors import InputError
 from oilgap.studies.grid.runner import SweepInterrupted
@@ -27,6 +29,9 @@ def run(args: argparse.Namespace) -> int:
     says how many points are stored and how to continue (exit 130); an unfinished sweep
     is never continued without ``--resume``."""
     out = study_out(args, "sweep")
+    case = study_case(args) if getattr(args, "transition", None) else args.case
+    case, cal = (case, None) if getattr(args, "model", None) is None else \
+        apply_model(as_case(case), args)  # --model loop.json (issue 25)
     resume_conflict(args.resume, args.force, args.retry_failed,
                     ("--resume", "--force", "--retry-failed"))
     if args.chunk_size is not None and args.chunk_seconds is not None:
@@ -34,7 +39,7 @@ def run(args: argparse.Namespace) -> int:
                          "number of rows per task, or chunks sized by time; choose one")
     try:
         with out_folder(args, out, resume=args.resume or args.retry_failed) as folder:
-            return _sweep(args, out, folder)
+            return _sweep(args, out, folder, case, cal)
     except SweepInterrupted as e:
         print(interrupted_line(e), file=sys.stderr)
         return 130
@@ -51,10 +56,9 @@ def interrupted_line(e: SweepInterrupted) -> str:
         f"{RESUME_HINT}"
 
 
-def _sweep(args: argparse.Namespace, out, folder: ResultFolder) -> int:
+def _sweep(args: argparse.Namespace, out, folder: ResultFolder, case, cal) -> int:
     """The sweep inside its locked result folder."""
     with json_quiet(args):
-        case = study_case(args) if getattr(args, "transition", None) else args.case
         r = sweep(args.grid, case, out=out, oils=args.oils, folder=folder,
                   settings=SweepSettings(mode=args.mode, thermal=args.thermal,
                                          retry_failed=args.retry_failed),
@@ -63,6 +67,7 @@ def _sweep(args: argparse.Namespace, out, folder: ResultFolder) -> int:
                                      chunk_seconds=args.chunk_seconds))
     folder.complete()
     show(r, args)
+    report_model(cal, getattr(args, "json", False))
     bad = r.raw[r.raw["status"] != "ok"]
     if len(bad):
         logging.getLogger("oilgap").warning(  # a failed point changes the result: kept by -q

@@ -143,7 +143,8 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
     if not isinstance(doc, dict):
         raise InputError("case", doc, "must be a TOML table")
     allowed_top = _TOP_KEYS | set(_TABLES) | set(_ARRAY_TABLES) | {BEARING_TABLE,
-                                                                   UNCERTAINTY_TABLE}
+                                                                   UNCERTAINTY_TABLE,
+                                                                   CALIBRATION_TABLE}
     _check_keys(doc, allowed_top | set(LINEAR_TABLES), "")
     linear = linear_drive_from(doc) if drive_kind(doc) == "linear" else None
     for t in _TABLES:
@@ -178,7 +179,28 @@ def case_from_dict(doc: dict, base_dir: Path | None = None) -> DesignCase:
         friction=friction, motor=motor, bounds=bounds, mission=tuple(mission), oils_csv=oils_csv,
         thermal=thermal, bearing=bearing_from_doc(doc), gamma_source=gamma_source,
         defaults=reader_defaults(doc, bounds, motor, thermal=thermal),
-        uncertainty=uncertainty_from_doc(doc), linear=linear)
+        uncertainty=uncertainty_from_doc(doc), linear=linear,
+        calibration_model=_calibration_from(doc, base_dir))
+
+
+CALIBRATION_TABLE = "calibration"
+"""``[calibration] model = "loop.json"``: a calibrated loop model the commands fold into
+the case (a path relative to the case file)."""
+
+
+def _calibration_from(doc: dict, base_dir: Path) -> str | None:
+    """The ``[calibration]`` table's model path, absolute (None without the table)."""
+    if CALIBRATION_TABLE not in doc:
+        return None
+    t = doc[CALIBRATION_TABLE]
+    if not isinstance(t, dict):
+        raise InputError("calibration", t, "must be a table [calibration]", "case TOML")
+    _check_keys(t, {"model"}, CALIBRATION_TABLE)
+    model = t.get("model")
+    if not isinstance(model, str) or not model.strip():
+        raise InputError("calibration.model", model, "the path of a loop.json written by "
+                         "oilgap loop (relative to the case file)", "case TOML")
+    return str((base_dir / model).resolve())
 
 
 def _friction_value(key: str, value, fd: dict):

@@ -86,6 +86,8 @@ def case_to_dict(case: DesignCase) -> dict:
         doc[UNCERTAINTY_TABLE] = uncertainty_to_doc(case.uncertainty)
     if case.linear is not None:  # [drive] kind = "linear": its tables (docs/linear-joint.md)
         doc.update(linear_to_doc(case.linear))
+    if case.calibration_model is not None:  # a calibrated loop model, by reference
+        doc["calibration"] = {"model": case.calibration_model}
     if case.mission:
         doc["mission"] = [{"depth_m": s.depth_m, s.temp_key: s.oil_temp_C,
                            "fraction": s.fraction} for s in case.mission]

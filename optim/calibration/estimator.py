@@ -33,7 +33,9 @@ stages of this package in order:
    again (evidence for an effect it absorbed).
 6. Refit with the accepted effects (nonlinear, all parameters), errors before
    and after in-sample and on held-out groups (:mod:`.refit`); a fold that
-   cannot identify a parameter holds it at its all-data value.
+   cannot identify a parameter holds it at its prior (the published or case value),
+   never at the all-data fit, and is refitted in full: no information from the
+   held-out group enters that fold's fit.
 7. Each parameter and coefficient with a jackknife-over-folds 95 % confidence
    interval (C and the scale in log space), widened by the baseline's error
    (:mod:`~oilgap.optim.calibration.uncertainty`).
@@ -79,21 +81,24 @@ from oilgap.model.oils import Oil, read_oils_csv
 from oilgap.model.regions import joint_geometry
 from oilgap.optim.progress import report
 
+from .base_choice import AUTO_BASE, fit_base, select_base
 from .baseline import BaselineFit, fit_baselines
 from .film_wall import case_film_wall, wall_identifiability
 from .folds import cv_scheme
 from .forward import ForwardModel, oil_state_record
-from .least_squares import ModelFit, check_alpha, fit_model, identifiability, initial_guess
+from .least_squares import ModelFit, identifiability
 from .model_io import FittedModel
 from .ranges import (
     PARAM_RANGES,
     Finding,
+    below_couette_finding,
     explained_findings,
     held_values,
     no_signal_finding,
     parameter_findings,
 )
 from .refit import CV_MODES, FinalModel, heldout_gains, rmse
+from .residual_story import describe_residual
 from .residuals import residual_structure, unexplained_structure
 from .results import (
     candidate_statuses,
@@ -104,7 +109,7 @@ from .results import (
     table3_rows,
 )
 from .search import EffectSearch, SearchOptions, evidence_trial, fluid_facts, search_effects
-from .spec import BASES, BaseSpec, decide_spec
+from .spec import BASES, BaseSpec
 from .uncertainty import effect_ci, parameter_ci
 
 DEFAULT_MARGIN = 0.10
@@ -140,8 +145,12 @@ class LoopEstimator:
         groups: one per group up to :data:`.folds.MAX_FOLDS` groups
         (leave-one-run-out), grouped 10-fold cross-validation above
         (:mod:`.folds`).
-    base : {"eq6", "power-law", "branches"}
-        Base model: the design tool's Eq. 6 regime structure (smooth form, the
+    base : {"eq6", "auto", "power-law", "branches"}
+        Base model (default ``"eq6"``). ``"auto"``: each candidate of
+        :data:`.base_choice.BASE_CANDIDATES` is fitted and cross-validated, and the
+        one of least held-out log-RMSE kept unless a simpler one comes within
+        ``margin`` of it (:mod:`.base_choice`; the table in ``base_selection_``).
+        The default ``"eq6"`` is the design tool's Eq. 6 regime structure (smooth form, the
         case's laminar law) times one scale and T^gamma (default), a free
         power law C (delta/R)^alpha Re^beta T^gamma, or Eq. 6's branches each with
         its own C_k, alpha_k, beta_k, freed only where the data identify them
@@ -239,6 +248,8 @@ class LoopEstimator:
         self.residual_before_ = residual_structure(s.viscous_W - base.pred, s)
         self.noise_W_ = sigma = self.residual_before_["noise_W"]
         no_signal = no_signal_finding(s.viscous_W, base.pred, sigma)
+        below = (below_couette_finding(s.viscous_W, model.couette_power(), sigma)
+                 if case.friction.laminar_law == "couette" and no_signal is None else None)
         # 5-6. effect search with plausibility, refit; the evidence trial of a range violation
         facts = RigFacts.of(model.geometry, fluid_facts(s, data.oils))
         opts = SearchOptions(margin=self.margin, min_explained=self.min_explained,
@@ -248,6 +259,7 @@ class LoopEstimator:
         report(task, 3, 5)
         search, self.findings_ = self._evidence(model, free, no_signal, names, facts, sigma,
                                                 opts)
+        self.findings_ += [below] if below is not None else []
         self.identifiability_ = self._identifiability(stmt, free)
         final = replace(search.final, before=free.final.before)
         model.taylor_exponent = search.refitter.model.taylor_exponent = final.taylor_exponent
@@ -274,10 +286,16 @@ class LoopEstimator:
 
     def _calibrate(self, model: ForwardModel, case: DesignCase
                    ) -> tuple[BaseSpec, ModelFit, dict]:
-        """Stage 3: the base model's free parameters and its fit to the oil runs."""
-        spec, stmt = decide_spec(model.samples, model.geometry, case, self.base)
-        spec, stmt = check_alpha(model, spec, stmt)
-        base = fit_model(model, spec, initial_guess(model, spec))
+        """Stage 3: the base model's free parameters and its fit to the oil runs; with
+        ``base="auto"`` each candidate base is fitted and the held-out error chooses
+        (:mod:`.base_choice`)."""
+        if self.base == AUTO_BASE:
+            trial, self.base_selection_ = select_base(model, case, self.margin, self.cv)
+            spec, base, stmt = trial.spec, trial.fit, trial.stmt
+        else:
+            spec, base, stmt = fit_base(model, case, self.base)
+            self.base_selection_ = []
+        self.base_ = spec.base
         self.spec_, self.law_with_T_ = spec, base.law
         return spec, base, stmt
 
@@ -299,13 +317,14 @@ class LoopEstimator:
                                                 free.final.accepted)
 
     def _identifiability(self, stmt: dict, free: EffectSearch) -> dict:
-        """Per-parameter statements, with the folds that held a parameter at its value."""
+        """Per-parameter statements, with the folds that held a parameter at its prior."""
         out = identifiability(stmt, free.spec, free.base)
         held = free.final.before.held
+        prior = free.spec.prior_values()
         for k in free.spec.free:
             n = sum(k in h for h in held)
             if n:
-                out[k] = (f"{out[k]}; held at the all-data value in {n} of {len(held)} "
+                out[k] = (f"{out[k]}; held at its prior {prior[k]:.4g} in {n} of {len(held)} "
                           "cross-validation folds (their training data cannot identify it)")
         return out
 
@@ -350,6 +369,9 @@ class LoopEstimator:
                               "after": rmse(y - final.after.pred)}
         self.residual_after_ = residual_structure(y - final.fit.pred, s)
         self.unexplained_ = unexplained_structure(self.residual_after_)
+        if self.unexplained_:  # where it sits, how it scales, what it points to (issue 25)
+            self.unexplained_["described"] = describe_residual(
+                y - final.fit.pred, s, self.residual_after_["noise_W"])
         self.table3_ = table3_rows(s, self.pred_["without_T"], self.pred_["with_T"])
         self.per_run_ = per_run_rows(s, self.pred_, final, self.table3_)
 
@@ -361,8 +383,9 @@ class LoopEstimator:
                 raise InputError(k, v, "must be a number in [0, 1)", "loop")
         if self.cv not in CV_MODES:
             raise InputError("cv", self.cv, "allowed: one-step, full", "loop")
-        if self.base not in BASES:
-            raise InputError("base", self.base, f"allowed: {', '.join(BASES)}", "loop")
+        if self.base not in (AUTO_BASE, *BASES):
+            raise InputError("base", self.base, f"allowed: {', '.join((AUTO_BASE, *BASES))}",
+                             "loop")
         if not (isinstance(self.max_effects, int) and self.max_effects >= 1):
             raise InputError("max_effects", self.max_effects, "must be an integer >= 1", "loop")
         names = list(EFFECTS) if self.effects is None else list(self.effects)
@@ -467,7 +490,10 @@ class LoopEstimator:
             "per_run": [{k: r[k] for k in ("run", "oil", "roughness_T", "rmse_without_T_W",
                                            "rmse_with_T_W", "rmse_with_effect_W")}
                         for r in self.per_run_],
-            "base": self.base,
+            "base": self.base_,
+            **({"base_selection": {"requested": self.base, "margin": self.margin,
+                                   "metric": "held-out log-RMSE", "candidates":
+                                   self.base_selection_}} if self.base_selection_ else {}),
             "findings": [f.to_dict() for f in self.findings_],
             "parameter_ranges": {k: v.to_dict() for k, v in PARAM_RANGES.items()},
             "calibration": dict(self.calibration_),

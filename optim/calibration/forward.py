@@ -50,6 +50,7 @@ from oilgap.model.oil_state import (
 from oilgap.model.oils import Oil, normalize_oil_name
 from oilgap.model.regions import JointGeometry, joint_geometry, region_power
 from oilgap.model.skin_friction import FrictionLaw, groove_roughness_factor
+from oilgap.model.taylor_couette import couette_floor_applies
 from oilgap.model.units import celsius_to_kelvin
 
 from .film_wall import case_film_theory_K_W
@@ -70,6 +71,9 @@ SPEED_STEP = 1e-4
 SHAPE_CACHE = 4
 """Law shapes whose region powers a forward model keeps (each is regions x samples)."""
 
+COUETTE_ONLY = FrictionLaw(form="smooth", laminar_law="couette", scale=1e-12)
+"""A law evaluated as exact laminar Couette everywhere: its scaled Eq. 6 lies below the
+Couette floor of :func:`oilgap.model.skin_friction.moment_coefficient` at every Re."""
 
 OIL_STATE_READERS = ("bearing_ball_churning", "end_face_disc", "oil_inertia",
                      "shear_thinning", "taylor_vortex_onset")
@@ -382,9 +386,37 @@ class ForwardModel:
             self._shapes[key] = [region_power(r, s.omega, nu, rho, unit)
                                  for r in self.geometry.regions]
         k = law.C if law.form == "power-law" else law.scale
-        return [p * (k if law.gamma == 0.0 else k * groove_roughness_factor(r.roughness_T,
-                                                                             law.gamma))
-                for r, p in zip(self.geometry.regions, self._shapes[key], strict=True)]
+        g = [1.0 if law.gamma == 0.0 else groove_roughness_factor(r.roughness_T, law.gamma)
+             for r in self.geometry.regions]
+        out = [p * (k if law.gamma == 0.0 else k * gi)
+               for gi, p in zip(g, self._shapes[key], strict=True)]
+        if couette_floor_applies(law):  # a scale < 1 stops at exact Couette (issue 27)
+            out = [np.maximum(p, f * gi) for p, f, gi in zip(
+                out, self._couette_powers(state), g, strict=True)]
+        return out
+
+    def _couette_powers(self, state=None) -> list[np.ndarray]:
+        """Region powers of exact laminar Couette flow, the floor of every law [W] (kept)."""
+        key = ("couette floor", state)
+        if key not in self._shapes:
+            st = self.measured if state is None else self._lags[state]
+            if len(self._shapes) >= SHAPE_CACHE:
+                self._shapes.pop(next(iter(self._shapes)))
+            self._shapes[key] = [region_power(r, self.samples.omega, st.nu_m2_s,
+                                              st.density_kg_m3, COUETTE_ONLY)
+                                 for r in self.geometry.regions]
+        return self._shapes[key]
+
+    def couette_power(self) -> np.ndarray:
+        """Viscous power of exact laminar Couette flow in every region [W] per sample: the
+        least any clearance flow of this geometry dissipates (Helmholtz-Korteweg).
+
+        Returns
+        -------
+        array
+            Sum over the regions [W].
+        """
+        return sum(self._couette_powers())
 
     def base_power(self, law: FrictionLaw) -> np.ndarray:
         """Viscous power of all regions [W] per sample, no effect.

@@ -203,8 +203,9 @@ def one_step_fold(fit: ModelFit, model: ForwardModel, spec: BaseSpec, train: np.
     residual r restricted to the training rows (coefficients projected onto
     their bounds), then the exact model at the new parameters. The step is
     exact for a model linear in its parameters and accurate to second order
-    in the change otherwise. Parameters in ``hold`` (the fold cannot identify
-    them) keep their all-data values.
+    in the change otherwise. Parameters in ``hold`` keep their all-data values
+    here; the loop's folds never pass any (:meth:`.refit.Refitter.leave_one_run_out`
+    refits a fold that cannot identify a parameter in full, with it at its prior).
 
     Parameters
     ----------

@@ -194,6 +194,26 @@ def _finding(name: str, value: float, shown: str, rng: ParamRange,
                    basis=rng.basis, source=rng.source, message=txt, held_at=held)
 
 
+MOVED = 0.05
+"""Relative change from its prior (at least 0.1 absolute x this) above which a parameter
+counts as moved in a scale finding [-]."""
+
+
+def _scale_text(spec: BaseSpec, vals: dict, model: ForwardModel, fit: ModelFit) -> str:
+    """A scale finding that names everything that moved from its prior (issue 25): with
+    alpha or gamma moved too, the scale alone is not the loss's level on these data."""
+    prior = spec.prior_values()
+    moved = [f"{j} = {vals[j]:.3g} (prior {prior[j]:.3g})" for j in spec.free
+             if j != "scale" and abs(vals[j] - prior[j]) > MOVED * max(abs(prior[j]), 0.1)]
+    text = f"the scale is {vals['scale']:.3g}x the published law"
+    if not moved:
+        return text
+    eff = effective_scale(model, fit.law, spec.laminar_law)
+    level = (f"; on these data the loss is {eff:.3g}x the published law's "
+             f"({'below' if eff < 1 else 'above'} it)" if np.isfinite(eff) else "")
+    return f"{text}, with {', '.join(moved)} moved as well{level}"
+
+
 def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> list[Finding]:
     """Findings on a calibration: parameters outside their range or on their box.
 
@@ -236,7 +256,7 @@ def parameter_findings(spec: BaseSpec, fit: ModelFit, model: ForwardModel) -> li
         rng = PARAM_RANGES[kind]
         v = vals[k]
         if not rng.low <= v <= rng.high:
-            shown = (f"the scale is {v:.3g}x the published law" if k == "scale"
+            shown = (_scale_text(spec, vals, model, fit) if k == "scale"
                      else f"{k} = {v:.3g}")
             f = _finding(kind, v, shown, rng, rng.high if v > rng.high else rng.low)
             out.append(replace(f, parameter=k))
@@ -247,8 +267,9 @@ def no_signal_finding(y: np.ndarray, pred: np.ndarray, noise_W: float) -> Findin
     """A finding if the data show no viscous loss the base model can describe.
 
     The calibrated power is below a tenth of the noise (RMS), or the measured
-    viscous power is not positive on average: the level is then pinned by the
-    noise, not identified, and no interval is given.
+    viscous power is not above a tenth of the noise on average (with the Couette floor a
+    calibrated loss never falls to zero, so the data's own mean decides): the level is
+    then pinned by the noise, not identified, and no interval is given.
 
     Parameters
     ----------
@@ -266,7 +287,7 @@ def no_signal_finding(y: np.ndarray, pred: np.ndarray, noise_W: float) -> Findin
     """
     p = float(np.sqrt(np.mean(pred * pred))) if len(pred) else 0.0
     m = float(np.mean(y)) if len(y) else 0.0
-    if p >= 0.1 * noise_W and m > 0 and p > 0:
+    if p >= 0.1 * noise_W and m > 0.1 * noise_W and p > 0:  # a mean within the noise: none
         return None
     return Finding(kind="no viscous signal", value=p,
                    message=f"no viscous signal: the calibrated loss is {p:.3g} W RMS against a "
@@ -331,3 +352,46 @@ def explained_findings(before: list[Finding], after: list[Finding], values_after
                            message=f"{f.message}; refitted with {', '.join(accepted)} it is "
                                    f"{now}, within its range: the accepted effects explain it"))
     return out
+
+
+BELOW_COUETTE_RATIO = 0.95
+"""Median measured / Couette-minimum power below which the data lie below the floor [-]."""
+
+
+def below_couette_finding(y: np.ndarray, couette_W: np.ndarray, noise_W: float
+                          ) -> Finding | None:
+    """A finding if the measured loss lies below the exact Couette loss of the geometry.
+
+    No flow in the clearance dissipates less than laminar Couette flow
+    (Helmholtz-Korteweg minimum dissipation), and the calibrated law never goes below
+    it (:func:`oilgap.model.taylor_couette.couette_floor_applies`). Data below it say
+    the oil-free baseline took too much away or the oil was warmer (thinner) than the
+    temperature recorded. The test: over the samples whose Couette loss stands above
+    three noise levels, the median of measured / Couette is below
+    :data:`BELOW_COUETTE_RATIO`.
+
+    Parameters
+    ----------
+    y : array
+        Measured viscous power [W].
+    couette_W : array
+        Exact laminar Couette power of the rig's regions at each sample [W].
+    noise_W : float
+        Noise level [W].
+
+    Returns
+    -------
+    Finding or None
+        Kind "below couette" (value: the median ratio [-]); None otherwise.
+    """
+    sel = np.isfinite(couette_W) & (couette_W > 3.0 * max(noise_W, 0.0)) & (couette_W > 0)
+    if sel.sum() < 3:
+        return None
+    ratio = float(np.median(y[sel] / couette_W[sel]))
+    if ratio >= BELOW_COUETTE_RATIO:
+        return None
+    return Finding(kind="below couette", parameter="scale", value=ratio,
+                   message=f"the data lie below the Couette minimum: check the baseline or the "
+                           f"temperature (measured / exact laminar Couette loss, median "
+                           f"{ratio:.3g} over {int(sel.sum())} samples; no clearance flow "
+                           "dissipates less, so the calibrated law stops at Couette)")

@@ -4,7 +4,10 @@ The effects the linearised selection accepts are refitted with the law by
 nonlinear least squares (their exact forms where the library has them). Held-out
 errors come from the cross-validation folds (:mod:`.folds`: whole runs, one fold
 per run up to 10 runs, grouped 10-fold above): one Gauss-Newton step from the
-all-runs fit (default) or a full nonlinear refit per fold. The nonlinear
+all-runs fit (default) or a full nonlinear refit per fold; a fold that cannot
+identify a base parameter holds it at its prior (the published or case value,
+:meth:`.spec.BaseSpec.prior_values`) and is always refitted in full from there, so
+no information from its held-out group enters its fit. The nonlinear
 held-out error overrules the linearised one: if the accepted effects do not
 lower it by the margin, they are rejected.
 
@@ -18,6 +21,7 @@ References
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -25,9 +29,9 @@ import numpy as np
 from .candidates import Candidates
 from .folds import cv_folds
 from .forward import ForwardModel
-from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold
+from .least_squares import BaseSpec, ModelFit, fit_model, one_step_fold, rescale_level
 from .selection import Selection
-from .spec import fold_spec
+from .spec import LOG_PARAMS, fold_spec
 from .steps import SelectionStep
 
 CV_MODES = ("one-step", "full")
@@ -63,7 +67,7 @@ class HeldOut:
         all-data specification).
     held : list of tuple of str
         Per fold, the base parameters it could not identify (held at their
-        all-data values).
+        priors, :meth:`.spec.BaseSpec.prior_values`).
     """
 
     pred: np.ndarray
@@ -141,7 +145,7 @@ class Refitter:
         Returns
         -------
         dict
-            Group code -> parameters held at their all-data values (cached).
+            Group code -> parameters held at their priors (cached).
         """
         if self._holds is None:
             s = self.model.samples
@@ -153,16 +157,22 @@ class Refitter:
 
     def _full_fold(self, names, x_all: np.ndarray, theta: np.ndarray | None, train: np.ndarray,
                    hold: tuple[str, ...]) -> ModelFit:
-        """Complete nonlinear refit on ``train`` with ``hold`` at their all-data values."""
+        """Complete nonlinear refit on ``train`` with ``hold`` at their priors (the other
+        parameters start at the all-data fit; the converged fold fit depends on ``train``
+        only)."""
         spec = self.spec
-        vals = spec.values(x_all)
-        sub = spec.holding({k: vals[k] for k in hold})
+        prior = spec.prior_values()
+        sub = spec.holding({k: prior[k] for k in hold})
         keep = [spec.free.index(k) for k in sub.free]
         sc = np.array([self.feature_scale[n] for n in names])
-        f = fit_model(self.model.subset(train), sub, x_all[keep], tuple(names), theta, sc,
-                      full=self.model)
+        on = self.model.subset(train)
+        x0 = rescale_level(on, sub, x_all[keep]) if hold else x_all[keep]  # level to the prior
+        f = fit_model(on, sub, x0, tuple(names), theta, sc, full=self.model)
         x = x_all.copy()
         x[keep] = f.x
+        for k in hold:
+            i = spec.free.index(k)
+            x[i] = math.log(prior[k]) if k in LOG_PARAMS else prior[k]
         return ModelFit(
             x=x, theta=f.theta, law=spec.law(x), pred=f.pred, jac_base=f.jac_base, jac=None,
             scale=f.scale, names=f.names, lower=f.lower)
@@ -174,8 +184,9 @@ class Refitter:
         One fold per fold code of :func:`.folds.cv_folds` (whole groups, the runs
         unless the data say otherwise; one per group up to
         :data:`.folds.MAX_FOLDS` groups, grouped k-fold above). A fold that
-        cannot identify a base parameter holds it at its all-data value; a
-        one-step fold that would move a parameter too far is refitted in full.
+        cannot identify a base parameter holds it at its prior and is refitted in full
+        (never at the all-data value: that has seen the held-out group); a one-step
+        fold that would move a parameter too far is refitted in full.
 
         Parameters
         ----------
@@ -201,7 +212,7 @@ class Refitter:
         for c in np.unique(groups):
             train, hold = groups != c, holds[int(c)]
             f = None
-            if at is not None and self.cv != "full":
+            if at is not None and self.cv != "full" and not hold:
                 f = one_step_fold(at, self.model, self.spec, train, hold)
             if f is None:
                 f = self._full_fold(names, x_all, th_all, train, hold)

@@ -170,7 +170,9 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
     s = model.samples
     cands = screen_candidates(model, spec, base, names, opts.has_time)
     refitter = Refitter(model, spec, cands.feature_scale(), opts.cv)
-    hold = {c: [spec.free.index(k) for k in h] for c, h in refitter.fold_holds().items()}
+    prior = spec.start(spec.prior_values())  # a fold holds what it cannot identify there
+    hold = {c: {spec.free.index(k): float(prior[spec.free.index(k)] - base.x[spec.free.index(k)])
+                for k in h} for c, h in refitter.fold_holds().items()}
     r0 = s.viscous_W - base.pred
     implausible: dict[str, str] = {}
     log: list[SelectionStep] = []

@@ -13,8 +13,9 @@ backward pruning then drops any effect that no longer brings the margin in the
 final set; the set kept must together explain at least ``min_explained`` of
 the held-out structure above the noise, or nothing is accepted
 (:func:`stepwise_selection`). Folds are the cross-validation groups (the runs
-unless the data say otherwise); a base parameter a fold cannot identify keeps
-its all-data value there (its linearised coefficient is held at zero).
+unless the data say otherwise); a base parameter a fold cannot identify is held
+at its prior there (its linearised coefficient held at the step from the all-data
+value to the prior), never at the all-data value, which has seen the held-out fold.
 
 References
 ----------
@@ -168,8 +169,9 @@ class LeaveOneRunOutSelector:
     group : array of int, shape (k,)
         Effect of each column.
     hold : dict, optional
-        Fold (group code) -> calibration columns held at zero in that fold (the
-        parameters its training data cannot identify).
+        Fold (group code) -> calibration columns held in that fold (the parameters
+        its training data cannot identify): a tuple of column indices (held at zero,
+        the all-data value) or a dict index -> step held [solver unit] (to the prior).
     """
 
     def __init__(self, J: np.ndarray, F: np.ndarray, r: np.ndarray, run_code: np.ndarray,
@@ -183,7 +185,8 @@ class LeaveOneRunOutSelector:
         self.nonneg = np.asarray(nonneg, bool)
         self.group = np.asarray(group)
         self.runs = np.unique(run_code)
-        self.hold = {int(c): tuple(v) for c, v in (hold or {}).items()}
+        self.hold = {int(c): dict(v) if isinstance(v, dict) else dict.fromkeys(v, 0.0)
+                     for c, v in (hold or {}).items()}
         self.G, self.h, self.s, self.n = {}, {}, {}, {}
         code = np.asarray(run_code)
         if np.all(code[1:] >= code[:-1]):  # groups contiguous (runs): slices, no copies
@@ -235,7 +238,8 @@ class LeaveOneRunOutSelector:
                 lo_c, hi_c = lo, hi
                 if self.hold.get(int(c)):
                     lo_c, hi_c = lo.copy(), hi.copy()
-                    lo_c[list(self.hold[int(c)])] = hi_c[list(self.hold[int(c)])] = 0.0
+                    for i, step in self.hold[int(c)].items():
+                        lo_c[i] = hi_c[i] = step * self.scale[i]
                 x = box_lstsq((self.Gt - self.G[c]) / ntr, (self.ht - self.h[c]) / ntr, lo_c,
                               hi_c)
                 sse += max(0.0, self.s[c] - 2 * x @ self.h[c] + x @ self.G[c] @ x)

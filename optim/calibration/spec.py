@@ -21,7 +21,9 @@ parameter is kept inside a numerical box (:data:`PARAM_LIMITS`) so that no
 evaluation overflows; a fit that ends on that box is reported, never used as a
 number. :func:`decide_spec` decides from the data which parameters are free;
 :func:`fold_spec` does the same for the training data of one cross-validation
-fold, fixing at the all-data value what that fold cannot identify.
+fold; what that fold cannot identify is held at its *prior* (:meth:`BaseSpec.prior_values`:
+the published value of Eq. 6, the case's gamma, the base form's default), never at the
+all-data fit, which has seen the held-out group.
 
 References
 ----------
@@ -241,12 +243,32 @@ class BaseSpec:
         The base model (:data:`BASES`).
     laminar_law : {"couette", "bilgen-boulos"}
         Laminar law of the Eq. 6 base (the case's).
+    prior : dict
+        Value of each parameter before any data [-]: the published Eq. 6 value, the
+        case's gamma (0 on smooth walls), the base form's default
+        (:meth:`prior_values`). A cross-validation fold holds what it cannot
+        identify here.
+    scale_min : float
+        Lowest scale the fit may take [-] (0: the box only; where the Couette floor
+        governs, the scale it starts at: :func:`.base_choice.laminar_share`).
     """
 
     free: tuple[str, ...]
     fixed: dict
     base: str = "power-law"
     laminar_law: str = field(default="couette")
+    prior: dict = field(default_factory=dict)
+    scale_min: float = 0.0
+
+    def prior_values(self) -> dict:
+        """Every parameter's prior [-] (:attr:`prior`, else the published start value).
+
+        Returns
+        -------
+        dict
+            Parameter -> value held by a fold that cannot identify it [-].
+        """
+        return {k: float({**START_VALUES, **self.prior}[k]) for k in self.params}
 
     @property
     def params(self) -> tuple[str, ...]:
@@ -324,8 +346,11 @@ class BaseSpec:
         (lo, hi) : arrays
             Bounds of the solver's unknowns [-].
         """
-        return (np.array([PARAM_LIMITS[k][0] for k in self.free]),
-                np.array([PARAM_LIMITS[k][1] for k in self.free]))
+        lo = np.array([PARAM_LIMITS[k][0] for k in self.free])
+        if self.scale_min > 0 and "scale" in self.free:  # the Couette floor (issue 27)
+            i = self.free.index("scale")
+            lo[i] = max(lo[i], math.log(self.scale_min))
+        return lo, np.array([PARAM_LIMITS[k][1] for k in self.free])
 
     def at_limit(self, x: np.ndarray) -> list[str]:
         """Free parameters that sit on their numerical box (not identified by the data).
@@ -339,7 +364,8 @@ class BaseSpec:
         -------
         list of str
         """
-        lo, hi = self.bounds()
+        lo = np.array([PARAM_LIMITS[k][0] for k in self.free])  # the box, not the floor
+        hi = np.array([PARAM_LIMITS[k][1] for k in self.free])
         tol = 1e-6 * (hi - lo)
         return [k for k, v, a, b, t in zip(self.free, x, lo, hi, tol, strict=True)
                 if v <= a + t or v >= b - t]
@@ -357,7 +383,8 @@ class BaseSpec:
         BaseSpec
         """
         return BaseSpec(tuple(k for k in self.free if k not in values),
-                        {**self.fixed, **values}, self.base, self.laminar_law)
+                        {**self.fixed, **values}, self.base, self.laminar_law, self.prior,
+                        self.scale_min)
 
 
 def cv_groups(s: Samples) -> np.ndarray:
@@ -454,6 +481,8 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
     fixed = {"scale": 1.0, "C": 10.0, "alpha": BILGEN_BOULOS_ALPHA, "beta": -1.0,
              "gamma": case.friction.gamma}
     Ts = _distinct(s.roughness_T, 9)
+    prior = {**fixed, **BRANCH_START, "scale": 1.0,
+             "gamma": 0.0 if Ts == [1.0] else case.friction.gamma}
     if why["gamma"] is None:
         free.append("gamma")
         stmt["gamma"] = f"identified from the runs at T = {', '.join(f'{t:g}' for t in Ts)}"
@@ -466,7 +495,7 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
         order = [p for p in BRANCH_PARAMS if p in free or p in bfree]
         return BaseSpec(tuple(order), {k: {**BRANCH_START, **fixed}[k] for k in BRANCH_PARAMS
                                        if k not in order}, base,
-                        case.friction.laminar_law), {**bstmt, **stmt}
+                        case.friction.laminar_law, prior), {**bstmt, **stmt}
     ratios = _distinct(s.gap1_m / radius1, 6)
     if why["alpha"] is None:
         free.append("alpha")
@@ -488,7 +517,7 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
     spec_params = EQ6_PARAMS if base == "eq6" else BASE_PARAMS
     order = [p for p in spec_params if p in free]
     return BaseSpec(tuple(order), {k: fixed[k] for k in spec_params if k not in order}, base,
-                    case.friction.laminar_law), stmt
+                    case.friction.laminar_law, prior), stmt
 
 
 BRANCH_SPEED_SHARE = 0.1
@@ -541,8 +570,9 @@ def _branch_spec(s: Samples, radius1_m: float, laminar_law: str) -> tuple[list[s
 def fold_spec(spec: BaseSpec, s_train: Samples, radius1_m: float) -> tuple[str, ...]:
     """Free parameters that the training samples of one fold cannot identify.
 
-    They are fixed at their all-data values in that fold (the level, C or
-    scale, is always identified).
+    They are held at their priors in that fold (:meth:`BaseSpec.prior_values`; the
+    level, C or scale, is always identified). Never at the all-data fit: it has seen
+    the held-out group, and a held-out error computed with it leaks.
 
     Parameters
     ----------

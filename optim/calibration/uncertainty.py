@@ -8,7 +8,7 @@ uses Student's t with (folds - 1) degrees of freedom.
 Parameters that must be positive (C, the scale) get their interval in log space
 (jackknife of ln C, then exponentiated: the interval never includes zero or
 negative values). A parameter some folds could not identify (held at its
-all-data value there) gets its interval from the other folds only, and none
+prior there) gets its interval from the other folds only, and none
 with fewer than 3. A parameter every fold returns at exactly the same value
 (pinned on a bound of the solver's box, or nothing in the data moves it) with
 no baseline variance gets no interval either: a zero-width "95 % interval"
@@ -136,7 +136,7 @@ def parameter_ci(spec: BaseSpec, fit: ModelFit, folds: list[ModelFit], s: Sample
     baselines : dict
         T -> BaselineFit.
     held : list of tuple of str, optional
-        Per fold, the parameters it held at the all-data value (left out of
+        Per fold, the parameters it held at their prior (left out of
         that parameter's jackknife).
 
     Returns

@@ -41,6 +41,7 @@ from oilgap.model.io.text import layout, wrap
 from oilgap.optim.calibration.estimator import LoopEstimator
 from oilgap.optim.calibration.model_io import FittedModel
 from oilgap.optim.calibration.ranges import effective_scale
+from oilgap.studies.loop.base_table import base_markdown, base_summary_lines
 from oilgap.studies.loop.figures import OVERVIEW, SPEED, TIME
 from oilgap.studies.loop.report_figures import (
     figure_mode,
@@ -251,10 +252,15 @@ def format_summary(est: LoopEstimator, defaults: bool = True) -> str:
     for b in est.baselines_.values():
         lines.append(f"baseline    T = {b.roughness_T:g}: oil-free fit RMSE {b.rmse_W:.3f} W "
                      f"({b.n_samples} samples)" + ("; " + "; ".join(b.notes) if b.notes else ""))
+    stage = "with T"
+    if est.effects_:  # the model saved in loop.json: the refit with its effects (issue 25)
+        c, ci = est.calibration_after_, est.calibration_after_ci_
+        stage = "refitted with the effects (the saved model)"
     par = ", ".join(f"{k} = {_num(c[k])}{_ci_text(ci[k])}" for k in c)
-    lines += [f"calibration with T ({_base_text(est)}): {par}",
+    lines += [f"calibration {stage} ({_base_text(est)}): {par}",
               f"            without T: the case's law ({est.law_without_T_.form}, laminar "
-              f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted", "",
+              f"{est.law_without_T_.laminar_law}), gamma = 0, nothing fitted",
+              *base_summary_lines(est), "",
               "error table (RMSE of the viscous power by oil and roughness)", error_table(est),
               ""]
     lines += [f"finding     {f.message}" + (f"\n            {f.evidence}"
@@ -291,6 +297,8 @@ def format_summary(est: LoopEstimator, defaults: bool = True) -> str:
             lines.append(f"  {x['name']}: {x['status']}")
     if est.unexplained_:
         lines.append("unexplained: " + est.unexplained_["description"])
+        lines += [f"            {t}" for t in est.unexplained_.get("described", {}).get(
+            "text", [])]
     h = est.heldout_rmse_
     r = est.rmse_
     held = f"held-out (by {getattr(est, 'cv_by', 'run')})"[:21]
@@ -364,7 +372,7 @@ def _md_calibration(est: LoopEstimator) -> list[str]:
                                                  if isinstance(ci[k], list) else "fixed"),
                              _range_text(ranges, k),
                              identifiability(est).get(k, "")]
-                            for k in c]), ""]
+                            for k in c]), "", *base_markdown(est, markdown_rows)]
     parts += [f"Possible unit mistake: {h}." for h in unit_hints(est)]
     nid = not_identifiable(est)
     if nid:
@@ -434,7 +442,9 @@ def _md_effects(est: LoopEstimator) -> list[str]:
     else:
         parts += ["**No missing effect found.**", ""]
     if est.unexplained_:
-        parts += ["### Unexplained structure", "", est.unexplained_["description"] + ".", ""]
+        parts += ["### Unexplained structure", "", est.unexplained_["description"] + ".", "",
+                  *[f"- {t}" for t in est.unexplained_.get("described", {}).get("text", [])],
+                  ""]
     return parts
 
 

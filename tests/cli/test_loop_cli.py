@@ -123,8 +123,11 @@ def _air_like(path, with_run=True):
 def test_steady_air_data_one_run_per_gap_leave_one_gap_out(tmp_path, capsys):
     data = _air_like(tmp_path / "air.csv")
     out = tmp_path / "o"
+    # --base eq6: the data are Eq. 6's own, and this checks that its scale and alpha come
+    # back (the default compares eq6 with branches by held-out error: tests/optim/
+    # calibration/test_honest_cv.py)
     assert main(["loop", str(data), "--case", str(RIG_NO_BEARING), "--cv-by", "gap_mm",
-                 "--out", str(out), "--no-figures"]) == 0
+                 "--base", "eq6", "--out", str(out), "--no-figures"]) == 0
     captured = capsys.readouterr()
     assert "Traceback" not in captured.err
     doc = json.loads((out / "loop.json").read_text())
@@ -140,7 +143,7 @@ def test_steady_air_data_one_run_per_gap_leave_one_gap_out(tmp_path, capsys):
     # without a run column the default groups are the setups (fluid, T, gap): the same
     # three groups, so the same held-out errors
     bare = _air_like(tmp_path / "air_norun.csv", with_run=False)
-    assert main(["loop", str(bare), "--case", str(RIG_NO_BEARING), "--out",
+    assert main(["loop", str(bare), "--case", str(RIG_NO_BEARING), "--base", "eq6", "--out",
                  str(tmp_path / "o2"), "--no-figures"]) == 0
     doc2 = json.loads((tmp_path / "o2" / "loop.json").read_text())
     assert doc2["heldout_rmse_W"] == pytest.approx(doc["heldout_rmse_W"], rel=1e-9)

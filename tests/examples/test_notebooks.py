@@ -16,6 +16,7 @@ import shutil
 import subprocess
 import sys
 import time
+from dataclasses import replace
 from pathlib import Path
 
 import nbformat
@@ -149,6 +150,10 @@ def test_04_loop_and_predict(tmp_path, monkeypatch):
     rmse = float(np.sqrt(np.mean((table["predicted_power_W"] - new["power_W"]) ** 2)))
     printed(found, "RMSE on the new points", rmse)
     assert rmse < 2.0  # the rig's noise is 1 W: VG46, never run, is predicted to the noise
+    # the calibrated law folded into the joint: the model's final law in the case
+    joint = replace(case(), friction=est.fitted_model().laws["with_effect"])
+    printed(found, "calibrated loss", evaluate_case(joint).total_mean_power_W)
+    printed(found, "uncalibrated loss", evaluate_case(case()).total_mean_power_W)
 
 
 def test_05_uncertainty(tmp_path, monkeypatch):

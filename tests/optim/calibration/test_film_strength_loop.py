@@ -79,13 +79,20 @@ def test_wall_condition_of_the_case_is_the_held_value_and_scales_the_strength():
         _film(fitted(0.3)).shape["film_heating_K_W"], rel=1e-3)
 
 
-def test_a_film_stronger_than_the_theory_is_pinned_at_one_and_flagged():
+def test_a_film_stronger_than_the_theory_is_flagged_below_the_couette_floor():
+    # s = 1.2 heats the film beyond the smooth-film theory: the loss lies 30 % below exact
+    # Couette at the measured temperature. Before the Couette floor (issue 27) a scale of
+    # 0.7 took it and the film came out at its bound 1; now no calibration goes below the
+    # floor, and the loop says where the data are: below the Couette minimum (check the
+    # baseline or the temperature). Known limit (docs/loop.md#the-couette-floor): the
+    # groove exponent, which the floor does not bound, then runs to its box, and the
+    # effect search names a proxy; the finding is the answer to trust.
     est = fitted(1.2)
-    e = _film(est)
-    assert 0.99 <= e.coefficient <= 1.0  # bounded: never above the smooth-film theory
-    assert "at the smooth-film theory's bound" in e.shape["at_bound"]
-    flags = [f for f in est.findings_ if f.kind == "at bound"]
-    assert [f.parameter for f in flags] == ["film_heating"]
+    by = {f.kind: f for f in est.findings_}
+    assert "below couette" in by
+    assert by["below couette"].message.startswith(
+        "the data lie below the Couette minimum: check the baseline or the temperature")
+    assert by["below couette"].value < 0.8
 
 
 @dataclass(frozen=True)

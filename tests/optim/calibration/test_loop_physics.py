@@ -154,12 +154,18 @@ def test_a_fold_with_one_gap_holds_alpha_and_says_so(base):
     stmt = est.identifiability_["alpha"]
     if base == "power-law":  # the Eq. 6 base fixes alpha anyway (Couette governs region 1)
         assert stmt.startswith("identified from 2 region-1 gap ratios")
-        assert stmt.endswith("held at the all-data value in 1 of 9 cross-validation folds "
+        # held at its prior (Eq. 6's 0.3), never at the all-data fit (issue 25)
+        assert stmt.endswith("held at its prior 0.3 in 1 of 9 cross-validation folds "
                              "(their training data cannot identify it)")
         assert np.all(np.isfinite(est.calibration_ci_["alpha"]))
     level = "C" if base == "power-law" else "scale"
     lo, hi = est.calibration_ci_[level]
-    assert 0 < lo < est.calibration_[level] < hi  # log space: never below zero
+    if "bounded below" in est.identifiability_.get(level, ""):
+        # the fit went below the Couette floor and is held there (issue 27): pinned by the
+        # floor, not identified by the data, so no interval
+        assert np.isnan(lo) and np.isnan(hi)
+    else:
+        assert 0 < lo < est.calibration_[level] < hi  # log space: never below zero
     assert np.all(np.isfinite(est.heldout_pred_["before"]))
 
 
@@ -209,7 +215,11 @@ def test_an_implausible_partner_is_dropped_and_its_share_left_unexplained():
     # share stays as unexplained structure instead of being forced onto a name.
     est = _fit(SynthConfig(effects={"thermal_lag": 4.0, "shear_thinning": 7.5e-5}))
     assert [e.name for e in est.effects_] == ["thermal_lag"]
-    assert est.effects_[0].coefficient == pytest.approx(4.0, rel=0.03)
+    # the thinning lowers the loss below Couette at the measured viscosity; with the Couette
+    # floor (issue 27) no scale below it can take that share, so the scale is held at the
+    # floor and the lag takes part of it: 3.55 s against 4 s (within 3 % before the floor)
+    assert "bounded below" in est.identifiability_["scale"]
+    assert est.effects_[0].coefficient == pytest.approx(4.0, rel=0.15)
     st = {c["name"]: c["status"] for c in est.candidates_}
     assert st["shear_thinning"].startswith("implausible")
     assert est.unexplained_ is not None

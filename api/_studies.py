@@ -6,7 +6,9 @@ Each runs the study's module-level ``run`` and wraps its result in a view
 that folder as the command does: the folder is checked and locked before any computation
 (:class:`~oilgap.studies.io.result_folder.ResultFolder`), earlier outputs are refused unless
 ``force`` (a sweep continues with ``resume``); ``folder`` is a result folder the caller
-(the command line) already opened.
+(the command line) already opened. ``model=`` (a ``loop.json`` path, a FittedModel or a
+fitted og.Loop) folds a calibrated loop model into the case first, as the command line's
+``--model`` does.
 """
 
 from __future__ import annotations
@@ -17,7 +19,7 @@ from typing import Any
 
 import pandas as pd
 
-from oilgap._checks import CASE, FLAG, GRID, MISSION, OILS, OUT, Arg, checked
+from oilgap._checks import CASE, FLAG, GRID, MISSION, MODEL, OILS, OUT, Arg, checked
 from oilgap._evaluate import as_case, oil_catalogue
 from oilgap._results_linear import LeadFront
 from oilgap._results_studies import OilGrade, Pareto, Smoothing
@@ -66,6 +68,17 @@ STUDY = dict(case=CASE, out=OUT, force=FLAG, folder=FOLDER)
 """The arguments every study takes."""
 
 
+def _study_case(case: DesignCase | str | Path | None, model: Any) -> DesignCase:
+    """The study's case, with ``model`` (a ``loop.json`` path, a FittedModel or a fitted
+    og.Loop; None: the case's own ``[calibration] model``, if any) folded in as ``--model``
+    does (:func:`oilgap._calibrated.with_model`, the one place)."""
+    base = as_case(case)
+    if model is None and base.calibration_model is None:
+        return base
+    from oilgap._calibrated import with_model
+    return with_model(base, model)[0]
+
+
 def resume_conflict(resume: bool, force: bool, retry_failed: bool = False,
                     names: tuple[str, str, str] = ("resume", "force", "retry_failed")) -> None:
     """Refuse continuing a stored sweep (``resume``, or ``retry_failed`` which implies it)
@@ -83,7 +96,7 @@ def resume_conflict(resume: bool, force: bool, retry_failed: bool = False,
                          f"stored in the folder, {names[1]} discards it; choose one")
 
 
-@checked(**STUDY)
+@checked(**STUDY, model=MODEL)
 def pareto(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
            force: bool = False, folder: ResultFolder | None = None, **keywords: Any) -> Pareto:
     """The gap-loss and loss-inertia Pareto fronts by epsilon-constraint sweeps
@@ -111,7 +124,7 @@ def pareto(case: DesignCase | str | Path | None = None, *, out: str | Path | Non
     -------
     Pareto
     """
-    base = as_case(case)
+    base = _study_case(case, keywords.pop("model", None))
     settings, options = split_keywords(keywords, ParetoSettings)
     if base.linear is not None:  # a linear actuator: the lead-loss front
         return _lead_front(base, settings, out, force, folder)
@@ -147,7 +160,7 @@ def _mission(mission: Any) -> Any:
     return mission
 
 
-@checked(**STUDY, mission=MISSION)
+@checked(**STUDY, mission=MISSION, model=MODEL)
 def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = None,
               out: str | Path | None = None, force: bool = False,
               folder: ResultFolder | None = None, **keywords: Any) -> OilGrade:
@@ -177,7 +190,7 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     -------
     OilGrade
     """
-    base = as_case(case)
+    base = _study_case(case, keywords.pop("model", None))
     m = _mission(mission)
     settings, options = split_keywords(keywords, OilGradeSettings)
     with result_folder("study oil-grade", out, force, folder=folder) as f:
@@ -187,7 +200,7 @@ def oil_grade(case: DesignCase | str | Path | None = None, *, mission: Any = Non
     return OilGrade(r, base, _out(out))
 
 
-@checked(**STUDY)
+@checked(**STUDY, model=MODEL)
 def smoothing(case: DesignCase | str | Path | None = None, *, out: str | Path | None = None,
               force: bool = False, folder: ResultFolder | None = None,
               **keywords: Any) -> Smoothing:
@@ -216,7 +229,7 @@ def smoothing(case: DesignCase | str | Path | None = None, *, out: str | Path | 
     -------
     Smoothing
     """
-    base = as_case(case)
+    base = _study_case(case, keywords.pop("model", None))
     settings, _ = split_keywords(keywords, SmoothingSettings, run_options=False)
     with result_folder("study smoothing", out, force, folder=folder) as f:
         _begin(f, base)
@@ -225,7 +238,7 @@ def smoothing(case: DesignCase | str | Path | None = None, *, out: str | Path | 
     return Smoothing(r, base, settings.plateau_tol, _out(out))
 
 
-@checked(grid=GRID, **STUDY, resume=FLAG, oils=OILS, retry_failed=FLAG)
+@checked(grid=GRID, **STUDY, resume=FLAG, oils=OILS, retry_failed=FLAG, model=MODEL)
 def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None = None, *,
           out: str | Path | None = None, resume: bool = False, force: bool = False,
           oils: dict[str, Oil] | str | Path | None = None,
@@ -263,13 +276,14 @@ def sweep(grid: pd.DataFrame | str | Path, case: DesignCase | str | Path | None 
     -------
     Sweep
     """
+    model = keywords.pop("model", None)
     settings, options = split_keywords(keywords, SweepSettings)
     resume_conflict(resume, force, settings.retry_failed)
     resume = resume or settings.retry_failed
     name = Path(grid).name if isinstance(grid, (str, Path)) else "the grid"
     with result_folder("study sweep", out, force, resume, folder) as f:  # before reading
         g = read_grid(grid) if isinstance(grid, (str, Path)) else grid
-        base = as_case(case)
+        base = _study_case(case, model)
         cat = oil_catalogue(oils)
         _begin(f, base)
         t0 = time.perf_counter()

@@ -174,9 +174,10 @@ def couette_moment_coefficient(reynolds, gap_ratio):
 def couette_floor_applies(law) -> bool:
     """Whether a friction law is floored at exact Couette by
     :func:`oilgap.model.skin_friction.moment_coefficient`: the Couette laminar law, a form
-    with a scale, and a numeric scale below 1 (issue 27 item 4: no calibration takes the
-    laminar loss below Couette, the least any flow of the geometry dissipates; at scale
-    >= 1 nothing changes, bit for bit).
+    with a scale, and a scale below 1 or not a number (an array of scales or a CasADi
+    symbol; issue 27 item 4: no calibration takes the laminar loss below Couette, the least
+    any flow of the geometry dissipates; at a numeric scale >= 1 nothing changes, bit for
+    bit).
 
     Parameters
     ----------
@@ -187,5 +188,9 @@ def couette_floor_applies(law) -> bool:
     -------
     bool
     """
-    return (law.laminar_law == "couette" and law.form != "power-law"
-            and isinstance(law.scale, (int, float)) and law.scale < 1.0)
+    if law.laminar_law != "couette" or law.form == "power-law":
+        return False
+    # a number >= 1 cannot take the loss below Couette: nothing to floor, bit for bit; an
+    # array or symbol of scales (the vectorised rows, a robust NLP's scenarios) is floored
+    # row by row, where max(C_m, Couette) is C_m itself wherever the scale is >= 1
+    return not (isinstance(law.scale, (int, float)) and law.scale >= 1.0)

@@ -6,10 +6,12 @@ beside uncalibrated)."""
 from __future__ import annotations
 
 import argparse
+from typing import TYPE_CHECKING
 
-from oilgap._calibrated import model_lines, model_record, with_model
 from oilgap.model.case import DesignCase
-from oilgap.optim.calibration.calibrated_case import CalibratedCase
+
+if TYPE_CHECKING:  # the calibration (pandas, the loop) loads only with --model
+    from oilgap.optim.calibration.calibrated_case import CalibratedCase
 
 
 def add_model_option(p: argparse.ArgumentParser) -> None:
@@ -22,7 +24,10 @@ def add_model_option(p: argparse.ArgumentParser) -> None:
 def apply_model(case: DesignCase, args: argparse.Namespace
                 ) -> tuple[DesignCase, CalibratedCase | None]:
     """The case with ``--model`` folded in (unchanged without it)."""
-    return with_model(case, getattr(args, "model", None))
+    if getattr(args, "model", None) is None and case.calibration_model is None:
+        return case, None  # no model given, none referenced by [calibration]
+    from oilgap._calibrated import with_model
+    return with_model(case, args.model)
 
 
 def base_loss_W(case: DesignCase) -> float:
@@ -42,7 +47,15 @@ def report_model(cal: CalibratedCase | None, json_mode: bool = False,
     if calibrated_W is None:
         calibrated_W, uncalibrated_W = base_loss_W(cal.case), base_loss_W(cal.uncalibrated)
         what = "the given case's loss"
+    from oilgap._calibrated import model_lines
     print("\n".join(model_lines(cal, calibrated_W, uncalibrated_W, what)))
+
+
+def model_record(cal: CalibratedCase | None, calibrated_W: float | None = None,
+                 uncalibrated_W: float | None = None) -> dict | None:
+    """The model's JSON record (:func:`oilgap._calibrated.model_record`), loaded lazily."""
+    from oilgap._calibrated import model_record as record
+    return record(cal, calibrated_W, uncalibrated_W)
 
 
 __all__ = ["add_model_option", "apply_model", "model_record", "report_model"]

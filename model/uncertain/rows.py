@@ -33,6 +33,7 @@ References
 
 from __future__ import annotations
 
+import copy
 from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING, Any
 
@@ -49,6 +50,7 @@ from ..oil_properties import (
 )
 from ..regions import Region, joint_regions, region_mean_power
 from ..skin_friction import groove_roughness_factor
+from ..taylor_couette import couette_floor_applies
 from ..thermal import steady_temperature
 from ..thermal_modes import applies_film
 from ..units import celsius_to_kelvin
@@ -238,7 +240,7 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
         mean = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, model.law,
                                  model.film, b)
         if fs is not None:
-            mean = fs * mean
+            mean = _scaled_mean(mean, fs, reg, nodes, model, nu_c, rho_c, b)
         if gam is not None and not np.all(np.asarray(reg.roughness_T) == 1.0):
             t = reg.roughness_T
             mean = groove_roughness_factor(t[:, 0] if np.ndim(t) else t, gam) * mean
@@ -253,6 +255,23 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
             bearing = bearing + np.broadcast_to(np.asarray(element.mean_power(
                 nodes, model.weights, nu_c, rho_c), dtype=float), bearing.shape)
     return out, bearing
+
+
+def _scaled_mean(mean, fs, reg, nodes, model: RowModel, nu_c, rho_c, b):
+    """The region's mean power at the rows' friction scales [W]: ``fs`` times the mean
+    (Eq. 6 is linear in its scale), except where the Couette floor applies
+    (:func:`~oilgap.model.taylor_couette.couette_floor_applies`: a total scale below 1
+    under the Couette laminar law), where those rows are evaluated with their own scale
+    and the floor node by node, as the scalar path does (issue 27 item 4)."""
+    law = model.law
+    low = fs * law.scale < 1.0 if isinstance(law.scale, (int, float)) else None
+    if low is None or not np.any(low) or not couette_floor_applies(replace(law, scale=0.5)):
+        return fs * mean
+    rows_law = copy.copy(law)  # the law with one scale per row (a frozen dataclass's copy)
+    object.__setattr__(rows_law, "scale", (law.scale * fs)[:, None])
+    floored = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, rows_law,
+                                model.film, b)
+    return np.where(low, floored, fs * mean)
 
 
 def _oil(model: RowModel, rows: RowValues, t_k, p, idx):

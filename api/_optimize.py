@@ -33,7 +33,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
              oils: dict[str, Oil] | str | Path | None = None,
              oil_temp_C: float | None = None, depth_m: float | None = None,
              thermal: str | None = None, sea_temp_C: float | None = None,
-             model: Any = None, **keywords: Any) -> Optimization | RobustOptimization:
+             **keywords: Any) -> Optimization | RobustOptimization:
     """The region-1 geometry (R, delta, groove fill, L) of least mean power under the
     motor's torque, the rotor inertia and the case's bounds (``oilgap optimize``).
 
@@ -48,10 +48,9 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     oil, oils, oil_temp_C, depth_m, thermal, sea_temp_C
         As :func:`oilgap._evaluate.evaluate` (oil temperature [degC], depth [m], sea
         temperature [degC]).
-    model : path, FittedModel or fitted og.Loop, optional
-        A calibrated loop model folded into the case (``--model``;
-        :func:`oilgap._calibrated.with_model`).
     **keywords
+        ``model``: a ``loop.json`` path, a FittedModel or a fitted og.Loop, a calibrated
+        loop model folded into the case (``--model``; :func:`oilgap._calibrated.with_model`).
         ``transition``: ``"reynolds"`` or ``"taylor"``, where C_m leaves the laminar law
         (default: the case's; :func:`oilgap._evaluate.with_transition`).
         ``robust``: ``"p95"``, ``"mean"`` or ``"mean+2sd"``: the robust design over
@@ -83,6 +82,7 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     kw = dict(keywords)
     verbose = bool(kw.pop("verbose", False))
     transition = kw.pop("transition", None)
+    model = kw.pop("model", None)
     robust = kw.pop("robust", None)
     robust_kw = {k: kw.pop(k) for k in _ROBUST_KEYWORDS if k in kw}
     if robust is None and robust_kw:
@@ -93,8 +93,8 @@ def optimize(case: DesignCase | str | Path | None = None, *, oil: str | None = N
     if unknown:
         raise ArgumentError(", ".join(sorted(unknown)), keywords[min(unknown)],
                             f"optimize's keywords are {', '.join(sorted(DesignLimits.names()))}"
-                            ", limits, verbose, robust, scenarios, seed, mc_samples, pareto "
-                            "and transition")
+                            ", limits, verbose, robust, scenarios, seed, mc_samples, pareto, "
+                            "transition and model")
     if lim is not None and kw:
         raise ArgumentError("limits", lim, f"give limits or {', '.join(sorted(kw))}, not both")
     lim = lim if lim is not None else DesignLimits(**kw)

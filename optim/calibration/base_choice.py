@@ -239,10 +239,12 @@ def try_base(model: ForwardModel, case: DesignCase, cand: BaseCandidate, cv: str
         ho = Refitter(model, spec, {}, cv).leave_one_run_out((), fit.x, None, fit).pred
     except SolverError as e:
         nan = float("nan")
-        return BaseTrial(cand, None, None, {}, None, nan, nan, nan, nan, error=str(e))
-    return BaseTrial(cand, spec, fit, stmt, ho, log_rmse(y, fit.pred), log_rmse(y, ho),
-                     float(np.sqrt(np.mean((fit.pred - y) ** 2))),
-                     float(np.sqrt(np.mean((ho - y) ** 2))))
+        return BaseTrial(cand, None, None, {}, None, log_rmse=nan, heldout_log_rmse=nan,
+                         rmse_W=nan, heldout_rmse_W=nan, error=str(e))
+    return BaseTrial(cand, spec, fit, stmt, ho, log_rmse=log_rmse(y, fit.pred),
+                     heldout_log_rmse=log_rmse(y, ho),
+                     rmse_W=float(np.sqrt(np.mean((fit.pred - y) ** 2))),
+                     heldout_rmse_W=float(np.sqrt(np.mean((ho - y) ** 2))))
 
 
 def choose(trials: list[BaseTrial], margin: float) -> BaseTrial:

@@ -167,7 +167,7 @@ def mechanism(where: dict, scaling: dict) -> str:
     where : dict
         :func:`where_it_sits` (shares [-] by oil, run, roughness).
     scaling : dict
-        :func:`how_it_scales` (exponents of |omega|, nu, rho [-] with intervals).
+        :func:`how_it_scales` (exponents of ``|omega|``, nu, rho [-] with intervals).
 
     Returns
     -------

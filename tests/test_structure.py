@@ -120,3 +120,21 @@ def test_modes_forms_and_laws_are_enums_equal_to_their_names():
     assert skin_friction.FORMS == ("bilgen-boulos", "smooth", "power-law", "branches")
     assert skin_friction.LaminarLaw.COUETTE == "couette"
     assert api.LAMINAR_LAWS is skin_friction.LAMINAR_LAWS
+
+
+def test_pyproject_lists_every_package():
+    """A subpackage missing from pyproject's ``packages`` is left out of a non-editable
+    install (``pip install .``): its import fails only on the user's machine."""
+    import tomllib
+
+    doc = tomllib.loads((ROOT / "pyproject.toml").read_text(encoding="utf-8"))
+    listed = set(doc["tool"]["setuptools"]["packages"])
+    top = {"api": "oilgap", "model": "oilgap.model", "optim": "oilgap.optim",
+           "studies": "oilgap.studies"}
+    found = set()
+    for init in (p for pkg in top for p in (ROOT / pkg).rglob("__init__.py")):
+        rel = init.parent.relative_to(ROOT).parts
+        name = "oilgap.cli" if rel[:2] == ("api", "cli") else top[rel[0]]
+        found.add(".".join((name, *rel[2 if rel[:2] == ("api", "cli") else 1:])))
+    assert found - listed == set(), "missing from pyproject.toml packages"
+    assert listed - found == set(), "listed in pyproject.toml but not a package"

@@ -348,6 +348,32 @@ def bearing_moment_terms(spec: BearingSpec, omega_rad_s, nu_m2_s) -> dict:
     return {k: mm_to_m(v) + zero for k, v in terms.items()}
 
 
+def palmgren_viscous_torque(omega_rad_s, nu_m2_s, pitch_diameter_m, f0=1.0):
+    """Palmgren's load-independent moment in SI [N m]: the catalogue-unit law
+    :func:`~oilgap.model.bearing.laws.palmgren_viscous_moment` converted once, for the
+    loop's ``bearing_ball_churning`` effect and a linear drive's screw [3]_, [4]_.
+
+    Parameters
+    ----------
+    omega_rad_s : float, array or CasADi symbol
+        Speed [rad/s] (sign ignored).
+    nu_m2_s : float, array or CasADi symbol
+        Kinematic viscosity [m^2/s].
+    pitch_diameter_m : float
+        Pitch diameter d_m [m].
+    f0 : float
+        Palmgren factor [-].
+
+    Returns
+    -------
+    float, array or CasADi expression
+        Moment M_0 [N m] (>= 0).
+    """
+    n = rad_s_to_rpm(m.fabs(omega_rad_s))
+    moment_Nmm = palmgren_viscous_moment(m2_s_to_cst(nu_m2_s), n, m_to_mm(pitch_diameter_m), f0)
+    return mm_to_m(moment_Nmm)
+
+
 def bearing_torque(spec: BearingSpec, omega_rad_s, nu_m2_s):
     """Friction torque of the bearing [N m], opposing rotation (sign of omega; 0 at rest).
 
@@ -529,4 +555,4 @@ def bearing_vm_drag_power(spec: BearingSpec, omega_rad_s):
 __all__ = ["DRAG_ALIASES", "DRAG_CHOICES", "KINDS", "MODELS", "OMEGA_FLOOR_RAD_S",
            "BearingSpec", "BearingValidity", "bearing_mean_power", "bearing_moment_terms",
            "bearing_power", "bearing_torque", "bearing_validity", "bearing_vm_drag_power",
-           "skf_moments"]
+           "palmgren_viscous_torque", "skf_moments"]

@@ -64,9 +64,9 @@ import numpy as np
 from scipy.signal import lfilter
 
 from .. import _math as m
+from ..bearing.friction import palmgren_viscous_torque
 from ..bearing.laws import PALMGREN_MIN_NU_N, palmgren_viscous_moment  # noqa: F401 (re-export)
 from ..taylor_couette import CRITICAL_TAYLOR_NUMBER
-from ..units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
 
 FREE_DISC_TRANSITION_RE = 3.0e5
 """Disc Reynolds number of the laminar-turbulent change of the free-disc law [1]."""
@@ -215,10 +215,8 @@ def ball_churning_power(omega_rad_s, nu_m2_s, pitch_diameter_m, f0=1.0):
     ----------
     Palmgren [4]; Harris & Kotzalas [5], ch. 9.
     """
-    w = m.fabs(omega_rad_s)
-    moment_Nmm = palmgren_viscous_moment(m2_s_to_cst(nu_m2_s), rad_s_to_rpm(w),
-                                         m_to_mm(pitch_diameter_m), f0)
-    return mm_to_m(moment_Nmm) * w
+    return palmgren_viscous_torque(omega_rad_s, nu_m2_s, pitch_diameter_m, f0) \
+        * m.fabs(omega_rad_s)
 
 
 def coulomb_friction_power(omega_rad_s, torque_Nm):

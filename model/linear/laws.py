@@ -27,8 +27,7 @@ from __future__ import annotations
 import math
 
 from .. import _math as m
-from ..bearing.laws import palmgren_viscous_moment
-from ..units import m2_s_to_cst, m_to_mm, mm_to_m, rad_s_to_rpm
+from ..bearing.friction import palmgren_viscous_torque
 
 ECCENTRIC_LEAKAGE_GAIN = 1.5
 """Coefficient of eps^2 in the eccentric-annulus leakage ``1 + 1.5 eps^2`` [-] [1]_."""
@@ -296,7 +295,7 @@ def screw_viscous_torque(omega_rad_s, nu_m2_s, pitch_diameter_m, f0):
 
     Palmgren's ``M_0 = 1e-7 f_0 (nu n)^(2/3) d_m^3`` [N mm] (nu [cSt], n [rpm], d_m
     [mm]; constant below ``nu n = 2000``) applied to the nut's rolling set, as to a
-    bearing: :func:`oilgap.model.bearing.laws.palmgren_viscous_moment`, converted here.
+    bearing: :func:`oilgap.model.bearing.friction.palmgren_viscous_torque`.
 
     Parameters
     ----------
@@ -318,6 +317,4 @@ def screw_viscous_torque(omega_rad_s, nu_m2_s, pitch_diameter_m, f0):
     ----------
     Palmgren; Harris & Kotzalas [2]_.
     """
-    n = rad_s_to_rpm(m.fabs(omega_rad_s))
-    return mm_to_m(palmgren_viscous_moment(m2_s_to_cst(nu_m2_s), n,
-                                           m_to_mm(pitch_diameter_m), f0))
+    return palmgren_viscous_torque(omega_rad_s, nu_m2_s, pitch_diameter_m, f0)

@@ -171,6 +171,23 @@ def couette_moment_coefficient(reynolds, gap_ratio):
     return 8.0 * (1.0 + x) ** 2 / ((2.0 + x) * reynolds)
 
 
+def couette_floor_form(law) -> bool:
+    """Whether a friction law's form can be floored at exact Couette (a scale below 1
+    then floors it, :func:`couette_floor_applies`): the Couette laminar law and a form
+    with a scale (not the power law).
+
+    Parameters
+    ----------
+    law : FrictionLaw
+        Its ``laminar_law`` and ``form`` [-].
+
+    Returns
+    -------
+    bool
+    """
+    return law.laminar_law == "couette" and law.form != "power-law"
+
+
 def couette_floor_applies(law) -> bool:
     """Whether a friction law is floored at exact Couette by
     :func:`oilgap.model.skin_friction.moment_coefficient`: the Couette laminar law, a form
@@ -188,7 +205,7 @@ def couette_floor_applies(law) -> bool:
     -------
     bool
     """
-    if law.laminar_law != "couette" or law.form == "power-law":
+    if not couette_floor_form(law):
         return False
     # a number >= 1 cannot take the loss below Couette: nothing to floor, bit for bit; an
     # array or symbol of scales (the vectorised rows, a robust NLP's scenarios) is floored

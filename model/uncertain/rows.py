@@ -50,7 +50,7 @@ from ..oil_properties import (
 )
 from ..regions import Region, joint_regions, region_mean_power
 from ..skin_friction import groove_roughness_factor
-from ..taylor_couette import couette_floor_applies
+from ..taylor_couette import couette_floor_form
 from ..thermal import steady_temperature
 from ..thermal_modes import applies_film
 from ..units import celsius_to_kelvin
@@ -261,11 +261,13 @@ def _scaled_mean(mean, fs, reg, nodes, model: RowModel, nu_c, rho_c, b):
     """The region's mean power at the rows' friction scales [W]: ``fs`` times the mean
     (Eq. 6 is linear in its scale), except where the Couette floor applies
     (:func:`~oilgap.model.taylor_couette.couette_floor_applies`: a total scale below 1
-    under the Couette laminar law), where those rows are evaluated with their own scale
-    and the floor node by node, as the scalar path does (issue 27 item 4)."""
+    under the Couette laminar law,
+    :func:`~oilgap.model.taylor_couette.couette_floor_form`), where those rows are
+    evaluated with their own scale and the floor node by node, as the scalar path does
+    (issue 27 item 4)."""
     law = model.law
     low = fs * law.scale < 1.0 if isinstance(law.scale, (int, float)) else None
-    if low is None or not np.any(low) or not couette_floor_applies(replace(law, scale=0.5)):
+    if low is None or not np.any(low) or not couette_floor_form(law):
         return fs * mean
     rows_law = copy.copy(law)  # the law with one scale per row (a frozen dataclass's copy)
     object.__setattr__(rows_law, "scale", (law.scale * fs)[:, None])

@@ -48,21 +48,9 @@ BUDGET_FACTOR = 30.0
 """Each NSGA-II run stops at the sweep's HV or after this many times t_eps."""
 
 
-def main() -> int:
-    try:
-        from pymoo.algorithms.moo.nsga2 import NSGA2
-        from pymoo.core.callback import Callback
-        from pymoo.core.problem import Problem
-        from pymoo.indicators.hv import HV
-        from pymoo.optimize import minimize
-    except ImportError:
-        print("pymoo is not installed: pip install 'oilgap[bench]' (or pip install pymoo)")
-        return 1
-
-    case = seed_case()
-    seeds = seed_points()
-    ref = default_reference_point(case, seeds)
-    lo, hi, evaluate = gap_problem_numpy(case)
+def _sweeps(case, ref, evaluate, HV) -> dict:
+    """The epsilon-constraint sweeps at each size: time (first and warm), HV, and their
+    optima checked on NSGA-II's numpy path."""
     sweeps = {}
     for n in SIZES:
         clear_problems()  # cold: the first call builds the NLP
@@ -84,7 +72,28 @@ def main() -> int:
                          hv=hypervolume_2d(F, ref), hv_pymoo=float(HV(ref_point=np.array(ref))(F)),
                          viol=max(0.0, float(G_np.max())),
                          agree=float(np.max(np.abs(F_np[:, 1] / F[:, 1] - 1))))
+    return sweeps
 
+
+def _print_sweeps(ref, sweeps: dict) -> None:
+    """The reference point and the sweeps' table."""
+    print("Gap-loss front of the seed joint (VG22, 3000 m, 2 degC), both objectives minimised")
+    print(f"reference point: delta = {ref[0]:g} mm, P = {ref[1]:.4f} W "
+          "(the case's gap_max, the seed's mean power)")
+    print()
+    print("epsilon-constraint sweeps (t_eps = first call in the process, incl. building the NLP):")
+    print(f"{'points':>7}{'HV mm W':>10}{'pymoo HV':>10}{'t_eps s':>9}{'warm s':>8}"
+          f"{'max viol.':>10}{'obj. agree':>11}")
+    for sw in sweeps.values():
+        print(f"{sw['points']:>7}{sw['hv']:>10.4f}{sw['hv_pymoo']:>10.4f}{sw['t']:>9.3f}"
+              f"{sw['t_warm']:>8.3f}{sw['viol']:>10.1e}{sw['agree']:>11.1e}")
+    print("  (viol./agree: the sweep's optima on NSGA-II's numpy path: max scaled constraint "
+          "violation, max relative objective difference)")
+
+
+def _pymoo_classes(Problem, Callback, lo, hi, evaluate, ref):
+    """The gap-loss problem on NSGA-II's numpy path and the HV tracker (pymoo's base
+    classes passed in: pymoo is imported only when the benchmark runs)."""
     class GapLoss(Problem):
         def __init__(self):
             super().__init__(n_var=5, n_obj=2, n_ieq_constr=2, xl=lo, xu=hi)
@@ -126,18 +135,28 @@ def main() -> int:
                 algorithm.termination.force_termination = True
             self.t = t
 
-    print("Gap-loss front of the seed joint (VG22, 3000 m, 2 degC), both objectives minimised")
-    print(f"reference point: delta = {ref[0]:g} mm, P = {ref[1]:.4f} W "
-          "(the case's gap_max, the seed's mean power)")
-    print()
-    print("epsilon-constraint sweeps (t_eps = first call in the process, incl. building the NLP):")
-    print(f"{'points':>7}{'HV mm W':>10}{'pymoo HV':>10}{'t_eps s':>9}{'warm s':>8}"
-          f"{'max viol.':>10}{'obj. agree':>11}")
-    for sw in sweeps.values():
-        print(f"{sw['points']:>7}{sw['hv']:>10.4f}{sw['hv_pymoo']:>10.4f}{sw['t']:>9.3f}"
-              f"{sw['t_warm']:>8.3f}{sw['viol']:>10.1e}{sw['agree']:>11.1e}")
-    print("  (viol./agree: the sweep's optima on NSGA-II's numpy path: max scaled constraint "
-          "violation, max relative objective difference)")
+    return GapLoss, Tracker
+
+
+def main() -> int:
+    try:
+        from pymoo.algorithms.moo.nsga2 import NSGA2
+        from pymoo.core.callback import Callback
+        from pymoo.core.problem import Problem
+        from pymoo.indicators.hv import HV
+        from pymoo.optimize import minimize
+    except ImportError:
+        print("pymoo is not installed: pip install 'oilgap[bench]' (or pip install pymoo)")
+        return 1
+
+    case = seed_case()
+    seeds = seed_points()
+    ref = default_reference_point(case, seeds)
+    lo, hi, evaluate = gap_problem_numpy(case)
+    sweeps = _sweeps(case, ref, evaluate, HV)
+
+    GapLoss, Tracker = _pymoo_classes(Problem, Callback, lo, hi, evaluate, ref)
+    _print_sweeps(ref, sweeps)
 
     def race(pop: int, seed: int, target_hv: float, t_ref: float):
         cb = Tracker(BUDGET_FACTOR * t_ref, target_hv, t_ref)

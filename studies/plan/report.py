@@ -216,11 +216,13 @@ def floor_lines(res: PlanResult) -> list[str]:
     for tag, ev in (("plan", res.plan), ("naive", res.naive)):
         f = ev.floor.get("scale")
         if f:
+            lo = ev.interval["scale"][0]
+            end = (f"its lower end {lo:.5g} is carried through the kink" if lo > 0 else
+                   "below the kink these runs do not bound it: the interval is one-sided")
             out.append(f"couette floor ({tag}): the scale's interval reaches the floor's kink "
                        f"at {f['kink']:.5g}, below which floored rows say nothing of the "
                        f"scale (jackknife sd {_fmt(f['jack_sd_below'])} in ln scale there): "
-                       f"its lower end {ev.interval['scale'][0]:.5g} is carried through the "
-                       f"kink (linearised {f['linearised_lo']:.5g}); the loop's symmetric "
+                       f"{end} (linearised {f['linearised_lo']:.5g}); the loop's symmetric "
                        "jackknife scatters more there (docs/planning.md)")
     return out
 

@@ -117,6 +117,12 @@ def test_cli_plan_then_synth_plan(tmp_path, capsys):
     df = pd.read_csv(data)
     assert df["run"].nunique() == 6 and len(df) == 6 * 200
     assert set(df["oil"]) == {"VG1000"} and "viscous_power_W" in df.columns
+    # the rig's true scale 1.1: more loss (less than 10 %: the oil heats up and thins)
+    hot = tmp_path / "rig11.csv"
+    assert main(["synth", "--plan", str(out / "plan.csv"), "--seed", "1", "--effects",
+                 "taylor_vortex_onset", "--truth-scale", "1.1", "--out", str(hot)]) == 0
+    ratio = pd.read_csv(hot)["viscous_power_W"].sum() / df["viscous_power_W"].sum()
+    assert 1.02 < ratio < 1.1
 
 
 def test_cli_plan_bad_input_is_one_line(tmp_path, capsys):
@@ -127,6 +133,11 @@ def test_cli_plan_bad_input_is_one_line(tmp_path, capsys):
     assert "zigzag" in capsys.readouterr().err
     with pytest.raises(og.InputError, match="criterion"):
         og.plan(criterion="Z")
+    assert main(["plan", "--expected-scale", "0", "--out", str(tmp_path / "z")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "scale = 0.0" in err[0] and not (tmp_path / "z").exists()
+    assert main(["synth", "--truth-scale", "1.1", "--out", str(tmp_path / "s.csv")]) == 2
+    assert "--truth-scale" in capsys.readouterr().err
     bad = tmp_path / "bad.csv"
     bad.write_text("run,order,oil,roughness_T,bath_C,profile,peak_speed_rpm,frequency_hz,"
                    "duration_s,sample_interval_s,pressure_MPa\n"

@@ -233,7 +233,7 @@ def candidate_information(settings: PlanSettings) -> CandidateSet:
         A, B = run_information(jac, s.run_code, settings.noise_W,
                                sample_variance(settings, model, spec.law(x0), dP_dw))
         blocks.append((idx, A[order], B[order], _run_stats(model)[:, order],
-                       *_floor_block(settings, model, spec, x0, order)))
+                       *_floor_block(settings, model, spec, x0, (A, B), order)))
     params = Parameters(spec.free, settings.effects, pressure)
     info = np.zeros((len(runs), len(params.names), len(params.names)))
     meat = np.zeros_like(info)
@@ -253,19 +253,19 @@ def candidate_information(settings: PlanSettings) -> CandidateSet:
 
 
 def _floor_block(settings: PlanSettings, model: ForwardModel, spec: BaseSpec, x0: np.ndarray,
-                 order: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+                 at_x0: tuple, order: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per run (in candidate order): the distance down to the Couette floor's first kink
     [ln scale] and the base information and meat just below it, by the same AD
-    (:mod:`oilgap.optim.planning.floor`)."""
+    (:mod:`oilgap.optim.planning.floor`); without a kink, those at ``x0`` (``at_x0``)."""
     s = model.samples
     q = len(spec.free)
     gaps = floor_gaps(model, spec, x0)
     if not np.isfinite(gaps).any():
-        jb, dP_dw = base_jacobian(model, spec, x0)
+        A, B = (m[:, :q, :q] for m in at_x0)
     else:
         jb, dP_dw = base_jacobian(model, spec, below_floor(x0, spec, gaps, s.run_code))
-    A, B = run_information(jb[:, :q], s.run_code, settings.noise_W,
-                           sample_variance(settings, model, spec.law(x0), dP_dw))
+        A, B = run_information(jb[:, :q], s.run_code, settings.noise_W,
+                               sample_variance(settings, model, spec.law(x0), dP_dw))
     return gaps[order], A[order], B[order]
 
 

@@ -4,6 +4,7 @@ planned runs simulated, in the loop's data format)."""
 
 from __future__ import annotations
 
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -73,7 +74,8 @@ def plan(case: DesignCase | str | Path | None = None, settings: Any = None, *,
         (eq6, power-law), ``runs`` or ``budget_h`` [h], ``noise_W`` [W],
         ``noise_speed_rpm``, ``noise_temp_K``, ``duration_s``, ``sample_interval_s`` [s],
         ``peak_speed_rpm``, ``frequency_hz``, ``run_h``, ``oil_change_h``,
-        ``temp_change_h``, ``rotor_change_h`` [h].
+        ``temp_change_h``, ``rotor_change_h`` [h], ``scale`` (the expected friction scale,
+        the plan's expansion point) [-].
 
     Returns
     -------
@@ -112,7 +114,7 @@ def plan(case: DesignCase | str | Path | None = None, settings: Any = None, *,
 
 @checked(plan=PLAN, case=CASE, effects=EFFECT_NAMES, seed=INT)
 def synth_plan(plan: str | Path | pd.DataFrame, *, case: DesignCase | str | Path | None = None,
-               effects: Any = None, seed: int = 0) -> pd.DataFrame:
+               effects: Any = None, seed: int = 0, scale: float = 1.0) -> pd.DataFrame:
     """The runs of a plan simulated by the synthetic rig (``oilgap synth --plan``).
 
     Parameters
@@ -125,6 +127,8 @@ def synth_plan(plan: str | Path | pd.DataFrame, *, case: DesignCase | str | Path
         Library effects injected at their test strengths (``name`` or ``name=strength``).
     seed : int
         Noise seed (>= 0).
+    scale : float
+        True friction scale of the simulated rig [-] (the plan's ``scale``; default 1).
 
     Returns
     -------
@@ -144,6 +148,7 @@ def synth_plan(plan: str | Path | pd.DataFrame, *, case: DesignCase | str | Path
         table = plan
     settings, runs = runs_from_table(table, str(plan) if isinstance(plan, (str, Path))
                                      else "plan")
+    settings = replace(settings, scale=scale)
     return plan_data(settings, runs, None if case is None else as_case(case),
                      _strengths(effects), seed=int(seed))
 

@@ -18,7 +18,8 @@ OPTIONS = {"oil_grades": ("--oil-grades", str), "bath_C": ("--bath-C", float),
 NUMBERS = {"runs": "runs", "budget_h": "budget_h", "noise_W": "noise_W",
            "duration_s": "duration_s", "sample_s": "sample_interval_s",
            "peak_rpm": "peak_speed_rpm", "cost_run_h": "run_h", "cost_oil_h": "oil_change_h",
-           "cost_temp_h": "temp_change_h", "cost_rotor_h": "rotor_change_h"}
+           "cost_temp_h": "temp_change_h", "cost_rotor_h": "rotor_change_h",
+           "expected_scale": "scale"}
 """Number options: argparse dest -> settings field."""
 
 

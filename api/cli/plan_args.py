@@ -38,6 +38,9 @@ def add_plan(sub, add_force) -> None:
     p.add_argument("--budget-h", type=float, help="rig time available [h]: sets the number "
                    "of runs (instead of --runs)")
     p.add_argument("--noise-W", type=float, help="power noise sd per sample [W] (default 1)")
+    p.add_argument("--expected-scale", type=float, help="the friction scale the rig is "
+                   "expected to show: the plan's expansion point (default 1, Eq. 6 as "
+                   "published; the Couette floor's kink then lies just below it)")
     p.add_argument("--duration-s", type=float, help="run length [s] (default 300)")
     p.add_argument("--sample-s", type=float, help="sample step [s] (default 0.2)")
     p.add_argument("--peak-rpm", type=float, help="peak speed [rpm] (default 3000)")
@@ -60,3 +63,5 @@ def add_synth_plan(p) -> None:
                    "(oilgap plan) instead of the seed's experiment; writes viscous_power_W")
     p.add_argument("--effects", metavar="NAME[=S],...", help="with --plan: inject these "
                    "library effects (at their test strength unless =S)")
+    p.add_argument("--truth-scale", type=float, help="with --plan: the true friction scale "
+                   "of the simulated rig (default 1; the plan's --expected-scale)")

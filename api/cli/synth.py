@@ -26,6 +26,8 @@ def run(args: argparse.Namespace) -> int:
         return _plan_run(args)
     if getattr(args, "effects", None) is not None:
         raise InputError("--effects", args.effects, "only with --plan (else --effect NAME)")
+    if getattr(args, "truth_scale", None) is not None:
+        raise InputError("--truth-scale", args.truth_scale, "only with --plan")
     if args.strength is not None and args.effect is None:
         raise InputError("--strength", args.strength, "needs --effect NAME")
     if args.seed < 0:
@@ -62,7 +64,8 @@ def _plan_run(args: argparse.Namespace) -> int:
     if args.seed < 0:
         raise InputError("--seed", args.seed, "an integer >= 0 is required (the noise seed)")
     check_out_file(args.out, getattr(args, "force", False))
-    df = synth_plan(args.plan, case=args.case, effects=args.effects, seed=args.seed)
+    df = synth_plan(args.plan, case=args.case, effects=args.effects, seed=args.seed,
+                    scale=1.0 if args.truth_scale is None else args.truth_scale)
     try:
         path = write_data_csv(df, args.out)
     except OSError as e:

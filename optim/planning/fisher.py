@@ -117,8 +117,10 @@ def base_jacobian(model: ForwardModel, spec: BaseSpec, x: np.ndarray,
         The runs' samples (speed [rad/s], nu [m^2/s], rho [kg/m^3], T [-], gap [m]).
     spec : BaseSpec
         Free parameters (``eq6`` or ``power-law`` base).
-    x : array
-        Expansion point in the solver's unknowns (ln scale, gamma, ...) [-].
+    x : array, shape (q,) or (n, q)
+        Expansion point in the solver's unknowns (ln scale, gamma, ...) [-], one for all
+        samples or one per sample (e.g. just below the Couette floor's kink of each run,
+        :func:`~.floor.below_floor`).
     pressure_Pa : array, optional
         Gauge pressure of each sample [Pa]; given, a last column for the
         pressure-viscosity deviation [W per 1/GPa] is added.
@@ -138,7 +140,8 @@ def base_jacobian(model: ForwardModel, spec: BaseSpec, x: np.ndarray,
     sym = {}
     for i, name in enumerate(spec.free):
         sym[name] = ca.exp(z[i]) if name in LOG_PARAMS else z[i]
-    law = symbolic_law(spec.law(x), {k: v for k, v in sym.items()
+    x = np.asarray(x, float)
+    law = symbolic_law(spec.law(x if x.ndim == 1 else x[0]), {k: v for k, v in sym.items()
                                      if k in LAW_FIELDS[spec.base]})
     geo = joint_geometry(model.case, roughness_T=rough, gap1_m=gap)
     nu_p = nu if pressure_Pa is None else nu * ca.exp(d_alpha * PER_GPA * p)  # Barus
@@ -150,13 +153,14 @@ def base_jacobian(model: ForwardModel, spec: BaseSpec, x: np.ndarray,
                       [ca.horzcat(ca.jacobian(power, params), ca.jacobian(power, w))])
     s = model.samples
     n = s.n
-    at = np.concatenate([np.asarray(x, float), [0.0] if pressure_Pa is not None else []])
+    at = np.broadcast_to(x, (n, x.shape[-1]))
+    at = np.column_stack([at, np.zeros(n)]) if pressure_Pa is not None else at
     pres = np.zeros(n) if pressure_Pa is None else np.asarray(pressure_Pa, float)
-    out = jac.map(n)(np.repeat(at[:, None], n, axis=1), np.abs(s.omega)[None, :],
+    out = jac.map(n)(np.ascontiguousarray(at.T), np.abs(s.omega)[None, :],
                      s.nu_m2_s[None, :], s.density_kg_m3[None, :],
                      np.broadcast_to(s.roughness_T, (n,))[None, :],
                      np.broadcast_to(s.gap1_m, (n,))[None, :], pres[None, :])
-    out = np.asarray(out, dtype=float).reshape(n, len(at) + 1)
+    out = np.asarray(out, dtype=float).reshape(n, at.shape[1] + 1)
     return out[:, :-1], out[:, -1]
 
 

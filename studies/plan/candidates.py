@@ -13,7 +13,7 @@ and chosen effects, rehearses a plan (:func:`plan_data`).
 from __future__ import annotations
 
 import itertools
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 import numpy as np
 import pandas as pd
@@ -30,9 +30,11 @@ from oilgap.model.units import rad_s_to_rpm, rpm_to_rad_s
 from oilgap.optim.calibration.forward import ForwardModel
 from oilgap.optim.calibration.spec import START_VALUES, BaseSpec, decide_spec
 from oilgap.optim.planning.fisher import Parameters, base_jacobian, effect_columns, run_information
+from oilgap.optim.planning.floor import below_floor, floor_gaps
 from oilgap.studies.rigs.synth import (
     DEFAULT_STRENGTH,
     SynthConfig,
+    seed_truth_law,
     simulate_truth,
     synthesize,
 )
@@ -74,7 +76,8 @@ def candidate_runs(settings: PlanSettings) -> list[Candidate]:
 def _config(settings: PlanSettings, case: DesignCase, oils, roughness, bath_C, profile,
             effects=None, noise=True) -> SynthConfig:
     kw = {} if noise else {"noise_power_W": 0.0, "noise_speed_rpm": 0.0, "noise_temp_K": 0.0}
-    return SynthConfig(case=case, oils=tuple(oils), roughness=tuple(roughness),
+    truth = None if settings.scale == 1.0 else replace(seed_truth_law(case), scale=settings.scale)
+    return SynthConfig(case=case, oils=tuple(oils), roughness=tuple(roughness), truth=truth,
                        n_samples=settings.n_samples, sample_interval_s=settings.sample_interval_s,
                        peak_speed_rpm=settings.peak_speed_rpm,
                        frequency_hz=settings.frequency_hz, ambient_C=bath_C, profile=profile,
@@ -173,6 +176,12 @@ class CandidateSet:
     re_peak, ta_peak, temp_mean : arrays
         Per candidate: largest region-1 Couette Reynolds and Taylor numbers [-] and mean
         oil temperature [degC] of its simulated run.
+    floor_gap : array, shape (m,)
+        Per candidate: distance in ln scale from the expansion point down to the Couette
+        floor's first kink (:func:`~oilgap.optim.planning.floor.floor_gaps`; inf: none).
+    floor_info, floor_meat : arrays, shape (m, q, q)
+        The base block of ``info`` and ``meat`` just below that kink, where the floored
+        rows carry no information on the scale (equal to ``info``'s where no kink).
     """
 
     runs: list[Candidate]
@@ -186,6 +195,9 @@ class CandidateSet:
     re_peak: np.ndarray
     ta_peak: np.ndarray
     temp_mean: np.ndarray
+    floor_gap: np.ndarray
+    floor_info: np.ndarray
+    floor_meat: np.ndarray
 
 
 def candidate_information(settings: PlanSettings) -> CandidateSet:
@@ -211,7 +223,8 @@ def candidate_information(settings: PlanSettings) -> CandidateSet:
         model = ForwardModel(s, case, data.oils)
         if spec is None:
             spec, _ = decide_spec(model.samples, model.geometry, case, settings.base)
-            x0 = spec.start({**START_VALUES, "gamma": case.friction.gamma})
+            x0 = spec.start({**START_VALUES, "scale": settings.scale,
+                             "gamma": case.friction.gamma})
         jb, dP_dw = base_jacobian(model, spec, x0,
                                   np.full(s.n, p * 1e6) if pressure else None)
         je, why = effect_columns(model, spec.law(x0), settings.effects)
@@ -219,19 +232,41 @@ def candidate_information(settings: PlanSettings) -> CandidateSet:
         order = np.argsort([int(n.split("-")[0][1:]) for n in s.run_names])
         A, B = run_information(jac, s.run_code, settings.noise_W,
                                sample_variance(settings, model, spec.law(x0), dP_dw))
-        blocks.append((idx, A[order], B[order], _run_stats(model)[:, order]))
+        blocks.append((idx, A[order], B[order], _run_stats(model)[:, order],
+                       *_floor_block(settings, model, spec, x0, (A, B), order)))
     params = Parameters(spec.free, settings.effects, pressure)
     info = np.zeros((len(runs), len(params.names), len(params.names)))
     meat = np.zeros_like(info)
     stats = np.zeros((3, len(runs)))
-    for idx, A, B, st in blocks:
+    q = len(spec.free)
+    gap, finfo = np.zeros(len(runs)), np.zeros((len(runs), q, q))
+    fmeat = np.zeros_like(finfo)
+    for idx, A, B, st, g, fA, fB in blocks:
         info[idx], meat[idx] = A, B
         stats[:, idx] = st
+        gap[idx], finfo[idx], fmeat[idx] = g, fA, fB
     ref = np.array([EFFECTS[e].coefficient_from_strength(DEFAULT_STRENGTH[e])
                     for e in settings.effects])
     return CandidateSet(runs=runs, info=info, meat=meat, params=params, spec=spec, x0=x0,
                         notes=why, ref=ref, re_peak=stats[0], ta_peak=stats[1],
-                        temp_mean=stats[2])
+                        temp_mean=stats[2], floor_gap=gap, floor_info=finfo, floor_meat=fmeat)
+
+
+def _floor_block(settings: PlanSettings, model: ForwardModel, spec: BaseSpec, x0: np.ndarray,
+                 at_x0: tuple, order: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Per run (in candidate order): the distance down to the Couette floor's first kink
+    [ln scale] and the base information and meat just below it, by the same AD
+    (:mod:`oilgap.optim.planning.floor`); without a kink, those at ``x0`` (``at_x0``)."""
+    s = model.samples
+    q = len(spec.free)
+    gaps = floor_gaps(model, spec, x0)
+    if not np.isfinite(gaps).any():
+        A, B = (m[:, :q, :q] for m in at_x0)
+    else:
+        jb, dP_dw = base_jacobian(model, spec, below_floor(x0, spec, gaps, s.run_code))
+        A, B = run_information(jb[:, :q], s.run_code, settings.noise_W,
+                               sample_variance(settings, model, spec.law(x0), dP_dw))
+    return gaps[order], A[order], B[order]
 
 
 def sample_variance(settings: PlanSettings, model: ForwardModel, law, dP_dw: np.ndarray

@@ -38,29 +38,34 @@ def rehearse(res: PlanResult, seeds=(0, 1, 2), inject: dict | None = None,
     Returns
     -------
     DataFrame
-        Per plan and parameter: the predicted width (the loop's expected jackknife
-        interval), the widths found per seed, their RMS and the ratio RMS / predicted.
+        Per plan and parameter: the predicted interval and width (the loop's expected
+        jackknife interval, its lower end carried through the Couette floor's kink where
+        it reaches it), the loop's estimate and interval width per seed, the widths' RMS
+        and the ratio RMS / predicted.
     """
     rows = []
     for tag, ev in (("plan", res.plan), ("naive", res.naive)):
         widths = {k: [] for k in res.candidates.spec.free}
+        values = {k: [] for k in widths}
         for seed in seeds:
             df = plan_data(res.settings, ev.runs, res.settings.case, inject, seed=seed)
             est = LoopEstimator(case=res.settings.case, **loop_options).fit(df)
             for k in widths:
                 ci = est.calibration_ci_.get(k)
                 widths[k].append(ci[1] - ci[0] if isinstance(ci, list) else math.nan)
-        rows += _rows(tag, ev, widths)
+                values[k].append(float(est.calibration_[k]))
+        rows += _rows(tag, ev, widths, values)
     return pd.DataFrame(rows)
 
 
-def _rows(tag: str, ev: PlanEvaluation, widths: dict) -> list[dict]:
+def _rows(tag: str, ev: PlanEvaluation, widths: dict, values: dict) -> list[dict]:
     out = []
     for k, w in widths.items():
         lo, hi = ev.interval[k]
         pred = hi - lo
         rms = float(np.sqrt(np.nanmean(np.square(w))))
-        out.append({"plan": tag, "parameter": k, "predicted_width": pred,
+        out.append({"plan": tag, "parameter": k, "predicted_lo": lo, "predicted_hi": hi,
+                    "predicted_width": pred, "loop_values": values[k],
                     "loop_widths": [float(x) for x in w], "loop_rms_width": rms,
                     "ratio": rms / pred if pred > 0 else math.nan})
     return out

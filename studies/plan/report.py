@@ -164,7 +164,7 @@ def plan_json(res: PlanResult) -> dict:
     """Everything the plan found, JSON-able."""
     def ev_dict(ev: PlanEvaluation) -> dict:
         return {"runs": [r.label for r in ev.runs], "sd": ev.sd, "jackknife_sd": ev.jack_sd,
-                "interval95": ev.interval,
+                "interval95": ev.interval, "couette_floor": ev.floor,
                 "detectable": ev.detectable, "explained_by_base": ev.explained,
                 "confounded": ev.confounded, "cost_h": ev.cost_h, "changes": ev.changes}
 
@@ -178,6 +178,7 @@ def plan_json(res: PlanResult) -> dict:
             "rounded_efficiency_lower_bound": res.d_efficiency,
             "excluded_from_design": res.excluded, "plan": ev_dict(res.plan),
             "naive": ev_dict(res.naive), "noise_W": res.settings.noise_W,
+            "expected_scale": res.settings.scale,
             "candidates": len(res.candidates.runs)}
 
 
@@ -209,6 +210,23 @@ def figure(res: PlanResult, path: Path) -> None:
     save_figure(fig, path)
 
 
+def floor_lines(res: PlanResult) -> list[str]:
+    """Where a plan's scale interval reaches the Couette floor's kink, what the plan did."""
+    out = []
+    for tag, ev in (("plan", res.plan), ("naive", res.naive)):
+        f = ev.floor.get("scale")
+        if f:
+            lo = ev.interval["scale"][0]
+            end = (f"its lower end {lo:.5g} is carried through the kink" if lo > 0 else
+                   "below the kink these runs do not bound it: the interval is one-sided")
+            out.append(f"couette floor ({tag}): the scale's interval reaches the floor's kink "
+                       f"at {f['kink']:.5g}, below which floored rows say nothing of the "
+                       f"scale (jackknife sd {_fmt(f['jack_sd_below'])} in ln scale there): "
+                       f"{end} (linearised {f['linearised_lo']:.5g}); the loop's symmetric "
+                       "jackknife scatters more there (docs/planning.md)")
+    return out
+
+
 def summary_lines(res: PlanResult) -> list[str]:
     """The terminal output: the headline, then tables and what stays confounded."""
     lines = headline(res)
@@ -221,7 +239,8 @@ def summary_lines(res: PlanResult) -> list[str]:
               runs.to_string(index=False)]
     lines += ["", "expected parameters: sd of the least-squares estimate; the loop's 95 % "
               "jackknife interval (its expected sd, t quantile)",
-              pf.to_string(index=False, float_format=lambda x: f"{x:.5g}"), "",
+              pf.to_string(index=False, float_format=lambda x: f"{x:.5g}"),
+              *floor_lines(res), "",
               "smallest detectable effect coefficient (library units)",
               effects_frame(res).to_string(index=False, float_format=lambda x: f"{x:.3g}"),
               "", "confounded"]
@@ -230,7 +249,8 @@ def summary_lines(res: PlanResult) -> list[str]:
     lines += conf or ["nothing: every parameter and effect is separated on both plans"]
     st = res.settings
     lines += ["", f"defaults    noise {st.noise_W:g} W, {st.noise_speed_rpm:g} rpm, "
-              f"{st.noise_temp_K:g} K per sample; runs of {st.duration_s:g} s every "
+              f"{st.noise_temp_K:g} K per sample; expected scale {st.scale:g}; runs of "
+              f"{st.duration_s:g} s every "
               f"{st.sample_interval_s:g} s at {st.peak_speed_rpm:g} rpm peak; costs "
               f"{st.run_h:g} h per run + duration, {st.oil_change_h:g} h per oil change, "
               f"{st.temp_change_h:g} h per temperature change, {st.rotor_change_h:g} h per "

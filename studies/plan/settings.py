@@ -52,6 +52,11 @@ class PlanSettings:
         Library effects the plan must be able to detect.
     base : {"eq6", "power-law"}
         The base law the loop will fit.
+    scale : float
+        The scale the rig is expected to show [-]: the plan's expansion point and the
+        synthetic rig's truth when the plan is rehearsed (default 1: exact Eq. 6, whose
+        laminar annulus then sits 0.09 % above the Couette floor; a real rig's loss is
+        usually above that, from eccentricity and end flows, docs/planning.md).
     noise_W : float
         Sd of the power noise per sample [W].
     noise_speed_rpm, noise_temp_K : float
@@ -84,6 +89,7 @@ class PlanSettings:
     pressures_MPa: tuple[float, ...] = (0.0,)
     effects: tuple[str, ...] = PLAN_EFFECTS
     base: str = "eq6"
+    scale: float = 1.0
     noise_W: float = 1.0
     noise_speed_rpm: float = 2.0
     noise_temp_K: float = 0.05
@@ -131,6 +137,7 @@ class PlanSettings:
         _range("sample_interval_s", self.sample_interval_s, 1e-3, 60.0, "1 ms .. 60 s")
         _range("duration_s", self.duration_s, 20 * self.sample_interval_s, 1e5,
                f"at least 20 samples ({20 * self.sample_interval_s:g} s) .. 1e5 s")
+        _range("scale", self.scale, 0.1, 10.0, "an expected scale 0.1 .. 10")
         _range("noise_W", self.noise_W, 1e-6, 1e4, "a noise sd > 0 W")
         _range("noise_speed_rpm", self.noise_speed_rpm, 0.0, 1e3, "a noise sd >= 0 rpm")
         _range("noise_temp_K", self.noise_temp_K, 0.0, 10.0, "a noise sd >= 0 K")

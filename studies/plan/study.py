@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 import numpy as np
 from scipy import stats
@@ -46,6 +46,7 @@ from oilgap.optim.planning.design import (
     normalise,
     optimal_weights,
 )
+from oilgap.optim.planning.floor import floored_half_width
 
 from .candidates import Candidate, CandidateSet, candidate_information
 from .settings import PlanSettings
@@ -74,6 +75,7 @@ class PlanEvaluation:
     log_det: float
     info: np.ndarray
     meat: np.ndarray
+    floor: dict = field(default_factory=dict)
 
 
 @dataclass
@@ -179,21 +181,14 @@ def evaluate(cs: CandidateSet, runs: list[Candidate], settings: PlanSettings
     sd = base_sd(M, q, B)
     idx = [index[r] for r in runs]
     folds = grouped_folds(np.arange(len(runs)), MAX_FOLDS)
-    jsd = jackknife_sd(cs.info[idx][:, :q, :q], cs.meat[idx][:, :q, :q], folds,
-                       _held(cs, runs, folds))
+    held = _held(cs, runs, folds)
+    jsd = jackknife_sd(cs.info[idx][:, :q, :q], cs.meat[idx][:, :q, :q], folds, held)
     g = min(len(runs), MAX_FOLDS)
     t = stats.t.ppf(0.975, g - 1) if g >= 3 else math.inf
-    vals = cs.spec.values(cs.x0)
-    sds, jsds, ivs = {}, {}, {}
-    for i, k in enumerate(cs.spec.free):
-        sds[k], jsds[k] = float(sd[i]), float(jsd[i])
-        h = t * jsd[i]
-        if not math.isfinite(h):
-            ivs[k] = [math.nan, math.nan]
-        elif k in LOG_PARAMS:
-            ivs[k] = [vals[k] * math.exp(-h), vals[k] * math.exp(h)]
-        else:
-            ivs[k] = [vals[k] - h, vals[k] + h]
+    sds = {k: float(sd[i]) for i, k in enumerate(cs.spec.free)}
+    jsds = {k: float(jsd[i]) for i, k in enumerate(cs.spec.free)}
+    ivs, floor = _intervals(cs, idx, jsd, t, jackknife_sd(
+        cs.floor_info[idx], cs.floor_meat[idx], folds, held))
     size, r2 = detectable_sizes(M, q, B)
     eff = cs.params.names[q:]
     ordered = sequence(runs, settings)
@@ -204,7 +199,33 @@ def evaluate(cs: CandidateSet, runs: list[Candidate], settings: PlanSettings
                           explained=dict(zip(eff, map(float, r2), strict=True)),
                           confounded=confounding(M, cs.params.names), cost_h=cost,
                           changes=ch, log_det=float(ld) if sign > 0 else -math.inf,
-                          info=M, meat=B)
+                          info=M, meat=B, floor=floor)
+
+
+def _intervals(cs: CandidateSet, idx: list[int], jsd: np.ndarray, t: float,
+               jsd_floor: np.ndarray) -> tuple[dict, dict]:
+    """The loop's expected 95 % interval of each base parameter (the jackknife's expected
+    sd times its t quantile; C and the scale in log space), the scale's lower half
+    carried through the Couette floor's kink where it reaches it
+    (:func:`~oilgap.optim.planning.floor.floored_half_width`); and, if it does, what the
+    floor did (``scale``: the kink's scale, the sd below it, the linearised lower bound)."""
+    vals = cs.spec.values(cs.x0)
+    ivs, floor = {}, {}
+    gap = float(cs.floor_gap[idx].min()) if len(idx) else math.inf
+    for i, k in enumerate(cs.spec.free):
+        h = t * jsd[i]
+        if not math.isfinite(h):
+            ivs[k] = [math.nan, math.nan]
+            continue
+        lo = floored_half_width(h, gap, jsd[i], jsd_floor[i]) if k == "scale" else h
+        if k in LOG_PARAMS:
+            ivs[k] = [vals[k] * math.exp(-lo), vals[k] * math.exp(h)]
+        else:
+            ivs[k] = [vals[k] - lo, vals[k] + h]
+        if lo != h:
+            floor[k] = {"kink": vals[k] * math.exp(-gap), "jack_sd_below": float(jsd_floor[i]),
+                        "linearised_lo": vals[k] * math.exp(-h)}
+    return ivs, floor
 
 
 def _held(cs: CandidateSet, runs: list[Candidate], folds: np.ndarray) -> dict:

@@ -237,10 +237,7 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     regions = _regions(model, rows, idx)
     out = np.empty((len(t_k), len(regions)))
     for j, reg in enumerate(regions):
-        mean = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, model.law,
-                                 model.film, b)
-        if fs is not None:
-            mean = _scaled_mean(mean, fs, reg, nodes, model, nu_c, rho_c, b)
+        mean = _scaled_mean(fs, reg, nodes, model, nu_c, rho_c, b)
         if gam is not None and not np.all(np.asarray(reg.roughness_T) == 1.0):
             t = reg.roughness_T
             mean = groove_roughness_factor(t[:, 0] if np.ndim(t) else t, gam) * mean
@@ -257,23 +254,23 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     return out, bearing
 
 
-def _scaled_mean(mean, fs, reg, nodes, model: RowModel, nu_c, rho_c, b):
-    """The region's mean power at the rows' friction scales [W]: ``fs`` times the mean
-    (Eq. 6 is linear in its scale), except where the Couette floor applies
-    (:func:`~oilgap.model.taylor_couette.couette_floor_applies`: a total scale below 1
-    under the Couette laminar law,
-    :func:`~oilgap.model.taylor_couette.couette_floor_form`), where those rows are
-    evaluated with their own scale and the floor node by node, as the scalar path does
-    (issue 27 item 4)."""
+def _scaled_mean(fs, reg, nodes, model: RowModel, nu_c, rho_c, b):
+    """The region's mean power at the rows' friction scales [W] (``fs`` None: the law's).
+
+    Where the Couette floor can apply (:func:`~oilgap.model.taylor_couette.couette_floor_form`:
+    the Couette laminar law, a form with a scale), the law carries each row's scale
+    ``scale fs``, as the scalar path's (:func:`~oilgap.model.uncertain.inputs.apply_inputs`),
+    so that a row below 1 is floored node by node (issue 27 item 4) and a row at or above
+    1 is ``scale fs C_m`` (the floor changes nothing there, the laminar law being at least
+    Couette): one evaluation of C_m for all rows. Otherwise ``fs`` times the mean (the
+    power law's C: the mean is linear in it)."""
     law = model.law
-    low = fs * law.scale < 1.0 if isinstance(law.scale, (int, float)) else None
-    if low is None or not np.any(low) or not couette_floor_form(law):
-        return fs * mean
+    if fs is None or not couette_floor_form(law) or not isinstance(law.scale, (int, float)):
+        mean = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, law, model.film, b)
+        return mean if fs is None else fs * mean
     rows_law = copy.copy(law)  # the law with one scale per row (a frozen dataclass's copy)
     object.__setattr__(rows_law, "scale", (law.scale * fs)[:, None])
-    floored = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, rows_law,
-                                model.film, b)
-    return np.where(low, floored, fs * mean)
+    return region_mean_power(reg, nodes, model.weights, nu_c, rho_c, rows_law, model.film, b)
 
 
 def _oil(model: RowModel, rows: RowValues, t_k, p, idx):

@@ -53,8 +53,10 @@ from .rows import RowModel, RowValues, row_balance, row_model, row_total
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from ..case import DesignCase
 
-BLOCK_ROWS = 4096
-"""Rows evaluated together [-]: (rows x nodes) arrays of a block stay in the CPU's cache."""
+BLOCK_ROWS = 2048
+"""Rows evaluated together [-]: a block's (rows x nodes) arrays (2048 x 26 doubles, 0.4 MB)
+stay in a core's L2 cache (2 MB on the benchmark's machine; 4096 rows spilled out of it and
+ran 1.5-2 times slower, docs/benchmarks.md)."""
 
 
 def broadcast_inputs(inputs: Mapping[str, Any]) -> tuple[dict[str, np.ndarray], tuple]:

@@ -34,12 +34,12 @@ References
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..bearing.friction import bearing_mean_power, bearing_moment_terms
+from ..bearing.friction import bearing_mean_power, bearing_moment_terms, skf_speed_terms
 from ..elements import BearingElement, joint_elements
 from ..fluids import ScaledFluid
 from ..joint_loss import case_film
@@ -53,7 +53,7 @@ from ..skin_friction import groove_roughness_factor
 from ..taylor_couette import couette_floor_form
 from ..thermal import steady_temperature
 from ..thermal_modes import applies_film
-from ..units import celsius_to_kelvin
+from ..units import celsius_to_kelvin, rad_s_to_rpm
 from ..viscous_loss import weighted_mean
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
@@ -97,6 +97,9 @@ class RowValues:
     regions : tuple of Region or None
         Per-row geometry: each Region's R, delta, L [m] and T [-] as arrays (None: the
         case's regions).
+    memo : dict
+        What the rows' losses keep between temperatures: the bearing's speed terms of
+        every row (:func:`_speed_terms`); filled on first use.
     """
 
     n: int
@@ -112,6 +115,7 @@ class RowValues:
     speed_factor: Any = None
     sea_temp_C: Any = None
     regions: tuple[Region, ...] | None = None
+    memo: dict = field(default_factory=dict, compare=False, repr=False)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -246,7 +250,8 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     if spec is None:
         bearing = np.zeros(len(t_k))
     else:
-        bearing = _bearing(spec, nodes, model.weights, nu_c, _at(rows.drag_scale, idx))
+        bearing = _bearing(spec, nodes, model.weights, nu_c, _at(rows.drag_scale, idx),
+                           _speed_terms(model, rows, idx))
     for element in joint_elements(model.case):  # a linear drive's screw, rod guide, passages
         if not isinstance(element, BearingElement):
             bearing = bearing + np.broadcast_to(np.asarray(element.mean_power(
@@ -286,12 +291,35 @@ def _oil(model: RowModel, rows: RowValues, t_k, p, idx):
                                                             fl.barus_1_Pa)
 
 
-def _bearing(spec, nodes, weights, nu_c, drag):
-    """Cycle-mean bearing power [W] per row, SKF's drag terms times the rows' factor."""
-    if drag is None or spec.model != "skf":
+def _speed_terms(model: RowModel, rows: RowValues, idx):
+    """The bearing's speed-only terms (:func:`~oilgap.model.bearing.friction.skf_speed_terms`)
+    at rows ``idx``: evaluated once for all rows and kept in ``rows.memo`` (a row's speeds
+    do not change with the temperature a balance tries), the same numbers as evaluated
+    afresh; None for a model without them (Palmgren's)."""
+    spec = model.case.bearing
+    if spec.model != "skf":
+        return None
+    sf = rows.speed_factor
+    per_row = sf is not None and np.ndim(sf) > 0
+    terms = rows.memo.get("skf_speed")
+    if terms is None:
+        nodes = model.nodes if sf is None else (np.asarray(sf)[:, None] if per_row
+                                                else sf) * model.nodes
+        terms = skf_speed_terms(spec, rad_s_to_rpm(np.abs(nodes)))
+        rows.memo["skf_speed"] = terms
+    return {k: np.asarray(v)[idx] for k, v in terms.items()} if per_row else terms
+
+
+def _bearing(spec, nodes, weights, nu_c, drag, speed):
+    """Cycle-mean bearing power [W] per row: :func:`bearing_mean_power`'s operations (the
+    speed terms ``speed`` given), SKF's drag terms times the rows' factor ``drag``."""
+    if spec.model != "skf":
         return np.broadcast_to(np.asarray(bearing_mean_power(spec, nodes, weights, nu_c),
                                           dtype=float), nu_c.shape[:1])
-    terms = bearing_moment_terms(spec, nodes, nu_c)
+    terms = bearing_moment_terms(spec, nodes, nu_c, speed)
+    if drag is None:  # bearing_mean_power: weighted_mean(bearing_power)
+        return np.broadcast_to(weighted_mean(sum(terms.values()) * np.abs(nodes), weights),
+                               nu_c.shape[:1])
     drag_m = sum(terms.pop(k) for k in _DRAG_TERMS)
     moment = sum(terms.values()) + drag * drag_m
     return weighted_mean(moment * np.abs(nodes), weights)

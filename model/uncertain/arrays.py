@@ -53,10 +53,29 @@ from .rows import RowModel, RowValues, row_balance, row_model, row_total
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from ..case import DesignCase
 
-BLOCK_ROWS = 2048
-"""Rows evaluated together [-]: a block's (rows x nodes) arrays (2048 x 26 doubles, 0.4 MB)
-stay in a core's L2 cache (2 MB on the benchmark's machine; 4096 rows spilled out of it and
-ran 1.5-2 times slower, docs/benchmarks.md)."""
+BLOCK_ROWS = 16384
+"""Rows whose balance is solved together [-] (one iteration's bookkeeping, the rows left
+for its last steps, and the roots' predictions are shared by this many)."""
+
+EVAL_ROWS = 2048
+"""Rows whose loss is evaluated in one call [-]: the (rows x nodes) arrays of a call (2048 x
+26 doubles, 0.4 MB) stay in a core's L2 cache (2 MB on the benchmark's machine; 4096 rows
+spilled out of it and ran 1.5-2 times slower, docs/benchmarks.md)."""
+
+
+def _total(model: RowModel, rows: RowValues):
+    """The loss [W] of rows ``i`` at temperatures ``t`` [degC]: :func:`.rows.row_total` in
+    calls of at most :data:`EVAL_ROWS` rows (each row's loss is its own: the same
+    numbers)."""
+    def power(t: np.ndarray, i: np.ndarray) -> np.ndarray:
+        if i.size <= EVAL_ROWS:
+            return row_total(model, rows, t, i)
+        out = np.empty(i.size)
+        for s in range(0, i.size, EVAL_ROWS):
+            out[s:s + EVAL_ROWS] = row_total(model, rows, t[s:s + EVAL_ROWS],
+                                             i[s:s + EVAL_ROWS])
+        return out
+    return power
 
 
 def broadcast_inputs(inputs: Mapping[str, Any]) -> tuple[dict[str, np.ndarray], tuple]:
@@ -174,7 +193,7 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     are marked there (their loss NaN) for the caller to solve together."""
     rows = _row_values(case, arrs, model)
     if not uses_balance(mode):
-        return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
+        return _total(model, rows)(rows.oil_temp_C, np.arange(rows.n))
     th = case.thermal
     ok = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W < MAX_OIL_TEMP_C
     out = np.full(rows.n, np.nan)
@@ -188,7 +207,7 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
         return out
     if not fallback:
         base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
-        temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
+        temps, p, ok = root_balance(_total(model, rows), base,
                                     th.resistance_K_W, features=_features(rows),
                                     predictor=predictor)
         if back is not None:
@@ -250,7 +269,7 @@ def _predictor(case: DesignCase, mode: str, model: RowModel,
     base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
     keep = np.flatnonzero(base < MAX_OIL_TEMP_C)
     with np.errstate(all="ignore"):
-        return fit_predictor(lambda t, i: row_total(model, rows, t, i), base,
+        return fit_predictor(_total(model, rows), base,
                              th.resistance_K_W, _features(rows), keep)
 
 

@@ -65,8 +65,8 @@ spilled out of it and ran 1.5-2 times slower, docs/benchmarks.md)."""
 
 def _total(model: RowModel, rows: RowValues):
     """The loss [W] of rows ``i`` at temperatures ``t`` [degC]: :func:`.rows.row_total` in
-    calls of at most :data:`EVAL_ROWS` rows (each row's loss is its own: the same
-    numbers)."""
+    calls of at most :data:`EVAL_ROWS` rows (each row's loss is its own; the cycle mean's
+    matrix-vector product may round a row by its place in a call, 1 ulp)."""
     def power(t: np.ndarray, i: np.ndarray) -> np.ndarray:
         if i.size <= EVAL_ROWS:
             return row_total(model, rows, t, i)

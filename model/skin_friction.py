@@ -245,14 +245,16 @@ def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     Bilgen & Boulos [1]; Pyrhönen et al. [2]; seed paper (Eq. 6) [3].
     """
     if np.ndim(reynolds) and not m.is_symbolic(reynolds, gap_ratio, alpha):
-        k = np.zeros(np.shape(reynolds), np.intp)  # numpy: each point's own branch only,
-        for re_k in REGIME_BOUNDARIES_RE:  # the four-branch form below to 1e-15
-            k += reynolds >= re_k  # NaN: branch 0, and a NaN C_m as before
-        c, beta = (np.take(col, k) for col in _BB_TABLE)
+        # numpy: each point's own branch only (the four-branch form below to 1e-15), its
+        # number counted in bytes; NaN: branch 0, and a NaN C_m as before
+        k = (reynolds >= REGIME_BOUNDARIES_RE[0]).view(np.uint8)
+        for re_k in REGIME_BOUNDARIES_RE[1:]:
+            k += (reynolds >= re_k).view(np.uint8)
+        c, beta = (np.take(col, k.astype(np.intp)) for col in _BB_TABLE)
         # Re^beta as exp(beta ln Re): numpy's power with an array of exponents has no
         # SIMD loop (5-8 times slower); equal to it within 1e-15 relative
         re_beta = np.exp(np.multiply(beta, np.log(reynolds)))
-        np.divide(1.0, reynolds, out=re_beta, where=beta == -1.0)  # as numpy's Re**-1.0
+        np.copyto(re_beta, np.divide(1.0, reynolds), where=k == 0)  # as numpy's Re**-1.0
         return power_law_cm(re_beta, gap_ratio, c, alpha, 1.0)
     b = [power_law_cm(reynolds, gap_ratio, C, alpha, beta) for C, beta in BILGEN_BOULOS_BRANCHES]
     r1, r2, r3 = REGIME_BOUNDARIES_RE

@@ -306,6 +306,8 @@ def replenishment_factor(speed_rpm, nu_cSt, d_mm, D_mm, k_rs, k_z=3.1):
     float, array or CasADi expression
         phi_rs [-].
     """
+    if isinstance(k_rs, (int, float)) and k_rs == 0.0:  # flooded: exp(0), exactly 1
+        return 1.0
     return m.exp(-k_rs * nu_cSt * speed_rpm * (d_mm + D_mm)
                  * math.sqrt(k_z / (2.0 * (D_mm - d_mm))))
 

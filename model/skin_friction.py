@@ -61,9 +61,6 @@ BILGEN_BOULOS_BRANCHES = ((10.0, -1.0), (2.00, -0.6), (1.03, -0.5), (0.065, -0.2
 BILGEN_BOULOS_ALPHA = 0.3
 """Gap-ratio exponent alpha of every branch of Eq. 6 [1]."""
 
-_BB_TABLE = tuple(np.array(col) for col in zip(*BILGEN_BOULOS_BRANCHES, strict=True))
-"""(C, beta) of Eq. 6's branches as arrays, indexed by branch (numpy's path)."""
-
 BRANCH_C = tuple(c for c, _ in BILGEN_BOULOS_BRANCHES)
 """Default C_k of the ``"branches"`` form: Eq. 6's (10, 2.00, 1.03, 0.065) [1]."""
 
@@ -245,15 +242,11 @@ def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     Bilgen & Boulos [1]; Pyrhönen et al. [2]; seed paper (Eq. 6) [3].
     """
     if np.ndim(reynolds) and not m.is_symbolic(reynolds, gap_ratio, alpha):
-        # numpy: each point's own branch only (the four-branch form below to 1e-15), its
-        # number counted in bytes; NaN: branch 0, and a NaN C_m as before
-        k = (reynolds >= REGIME_BOUNDARIES_RE[0]).view(np.uint8)
-        for re_k in REGIME_BOUNDARIES_RE[1:]:
-            k += (reynolds >= re_k).view(np.uint8)
-        c, beta = (np.take(col, k.astype(np.intp)) for col in _BB_TABLE)
-        # Re^beta as exp(beta ln Re): numpy's power with an array of exponents has no
-        # SIMD loop (5-8 times slower); equal to it within 1e-15 relative
-        re_beta = np.exp(np.multiply(beta, np.log(reynolds)))
+        k = (reynolds >= REGIME_BOUNDARIES_RE[0]).view(np.uint8)  # numpy: each point's
+        for re_k in REGIME_BOUNDARIES_RE[1:]:  # branch only (in bytes; NaN: branch 0, NaN
+            k += (reynolds >= re_k).view(np.uint8)  # C_m), the form below to 1e-15
+        c, beta = np.take(np.array(BILGEN_BOULOS_BRANCHES).T, k.astype(np.intp), axis=1)
+        re_beta = np.exp(beta * np.log(reynolds))  # power of an array of exponents: no SIMD
         np.copyto(re_beta, np.divide(1.0, reynolds), where=k == 0)  # as numpy's Re**-1.0
         return power_law_cm(re_beta, gap_ratio, c, alpha, 1.0)
     b = [power_law_cm(reynolds, gap_ratio, C, alpha, beta) for C, beta in BILGEN_BOULOS_BRANCHES]

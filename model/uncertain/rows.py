@@ -310,6 +310,16 @@ def _speed_terms(model: RowModel, rows: RowValues, idx):
     return {k: np.asarray(v)[idx] for k, v in terms.items()} if per_row else terms
 
 
+def _added(values):
+    """``sum(values)`` without its first ``0 +`` (a pass over the arrays saved) [unit of
+    the values]."""
+    it = iter(values)
+    total = next(it)
+    for v in it:
+        total = total + v
+    return total
+
+
 def _bearing(spec, nodes, weights, nu_c, drag, speed):
     """Cycle-mean bearing power [W] per row: :func:`bearing_mean_power`'s operations (the
     speed terms ``speed`` given), SKF's drag terms times the rows' factor ``drag``."""
@@ -320,8 +330,8 @@ def _bearing(spec, nodes, weights, nu_c, drag, speed):
     if drag is None:  # bearing_mean_power: weighted_mean(bearing_power)
         return np.broadcast_to(weighted_mean(sum(terms.values()) * np.abs(nodes), weights),
                                nu_c.shape[:1])
-    drag_m = sum(terms.pop(k) for k in _DRAG_TERMS)
-    moment = sum(terms.values()) + drag * drag_m
+    drag_m = _added(terms.pop(k) for k in _DRAG_TERMS)
+    moment = _added(terms.values()) + drag * drag_m
     return weighted_mean(moment * np.abs(nodes), weights)
 
 

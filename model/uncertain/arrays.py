@@ -12,7 +12,7 @@ oil's state, on each row's own Walther line where ``nu40_factor``/``nu100_factor
 the speed nodes times ``peak / peak0``, C_m at gamma 0 times ``friction_scale T^gamma``,
 the film strength on b, SKF's drag terms times ``bearing_drag_scale``). Under
 ``bulk``/``full`` the balance of all rows is solved at once to its exact root
-(:func:`~oilgap.model.uncertain.balance.root_balance`, about 3.5 losses a row); the rows it
+(:func:`~oilgap.model.uncertain.balance.root_balance`, about 3.2 losses a row); the rows it
 hands back (a loss that rises, a root on a downward step of Eq. 6, no root below the cap)
 are solved by the model's one solver over those rows
 (:func:`~oilgap.model.uncertain.rows.row_balance`, the scalar path's
@@ -21,8 +21,10 @@ is). Measured against the scalar path: 1e-15 relative without a balance, 1e-13 w
 (tests/model/test_uncertain_arrays.py and test_uncertain_balance.py; 10^4 rows in
 docs/benchmarks.md).
 
-Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
-block stay in cache).
+Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded), whose losses are
+evaluated :data:`EVAL_ROWS` rows a call (the arrays of a call stay in a core's cache); a
+row's speed-only bearing terms are evaluated once, not at every temperature the balance
+tries (:class:`~oilgap.model.uncertain.rows.RowValues` ``memo``).
 
 References
 ----------

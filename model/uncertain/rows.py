@@ -99,7 +99,8 @@ class RowValues:
         case's regions).
     memo : dict
         What the rows' losses keep between temperatures: the bearing's speed terms of
-        every row (:func:`_speed_terms`); filled on first use.
+        every row (:func:`_speed_terms`); filled on first use, never passed in (a
+        ``replace`` of the rows starts an empty one).
     """
 
     n: int
@@ -115,7 +116,7 @@ class RowValues:
     speed_factor: Any = None
     sea_temp_C: Any = None
     regions: tuple[Region, ...] | None = None
-    memo: dict = field(default_factory=dict, compare=False, repr=False)
+    memo: dict = field(default_factory=dict, init=False, compare=False, repr=False)
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -308,7 +308,12 @@ def _speed_terms(model: RowModel, rows: RowValues, idx):
                                                 else sf) * model.nodes
         terms = skf_speed_terms(spec, rad_s_to_rpm(np.abs(nodes)))
         rows.memo["skf_speed"] = terms
-    return {k: np.asarray(v)[idx] for k, v in terms.items()} if per_row else terms
+    if not per_row:
+        return terms
+    idx = np.asarray(idx)
+    if idx.size and np.all(np.diff(idx) == 1):  # a run of rows (a first step): views
+        return {k: np.asarray(v)[idx[0]:idx[-1] + 1] for k, v in terms.items()}
+    return {k: np.asarray(v)[idx] for k, v in terms.items()}
 
 
 def _added(values):

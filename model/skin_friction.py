@@ -242,12 +242,12 @@ def bilgen_boulos_cm(reynolds, gap_ratio, alpha=BILGEN_BOULOS_ALPHA):
     Bilgen & Boulos [1]; Pyrhönen et al. [2]; seed paper (Eq. 6) [3].
     """
     if np.ndim(reynolds) and not m.is_symbolic(reynolds, gap_ratio, alpha):
-        k = np.zeros(np.shape(reynolds), np.intp)  # numpy: each point's own branch only,
-        for re_k in REGIME_BOUNDARIES_RE:  # bit for bit the four-branch form below
-            k += reynolds >= re_k  # NaN: branch 0, and a NaN C_m as before
-        c, beta = (np.array(col)[k] for col in zip(*BILGEN_BOULOS_BRANCHES, strict=True))
-        re_beta = np.power(reynolds, beta)
-        np.divide(1.0, reynolds, out=re_beta, where=beta == -1.0)  # as numpy's Re**-1.0
+        k = (reynolds >= REGIME_BOUNDARIES_RE[0]).view(np.uint8)  # numpy: each point's
+        for re_k in REGIME_BOUNDARIES_RE[1:]:  # branch only (in bytes; NaN: branch 0, NaN
+            k += (reynolds >= re_k).view(np.uint8)  # C_m), the form below to 1e-15
+        c, beta = np.take(np.array(BILGEN_BOULOS_BRANCHES).T, k.astype(np.intp), axis=1)
+        re_beta = np.exp(beta * np.log(reynolds))  # power of an array of exponents: no SIMD
+        np.copyto(re_beta, np.divide(1.0, reynolds), where=k == 0)  # as numpy's Re**-1.0
         return power_law_cm(re_beta, gap_ratio, c, alpha, 1.0)
     b = [power_law_cm(reynolds, gap_ratio, C, alpha, beta) for C, beta in BILGEN_BOULOS_BRANCHES]
     r1, r2, r3 = REGIME_BOUNDARIES_RE

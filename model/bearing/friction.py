@@ -76,6 +76,7 @@ from .laws import (
     sliding_friction_coefficient,
     sliding_load_factor,
 )
+from .skf_speed import boundary_film_speed, inlet_shear_speed
 
 MODELS = ("skf", "palmgren")
 """Friction models [-]."""
@@ -254,7 +255,33 @@ def _non_negative(key, value, where):
         raise InputError(key, value, "a finite number >= 0", where)
 
 
-def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
+def skf_speed_terms(spec: BearingSpec, speed_rpm) -> dict:
+    """The parts of :func:`skf_moments` that depend on the speed alone [1]_, [2]_.
+
+    Parameters
+    ----------
+    spec : BearingSpec
+        The bearing.
+    speed_rpm : float, array or CasADi symbol
+        ``|n|`` [rpm].
+
+    Returns
+    -------
+    dict
+        ``n^0.6`` [rpm^0.6], ``inlet_shear`` and ``boundary_film`` (:mod:`.skf_speed`)
+        [-], ``drag_vm`` [N mm] (before ``drag_scale``).
+    """
+    c = SERIES_CONSTANTS[spec.series]
+    d, D = m_to_mm(spec.bore_m), m_to_mm(spec.outside_m)
+    dm = 0.5 * (d + D)
+    k_ball = ball_drag_constant(d, D, c.k_z, c.ball_rows)
+    vm = (drag_vm_moment(speed_rpm, dm, k_ball, drag_loss_factor(spec.oil_level_ratio))
+          if spec.drag != "none" else 0.0 * speed_rpm)
+    return {"n^0.6": speed_rpm**0.6, "inlet_shear": inlet_shear_speed(speed_rpm, dm),
+            "boundary_film": boundary_film_speed(speed_rpm), "drag_vm": vm}
+
+
+def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt, speed: dict | None = None) -> dict:
     """Every term of SKF's frictional moment [N mm] [1]_, [2]_ (catalogue units).
 
     ``rolling = phi_ish phi_rs G_rr nu^0.6 n^0.6``, ``sliding = G_sl mu_sl``,
@@ -270,6 +297,8 @@ def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
         ``|n|`` [rpm].
     nu_cSt : float, array or CasADi symbol
         Kinematic viscosity [cSt].
+    speed : dict, optional
+        :func:`skf_speed_terms` of ``speed_rpm``, if already evaluated (the same numbers).
 
     Returns
     -------
@@ -282,20 +311,18 @@ def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
     fr, fa, c0 = spec.radial_load_N, spec.axial_load_N, spec.static_rating_N
     g_rr = rolling_load_factor(c, dm, fr, fa, c0)
     g_sl = sliding_load_factor(c, dm, fr, fa, c0)
-    reduction = (inlet_shear_factor(speed_rpm, nu_cSt, dm)
+    sp = skf_speed_terms(spec, speed_rpm) if speed is None else speed
+    reduction = (inlet_shear_factor(speed_rpm, nu_cSt, dm, sp["inlet_shear"])
                  * replenishment_factor(speed_rpm, nu_cSt, d, D, spec.k_rs, c.k_z))
-    level = spec.oil_level_ratio
-    k_ball = ball_drag_constant(d, D, c.k_z, c.ball_rows)
-    rs = (drag_rs_moment(speed_rpm, nu_cSt, d, D, level, c.k_z)
+    rs = (drag_rs_moment(speed_rpm, nu_cSt, d, D, spec.oil_level_ratio, c.k_z)
           if spec.drag == "skf-full" else 0.0 * speed_rpm)
-    vm = (drag_vm_moment(speed_rpm, dm, k_ball, drag_loss_factor(level))
-          if spec.drag != "none" else 0.0 * speed_rpm)
+    vm = sp["drag_vm"]
     if spec.drag_scale != 1.0:  # a scenario's factor (1: SKF's terms, bit for bit)
         rs, vm = spec.drag_scale * rs, spec.drag_scale * vm
     return {
-        "rolling": reduction * g_rr * nu_cSt**0.6 * speed_rpm**0.6,
+        "rolling": reduction * g_rr * nu_cSt**0.6 * sp["n^0.6"],
         "sliding": g_sl * sliding_friction_coefficient(speed_rpm, nu_cSt, dm, spec.mu_bl,
-                                                       spec.mu_ehl),
+                                                       spec.mu_ehl, sp["boundary_film"]),
         "drag_vm": vm,
         "drag_rs": rs,
     }
@@ -304,7 +331,8 @@ def skf_moments(spec: BearingSpec, speed_rpm, nu_cSt) -> dict:
 # --------------------------------------------------------------------------- SI interface
 
 
-def bearing_moment_terms(spec: BearingSpec, omega_rad_s, nu_m2_s) -> dict:
+def bearing_moment_terms(spec: BearingSpec, omega_rad_s, nu_m2_s, speed: dict | None = None
+                         ) -> dict:
     """Friction moment of every term of the bearing's model [N m].
 
     ``skf``: ``rolling``, ``sliding``, ``drag_vm``, ``drag_rs`` (:func:`skf_moments`);
@@ -322,6 +350,8 @@ def bearing_moment_terms(spec: BearingSpec, omega_rad_s, nu_m2_s) -> dict:
         Shaft speed [rad/s] (sign ignored); nodes along the last axis.
     nu_m2_s : float, array or CasADi symbol
         Kinematic viscosity of the oil [m^2/s].
+    speed : dict, optional
+        ``skf``: :func:`skf_speed_terms` at ``|omega|`` in rpm, if already evaluated.
 
     Returns
     -------
@@ -339,7 +369,7 @@ def bearing_moment_terms(spec: BearingSpec, omega_rad_s, nu_m2_s) -> dict:
     nu = m2_s_to_cst(nu_m2_s)
     zero = 0.0 * n * nu
     if spec.model == "skf":
-        terms = skf_moments(spec, n, nu)
+        terms = skf_moments(spec, n, nu, speed)
     else:
         dm = m_to_mm(spec.pitch_diameter_m)
         terms = {"load_independent": palmgren_viscous_moment(nu, n, dm, spec.f0),

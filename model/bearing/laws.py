@@ -43,6 +43,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .. import _math as m
+from .skf_speed import boundary_film_speed, inlet_shear_speed
 
 
 @dataclass(frozen=True)
@@ -260,7 +261,7 @@ def sliding_load_factor(c: SeriesConstants, dm_mm, fr_N, fa_N, static_rating_N):
     return c.s1 * dm_mm**-0.26 * fr_N ** (5.0 / 3.0)
 
 
-def inlet_shear_factor(speed_rpm, nu_cSt, dm_mm):
+def inlet_shear_factor(speed_rpm, nu_cSt, dm_mm, speed_part=None):
     """SKF inlet-shear heating factor ``1/(1 + 1.84e-9 (n dm)^1.28 nu^0.64)`` [-] [1]_.
 
     Parameters
@@ -271,13 +272,16 @@ def inlet_shear_factor(speed_rpm, nu_cSt, dm_mm):
         Kinematic viscosity [cSt].
     dm_mm : float
         Pitch diameter [mm].
+    speed_part : float or array, optional
+        :func:`~.skf_speed.inlet_shear_speed` of these speeds, if already evaluated [-].
 
     Returns
     -------
     float, array or CasADi expression
         phi_ish [-].
     """
-    return 1.0 / (1.0 + 1.84e-9 * speed_rpm**1.28 * dm_mm**1.28 * nu_cSt**0.64)
+    a = inlet_shear_speed(speed_rpm, dm_mm) if speed_part is None else speed_part
+    return 1.0 / (1.0 + a * nu_cSt**0.64)
 
 
 def replenishment_factor(speed_rpm, nu_cSt, d_mm, D_mm, k_rs, k_z=3.1):
@@ -302,12 +306,14 @@ def replenishment_factor(speed_rpm, nu_cSt, d_mm, D_mm, k_rs, k_z=3.1):
     float, array or CasADi expression
         phi_rs [-].
     """
+    if isinstance(k_rs, (int, float)) and k_rs == 0.0:  # flooded: exp(0), exactly 1
+        return 1.0
     return m.exp(-k_rs * nu_cSt * speed_rpm * (d_mm + D_mm)
                  * math.sqrt(k_z / (2.0 * (D_mm - d_mm))))
 
 
 def sliding_friction_coefficient(speed_rpm, nu_cSt, dm_mm, mu_bl=MU_BL_DEFAULT,
-                                 mu_ehl=MU_EHL_MINERAL):
+                                 mu_ehl=MU_EHL_MINERAL, speed_part=None):
     """SKF ``mu_sl = phi_bl mu_bl + (1 - phi_bl) mu_EHL``,
     ``phi_bl = exp(-2.6e-8 (n nu)^1.4 dm)`` [-] [2]_.
 
@@ -321,13 +327,16 @@ def sliding_friction_coefficient(speed_rpm, nu_cSt, dm_mm, mu_bl=MU_BL_DEFAULT,
         Pitch diameter [mm].
     mu_bl, mu_ehl : float
         Boundary and full-film coefficients [-].
+    speed_part : float or array, optional
+        :func:`~.skf_speed.boundary_film_speed` of these speeds, if already evaluated [-].
 
     Returns
     -------
     float, array or CasADi expression
         mu_sl [-].
     """
-    phi_bl = m.exp(-2.6e-8 * speed_rpm**1.4 * nu_cSt**1.4 * dm_mm)
+    a = boundary_film_speed(speed_rpm) if speed_part is None else speed_part
+    phi_bl = m.exp(a * nu_cSt**1.4 * dm_mm)
     return phi_bl * mu_bl + (1.0 - phi_bl) * mu_ehl
 
 

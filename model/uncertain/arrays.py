@@ -12,7 +12,7 @@ oil's state, on each row's own Walther line where ``nu40_factor``/``nu100_factor
 the speed nodes times ``peak / peak0``, C_m at gamma 0 times ``friction_scale T^gamma``,
 the film strength on b, SKF's drag terms times ``bearing_drag_scale``). Under
 ``bulk``/``full`` the balance of all rows is solved at once to its exact root
-(:func:`~oilgap.model.uncertain.balance.root_balance`, about 3.5 losses a row); the rows it
+(:func:`~oilgap.model.uncertain.balance.root_balance`, about 3.2 losses a row); the rows it
 hands back (a loss that rises, a root on a downward step of Eq. 6, no root below the cap)
 are solved by the model's one solver over those rows
 (:func:`~oilgap.model.uncertain.rows.row_balance`, the scalar path's
@@ -21,8 +21,10 @@ is). Measured against the scalar path: 1e-15 relative without a balance, 1e-13 w
 (tests/model/test_uncertain_arrays.py and test_uncertain_balance.py; 10^4 rows in
 docs/benchmarks.md).
 
-Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded and the arrays of a
-block stay in cache).
+Rows are processed in blocks of :data:`BLOCK_ROWS` (memory stays bounded), whose losses are
+evaluated :data:`EVAL_ROWS` rows a call (the arrays of a call stay in a core's cache); a
+row's speed-only bearing terms are evaluated once, not at every temperature the balance
+tries (:class:`~oilgap.model.uncertain.rows.RowValues` ``memo``).
 
 References
 ----------
@@ -53,8 +55,29 @@ from .rows import RowModel, RowValues, row_balance, row_model, row_total
 if TYPE_CHECKING:  # pragma: no cover - typing only
     from ..case import DesignCase
 
-BLOCK_ROWS = 4096
-"""Rows evaluated together [-]: (rows x nodes) arrays of a block stay in the CPU's cache."""
+BLOCK_ROWS = 16384
+"""Rows whose balance is solved together [-] (one iteration's bookkeeping, the rows left
+for its last steps, and the roots' predictions are shared by this many)."""
+
+EVAL_ROWS = 2048
+"""Rows whose loss is evaluated in one call [-]: the (rows x nodes) arrays of a call (2048 x
+26 doubles, 0.4 MB) stay in a core's L2 cache (2 MB on the benchmark's machine; 4096 rows
+spilled out of it and ran 1.5-2 times slower, docs/benchmarks.md)."""
+
+
+def _total(model: RowModel, rows: RowValues):
+    """The loss [W] of rows ``i`` at temperatures ``t`` [degC]: :func:`.rows.row_total` in
+    calls of at most :data:`EVAL_ROWS` rows (each row's loss is its own; the cycle mean's
+    matrix-vector product may round a row by its place in a call, 1 ulp)."""
+    def power(t: np.ndarray, i: np.ndarray) -> np.ndarray:
+        if i.size <= EVAL_ROWS:
+            return row_total(model, rows, t, i)
+        out = np.empty(i.size)
+        for s in range(0, i.size, EVAL_ROWS):
+            out[s:s + EVAL_ROWS] = row_total(model, rows, t[s:s + EVAL_ROWS],
+                                             i[s:s + EVAL_ROWS])
+        return out
+    return power
 
 
 def broadcast_inputs(inputs: Mapping[str, Any]) -> tuple[dict[str, np.ndarray], tuple]:
@@ -172,7 +195,7 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
     are marked there (their loss NaN) for the caller to solve together."""
     rows = _row_values(case, arrs, model)
     if not uses_balance(mode):
-        return row_total(model, rows, rows.oil_temp_C, np.arange(rows.n))
+        return _total(model, rows)(rows.oil_temp_C, np.arange(rows.n))
     th = case.thermal
     ok = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W < MAX_OIL_TEMP_C
     out = np.full(rows.n, np.nan)
@@ -186,7 +209,7 @@ def _block(case: DesignCase, mode: str, model: RowModel, arrs: Mapping[str, np.n
         return out
     if not fallback:
         base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
-        temps, p, ok = root_balance(lambda t, i: row_total(model, rows, t, i), base,
+        temps, p, ok = root_balance(_total(model, rows), base,
                                     th.resistance_K_W, features=_features(rows),
                                     predictor=predictor)
         if back is not None:
@@ -248,7 +271,7 @@ def _predictor(case: DesignCase, mode: str, model: RowModel,
     base = rows.sea_temp_C + th.resistance_K_W * th.other_heat_W
     keep = np.flatnonzero(base < MAX_OIL_TEMP_C)
     with np.errstate(all="ignore"):
-        return fit_predictor(lambda t, i: row_total(model, rows, t, i), base,
+        return fit_predictor(_total(model, rows), base,
                              th.resistance_K_W, _features(rows), keep)
 
 

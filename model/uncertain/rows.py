@@ -34,12 +34,12 @@ References
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass, replace
+from dataclasses import dataclass, field, replace
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..bearing.friction import bearing_mean_power, bearing_moment_terms
+from ..bearing.friction import bearing_mean_power, bearing_moment_terms, skf_speed_terms
 from ..elements import BearingElement, joint_elements
 from ..fluids import ScaledFluid
 from ..joint_loss import case_film
@@ -53,7 +53,7 @@ from ..skin_friction import groove_roughness_factor
 from ..taylor_couette import couette_floor_form
 from ..thermal import steady_temperature
 from ..thermal_modes import applies_film
-from ..units import celsius_to_kelvin
+from ..units import celsius_to_kelvin, rad_s_to_rpm
 from ..viscous_loss import weighted_mean
 
 if TYPE_CHECKING:  # pragma: no cover - typing only
@@ -97,6 +97,10 @@ class RowValues:
     regions : tuple of Region or None
         Per-row geometry: each Region's R, delta, L [m] and T [-] as arrays (None: the
         case's regions).
+    memo : dict
+        What the rows' losses keep between temperatures: the bearing's speed terms of
+        every row (:func:`_speed_terms`); filled on first use, never passed in (a
+        ``replace`` of the rows starts an empty one).
     """
 
     n: int
@@ -112,6 +116,7 @@ class RowValues:
     speed_factor: Any = None
     sea_temp_C: Any = None
     regions: tuple[Region, ...] | None = None
+    memo: dict = field(default_factory=dict, init=False, compare=False, repr=False)
 
 
 @dataclass(frozen=True, kw_only=True)
@@ -237,10 +242,7 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     regions = _regions(model, rows, idx)
     out = np.empty((len(t_k), len(regions)))
     for j, reg in enumerate(regions):
-        mean = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, model.law,
-                                 model.film, b)
-        if fs is not None:
-            mean = _scaled_mean(mean, fs, reg, nodes, model, nu_c, rho_c, b)
+        mean = _scaled_mean(fs, reg, nodes, model, nu_c, rho_c, b)
         if gam is not None and not np.all(np.asarray(reg.roughness_T) == 1.0):
             t = reg.roughness_T
             mean = groove_roughness_factor(t[:, 0] if np.ndim(t) else t, gam) * mean
@@ -249,7 +251,8 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     if spec is None:
         bearing = np.zeros(len(t_k))
     else:
-        bearing = _bearing(spec, nodes, model.weights, nu_c, _at(rows.drag_scale, idx))
+        bearing = _bearing(spec, nodes, model.weights, nu_c, _at(rows.drag_scale, idx),
+                           _speed_terms(model, rows, idx))
     for element in joint_elements(model.case):  # a linear drive's screw, rod guide, passages
         if not isinstance(element, BearingElement):
             bearing = bearing + np.broadcast_to(np.asarray(element.mean_power(
@@ -257,23 +260,23 @@ def row_losses(model: RowModel, rows: RowValues, temp_C: np.ndarray, idx: np.nda
     return out, bearing
 
 
-def _scaled_mean(mean, fs, reg, nodes, model: RowModel, nu_c, rho_c, b):
-    """The region's mean power at the rows' friction scales [W]: ``fs`` times the mean
-    (Eq. 6 is linear in its scale), except where the Couette floor applies
-    (:func:`~oilgap.model.taylor_couette.couette_floor_applies`: a total scale below 1
-    under the Couette laminar law,
-    :func:`~oilgap.model.taylor_couette.couette_floor_form`), where those rows are
-    evaluated with their own scale and the floor node by node, as the scalar path does
-    (issue 27 item 4)."""
+def _scaled_mean(fs, reg, nodes, model: RowModel, nu_c, rho_c, b):
+    """The region's mean power at the rows' friction scales [W] (``fs`` None: the law's).
+
+    Where the Couette floor can apply (:func:`~oilgap.model.taylor_couette.couette_floor_form`:
+    the Couette laminar law, a form with a scale), the law carries each row's scale
+    ``scale fs``, as the scalar path's (:func:`~oilgap.model.uncertain.inputs.apply_inputs`),
+    so that a row below 1 is floored node by node (issue 27 item 4) and a row at or above
+    1 is ``scale fs C_m`` (the floor changes nothing there, the laminar law being at least
+    Couette): one evaluation of C_m for all rows. Otherwise ``fs`` times the mean (the
+    power law's C: the mean is linear in it)."""
     law = model.law
-    low = fs * law.scale < 1.0 if isinstance(law.scale, (int, float)) else None
-    if low is None or not np.any(low) or not couette_floor_form(law):
-        return fs * mean
+    if fs is None or not couette_floor_form(law) or not isinstance(law.scale, (int, float)):
+        mean = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, law, model.film, b)
+        return mean if fs is None else fs * mean
     rows_law = copy.copy(law)  # the law with one scale per row (a frozen dataclass's copy)
     object.__setattr__(rows_law, "scale", (law.scale * fs)[:, None])
-    floored = region_mean_power(reg, nodes, model.weights, nu_c, rho_c, rows_law,
-                                model.film, b)
-    return np.where(low, floored, fs * mean)
+    return region_mean_power(reg, nodes, model.weights, nu_c, rho_c, rows_law, model.film, b)
 
 
 def _oil(model: RowModel, rows: RowValues, t_k, p, idx):
@@ -289,14 +292,52 @@ def _oil(model: RowModel, rows: RowValues, t_k, p, idx):
                                                             fl.barus_1_Pa)
 
 
-def _bearing(spec, nodes, weights, nu_c, drag):
-    """Cycle-mean bearing power [W] per row, SKF's drag terms times the rows' factor."""
-    if drag is None or spec.model != "skf":
+def _speed_terms(model: RowModel, rows: RowValues, idx):
+    """The bearing's speed-only terms (:func:`~oilgap.model.bearing.friction.skf_speed_terms`)
+    at rows ``idx``: evaluated once for all rows and kept in ``rows.memo`` (a row's speeds
+    do not change with the temperature a balance tries), the same numbers as evaluated
+    afresh; None for a model without them (Palmgren's)."""
+    spec = model.case.bearing
+    if spec.model != "skf":
+        return None
+    sf = rows.speed_factor
+    per_row = sf is not None and np.ndim(sf) > 0
+    terms = rows.memo.get("skf_speed")
+    if terms is None:
+        nodes = model.nodes if sf is None else (np.asarray(sf)[:, None] if per_row
+                                                else sf) * model.nodes
+        terms = skf_speed_terms(spec, rad_s_to_rpm(np.abs(nodes)))
+        rows.memo["skf_speed"] = terms
+    if not per_row:
+        return terms
+    idx = np.asarray(idx)
+    if idx.size and np.all(np.diff(idx) == 1):  # a run of rows (a first step): views
+        return {k: np.asarray(v)[idx[0]:idx[-1] + 1] for k, v in terms.items()}
+    return {k: np.asarray(v)[idx] for k, v in terms.items()}
+
+
+def _added(values):
+    """``sum(values)`` without its first ``0 +`` (a pass over the arrays saved) [unit of
+    the values]."""
+    it = iter(values)
+    total = next(it)
+    for v in it:
+        total = total + v
+    return total
+
+
+def _bearing(spec, nodes, weights, nu_c, drag, speed):
+    """Cycle-mean bearing power [W] per row: :func:`bearing_mean_power`'s operations (the
+    speed terms ``speed`` given), SKF's drag terms times the rows' factor ``drag``."""
+    if spec.model != "skf":
         return np.broadcast_to(np.asarray(bearing_mean_power(spec, nodes, weights, nu_c),
                                           dtype=float), nu_c.shape[:1])
-    terms = bearing_moment_terms(spec, nodes, nu_c)
-    drag_m = sum(terms.pop(k) for k in _DRAG_TERMS)
-    moment = sum(terms.values()) + drag * drag_m
+    terms = bearing_moment_terms(spec, nodes, nu_c, speed)
+    if drag is None:  # bearing_mean_power: weighted_mean(bearing_power)
+        return np.broadcast_to(weighted_mean(sum(terms.values()) * np.abs(nodes), weights),
+                               nu_c.shape[:1])
+    drag_m = _added(terms.pop(k) for k in _DRAG_TERMS)
+    moment = _added(terms.values()) + drag * drag_m
     return weighted_mean(moment * np.abs(nodes), weights)
 
 

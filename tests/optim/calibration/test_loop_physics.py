@@ -29,7 +29,7 @@ GAMMA = seed_case().friction.gamma
 @cache
 def _fit(cfg: SynthConfig, seed: int = 0, **kw) -> LoopEstimator:
     oils = fluid_table(cfg) if cfg.fluids else None
-    return LoopEstimator(case=cfg.case, oils=oils, **kw).fit(synthesize(cfg, seed))
+    return LoopEstimator(base="eq6", case=cfg.case, oils=oils, **kw).fit(synthesize(cfg, seed))
 
 
 def _cut(est):
@@ -172,7 +172,7 @@ def test_a_fold_with_one_gap_holds_alpha_and_says_so(base):
 def test_data_without_a_viscous_signal_report_it_without_pinned_intervals():
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=300), 0)
     df["viscous_power_W"] = np.random.default_rng(3).normal(0.0, 1.0, len(df))  # noise only
-    est = LoopEstimator().fit(df)
+    est = LoopEstimator(base="eq6").fit(df)
     kinds = [f.kind for f in est.findings_]
     assert "no viscous signal" in kinds and "out of range" not in kinds
     assert all(np.isnan(est.calibration_ci_[k]).all() for k in ("scale", "gamma"))
@@ -182,7 +182,7 @@ def test_data_without_a_viscous_signal_report_it_without_pinned_intervals():
 def test_steady_point_data_drop_the_time_dependent_effects():
     # rows without time_s are steady operating points: no time-dependent candidate
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=300), 0)
-    est = LoopEstimator().fit(df.iloc[::10].drop(columns=["time_s"]))
+    est = LoopEstimator(base="eq6").fit(df.iloc[::10].drop(columns=["time_s"]))
     assert est.samples_.has_time is False
     st = {c["name"]: c["status"] for c in est.candidates_}
     for name in ("oil_inertia", "thermal_lag", "sensor_delay"):
@@ -204,7 +204,7 @@ def test_an_absurd_gap_is_an_input_error_naming_it():
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=100), 0)
     df["gap_mm"] = 300.0
     with pytest.raises(InputError) as e:
-        LoopEstimator().fit(df)
+        LoopEstimator(base="eq6").fit(df)
     assert e.value.field == "gap_mm" and "rotor radius" in str(e.value)
 
 

@@ -94,7 +94,7 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
 
 __all__ = [
     "RegionState", "EffectContext", "Precomputed", "region_states", "effect_context",
-    "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect", "Domain",
+    "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect",
     "FREE_DISC_TRANSITION_RE", "PALMGREN_MIN_NU_N", "CRITICAL_TAYLOR_NUMBER", "disc_reynolds",
     "free_disc_moment_coefficient", "end_face_disc_power", "enclosed_disc_couette_power",
     "palmgren_viscous_moment", "ball_churning_power", "coulomb_friction_power",

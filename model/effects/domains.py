@@ -53,12 +53,12 @@ class Domain:
     Attributes
     ----------
     statement : str
-        The domain in words, e.g. ``"Ta > Ta_c = 41.3 in a clearance"``.
+        The domain in words [-], e.g. ``"Ta > Ta_c = 41.3 in a clearance"``.
     reference : str
-        What the statement rests on.
+        What the statement rests on [-].
     outside : callable
         ``(EffectContext, RigFacts or None) -> str or None``: why the data never reach
-        the domain, with the numbers (None: they reach it).
+        the domain, with the numbers in the data's units (None: they reach it) [-].
     """
 
     statement: str

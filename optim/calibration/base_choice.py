@@ -99,10 +99,12 @@ def base_candidates(case: DesignCase) -> tuple[BaseCandidate, ...]:
     Parameters
     ----------
     case : DesignCase
+        The rig case (its friction law's form [-], laminar law [-] and transition [-]).
 
     Returns
     -------
     tuple of BaseCandidate
+        In order of preference at a tie [-].
     """
     f = case.friction
     taylor_ok = (f.transition == "reynolds" and f.laminar_law == "couette"

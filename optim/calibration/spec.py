@@ -35,7 +35,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -385,9 +385,8 @@ class BaseSpec:
         -------
         BaseSpec
         """
-        return BaseSpec(tuple(k for k in self.free if k not in values),
-                        {**self.fixed, **values}, self.base, self.laminar_law, self.prior,
-                        self.scale_min, self.transition)
+        return replace(self, free=tuple(k for k in self.free if k not in values),
+                       fixed={**self.fixed, **values})
 
 
 def cv_groups(s: Samples) -> np.ndarray:

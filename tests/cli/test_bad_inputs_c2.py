@@ -221,9 +221,11 @@ def test_a_solver_failure_on_data_in_the_wrong_unit_names_the_unit(tmp_path, cap
     monkeypatch.setattr(LoopEstimator, "_intervals", fail)
     data = tmp_path / "rads.csv"
     rig[1].assign(speed_rpm=rig[1]["speed_rpm"] * np.pi / 30).to_csv(data, index=False)
-    code, out, err = _run(capsys, ["loop", str(data), "--out", str(tmp_path / "lo")])
+    code, out, err = _run(capsys, ["loop", str(data), "--out", str(tmp_path / "lo"), "--base",
+                                   "eq6"])
     assert code == 2 and out == "" and len(err) == 1
     assert err[0].startswith(f"oilgap: error: data = '{data}' is not allowed; the calibrated")
     assert "rad/s" in err[0] and err[0].endswith("the fit then failed (did not converge)")
-    code, out, err = _run(capsys, ["loop", str(rig[0]), "--out", str(tmp_path / "lo2")])
+    code, out, err = _run(capsys, ["loop", str(rig[0]), "--out", str(tmp_path / "lo2"),
+                                   "--base", "eq6"])
     assert code == 4 and err == ["oilgap: solver failure: did not converge"]

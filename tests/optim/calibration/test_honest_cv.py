@@ -231,3 +231,16 @@ def test_a_scale_finding_names_what_moved_with_it(rig):
     assert f.message.startswith(f"the scale is {est.calibration_['scale']:.3g}x the published "
                                 "law, with alpha = ")
     assert "(prior 0.3) moved as well; on these data the loss is" in f.message
+
+
+def test_the_chosen_taylor_transition_is_saved_and_predicted(auto_fit):
+    # the chosen candidate's law (Eq. 6 with the Taylor transition) is what loop.json keeps
+    # and what the saved model predicts with, to 1e-9
+    from oilgap.optim.calibration.model_io import FittedModel
+    doc = auto_fit.to_dict()["model"]
+    assert doc["laws"]["with_effect"]["transition"] == "taylor"
+    model = FittedModel.from_dict(doc)
+    assert model.laws["with_effect"] == auto_fit.law_
+    p = model.power(auto_fit.samples_, "with_effect", auto_fit.data_.oils)
+    ref = auto_fit.pred_["with_effect"]
+    assert np.max(np.abs(p - ref)) <= 1e-9 * np.max(np.abs(ref))

@@ -148,8 +148,7 @@ def _screen(name: str, f: np.ndarray | None, jc: np.ndarray, spec: BaseSpec, yma
                           "not applicable: the rig has no bearing region")
         return info
     if not np.any(np.abs(f) > 1e-12 * ymax):
-        info["status"] = ("inactive on these data" + (
-            ": Ta never exceeds 41.3" if name == "taylor_vortex_onset" else
+        info["status"] = ("inactive on these data" + (  # Ta below onset: its domain
             ": no temperature law for dP/dT" if name in ("thermal_lag", "film_heating")
             else ""))
         return info

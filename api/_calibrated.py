@@ -58,6 +58,7 @@ def with_model(case: DesignCase, model: Any
         the model's fitted domain an :class:`~oilgap.model.errors.OilgapWarning` names
         each variable with both ranges.
     """
+    given = "--model" if model is not None else "[calibration] model"
     model = model if model is not None else case.calibration_model
     if model is None:
         return case, None
@@ -69,7 +70,7 @@ def with_model(case: DesignCase, model: Any
         pv = {"path": "(in memory)", "fitted": "-", "data": "-", "base": "-"}
     cal = replace(calibrate_case(plain, fitted), provenance=pv)
     for line in cal.domain:
-        warnings.warn(OilgapWarning(f"--model {model}: the case lies outside the model's "
+        warnings.warn(OilgapWarning(f"{given} {model}: the case lies outside the model's "
                                     f"domain: {line}"), stacklevel=2)
     return cal.case, cal
 

@@ -191,8 +191,8 @@ class Loop(LoopEstimator, ResultView):
     margin : float
         Held-out RMSE fall an effect must bring [-].
     base : {"eq6", "auto", "power-law", "branches"}
-        Base law (default ``"eq6"``); ``"auto"`` chooses by held-out error (the table in
-        ``base_selection_``).
+        Base law (default ``"auto"``: each candidate base with its own effect search, chosen
+        by held-out error, the table in ``base_selection_``); a named one forces it.
     cv_by : str
         Column whose values are the groups of leave-one-group-out validation.
     min_explained : float
@@ -212,7 +212,7 @@ class Loop(LoopEstimator, ResultView):
     def __init__(self, case: DesignCase | str | Path | None = None, *,
                  oils: dict[str, Oil] | str | Path | None = None,
                  effects: str | list[str] | tuple[str, ...] | None = None,
-                 margin: float = DEFAULT_MARGIN, base: str = "eq6", cv_by: str = "run",
+                 margin: float = DEFAULT_MARGIN, base: str = "auto", cv_by: str = "run",
                  min_explained: float = DEFAULT_MIN_EXPLAINED, max_effects: int = 3,
                  cv: str = "one-step"):
         super().__init__(case=case, oils=oils, margin=margin, min_explained=min_explained,

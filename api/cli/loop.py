@@ -43,7 +43,7 @@ def write_calibrated_case(case: DesignCase, out_dir: str | Path, path: Path) -> 
 def _loop(args: argparse.Namespace, folder: ResultFolder) -> tuple[int, DesignCase]:
     """The loop inside its locked result folder."""
     est = Loop(args.case, oils=args.oils, margin=args.margin, effects=args.effects,
-               base=getattr(args, "base", "eq6"), cv_by=args.cv_by)
+               base=getattr(args, "base", "auto"), cv_by=args.cv_by)
     est.fit(args.data)
     paths = est.report(args.out, figures="none" if args.no_figures else args.figures,
                        folder=folder)

@@ -452,10 +452,11 @@ def add_loop(sub) -> None:
     p.add_argument("--margin", type=finite_float, default=0.10,
                    help="held-out RMSE fall an effect must bring (default 0.10)")
     p.add_argument("--effects", metavar="NAME,...", help="consider only these library effects")
-    p.add_argument("--base", choices=("eq6", "auto", "power-law", "branches"), default="eq6",
-                   help="base model: eq6 = the design tool's Eq. 6 x scale x T^gamma "
-                   "(default); auto = eq6 and branches fitted and the one of least held-out "
-                   "log-RMSE kept, the simpler within --margin; "
+    p.add_argument("--base", choices=("eq6", "auto", "power-law", "branches"), default="auto",
+                   help="base model: auto = eq6, branches and eq6 with the Taylor transition "
+                   "each fitted with its own effect search, the one of least held-out "
+                   "log-RMSE kept, the simpler within --margin (default); "
+                   "eq6 = the design tool's Eq. 6 x scale x T^gamma (the case's transition); "
                    "power-law = a free C (delta/R)^alpha Re^beta T^gamma; "
                    "branches = Eq. 6's branches, each C_k (delta/R)^alpha_k Re^beta_k freed "
                    "where the data identify it")

@@ -56,6 +56,7 @@ from ..film_heating import film_temperature, film_theory_coefficient
 from ..regions import JointGeometry, region_power
 from ..skin_friction import FrictionLaw
 from ..taylor_couette import couette_reynolds, taylor_number
+from .domains import DOMAINS, Domain
 from .laws import (
     CRITICAL_TAYLOR_NUMBER,
     FREE_DISC_TRANSITION_RE,
@@ -94,13 +95,11 @@ if TYPE_CHECKING:  # pragma: no cover - typing only
 __all__ = [
     "RegionState", "EffectContext", "Precomputed", "region_states", "effect_context",
     "cross_region_ratios", "Effect", "EFFECTS", "CONFOUNDED_FORMS", "get_effect",
-    "FREE_DISC_TRANSITION_RE",
-    "PALMGREN_MIN_NU_N", "CRITICAL_TAYLOR_NUMBER", "disc_reynolds",
+    "FREE_DISC_TRANSITION_RE", "PALMGREN_MIN_NU_N", "CRITICAL_TAYLOR_NUMBER", "disc_reynolds",
     "free_disc_moment_coefficient", "end_face_disc_power", "enclosed_disc_couette_power",
     "palmgren_viscous_moment", "ball_churning_power", "coulomb_friction_power",
     "oil_inertia_power", "first_order_lag", "thermal_lag_power", "taylor_excess_factor",
-    "film_temperature",
-    "taylor_vortex_power", "couette_shear_rate", "cross_viscosity_ratio",
+    "film_temperature", "taylor_vortex_power", "couette_shear_rate", "cross_viscosity_ratio",
     "carreau_viscosity_ratio", "shear_thinning_power", "sensor_delay_power", "FluidFacts",
     "RigFacts", "Plausibility", "PLAUSIBLE", "TIME_DEPENDENT", "SEAL_TANGENTIAL_FORCE_N_M",
 ]
@@ -440,6 +439,8 @@ class Effect:
     upper : float
         Upper bound of the coefficient in the fit [unit] (inf: none; 1 for the film
         strength, the smooth-film theory's bound).
+    domain : Domain or None
+        Where the mechanism can act (:mod:`.domains`): data outside it, not a candidate.
     """
 
     name: str
@@ -456,6 +457,7 @@ class Effect:
     plausible: Plausibility | None = None
     time_dependent: bool = False
     upper: float = np.inf
+    domain: Domain | None = None
 
     def implausibility(self, coefficient: float, facts: RigFacts) -> str | None:
         """Why a fitted coefficient is implausible on this rig, or None if it is plausible.
@@ -563,8 +565,8 @@ EFFECTS: dict[str, Effect] = {e.name: e for e in (
 )}
 """The candidate-effect library, by stable name."""
 
-EFFECTS = {n: replace(e, plausible=PLAUSIBLE[n], time_dependent=n in TIME_DEPENDENT)
-           for n, e in EFFECTS.items()}  # the plausible ranges and the time flag
+EFFECTS = {n: replace(e, plausible=PLAUSIBLE[n], time_dependent=n in TIME_DEPENDENT,
+                      domain=DOMAINS[n]) for n, e in EFFECTS.items()}  # ranges, time, domain
 
 CONFOUNDED_FORMS = {
     "enclosed_disc_couette": (

@@ -15,16 +15,19 @@ What it does not carry, each named with the reason (:data:`RIG_ONLY`,
 (sensor delay, thermal lag of the rig's sensor), and the effects the design model has
 no term for yet (their loss is left out of the design's, and the message says so).
 It also states where the case lies outside the model's fitted domain (speed, oil
-temperature, viscosity, gap, roughness) with both ranges.
+temperature, viscosity, gap, roughness, region 1's Reynolds and Taylor numbers) with
+both ranges.
 """
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field, replace
 
 from oilgap.model.case import DesignCase
 from oilgap.model.regions import joint_geometry
-from oilgap.model.units import m_to_mm
+from oilgap.model.taylor_couette import couette_reynolds, taylor_number
+from oilgap.model.units import cst_to_m2_s, m_to_mm
 
 from .model_io import FittedModel
 
@@ -107,18 +110,28 @@ def case_conditions(case: DesignCase) -> dict[str, tuple[float, float]]:
     dict
         ``abs_speed_rpm`` [rpm] (0 to the duty cycle's peak), ``temp_C`` [degC], ``nu_cSt``
         [cSt] (at the oil temperature and depth), ``gap_mm`` [mm] and ``roughness_T`` [-]
-        of region 1 -> (low, high).
+        of region 1, and region 1's Couette Reynolds number ``reynolds`` and Taylor number
+        ``taylor`` [-] (0 to the peak speed's; seed Eqs. 3-4) -> (low, high).
     """
     r1 = joint_geometry(case).regions[0]
-    peak = float(abs(case.duty_cycle.omega_rad_s).max()) * 30.0 / 3.141592653589793
+    w = float(abs(case.duty_cycle.omega_rad_s).max())
     t = case.operating.oil_temp_C
     nu = float(case.oil.kinematic_viscosity_cSt(t, case.operating.depth_m))
-    return {"abs_speed_rpm": (0.0, peak), "temp_C": (t, t), "nu_cSt": (nu, nu),
-            "gap_mm": (m_to_mm(r1.gap_m),) * 2, "roughness_T": (r1.roughness_T,) * 2}
+    re = float(couette_reynolds(w, r1.radius_m, r1.gap_m, cst_to_m2_s(nu)))
+    return {"abs_speed_rpm": (0.0, w * 30.0 / math.pi), "temp_C": (t, t), "nu_cSt": (nu, nu),
+            "gap_mm": (m_to_mm(r1.gap_m),) * 2, "roughness_T": (r1.roughness_T,) * 2,
+            "reynolds": (0.0, re), "taylor": (0.0, float(taylor_number(re, r1.gap_m,
+                                                                         r1.radius_m)))}
 
 
 UNITS = {"abs_speed_rpm": "rpm", "temp_C": "degC", "nu_cSt": "cSt", "gap_mm": "mm",
-         "roughness_T": ""}
+         "roughness_T": "", "reynolds": "", "taylor": ""}
+
+FROM_REST = ("abs_speed_rpm", "reynolds", "taylor")
+"""Variables whose case range starts at rest: only their high end is checked."""
+
+FLOW_NUMBERS = ("reynolds", "taylor")
+"""Ranges a model file written before they were recorded does not hold."""
 
 
 def domain_warnings(case: DesignCase, ranges: dict) -> tuple[str, ...]:
@@ -133,7 +146,9 @@ def domain_warnings(case: DesignCase, ranges: dict) -> tuple[str, ...]:
     Returns
     -------
     tuple of str
-        E.g. "nu_cSt 61.2..61.2 cSt outside the fitted 150..1000 cSt".
+        E.g. "nu_cSt 61.2..61.2 cSt outside the fitted 150..1000 cSt", "taylor 0..55.1
+        outside the fitted 0.31..14.7"; for a model file without the Reynolds and Taylor
+        ranges, one sentence saying they are unknown.
     """
     out = []
     for k, (lo, hi) in case_conditions(case).items():
@@ -141,10 +156,14 @@ def domain_warnings(case: DesignCase, ranges: dict) -> tuple[str, ...]:
             continue
         a, b = ranges[k]
         tol = 1e-9 * max(1.0, abs(a), abs(b))
-        if hi > b + tol or (lo < a - tol and k != "abs_speed_rpm"):
+        if hi > b + tol or (lo < a - tol and k not in FROM_REST):
             u = UNITS[k]
             out.append(f"{k} {lo:.4g}..{hi:.4g}{' ' + u if u else ''} outside the fitted "
                        f"{a:.4g}..{b:.4g}{' ' + u if u else ''}")
+    missing = [k for k in FLOW_NUMBERS if k not in ranges]
+    if ranges and missing:
+        out.append(f"{' and '.join(missing)} ranges unknown: the model file predates them "
+                   "(run oilgap loop again to record them)")
     return tuple(out)
 
 

@@ -23,7 +23,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from oilgap.model.effects import EFFECTS, taylor_feature
+from oilgap.model.effects import EFFECTS, RigFacts, taylor_feature
 from oilgap.model.film_heating import film_theory_coefficient
 from oilgap.model.measured.data import Samples
 from oilgap.model.regions import JointGeometry
@@ -148,8 +148,7 @@ def _screen(name: str, f: np.ndarray | None, jc: np.ndarray, spec: BaseSpec, yma
                           "not applicable: the rig has no bearing region")
         return info
     if not np.any(np.abs(f) > 1e-12 * ymax):
-        info["status"] = ("inactive on these data" + (
-            ": Ta never exceeds 41.3" if name == "taylor_vortex_onset" else
+        info["status"] = ("inactive on these data" + (  # Ta below onset: its domain
             ": no temperature law for dP/dT" if name in ("thermal_lag", "film_heating")
             else ""))
         return info
@@ -170,7 +169,8 @@ STEADY_POINT_STATUS = ("not a candidate: steady-point data (no time_s); a time-d
 
 
 def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
-                      names: list[str], has_time: bool = True) -> Candidates:
+                      names: list[str], has_time: bool = True,
+                      facts: RigFacts | None = None) -> Candidates:
     """Candidate columns of the library effects ``names`` at the calibrated law.
 
     Parameters
@@ -186,6 +186,10 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
     has_time : bool
         False for steady-point data: time-dependent effects (oil inertia,
         thermal lag, sensor delay) are not candidates, with that reason.
+    facts : RigFacts, optional
+        The rig's fluids: an effect whose physical domain
+        (:attr:`~oilgap.model.effects.Effect.domain`) the data never reach is not a
+        candidate, with the reason and its number (e.g. the largest Taylor number).
 
     Returns
     -------
@@ -205,6 +209,12 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
             eff = EFFECTS[n]
             out.info.append({"name": n, "title": eff.title, "formula": eff.formula,
                              "nonnegative": eff.nonnegative, "status": STEADY_POINT_STATUS})
+            continue
+        eff = EFFECTS[n]
+        outside = eff.domain.reason(ctx, facts) if eff.domain is not None else None
+        if outside is not None:
+            out.info.append({"name": n, "title": eff.title, "formula": eff.formula,
+                             "nonnegative": eff.nonnegative, "status": outside})
             continue
         f = EFFECTS[n].feature_values(ctx)
         if f is not None and not np.all(np.isfinite(f)):

@@ -146,14 +146,16 @@ class LoopEstimator:
         (leave-one-run-out), grouped 10-fold cross-validation above
         (:mod:`.folds`).
     base : {"eq6", "auto", "power-law", "branches"}
-        Base model (default ``"eq6"``). ``"auto"``: each candidate of
-        :data:`.base_choice.BASE_CANDIDATES` is fitted and cross-validated, and the
-        one of least held-out log-RMSE kept unless a simpler one comes within
-        ``margin`` of it (:mod:`.base_choice`; the table in ``base_selection_``).
-        The default ``"eq6"`` is the design tool's Eq. 6 regime structure (smooth form, the
-        case's laminar law) times one scale and T^gamma (default), a free
-        power law C (delta/R)^alpha Re^beta T^gamma, or Eq. 6's branches each with
-        its own C_k, alpha_k, beta_k, freed only where the data identify them
+        Base model (default ``"auto"``): each candidate of
+        :func:`.base_choice.base_candidates` (Eq. 6, ``branches``, Eq. 6 with the
+        Taylor transition) is fitted with its own effect search, and the one whose base
+        and accepted effects have the least held-out log-RMSE is kept unless a simpler
+        one (fewer base parameters and effects) comes within ``margin`` of it
+        (:mod:`.base_choice`; the table in ``base_selection_``). Forced: ``"eq6"``, the
+        design tool's Eq. 6 regime structure (smooth form, the case's laminar law and
+        transition) times one scale and T^gamma, ``"power-law"``, a free
+        power law C (delta/R)^alpha Re^beta T^gamma, or ``"branches"``, Eq. 6's branches
+        each with its own C_k, alpha_k, beta_k, freed only where the data identify them
         (:func:`.spec.branch_identifiability`).
     cv_by : str
         Column of the data whose values are the groups of the cross-validation
@@ -202,7 +204,7 @@ class LoopEstimator:
     def __init__(self, case: DesignCase | None = None, oils: dict[str, Oil] | str | Path |
                  None = None, margin: float = DEFAULT_MARGIN,
                  min_explained: float = DEFAULT_MIN_EXPLAINED, effects=None,
-                 max_effects: int = 3, cv: str = "one-step", base: str = "eq6",
+                 max_effects: int = 3, cv: str = "one-step", base: str = "auto",
                  cv_by: str = "run"):
         self.case = case
         self.oils = oils
@@ -242,7 +244,12 @@ class LoopEstimator:
                                                    film_wall=case_film_wall(case))
         self.law_without_T_ = replace(case.friction, gamma=0.0)
         report(task, 1, 5)
-        spec, base, stmt = self._calibrate(model, case)
+        facts = RigFacts.of(model.geometry, fluid_facts(s, data.oils))
+        opts = SearchOptions(margin=self.margin, min_explained=self.min_explained,
+                             max_effects=self.max_effects, cv=self.cv,
+                             has_time=bool(getattr(s, "has_time", True)))
+        # 3, 5-6. calibration and its effect search (each candidate base with its own)
+        spec, base, stmt, free = self._calibrate(model, case, names, facts, opts)
         report(task, 2, 5)
         # 4. residual structure of the calibration; its parameters against their ranges
         self.residual_before_ = residual_structure(s.viscous_W - base.pred, s)
@@ -250,12 +257,7 @@ class LoopEstimator:
         no_signal = no_signal_finding(s.viscous_W, base.pred, sigma)
         below = (below_couette_finding(s.viscous_W, model.couette_power(), sigma)
                  if case.friction.laminar_law == "couette" and no_signal is None else None)
-        # 5-6. effect search with plausibility, refit; the evidence trial of a range violation
-        facts = RigFacts.of(model.geometry, fluid_facts(s, data.oils))
-        opts = SearchOptions(margin=self.margin, min_explained=self.min_explained,
-                             max_effects=self.max_effects, cv=self.cv,
-                             has_time=bool(getattr(s, "has_time", True)))
-        free = search_effects(model, spec, base, names, facts, sigma, opts)
+        # the evidence trial of a range violation
         report(task, 3, 5)
         search, self.findings_ = self._evidence(model, free, no_signal, names, facts, sigma,
                                                 opts)
@@ -284,20 +286,29 @@ class LoopEstimator:
         report(task, 5, 5)
         return self
 
-    def _calibrate(self, model: ForwardModel, case: DesignCase
-                   ) -> tuple[BaseSpec, ModelFit, dict]:
-        """Stage 3: the base model's free parameters and its fit to the oil runs; with
-        ``base="auto"`` each candidate base is fitted and the held-out error chooses
+    def _calibrate(self, model: ForwardModel, case: DesignCase, names: list[str],
+                   facts: RigFacts, opts: SearchOptions
+                   ) -> tuple[BaseSpec, ModelFit, dict, EffectSearch]:
+        """Stage 3 and 5-6: the base model's free parameters, its fit to the oil runs and
+        its effect search; with ``base="auto"`` each candidate base is fitted with its own
+        effect search and the held-out error of base and effects chooses
         (:mod:`.base_choice`)."""
+        def search_of(spec: BaseSpec, fit: ModelFit) -> EffectSearch:
+            sigma = residual_structure(model.samples.viscous_W - fit.pred,
+                                       model.samples)["noise_W"]
+            return search_effects(model, spec, fit, names, facts, sigma, opts)
+
         if self.base == AUTO_BASE:
-            trial, self.base_selection_ = select_base(model, case, self.margin, self.cv)
-            spec, base, stmt = trial.spec, trial.fit, trial.stmt
+            trial, self.base_selection_ = select_base(model, case, self.margin, search_of)
+            spec, base, stmt, free = trial.spec, trial.fit, trial.stmt, trial.search
+            self.base_ = trial.candidate.name
         else:
             spec, base, stmt = fit_base(model, case, self.base)
+            free = search_of(spec, base)
             self.base_selection_ = []
-        self.base_ = spec.base
+            self.base_ = spec.base
         self.spec_, self.law_with_T_ = spec, base.law
-        return spec, base, stmt
+        return spec, base, stmt, free
 
     def _evidence(self, model: ForwardModel, free: EffectSearch, no_signal: Finding | None,
                   names: list[str], facts: RigFacts, sigma: float, opts: SearchOptions

@@ -53,6 +53,7 @@ from oilgap.model.measured.data import (
 from oilgap.model.oils import Oil, builtin_fluids, normalize_oil_name
 from oilgap.model.regions import joint_geometry
 from oilgap.model.skin_friction import BRANCH_KEYS, FrictionLaw
+from oilgap.model.taylor_couette import couette_reynolds, taylor_number
 from oilgap.model.units import m2_s_to_cst, m_to_mm
 
 from .baseline import BASELINE_TERMS, BaselineFit
@@ -183,22 +184,29 @@ def baseline_extrapolated(b: BaselineFit, speed_rpm: np.ndarray, temp_C: np.ndar
     return out
 
 
-def sample_ranges(s) -> dict:
+def sample_ranges(s, radius_m: float | None = None) -> dict:
     """Range of the operating variables of a sample set (for extrapolation flags).
 
     Parameters
     ----------
     s : Samples
         Samples (speed [rpm], temperature [degC], nu [m^2/s], gap [m], T [-]).
+    radius_m : float, optional
+        Region 1's rotor radius R [m]: with it, the region-1 Couette Reynolds number
+        ``Re = |omega| R delta / nu`` (seed Eq. 4) and Taylor number
+        ``Ta = Re (delta/R)^0.5`` (seed Eq. 3) ranges too.
 
     Returns
     -------
     dict
-        Variable -> [min, max] in the unit of its name.
+        Variable -> [min, max] in the unit of its name (``reynolds``, ``taylor`` [-]).
     """
     vals = {"abs_speed_rpm": np.abs(s.speed_rpm), "temp_C": s.temp_C,
             "nu_cSt": m2_s_to_cst(s.nu_m2_s), "gap_mm": m_to_mm(s.gap1_m),
             "roughness_T": s.roughness_T}
+    if radius_m is not None:
+        re = couette_reynolds(s.omega, radius_m, s.gap1_m, s.nu_m2_s)
+        vals |= {"reynolds": re, "taylor": taylor_number(re, s.gap1_m, radius_m)}
     return {k: [float(np.min(v)), float(np.max(v))] for k, v in vals.items() if len(v)}
 
 
@@ -289,7 +297,7 @@ class FittedModel:
                    baselines=dict(est.baselines_), fluids=fluids,
                    region1_gap_m=float(est.geometry_.regions[0].gap_m), pressure_gauge_Pa=0.0,
                    kind=est.data_.kind, has_time=bool(s.has_time), cv_by=str(s.cv_by),
-                   ranges=sample_ranges(s),
+                   ranges=sample_ranges(s, float(est.geometry_.regions[0].radius_m)),
                    taylor_exponent=float(getattr(est, "taylor_exponent_", 2.0)),
                    film_wall=est.forward_model_.film_wall)
 

@@ -57,7 +57,8 @@ KINDS = ("power_W", "viscous_power_W")
 LOOP_THERMAL_MODES = ("none", "film")
 """Thermal modes of a calibrated model (``film`` only with ``film_heating``)."""
 
-RANGE_KEYS = ("abs_speed_rpm", "temp_C", "nu_cSt", "gap_mm", "roughness_T")
+RANGE_KEYS = ("abs_speed_rpm", "temp_C", "nu_cSt", "gap_mm", "roughness_T", "reynolds",
+              "taylor")
 """Operating variables whose fitted range is recorded."""
 
 REQUIRED = {"format": str, "version": int, "case": dict, "laws": dict, "effects": dict,

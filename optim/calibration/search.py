@@ -168,7 +168,7 @@ def search_effects(model: ForwardModel, spec: BaseSpec, base: ModelFit, names: l
     EffectSearch
     """
     s = model.samples
-    cands = screen_candidates(model, spec, base, names, opts.has_time)
+    cands = screen_candidates(model, spec, base, names, opts.has_time, facts)
     refitter = Refitter(model, spec, cands.feature_scale(), opts.cv)
     prior = spec.start(spec.prior_values())  # a fold holds what it cannot identify there
     hold = {c: {spec.free.index(k): float(prior[spec.free.index(k)] - base.x[spec.free.index(k)])

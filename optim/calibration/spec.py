@@ -35,7 +35,7 @@ References
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
@@ -251,6 +251,8 @@ class BaseSpec:
     scale_min : float
         Lowest scale the fit may take [-] (0: the box only; where the Couette floor
         governs, the scale it starts at: :func:`.base_choice.laminar_share`).
+    transition : {"reynolds", "taylor"}
+        Transition rule of the Eq. 6 base (the case's ``[friction] transition``).
     """
 
     free: tuple[str, ...]
@@ -259,6 +261,7 @@ class BaseSpec:
     laminar_law: str = field(default="couette")
     prior: dict = field(default_factory=dict)
     scale_min: float = 0.0
+    transition: str = "reynolds"
 
     def prior_values(self) -> dict:
         """Every parameter's prior [-] (:attr:`prior`, else the published start value).
@@ -318,7 +321,7 @@ class BaseSpec:
                                                        strict=True)})
         if self.base == "eq6":
             return FrictionLaw(form="smooth", laminar_law=self.laminar_law, scale=v["scale"],
-                               alpha=v["alpha"], gamma=v["gamma"])
+                               alpha=v["alpha"], gamma=v["gamma"], transition=self.transition)
         return FrictionLaw(form="power-law", C=v["C"], alpha=v["alpha"], beta=v["beta"],
                            gamma=v["gamma"])
 
@@ -382,9 +385,8 @@ class BaseSpec:
         -------
         BaseSpec
         """
-        return BaseSpec(tuple(k for k in self.free if k not in values),
-                        {**self.fixed, **values}, self.base, self.laminar_law, self.prior,
-                        self.scale_min)
+        return replace(self, free=tuple(k for k in self.free if k not in values),
+                       fixed={**self.fixed, **values})
 
 
 def cv_groups(s: Samples) -> np.ndarray:
@@ -517,7 +519,8 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
     spec_params = EQ6_PARAMS if base == "eq6" else BASE_PARAMS
     order = [p for p in spec_params if p in free]
     return BaseSpec(tuple(order), {k: fixed[k] for k in spec_params if k not in order}, base,
-                    case.friction.laminar_law, prior), stmt
+                    case.friction.laminar_law, prior,
+                    transition=case.friction.transition if base == "eq6" else "reynolds"), stmt
 
 
 BRANCH_SPEED_SHARE = 0.1

@@ -181,7 +181,8 @@ def test_loop_counts_override_text_names_gamma_and_predict_too(tmp_path, capsys,
     data = tmp_path / "gap.csv"
     df.to_csv(data, index=False)
     out_dir = tmp_path / "lo"
-    code, out, err = _run(capsys, ["loop", str(data), "--out", str(out_dir), "--no-figures"])
+    code, out, err = _run(capsys, ["loop", str(data), "--out", str(out_dir), "--no-figures",
+                                   "--base", "eq6"])
     assert code == 0
     lines = out.splitlines()
     at = next(i for i, x in enumerate(lines) if x.startswith("data "))  # after the answer
@@ -204,7 +205,7 @@ def test_speed_in_rad_s_is_named_after_the_fit(tmp_path, capsys, rig):
     data = tmp_path / "rads.csv"
     rig[1].assign(speed_rpm=rig[1]["speed_rpm"] * np.pi / 30).to_csv(data, index=False)
     code, out, err = _run(capsys, ["loop", str(data), "--out", str(tmp_path / "lo"),
-                                   "--no-figures"])
+                                   "--no-figures", "--base", "eq6"])
     assert code == 0 and len(err) == 1
     assert err[0].startswith(f"oilgap: warning: {data}: the calibrated viscous loss is 9")
     assert "if speed_rpm is in rad/s, multiply it by 9.549" in err[0]
@@ -220,9 +221,11 @@ def test_a_solver_failure_on_data_in_the_wrong_unit_names_the_unit(tmp_path, cap
     monkeypatch.setattr(LoopEstimator, "_intervals", fail)
     data = tmp_path / "rads.csv"
     rig[1].assign(speed_rpm=rig[1]["speed_rpm"] * np.pi / 30).to_csv(data, index=False)
-    code, out, err = _run(capsys, ["loop", str(data), "--out", str(tmp_path / "lo")])
+    code, out, err = _run(capsys, ["loop", str(data), "--out", str(tmp_path / "lo"), "--base",
+                                   "eq6"])
     assert code == 2 and out == "" and len(err) == 1
     assert err[0].startswith(f"oilgap: error: data = '{data}' is not allowed; the calibrated")
     assert "rad/s" in err[0] and err[0].endswith("the fit then failed (did not converge)")
-    code, out, err = _run(capsys, ["loop", str(rig[0]), "--out", str(tmp_path / "lo2")])
+    code, out, err = _run(capsys, ["loop", str(rig[0]), "--out", str(tmp_path / "lo2"),
+                                   "--base", "eq6"])
     assert code == 4 and err == ["oilgap: solver failure: did not converge"]

@@ -116,3 +116,25 @@ def test_facade_model_keyword_is_the_same_fold(looped):
         a = og.evaluate(d / "rig.toml", model=d / "o" / "loop.json").total_mean_power_W
         b = og.evaluate(d / "cal.toml").total_mean_power_W
     assert abs(a - b) <= 1e-12 * abs(a)
+
+
+def test_a_case_carrying_its_model_prints_the_model_lines_of_model(looped, capsys):
+    # evaluate cal.toml ([calibration] model = "o/loop.json") prints the same model lines
+    # as evaluate rig.toml --model o/loop.json, numbers equal; only the path is as resolved
+    d = looped
+    out = {}
+    for key, argv in (("model", ["evaluate", str(d / "rig.toml"), "--model",
+                                 str(d / "o" / "loop.json")]),
+                      ("case", ["evaluate", str(d / "cal.toml")])):
+        capsys.readouterr()
+        assert main(argv) == 0
+        cap = capsys.readouterr()
+        i = cap.out.index("\nmodel       ")
+        out[key] = (cap.out[i:].splitlines()[2:],
+                    [x for x in cap.err.splitlines() if "outside the model's domain" in x])
+    lines, warned = out["case"]
+    assert lines == out["model"][0] and any("W calibrated, " in x for x in lines)
+    assert any("carried: friction law branches" in x for x in lines)
+    # the domain warning names where the model came from
+    assert warned and all("warning: [calibration] model " in x for x in warned)
+    assert out["model"][1] and all("warning: --model " in x for x in out["model"][1])

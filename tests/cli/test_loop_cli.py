@@ -37,7 +37,11 @@ def test_synth_then_loop(tmp_path, capsys):
     for k, sub in ISSUE_KEYS.items():
         assert set(doc[k]) == sub
     assert all(PER_RUN_KEYS <= set(r) for r in doc["per_run"]) and len(doc["per_run"]) == 8
-    assert set(doc["calibration"]) == {"scale", "alpha", "gamma"}  # default base: Eq. 6
+    assert set(doc["calibration"]) == {"scale", "alpha", "gamma"}  # Eq. 6 chosen
+    # the default base "auto": each candidate after its own effect search
+    rows = doc["base_selection"]["candidates"]
+    assert [r["base"] for r in rows] == ["eq6", "branches", "eq6-taylor"]
+    assert doc["base"] == "eq6" and [r["base"] for r in rows if r["chosen"]] == ["eq6"]
     assert [e["name"] for e in doc["effects"]] == ["oil_inertia"]
     assert EFFECT_KEYS <= set(doc["effects"][0])
     assert (res / "report.md").read_text().startswith("# Measured-data loop report")
@@ -51,7 +55,8 @@ def test_synth_then_loop(tmp_path, capsys):
         assert (res / f).stat().st_size > 10_000
 
     # the table form: error table, effects, before/after
-    assert main(["loop", str(data), "--out", str(res), "--no-figures", "--force"]) == 0
+    assert main(["loop", str(data), "--out", str(res), "--no-figures", "--force", "--base",
+                 "eq6"]) == 0
     text = capsys.readouterr().out
     assert "error table" in text and "oil_inertia" in text and "held-out (by run)" in text
 

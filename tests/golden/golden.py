@@ -153,7 +153,7 @@ COMMANDS: list[tuple[str, list[str]]] = [
     ("loop_clean.json", ["loop", "synth_clean.csv", "--out", "loop_clean", "--json",
                          "--no-figures"]),
     ("loop_seal.json", ["loop", "synth_seal.csv", "--out", "loop_seal", "--json",
-                        "--no-figures"]),
+                        "--no-figures", "--base", "eq6"]),  # the default's choice: loop_clean
     ("predict_seal.txt", ["predict", "new_points.csv", "--model", "loop_seal/loop.json",
                           "--out", "predict_seal.csv"]),
 ]

@@ -36,7 +36,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 import golden  # noqa: E402
 
 SYNTH = ["synth", "--effect", "seal_coulomb_friction", "--seed", "3", "--out", "synth_seal.csv"]
-LOOP = ["loop", "synth_seal.csv", "--out", "loop_seal", "--json", "--no-figures"]
+LOOP = ["loop", "synth_seal.csv", "--out", "loop_seal", "--json", "--no-figures", "--base",
+        "eq6"]  # as golden.py's loop_seal
 THREAD_VARS = golden.THREAD_VARS
 REL = "loop_seal/loop.json"
 

@@ -43,7 +43,7 @@ def rig():
 @pytest.fixture(scope="module")
 def fitted(rig):
     case, df = rig
-    return LoopEstimator(case=case, effects=["seal_coulomb_friction"]).fit(df)
+    return LoopEstimator(base="eq6", case=case, effects=["seal_coulomb_friction"]).fit(df)
 
 
 def test_the_loop_fits_rod_velocity_data_through_the_elements(rig, fitted):
@@ -55,7 +55,7 @@ def test_the_loop_fits_rod_velocity_data_through_the_elements(rig, fitted):
     rotary = replace(case, linear=None)
     as_rotary = df.rename(columns={"rod_velocity_m_s": "speed_rpm"}).assign(
         speed_rpm=lambda d: 60 * d["speed_rpm"] / case.linear.lead_m)
-    bad = LoopEstimator(case=rotary, effects=["seal_coulomb_friction"]).fit(as_rotary)
+    bad = LoopEstimator(base="eq6", case=rotary, effects=["seal_coulomb_friction"]).fit(as_rotary)
     # the laminar passages and the laminar gap both go as mu omega^2: the friction scale
     # takes most of the missing terms, the screw's (nu n)^(2/3) and the rest stay
     assert bad.heldout_rmse_["before"] > 20 * est.heldout_rmse_["before"]
@@ -64,7 +64,7 @@ def test_the_loop_fits_rod_velocity_data_through_the_elements(rig, fitted):
 def test_speed_and_rod_velocity_together_are_refused(rig):
     case, df = rig
     with pytest.raises(InputError, match="speed_rpm and rod_velocity_m_s"):
-        LoopEstimator(case=case).fit(df.assign(speed_rpm=1.0))
+        LoopEstimator(base="eq6", case=case).fit(df.assign(speed_rpm=1.0))
 
 
 def test_predict_takes_rod_velocity_rows(rig, fitted):

@@ -129,7 +129,7 @@ def loop():
     """A small synthetic rig with a seal's Coulomb friction, fitted (about 1 s)."""
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=300,
                                 effect="seal_coulomb_friction"), seed=3)
-    return LoopEstimator(effects=["seal_coulomb_friction"]).fit(df)
+    return LoopEstimator(base="eq6", effects=["seal_coulomb_friction"]).fit(df)
 
 
 def test_the_window_spans_the_last_cycles_of_the_speed():

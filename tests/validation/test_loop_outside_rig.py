@@ -59,7 +59,7 @@ def loop(cfg: OutsideConfig, seed: int) -> tuple[tuple[str, ...], float]:
     with tempfile.TemporaryDirectory() as d:
         oils = read_oils_csv(write_oils_csv(cfg, Path(d) / "oils.csv"))
     case = case_from_dict(cfg.geometry.case_document())
-    est = LoopEstimator(case=case, oils=oils).fit(synthesize(cfg, seed))
+    est = LoopEstimator(base="eq6", case=case, oils=oils).fit(synthesize(cfg, seed))
     h = est.heldout_rmse_
     return tuple(sorted(e.name for e in est.effects_)), 100.0 * (1.0 - h["after"] / h["before"])
 

@@ -72,7 +72,7 @@ def test_plumbing_the_fitted_coefficient_is_the_correction_factor():
     pb = np.asarray(bearing_power(spec, rpm_to_rad_s(df["speed_rpm"].to_numpy()), nu))
     assert 8.0 < pb.mean() < 15.0  # the SKF rolling + V_M drag of a 61809 at 25-50 degC
     data = df.assign(viscous_power_W=df["viscous_power_W"] + 1.3 * pb)
-    est = LoopEstimator(case=replace(seed_case(), bearing=spec),
+    est = LoopEstimator(base="eq6", case=replace(seed_case(), bearing=spec),
                         effects=["bearing_ball_churning"]).fit(data)
     (eff,) = est.effects_
     assert eff.name == "bearing_ball_churning"
@@ -135,7 +135,7 @@ def test_plumbing_the_loop_separates_the_drag_scale_from_the_correction_factor()
     pv = np.asarray(bearing_vm_drag_power(spec, w))
     assert 5.0 < pv.mean() < 0.6 * pb.mean()  # the V_M term, about half the model
     data = df.assign(viscous_power_W=df["viscous_power_W"] + pb + 1.5 * pv)
-    est = LoopEstimator(case=replace(seed_case(), bearing=spec)).fit(data)
+    est = LoopEstimator(base="eq6", case=replace(seed_case(), bearing=spec)).fit(data)
     got = {e.name: e for e in est.effects_}
     assert set(got) == {"bearing_ball_churning", "bearing_ball_drag"}
     assert got["bearing_ball_churning"].coefficient == pytest.approx(1.0, abs=0.05)
@@ -147,7 +147,7 @@ def test_plumbing_drag_alone_is_the_drag_scale():
     spec = bearing_spec_from(SKF_6809)
     df = synthesize(SynthConfig(n_samples=200, kind="viscous_power_W"), 0)
     pv = np.asarray(bearing_vm_drag_power(spec, rpm_to_rad_s(df["speed_rpm"].to_numpy())))
-    est = LoopEstimator(case=replace(seed_case(), bearing=spec),
+    est = LoopEstimator(base="eq6", case=replace(seed_case(), bearing=spec),
                         effects=["bearing_ball_drag"]).fit(
         df.assign(viscous_power_W=df["viscous_power_W"] + 2.5 * pv))
     (eff,) = est.effects_

@@ -46,7 +46,7 @@ def test_feature_is_the_slope_of_the_exact_form_at_zero():
     # first order: P(T + c P) = P + c P dP/dT; the exact refit's power at a small c, by
     # difference, against the library feature
     df = synthesize(SynthConfig(n_samples=200), 0)
-    est = LoopEstimator().fit(df)
+    est = LoopEstimator(base="eq6").fit(df)
     model = est.forward_model_
     law = est.law_with_T_
     ctx = model.context(law)

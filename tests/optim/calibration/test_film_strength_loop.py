@@ -30,7 +30,7 @@ THEORY_K_W = 1e-3 / (12 * 0.13 * 2 * math.pi * 0.0254 * 0.01476)  # 0.2721 K/W a
 def fitted(s_true: float, case=None) -> LoopEstimator:
     cfg = SynthConfig(effect="film_heating", strength=s_true, kind="viscous_power_W",
                       n_samples=500)  # a third of the default rig: the same checks, 3x faster
-    return LoopEstimator(case=case).fit(synthesize(cfg, 0))
+    return LoopEstimator(base="eq6", case=case).fit(synthesize(cfg, 0))
 
 
 def _film(est):

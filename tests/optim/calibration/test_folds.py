@@ -104,7 +104,7 @@ def test_loop_on_sixteen_oil_runs_uses_ten_folds_and_says_so():
         df = synthesize(cfg, seed=k)
         df["run"] = df["run"] + f"_r{k}"
         frames.append(df)
-    est = LoopEstimator(effects=["seal_coulomb_friction"]).fit(
+    est = LoopEstimator(base="eq6", effects=["seal_coulomb_friction"]).fit(
         pd.concat(frames, ignore_index=True))
     cv = est.to_dict()["cross_validation"]
     assert (cv["scheme"], cv["groups"], cv["folds"]) == ("grouped k-fold", 16, 10)

@@ -43,7 +43,7 @@ WEAKEST_FOUND = {  # measured with benchmarks/detect_loop.py on seeds 0, 1, 2 (R
 def _fit(cfg: SynthConfig, seed: int = 0, **kw) -> LoopEstimator:
     # a rig with its own fluids (e.g. polymer-thickened oils) gives the loop that table
     oils = fluid_table(cfg) if cfg.fluids else None
-    return LoopEstimator(case=cfg.case, oils=oils, **kw).fit(synthesize(cfg, seed))
+    return LoopEstimator(base="eq6", case=cfg.case, oils=oils, **kw).fit(synthesize(cfg, seed))
 
 
 def _config(name, strength):
@@ -84,7 +84,7 @@ def test_clean_data_accepts_no_effect_in_at_least_19_of_20_seeds():
     # lighter record (500 samples per run, 100 s): less averaging, so false alarms are, if
     # anything, more likely than on the full 1500-sample runs
     cfg = SynthConfig(n_samples=500)
-    accepted = sum(bool(LoopEstimator().fit(synthesize(cfg, seed)).effects_)
+    accepted = sum(bool(LoopEstimator(base="eq6").fit(synthesize(cfg, seed)).effects_)
                    for seed in range(20))
     assert accepted <= 1
 
@@ -178,13 +178,13 @@ def test_gap_sweep_makes_alpha_identifiable():
     # the Eq. 6 base with the published laminar branch ("bilgen-boulos" laminar law): region
     # 1 follows x^alpha, alpha is identified and its interval holds the published 0.3
     bb = replace(base, friction=replace(base.friction, laminar_law="bilgen-boulos"))
-    est = LoopEstimator(case=bb).fit(_gap_sweep(bb, seed_truth_law(bb)))
+    est = LoopEstimator(base="eq6", case=bb).fit(_gap_sweep(bb, seed_truth_law(bb)))
     assert est.identifiability_["alpha"].startswith("identified")
     lo, hi = est.calibration_ci_["alpha"]
     assert lo < 0.3 < hi and hi - lo < 0.1
     # with the Couette laminar law region 1 is laminar Couette at these gaps (Eq. 6 lies
     # 5-25 % below it): no alpha in it, so alpha is fixed and says why
-    est = LoopEstimator().fit(_gap_sweep(base, seed_truth_law(base)))
+    est = LoopEstimator(base="eq6").fit(_gap_sweep(base, seed_truth_law(base)))
     assert est.identifiability_["alpha"].startswith("not identifiable: region 1 follows the "
                                                      "Couette bound")
     assert est.calibration_ci_["alpha"] == "fixed" and est.effects_ == []
@@ -193,8 +193,8 @@ def test_gap_sweep_makes_alpha_identifiable():
 def test_one_step_folds_agree_with_full_refits():
     cfg = SynthConfig(n_samples=500, effect="thermal_lag", strength=2.0)
     df = synthesize(cfg, 4)
-    a = LoopEstimator().fit(df)
-    b = LoopEstimator(cv="full").fit(df)
+    a = LoopEstimator(base="eq6").fit(df)
+    b = LoopEstimator(base="eq6", cv="full").fit(df)
     assert [e.name for e in a.effects_] == [e.name for e in b.effects_] == ["thermal_lag"]
     for k in ("before", "after"):
         assert a.heldout_rmse_[k] == pytest.approx(b.heldout_rmse_[k], rel=0.01)

@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from oilgap.model.effects import EFFECTS
+from oilgap.model.effects import EFFECTS, FluidFacts, RigFacts
 from oilgap.model.errors import InputError
 from oilgap.model.io.case_io import seed_case
 from oilgap.model.skin_friction import FrictionLaw
@@ -29,7 +29,7 @@ GAMMA = seed_case().friction.gamma
 @cache
 def _fit(cfg: SynthConfig, seed: int = 0, **kw) -> LoopEstimator:
     oils = fluid_table(cfg) if cfg.fluids else None
-    return LoopEstimator(case=cfg.case, oils=oils, **kw).fit(synthesize(cfg, seed))
+    return LoopEstimator(base="eq6", case=cfg.case, oils=oils, **kw).fit(synthesize(cfg, seed))
 
 
 def _cut(est):
@@ -103,14 +103,19 @@ def test_a_range_violation_the_effects_explain_is_reported_so():
     assert "refitted with seal_coulomb_friction it is 1, within its range" in f.message
 
 
-def test_shear_thinning_on_a_newtonian_oil_is_implausible_not_accepted():
+def test_shear_thinning_on_a_newtonian_oil_is_not_a_candidate():
+    # outside its physical domain (no polymer-thickened liquid): not a candidate at all
     est = _fit(SynthConfig(effect="shear_thinning"))  # straight mineral oils
     assert est.effects_ == []
     st = {c["name"]: c["status"] for c in est.candidates_}
-    assert st["shear_thinning"].startswith("implausible: lambda^2 = ")
-    assert "the effect needs a polymer-thickened liquid: " in st["shear_thinning"]
-    assert "VG150" in st["shear_thinning"] and "straight mineral oils" in st["shear_thinning"]
-    assert any(s.step == "plausibility" for s in est.selection_log_)
+    assert st["shear_thinning"] == ("not a candidate: no polymer-thickened liquid among the "
+                                    "fluids of the oil runs (VG1000, VG150, VG320, VG680: "
+                                    "Newtonian)")
+    # a fit on such a fluid would still be implausible (the rule for a mixed set of fluids)
+    facts = RigFacts.of(est.forward_model_.geometry, [FluidFacts("VG150", "mineral", False)])
+    why = EFFECTS["shear_thinning"].implausibility(1e-8, facts)
+    assert "the effect needs a polymer-thickened liquid: " in why
+    assert "VG150 is a straight mineral oil" in why
     # the same rig with the oils marked polymer-thickened: named, lambda recovered
     est = _fit(SynthConfig(effect="shear_thinning", fluids=polymer_thickened()))
     (e,) = est.effects_
@@ -120,7 +125,6 @@ def test_shear_thinning_on_a_newtonian_oil_is_implausible_not_accepted():
 
 def test_plausible_ranges_hold_every_test_strength_of_the_synthetic_rig():
     # the rig's default strengths are meant to be physical: each inside its range
-    from oilgap.model.effects import FluidFacts, RigFacts
     from oilgap.model.regions import joint_geometry
     facts = RigFacts.of(joint_geometry(seed_case()), [FluidFacts("VG320", "mineral", True)])
     for name, s in DEFAULT_STRENGTH.items():
@@ -172,7 +176,7 @@ def test_a_fold_with_one_gap_holds_alpha_and_says_so(base):
 def test_data_without_a_viscous_signal_report_it_without_pinned_intervals():
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=300), 0)
     df["viscous_power_W"] = np.random.default_rng(3).normal(0.0, 1.0, len(df))  # noise only
-    est = LoopEstimator().fit(df)
+    est = LoopEstimator(base="eq6").fit(df)
     kinds = [f.kind for f in est.findings_]
     assert "no viscous signal" in kinds and "out of range" not in kinds
     assert all(np.isnan(est.calibration_ci_[k]).all() for k in ("scale", "gamma"))
@@ -182,7 +186,7 @@ def test_data_without_a_viscous_signal_report_it_without_pinned_intervals():
 def test_steady_point_data_drop_the_time_dependent_effects():
     # rows without time_s are steady operating points: no time-dependent candidate
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=300), 0)
-    est = LoopEstimator().fit(df.iloc[::10].drop(columns=["time_s"]))
+    est = LoopEstimator(base="eq6").fit(df.iloc[::10].drop(columns=["time_s"]))
     assert est.samples_.has_time is False
     st = {c["name"]: c["status"] for c in est.candidates_}
     for name in ("oil_inertia", "thermal_lag", "sensor_delay"):
@@ -204,15 +208,16 @@ def test_an_absurd_gap_is_an_input_error_naming_it():
     df = synthesize(SynthConfig(kind="viscous_power_W", n_samples=100), 0)
     df["gap_mm"] = 300.0
     with pytest.raises(InputError) as e:
-        LoopEstimator().fit(df)
+        LoopEstimator(base="eq6").fit(df)
     assert e.value.field == "gap_mm" and "rotor radius" in str(e.value)
 
 
 def test_an_implausible_partner_is_dropped_and_its_share_left_unexplained():
-    # thermal lag 4 s + shear thinning in straight mineral oils: shear thinning is
-    # implausible; the search without it may take in a delay column the nonlinear refit
-    # sets to nothing, which the per-effect nonlinear margin then drops. The thinning's
-    # share stays as unexplained structure instead of being forced onto a name.
+    # thermal lag 4 s + shear thinning in straight mineral oils: shear thinning is outside
+    # its domain (no polymer-thickened liquid); the search without it may take in a delay
+    # column the nonlinear refit sets to nothing, which the per-effect nonlinear margin then
+    # drops. The thinning's share stays as unexplained structure instead of being forced
+    # onto a name.
     est = _fit(SynthConfig(effects={"thermal_lag": 4.0, "shear_thinning": 7.5e-5}))
     assert [e.name for e in est.effects_] == ["thermal_lag"]
     # the thinning lowers the loss below Couette at the measured viscosity; with the Couette
@@ -221,7 +226,7 @@ def test_an_implausible_partner_is_dropped_and_its_share_left_unexplained():
     assert "bounded below" in est.identifiability_["scale"]
     assert est.effects_[0].coefficient == pytest.approx(4.0, rel=0.15)
     st = {c["name"]: c["status"] for c in est.candidates_}
-    assert st["shear_thinning"].startswith("implausible")
+    assert st["shear_thinning"].startswith("not a candidate: no polymer-thickened liquid")
     assert est.unexplained_ is not None
     for s in est.selection_log_:
         if s.step == "nonlinear prune":

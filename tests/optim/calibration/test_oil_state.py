@@ -169,14 +169,14 @@ def _loop(rig: str, pair: tuple[str, ...]):
     if rig == "synth":
         cfg = _synth_cfg({e: synth.DEFAULT_STRENGTH[e] for e in pair})
         oils = synth.fluid_table(cfg) if cfg.fluids else None
-        est = LoopEstimator(case=cfg.case, oils=oils).fit(synth.synthesize(cfg, 0))
+        est = LoopEstimator(base="eq6", case=cfg.case, oils=oils).fit(synth.synthesize(cfg, 0))
         noise = cfg.noise_power_W
     else:
         cfg = _outside_cfg({e: outside_rig.TEST_STRENGTH[e] for e in pair})
         with tempfile.TemporaryDirectory() as d:
             oils = read_oils_csv(outside_rig.write_oils_csv(cfg, Path(d) / "oils.csv"))
         case = case_from_dict(cfg.geometry.case_document())
-        est = LoopEstimator(case=case, oils=oils).fit(outside_rig.synthesize(cfg, 0))
+        est = LoopEstimator(base="eq6", case=case, oils=oils).fit(outside_rig.synthesize(cfg, 0))
         noise = cfg.noise_power_W
     return (tuple(sorted(e.name for e in est.effects_)), est.heldout_rmse_["after"], noise,
             est.effect_coef_, est)
@@ -256,7 +256,7 @@ def test_the_subsample_screen_names_what_all_samples_name(monkeypatch):
     passed, screen = [], refit.screened_readers
     monkeypatch.setattr(refit, "screened_readers", lambda *a: passed.append(screen(*a)) or
                         passed[-1])
-    est = LoopEstimator(case=cfg.case).fit(data)
+    est = LoopEstimator(base="eq6", case=cfg.case).fit(data)
     assert tuple(sorted(e.name for e in est.effects_)) == full[0]
     assert est.effect_coef_ == pytest.approx(full[3], rel=1e-7)
     assert est.heldout_rmse_["after"] == pytest.approx(full[1], rel=1e-7)

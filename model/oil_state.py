@@ -109,6 +109,39 @@ def applied_state_name(lagged: bool, film_heated: bool) -> str:
     return OIL_STATES[int(bool(lagged)) + 2 * int(bool(film_heated))]
 
 
+OIL_STATE_READERS = ("bearing_ball_churning", "end_face_disc", "oil_inertia",
+                     "shear_thinning", "taylor_vortex_onset")
+"""Effects whose term reads the oil's viscosity or density (beside the clearance regions);
+the seal's Coulomb torque and the sensor delay do not depend on the oil state."""
+
+
+def oil_state_record(coefs: dict, film_theory_K_W: float = 0.0) -> dict:
+    """Which oil state the forward model's terms read under the effects ``coefs``.
+
+    Parameters
+    ----------
+    coefs : dict
+        Effect name -> coefficient (library units; ``film_heating``: the strength s).
+    film_theory_K_W : float
+        The film coefficient at s = 1 under the model's wall condition
+        (the calibration forward model's
+        ``film_theory_K_W``) [K/W].
+
+    Returns
+    -------
+    dict
+        ``applied`` (measured, lagged, film-heated, lagged and film-heated), the lag
+        ``thermal_lag_s`` [s], the film strength ``film_strength`` [-] and its film
+        coefficient ``film_heating_K_W`` = s c_theory [K/W] (0: none), and ``terms``:
+        the clearance regions and the effects that read that state.
+    """
+    tau = float(coefs.get("thermal_lag", 0.0))
+    s = max(0.0, float(coefs.get("film_heating", 0.0)))
+    return {"applied": applied_state_name(tau != 0.0, s > 0.0), "thermal_lag_s": tau,
+            "film_strength": s, "film_heating_K_W": s * float(film_theory_K_W),
+            "terms": ["regions", *(n for n in coefs if n in OIL_STATE_READERS)]}
+
+
 def measured_oil_state(temp_K, nu_m2_s, density_kg_m3) -> OilState:
     """The oil state without thermal effect: every temperature the measured one.
 

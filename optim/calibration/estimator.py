@@ -77,6 +77,7 @@ from oilgap.model.measured.data import (
     oil_samples,
     validate,
 )
+from oilgap.model.oil_state import oil_state_record
 from oilgap.model.oils import Oil, read_oils_csv
 from oilgap.model.regions import joint_geometry
 from oilgap.optim.progress import report
@@ -85,7 +86,7 @@ from .base_choice import AUTO_BASE, fit_base, select_base
 from .baseline import BaselineFit, fit_baselines
 from .film_wall import case_film_wall, wall_identifiability
 from .folds import cv_scheme
-from .forward import ForwardModel, oil_state_record
+from .forward import ForwardModel
 from .least_squares import ModelFit, identifiability
 from .model_io import FittedModel
 from .ranges import (
@@ -193,8 +194,9 @@ class LoopEstimator:
     noise_W_ : float
         Noise level [W].
     oil_state_ : dict
-        The oil state the final model's terms read (:func:`.forward.oil_state_record`):
-        measured, lagged and/or film-heated; in ``loop.json`` as ``oil_state`` when not
+        The oil state the final model's terms read
+        (:func:`oilgap.model.oil_state.oil_state_record`): measured, lagged and/or
+        film-heated; in ``loop.json`` as ``oil_state`` when not
         the measured one.
     lasso_path_ : list of dict
     pred_ : dict

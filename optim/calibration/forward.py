@@ -42,7 +42,6 @@ from oilgap.model.elements import BearingElement, joint_elements
 from oilgap.model.measured.data import TEMP_STEP_K, Samples
 from oilgap.model.oil_state import (
     OilState,
-    applied_state_name,
     film_heated_oil_state,
     lagged_oil_state,
     measured_oil_state,
@@ -74,38 +73,6 @@ SHAPE_CACHE = 4
 COUETTE_ONLY = FrictionLaw(form="smooth", laminar_law="couette", scale=1e-12)
 """A law evaluated as exact laminar Couette everywhere: its scaled Eq. 6 lies below the
 Couette floor of :func:`oilgap.model.skin_friction.moment_coefficient` at every Re."""
-
-OIL_STATE_READERS = ("bearing_ball_churning", "end_face_disc", "oil_inertia",
-                     "shear_thinning", "taylor_vortex_onset")
-"""Effects whose term reads the oil's viscosity or density (beside the clearance regions);
-the seal's Coulomb torque and the sensor delay do not depend on the oil state."""
-
-
-def oil_state_record(coefs: dict, film_theory_K_W: float = 0.0) -> dict:
-    """Which oil state the forward model's terms read under the effects ``coefs``.
-
-    Parameters
-    ----------
-    coefs : dict
-        Effect name -> coefficient (library units; ``film_heating``: the strength s).
-    film_theory_K_W : float
-        The film coefficient at s = 1 under the model's wall condition
-        (:attr:`ForwardModel.film_theory_K_W`) [K/W].
-
-    Returns
-    -------
-    dict
-        ``applied`` (measured, lagged, film-heated, lagged and film-heated), the lag
-        ``thermal_lag_s`` [s], the film strength ``film_strength`` [-] and its film
-        coefficient ``film_heating_K_W`` = s c_theory [K/W] (0: none), and ``terms``:
-        the clearance regions and the effects that read that state.
-    """
-    tau = float(coefs.get("thermal_lag", 0.0))
-    s = max(0.0, float(coefs.get("film_heating", 0.0)))
-    return {"applied": applied_state_name(tau != 0.0, s > 0.0), "thermal_lag_s": tau,
-            "film_strength": s, "film_heating_K_W": s * float(film_theory_K_W),
-            "terms": ["regions", *(n for n in coefs if n in OIL_STATE_READERS)]}
-
 
 def sample_geometry(case: DesignCase, samples: Samples) -> JointGeometry:
     """The joint's regions with region 1 at each sample's roughness and gap.

@@ -151,7 +151,20 @@ def branch_identifiability(reynolds, gap_ratio, law: FrictionLaw) -> dict[str, t
 
 
 def distinct_values(a: np.ndarray, digits: int) -> list[float]:
-    """The distinct values of ``a`` rounded to ``digits`` decimals, sorted [same unit as a]."""
+    """The distinct values of ``a`` rounded to ``digits`` decimals, sorted.
+
+    Parameters
+    ----------
+    a : array
+        Values [any unit].
+    digits : int
+        Decimals kept before the values are compared [-].
+
+    Returns
+    -------
+    list of float
+        The distinct rounded values, ascending [the unit of ``a``].
+    """
     return np.unique(np.round(np.asarray(a, float), digits)).tolist()
 
 

@@ -323,6 +323,17 @@ def identifiable(s: Samples, radius1_m: float) -> dict[str, str | None]:
             f"{sd:.2f})"}
 
 
+TAYLOR_ALPHA_HELD = (
+    f"held at {BILGEN_BOULOS_ALPHA:g} (Eq. 6) under the Taylor transition: alpha acts only "
+    "through Eq. 6's turbulent branches where they rise above Wendt's correlation, so a free "
+    "alpha can switch them off and the fit has several minima (on Wendt's three-gap air "
+    "data, leave-one-gap-out fits from different starts predict the held-out gap 5 to 35 W "
+    "apart)")
+"""The statement of alpha under ``[friction] transition = "taylor"``: the scale (and gamma)
+are the Taylor candidate's free parameters, so its held-out error does not depend on where
+a fit starts."""
+
+
 def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
                 base: str = "power-law") -> tuple[BaseSpec, dict]:
     """Which base-model parameters the data identify, with the reason for each.
@@ -374,7 +385,10 @@ def decide_spec(s: Samples, geometry: JointGeometry, case: DesignCase,
                                        if k not in order}, base,
                         case.friction.laminar_law, prior), {**bstmt, **stmt}
     ratios = distinct_values(s.gap1_m / radius1, 6)
-    if why["alpha"] is None:
+    taylor = base == "eq6" and case.friction.transition == "taylor"
+    if why["alpha"] is None and taylor:
+        stmt["alpha"] = TAYLOR_ALPHA_HELD
+    elif why["alpha"] is None:
         free.append("alpha")
         stmt["alpha"] = (f"identified from {len(ratios)} region-1 gap ratios "
                          f"{ratios[0]:.4g}..{ratios[-1]:.4g}")

@@ -13,6 +13,7 @@ Re = 1e4 and ``0.23 ... Re^1.7`` above, bounded below by exact Couette
 
 import math
 import tomllib
+from dataclasses import replace
 
 import numpy as np
 import pandas as pd
@@ -152,11 +153,19 @@ def test_loop_heldout_equals_an_outside_leave_one_gap_out(rig, air3):
     def power_law(p):
         return FrictionLaw(form="power-law", C=math.exp(p[0]), alpha=p[1], beta=p[2])
 
-    for base, law_of, p0 in (("eq6", eq6_law, [0.0, 0.3]),
-                             ("power-law", power_law, [math.log(0.1), 0.3, -0.3])):
-        est = LoopEstimator(case=rig, base=base, cv_by="gap_mm", effects=[]).fit(air3)
+    def taylor_law(p):  # Eq. 6 under the Taylor transition (the eq6-taylor candidate)
+        return replace(eq6_law(p), transition="taylor")
+
+    taylor_rig = replace(rig, friction=replace(rig.friction, transition="taylor"))
+    # under the Taylor transition alpha is held at 0.3 (spec.TAYLOR_ALPHA_HELD): the scale
+    # is the candidate's one free parameter, so an outside fit from any start agrees
+    for base, law_of, p0, case, hold in (
+            ("eq6", eq6_law, [0.0, 0.3], rig, None),
+            ("power-law", power_law, [math.log(0.1), 0.3, -0.3], rig, None),
+            ("eq6", taylor_law, [0.0, 0.3], taylor_rig, {1: 0.3})):
+        est = LoopEstimator(case=case, base=base, cv_by="gap_mm", effects=[]).fit(air3)
         ours = est.heldout_pred_["before"]
-        theirs = outside_loo(air3, law_of, p0)
+        theirs = outside_loo(air3, law_of, p0, hold=hold)
         assert est.heldout_rmse_["before"] == pytest.approx(rmse(theirs - y), rel=0.10)
         assert rmse(np.log(ours / y)) == pytest.approx(rmse(np.log(theirs / y)), rel=0.10)
 
@@ -179,9 +188,11 @@ def test_base_chosen_by_held_out_error_meets_the_target(auto_fit, air3):
     assert pooled <= 0.08
     doc = auto_fit.to_dict()
     assert doc["base"] == auto_fit.base_ and doc["base_selection"]["requested"] == "auto"
-    # the Taylor transition (exact Couette below Ta_c, then Donnelly-Simon to Wendt) wins on
-    # Wendt's air data; eq6 alone is the outside check's 0.075 (test above)
-    assert auto_fit.base_ == "eq6-taylor" and auto_fit.law_.transition == "taylor"
+    # the regimes' own C_k, alpha_k, beta_k win on Wendt's air data (pooled 0.050); eq6
+    # alone is the outside check's 0.075 (test above), Eq. 6 under the Taylor transition
+    # with alpha held at 0.3 loses out of sample (its law is anchored to Wendt above onset,
+    # and yet the published alpha's turbulent branches overshoot the widest gap)
+    assert auto_fit.base_ == "branches"
 
 
 def test_a_forced_base_skips_the_comparison_and_meets_the_target(rig, air3):
@@ -233,14 +244,17 @@ def test_a_scale_finding_names_what_moved_with_it(rig):
     assert "(prior 0.3) moved as well; on these data the loss is" in f.message
 
 
-def test_the_chosen_taylor_transition_is_saved_and_predicted(auto_fit):
-    # the chosen candidate's law (Eq. 6 with the Taylor transition) is what loop.json keeps
-    # and what the saved model predicts with, to 1e-9
+def test_the_taylor_transition_is_saved_and_predicted(rig, air3):
+    # a base fitted under the Taylor transition keeps it in loop.json, and the saved model
+    # predicts with it to 1e-9
     from oilgap.optim.calibration.model_io import FittedModel
-    doc = auto_fit.to_dict()["model"]
+    taylor_rig = replace(rig, friction=replace(rig.friction, transition="taylor"))
+    est = LoopEstimator(case=taylor_rig, base="eq6", cv_by="gap_mm", effects=[]).fit(air3)
+    doc = est.to_dict()["model"]
     assert doc["laws"]["with_effect"]["transition"] == "taylor"
+    assert est.calibration_["alpha"] == 0.3 and "Taylor transition" in est.identifiability_["alpha"]
     model = FittedModel.from_dict(doc)
-    assert model.laws["with_effect"] == auto_fit.law_
-    p = model.power(auto_fit.samples_, "with_effect", auto_fit.data_.oils)
-    ref = auto_fit.pred_["with_effect"]
+    assert model.laws["with_effect"] == est.law_
+    p = model.power(est.samples_, "with_effect", est.data_.oils)
+    ref = est.pred_["with_effect"]
     assert np.max(np.abs(p - ref)) <= 1e-9 * np.max(np.abs(ref))

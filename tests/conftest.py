@@ -1,9 +1,14 @@
-"""Shared test set-up: figures on the Agg backend; the test joint's TOML and a writer."""
+"""Shared test set-up: figures on the Agg backend; hypothesis derandomized (the same
+examples on every run and machine, no example database: a property test fails in CI
+exactly when it fails here); the test joint's TOML and a writer."""
 
 import matplotlib
 import pytest
+from hypothesis import settings
 
 matplotlib.use("Agg")
+settings.register_profile("oilgap", derandomize=True, database=None)
+settings.load_profile("oilgap")
 
 TEST_JOINT_TOML = """
 name = "test joint"

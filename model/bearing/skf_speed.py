@@ -3,8 +3,9 @@
 SKF's inlet-shear factor ``phi_ish = 1/(1 + 1.84e-9 (n dm)^1.28 nu^0.64)`` and
 boundary-film factor ``phi_bl = exp(-2.6e-8 (n nu)^1.4 dm)`` are products of a power of
 the speed and a power of the viscosity. Their speed parts are these functions:
-:mod:`.laws` multiplies them by the viscosity's power inside its laws (the same
-operations, in the same order, as the laws written in one line), and the vectorised heat
+:mod:`oilgap.model.bearing.laws` multiplies them by the viscosity's power inside its
+laws (the same operations, in the same order, as the laws written in one line), and the
+vectorised heat
 balance (:mod:`oilgap.model.uncertain.rows`) evaluates them once per row and speed node
 instead of at every temperature its iteration tries (the viscosity changes, the speeds
 do not): the same numbers, without the three powers of n per node and temperature.

@@ -5,10 +5,10 @@ boundary-film factor ``phi_bl = exp(-2.6e-8 (n nu)^1.4 dm)`` are products of a p
 the speed and a power of the viscosity. Their speed parts are these functions:
 :mod:`oilgap.model.bearing.laws` multiplies them by the viscosity's power inside its
 laws (the same operations, in the same order, as the laws written in one line), and the
-vectorised heat
-balance (:mod:`oilgap.model.uncertain.rows`) evaluates them once per row and speed node
-instead of at every temperature its iteration tries (the viscosity changes, the speeds
-do not): the same numbers, without the three powers of n per node and temperature.
+vectorised heat balance (:mod:`oilgap.model.uncertain.rows`) evaluates them once per row
+and speed node instead of at every temperature its iteration tries (the viscosity
+changes, the speeds do not): the same numbers, without the three powers of n per node
+and temperature.
 
 Functions take floats, numpy arrays and CasADi symbols.
 

@@ -37,6 +37,7 @@ import functools
 
 import numpy as np
 import pytest
+from test_transition import _cheb  # the Chebyshev matrix of the linear-stability check
 
 import oilgap.model.transition as tr
 from oilgap.model.taylor_couette import couette_moment_coefficient
@@ -53,14 +54,6 @@ SEED_ETA = 1.0 / (1.0 + 1.0 / 25.4)
 RATIO_TOL, SLOPE_TOL = 0.06, 0.20
 
 _EG_RE_C = tr.critical_reynolds_number  # captured before any test patches the module
-
-
-def _cheb(n):
-    x = np.cos(np.pi * np.arange(n + 1) / n)
-    c = np.r_[2.0, np.ones(n - 1), 2.0] * (-1.0) ** np.arange(n + 1)
-    dx = x[:, None] - x[None, :]
-    d = np.outer(c, 1.0 / c) / (dx + np.eye(n + 1))
-    return d - np.diag(d.sum(1)), x
 
 
 class _TaylorVortex:

@@ -429,7 +429,7 @@ def bearing_torque(spec: BearingSpec, omega_rad_s, nu_m2_s):
         * m.sign(omega_rad_s)
 
 
-def bearing_power(spec: BearingSpec, omega_rad_s, nu_m2_s):
+def bearing_power(spec: BearingSpec, omega_rad_s, nu_m2_s, speed: dict | None = None):
     """Friction power of the bearing ``M |omega|`` [W].
 
     Parameters
@@ -440,6 +440,8 @@ def bearing_power(spec: BearingSpec, omega_rad_s, nu_m2_s):
         Shaft speed [rad/s] (sign ignored).
     nu_m2_s : float, array or CasADi symbol
         Kinematic viscosity [m^2/s].
+    speed : dict, optional
+        ``skf``: :func:`skf_speed_terms` at ``|omega|`` in rpm, if already evaluated.
 
     Returns
     -------
@@ -450,11 +452,12 @@ def bearing_power(spec: BearingSpec, omega_rad_s, nu_m2_s):
     ----------
     Power = moment x angular speed; moments of SKF [1]_ or Palmgren [3]_.
     """
-    return sum(bearing_moment_terms(spec, omega_rad_s, nu_m2_s).values()) \
+    return sum(bearing_moment_terms(spec, omega_rad_s, nu_m2_s, speed).values()) \
         * m.fabs(omega_rad_s)
 
 
-def bearing_mean_power(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s):
+def bearing_mean_power(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s,
+                       speed: dict | None = None):
     """Mean friction power of the bearing over a duty cycle's speed distribution [W].
 
     Parameters
@@ -469,6 +472,9 @@ def bearing_mean_power(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s):
     nu_m2_s : float, array or CasADi symbol
         Kinematic viscosity [m^2/s]: a scalar, or numpy with a trailing axis of 1
         (shape ``(..., 1)``) to broadcast against the nodes.
+    speed : dict, optional
+        ``skf``: :func:`skf_speed_terms` at the nodes in rpm, if already evaluated (the
+        vectorised rows keep them between temperatures).
 
     Returns
     -------
@@ -482,7 +488,7 @@ def bearing_mean_power(spec: BearingSpec, nodes_rad_s, weights, nu_m2_s):
     """
     if m.is_symbolic(nu_m2_s) and not m.is_symbolic(nodes_rad_s):
         nodes_rad_s = ca.DM(np.asarray(nodes_rad_s, dtype=float))
-    return weighted_mean(bearing_power(spec, nodes_rad_s, nu_m2_s), weights)
+    return weighted_mean(bearing_power(spec, nodes_rad_s, nu_m2_s, speed), weights)
 
 
 @dataclass(frozen=True)

@@ -327,15 +327,12 @@ def _added(values):
 
 
 def _bearing(spec, nodes, weights, nu_c, drag, speed):
-    """Cycle-mean bearing power [W] per row: :func:`bearing_mean_power`'s operations (the
-    speed terms ``speed`` given), SKF's drag terms times the rows' factor ``drag``."""
-    if spec.model != "skf":
-        return np.broadcast_to(np.asarray(bearing_mean_power(spec, nodes, weights, nu_c),
+    """Cycle-mean bearing power [W] per row (the speed terms ``speed`` given), SKF's drag
+    terms times the rows' factor ``drag``."""
+    if drag is None or spec.model != "skf":
+        return np.broadcast_to(np.asarray(bearing_mean_power(spec, nodes, weights, nu_c, speed),
                                           dtype=float), nu_c.shape[:1])
     terms = bearing_moment_terms(spec, nodes, nu_c, speed)
-    if drag is None:  # bearing_mean_power: weighted_mean(bearing_power)
-        return np.broadcast_to(weighted_mean(sum(terms.values()) * np.abs(nodes), weights),
-                               nu_c.shape[:1])
     drag_m = _added(terms.pop(k) for k in _DRAG_TERMS)
     moment = _added(terms.values()) + drag * drag_m
     return weighted_mean(moment * np.abs(nodes), weights)

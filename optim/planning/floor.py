@@ -33,7 +33,6 @@ from dataclasses import replace
 
 import numpy as np
 
-from oilgap.model.regions import region_power
 from oilgap.model.taylor_couette import couette_floor_form
 from oilgap.optim.calibration.forward import COUETTE_ONLY, ForwardModel
 from oilgap.optim.calibration.spec import BaseSpec
@@ -66,14 +65,13 @@ def floor_gaps(model: ForwardModel, spec: BaseSpec, x: np.ndarray) -> np.ndarray
     if "scale" not in spec.free or not couette_floor_form(law):
         return np.full(runs, math.inf)
     ln_s = float(x[spec.free.index("scale")])
-    s = model.samples
+    n = model.samples.n
     unit = replace(law, scale=1.0, gamma=0.0)  # a numeric scale of 1: nothing floored
-    below = np.full(s.n, -math.inf)
-    for r in model.geometry.regions:
-        p = region_power(r, s.omega, s.nu_m2_s, s.density_kg_m3, unit)
-        c = region_power(r, s.omega, s.nu_m2_s, s.density_kg_m3, COUETTE_ONLY)
+    below = np.full(n, -math.inf)
+    # the forward model's own (kept) region powers: the law at scale 1, exact Couette
+    for p, c in zip(model.region_powers(unit), model.region_powers(COUETTE_ONLY), strict=True):
         ok = (p > 0) & (c > 0)
-        kink = np.full(s.n, -math.inf)
+        kink = np.full(n, -math.inf)
         kink[ok] = np.log(c[ok] / p[ok])
         below = np.maximum(below, np.where(kink < ln_s, kink, -math.inf))
     return np.array([ln_s - below[idx].max() for idx in model.runs])

@@ -144,8 +144,7 @@ def critical_taylor_number(gap_ratio):
     ----------
     Esser & Grossmann [1]_.
     """
-    x = gap_ratio
-    return (2.0 + x) ** 2 / (2.0 * m.sqrt(4.0 + 3.0 * x) * ESSER_GROSSMANN_ALPHA**2)
+    return critical_reynolds_number(gap_ratio) * m.sqrt(gap_ratio)
 
 
 def _torque_to_cm(gap_ratio):

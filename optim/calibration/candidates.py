@@ -136,12 +136,18 @@ class Candidates:
         return {n: float(np.sqrt(np.mean(F[:, self.name.index(n)] ** 2))) for n in self.usable}
 
 
-def _screen(name: str, f: np.ndarray | None, jc: np.ndarray, spec: BaseSpec, ymax: float
-            ) -> dict:
-    """Screening record of one effect's feature ``f`` [W/unit] (status and R^2)."""
+def _record(name: str, status: str | None = None) -> dict:
+    """An effect's screening record: its name, title, formula, sign rule (and status)."""
     eff = EFFECTS[name]
     info = {"name": name, "title": eff.title, "formula": eff.formula,
             "nonnegative": eff.nonnegative}
+    return info if status is None else {**info, "status": status}
+
+
+def _screen(name: str, f: np.ndarray | None, jc: np.ndarray, spec: BaseSpec, ymax: float
+            ) -> dict:
+    """Screening record of one effect's feature ``f`` [W/unit] (status and R^2)."""
+    info = _record(name)
     if f is None:
         info["status"] = ("not applicable: the case has no [bearing] (the drag term needs "
                           "the bearing's rings)" if name == "bearing_ball_drag" else
@@ -205,23 +211,17 @@ def screen_candidates(model: ForwardModel, spec: BaseSpec, base: ModelFit,
     out = Candidates()
     cols = []
     for n in names:
-        if not has_time and EFFECTS[n].time_dependent:
-            eff = EFFECTS[n]
-            out.info.append({"name": n, "title": eff.title, "formula": eff.formula,
-                             "nonnegative": eff.nonnegative, "status": STEADY_POINT_STATUS})
-            continue
         eff = EFFECTS[n]
+        if not has_time and eff.time_dependent:
+            out.info.append(_record(n, STEADY_POINT_STATUS))
+            continue
         outside = eff.domain.reason(ctx, facts) if eff.domain is not None else None
         if outside is not None:
-            out.info.append({"name": n, "title": eff.title, "formula": eff.formula,
-                             "nonnegative": eff.nonnegative, "status": outside})
+            out.info.append(_record(n, outside))
             continue
-        f = EFFECTS[n].feature_values(ctx)
+        f = eff.feature_values(ctx)
         if f is not None and not np.all(np.isfinite(f)):
-            eff = EFFECTS[n]
-            out.info.append({"name": n, "title": eff.title, "formula": eff.formula,
-                             "nonnegative": eff.nonnegative,
-                             "status": "not usable: its feature is not finite on these data"})
+            out.info.append(_record(n, "not usable: its feature is not finite on these data"))
             continue
         info = _screen(n, f, base.jac_base, spec, ymax)
         out.info.append(info)

@@ -22,6 +22,20 @@ NUMBERS = {"runs": "runs", "budget_h": "budget_h", "noise_W": "noise_W",
            "expected_scale": "scale"}
 """Number options: argparse dest -> settings field."""
 
+FLAGS = {field: "--" + dest.replace("_", "-") for dest, field in NUMBERS.items() if dest != field}
+"""Settings field -> the option that sets it, where the two names differ: a refusal of the
+settings names the option the user typed."""
+
+
+def named_by_option(e: InputError, flags: dict[str, str]) -> InputError:
+    """A refusal of the plan's settings naming the option the user typed (``flags``: field
+    -> option, e.g. ``scale`` -> ``--expected-scale``); any other error as it is."""
+    from oilgap.studies.plan.settings import WHERE
+
+    if e.where != WHERE or e.field not in flags:
+        return e
+    return InputError(flags[e.field], e.value, e.allowed, e.where)
+
 
 def _items(option: str, text: str, kind: type) -> tuple:
     try:
@@ -57,7 +71,10 @@ def run(args: argparse.Namespace) -> int:
 
     kw = settings_from_args(args)
     with out_folder(args, args.out) as folder:
-        res = plan(args.case, **kw)
+        try:
+            res = plan(args.case, **kw)
+        except InputError as e:
+            raise named_by_option(e, FLAGS) from None
         folder.begin()
         write_plan(res, folder.path)
         folder.complete()

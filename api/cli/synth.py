@@ -58,14 +58,18 @@ def run(args: argparse.Namespace) -> int:
 def _plan_run(args: argparse.Namespace) -> int:
     """``synth --plan plan.csv``: the planned runs, in the loop's data format."""
     from oilgap._plan import synth_plan
+    from oilgap.cli.plan import named_by_option
 
     if args.effect is not None or args.strength is not None:
         raise InputError("--effect", args.effect, "with --plan give --effects NAME[=S],...")
     if args.seed < 0:
         raise InputError("--seed", args.seed, "an integer >= 0 is required (the noise seed)")
     check_out_file(args.out, getattr(args, "force", False))
-    df = synth_plan(args.plan, case=args.case, effects=args.effects, seed=args.seed,
-                    scale=1.0 if args.truth_scale is None else args.truth_scale)
+    try:
+        df = synth_plan(args.plan, case=args.case, effects=args.effects, seed=args.seed,
+                        scale=1.0 if args.truth_scale is None else args.truth_scale)
+    except InputError as e:
+        raise named_by_option(e, {"scale": "--truth-scale"}) from None
     try:
         path = write_data_csv(df, args.out)
     except OSError as e:

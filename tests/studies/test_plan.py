@@ -136,6 +136,9 @@ def test_cli_plan_bad_input_is_one_line(tmp_path, capsys):
     assert main(["plan", "--expected-scale", "0", "--out", str(tmp_path / "z")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "scale = 0.0" in err[0] and not (tmp_path / "z").exists()
+    assert "--expected-scale = 0.0" in err[0]  # the option typed, not the settings field
+    assert main(["plan", "--sample-s", "0", "--out", str(tmp_path / "z")]) == 2
+    assert "--sample-s = 0.0" in capsys.readouterr().err and not (tmp_path / "z").exists()
     assert main(["synth", "--truth-scale", "1.1", "--out", str(tmp_path / "s.csv")]) == 2
     assert "--truth-scale" in capsys.readouterr().err
     bad = tmp_path / "bad.csv"
@@ -145,6 +148,13 @@ def test_cli_plan_bad_input_is_one_line(tmp_path, capsys):
     assert main(["synth", "--plan", str(bad), "--out", str(tmp_path / "d.csv")]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert len(err) == 1 and "roughness_T (row 1)" in err[0] and "'four'" in err[0]
+    good = tmp_path / "good.csv"
+    good.write_text(bad.read_text().replace(",four,", ",4,"))
+    assert main(["synth", "--plan", str(good), "--truth-scale", "0",
+                 "--out", str(tmp_path / "d.csv")]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--truth-scale = 0.0" in err[0]
+    assert not (tmp_path / "d.csv").exists()
 
 
 def test_budget_in_hours_sets_the_number_of_runs():
